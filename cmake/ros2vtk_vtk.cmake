@@ -1,0 +1,101 @@
+# ros2vtk — build one VTK module from its vtk.module file, and wrap it for Python.
+#
+# The runtime's Scene module and the generated node module are both ordinary VTK modules
+# (`vtk.module` + `vtk_module_add_module` in the folder's CMakeLists.txt). This file holds the
+# one place that knows how Debian's VTK 9.1 wants them scanned, built and wrapped, so every
+# module of the project is built the same way.
+
+include_guard(GLOBAL)
+
+# Where wrapped Python modules land in the build tree: <build>/python/ros2vtk/, next to the
+# package's __init__.py (copied there by python/CMakeLists.txt). PYTHONPATH=<build>/python.
+set(ROS2VTK_PYTHON_BUILD_DIR "${CMAKE_BINARY_DIR}/python" CACHE INTERNAL
+  "Build-tree folder that holds the ros2vtk Python package")
+
+#[==[
+ros2vtk_add_vtk_module(
+  MODULE_FILE  <path/to/vtk.module>
+  [WRAP_PYTHON <ON|OFF>]          # default: ROS2VTK_WRAP_PYTHON (ON when unset)
+  [PYTHON_PACKAGE <package>]      # default: ros2vtk
+  [PROVIDES_MODULES <variable>])  # set to the module names built (e.g. ros2vtk::Scene)
+
+Scans and builds the module(s) described by MODULE_FILE as shared libraries and, when wrapping,
+builds one Python extension module per VTK module into <build>/python/<package>/.
+
+Why the explicit settings:
+- Debian's VTK 9.1 exports absolute install destinations, which vtk_module_build rejects, so
+  every destination is given here, relative (found by a probe project, see shared/STYLE.md §9).
+- Modules are always shared: the node-class registry and the message-type registry are process
+  singletons that the Scene module and the generated module must share.
+- vtk_module_build refuses two calls with the same PACKAGE, so each module file gets its own.
+#]==]
+function(ros2vtk_add_vtk_module)
+  cmake_parse_arguments(PARSE_ARGV 0 _r2v "" "MODULE_FILE;WRAP_PYTHON;PYTHON_PACKAGE;PROVIDES_MODULES" "")
+  if(_r2v_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "ros2vtk_add_vtk_module(): unknown arguments: ${_r2v_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT _r2v_MODULE_FILE)
+    message(FATAL_ERROR "ros2vtk_add_vtk_module(): MODULE_FILE is required")
+  endif()
+  get_filename_component(_r2v_module_file "${_r2v_MODULE_FILE}" ABSOLUTE)
+  if(NOT EXISTS "${_r2v_module_file}")
+    message(FATAL_ERROR "ros2vtk_add_vtk_module(): module file '${_r2v_MODULE_FILE}' not found "
+                        "(relative to ${CMAKE_CURRENT_SOURCE_DIR})")
+  endif()
+  if(NOT DEFINED _r2v_WRAP_PYTHON)
+    if(DEFINED ROS2VTK_WRAP_PYTHON)
+      set(_r2v_WRAP_PYTHON "${ROS2VTK_WRAP_PYTHON}")
+    else()
+      set(_r2v_WRAP_PYTHON ON)
+    endif()
+  endif()
+  if(NOT _r2v_PYTHON_PACKAGE)
+    set(_r2v_PYTHON_PACKAGE ros2vtk)
+  endif()
+
+  # Function scope only: the project's own plain libraries are not affected.
+  set(BUILD_SHARED_LIBS ON)
+
+  vtk_module_scan(
+    MODULE_FILES        "${_r2v_module_file}"
+    WANT_BY_DEFAULT     ON
+    HIDE_MODULES_FROM_CACHE ON
+    PROVIDES_MODULES    _r2v_modules
+    ENABLE_TESTS        OFF)
+  if(NOT _r2v_modules)
+    message(FATAL_ERROR "ros2vtk_add_vtk_module(): '${_r2v_MODULE_FILE}' provides no module "
+                        "(are its DEPENDS found by find_package(VTK)?)")
+  endif()
+
+  list(GET _r2v_modules 0 _r2v_first)
+  string(REPLACE "::" "_" _r2v_package "${_r2v_first}")
+  vtk_module_build(
+    MODULES               ${_r2v_modules}
+    PACKAGE               "${_r2v_package}"
+    BUILD_WITH_KITS       OFF
+    ENABLE_WRAPPING       ${_r2v_WRAP_PYTHON}
+    INSTALL_HEADERS       ON
+    HEADERS_DESTINATION   "${CMAKE_INSTALL_INCLUDEDIR}/ros2vtk"
+    ARCHIVE_DESTINATION   "${CMAKE_INSTALL_LIBDIR}"
+    LIBRARY_DESTINATION   "${CMAKE_INSTALL_LIBDIR}"
+    RUNTIME_DESTINATION   "${CMAKE_INSTALL_BINDIR}"
+    CMAKE_DESTINATION     "${CMAKE_INSTALL_LIBDIR}/cmake/ros2vtk"
+    LICENSE_DESTINATION   "${CMAKE_INSTALL_DATAROOTDIR}/licenses/ros2vtk"
+    HIERARCHY_DESTINATION "${CMAKE_INSTALL_LIBDIR}/vtk/hierarchy/ros2vtk")
+
+  if(_r2v_WRAP_PYTHON)
+    vtk_module_wrap_python(
+      MODULES             ${_r2v_modules}
+      TARGET              "${_r2v_package}_python"
+      PYTHON_PACKAGE      "${_r2v_PYTHON_PACKAGE}"
+      MODULE_DESTINATION  "python"
+      LIBRARY_DESTINATION "${CMAKE_INSTALL_LIBDIR}"
+      CMAKE_DESTINATION   "${CMAKE_INSTALL_LIBDIR}/cmake/ros2vtk"
+      INSTALL_HEADERS     OFF
+      BUILD_STATIC        OFF)
+  endif()
+
+  if(_r2v_PROVIDES_MODULES)
+    set(${_r2v_PROVIDES_MODULES} ${_r2v_modules} PARENT_SCOPE)
+  endif()
+endfunction()

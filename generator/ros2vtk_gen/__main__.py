@@ -1,0 +1,6 @@
+"""`python3 -m ros2vtk_gen`."""
+import sys
+
+from .cli import main
+
+sys.exit(main())

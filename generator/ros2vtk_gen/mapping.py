@@ -1,0 +1,542 @@
+"""Mapping rules (msg_specs/mappings/*.toml): load, validate against the parsed specs.
+
+A rule says how one ROS message type becomes one VTK / C++ type: its short name (and aliases),
+the conversion pattern (`kind`), the message fields the kind reads (`fields`, as dotted paths),
+the Header to stamp on publish (`header`) and the fields that are lengths (`lengths`, scaled
+metres <-> millimetres). The format is documented in msg_specs/mappings/README.md.
+
+Every problem is a MappingError `file:line: message [R2V2xx]` (line of the rule, or of the key
+when it can be found), so a user never sees a traceback. tomllib keeps no line numbers, so the
+lines are found by scanning the text for `[[mapping]]` headers and `key =` lines.
+"""
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass, field
+from typing import Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+from .errors import GeneratorError
+from .model import ARRAY, BOUNDED_SEQUENCE, SCALAR, SEQUENCE, Field, Message
+
+# Error codes (docs/errors.md): R2V201 file/TOML, R2V202 rule keys, R2V203 unknown ROS type,
+# R2V204 unknown kind / VTK type, R2V205 field path, R2V206 duplicate, R2V207 lengths.
+BAD_FILE = "R2V201"
+BAD_KEY = "R2V202"
+UNKNOWN_ROS_TYPE = "R2V203"
+BAD_KIND = "R2V204"
+BAD_FIELD = "R2V205"
+DUPLICATE = "R2V206"
+BAD_LENGTHS = "R2V207"
+
+SHORT_NAME_RE = re.compile(r"^[A-Z][A-Za-z0-9]*$")
+RULE_KEYS = ("short_name", "aliases", "ros_type", "vtk_type", "kind", "fields", "header",
+             "lengths")
+HEADER_TYPE = "std_msgs/msg/Header"
+
+INTEGER_TYPES = ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64")
+FLOAT_TYPES = ("float32", "float64")
+NUMERIC_TYPES = INTEGER_TYPES + ("uint64",) + FLOAT_TYPES
+
+# kind "value": the C++ value type -> the primitive field types it can hold without loss.
+VALUE_TYPES: Dict[str, Tuple[str, ...]] = {
+    "std::string": ("string",),
+    "bool": ("bool",),
+    "int": ("int8", "uint8", "int16", "uint16", "int32"),
+    "vtkTypeInt64": ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64"),
+    "double": FLOAT_TYPES,
+}
+
+
+class MappingError(GeneratorError):
+    """A malformed or inconsistent mapping rule, located in its file."""
+
+    def __init__(self, path: str, line: int, message: str, code: str) -> None:
+        super().__init__(message, code)
+        self.path = path
+        self.line = line
+
+    def __str__(self) -> str:
+        where = f"{self.path}:{self.line}" if self.line else self.path
+        return f"{where}: {self.message} [{self.code}]"
+
+
+# ---------------------------------------------------------------- what each kind reads
+
+@dataclass(frozen=True)
+class Shape:
+    """The type a role's field must have: a primitive of `primitives`, or a message that has
+    at least `members` (each a Shape), held once (`sequence` False) or as a sequence."""
+
+    primitives: Tuple[str, ...] = ()
+    members: Tuple[Tuple[str, "Shape"], ...] = ()
+    sequence: bool = False
+
+    def describe(self) -> str:
+        if self.primitives:
+            text = " or ".join(self.primitives)
+        else:
+            text = "message with " + ", ".join(name for name, _ in self.members)
+        return f"sequence of {text}" if self.sequence else text
+
+
+def _prim(*names: str, sequence: bool = False) -> Shape:
+    return Shape(primitives=names, sequence=sequence)
+
+
+def _struct(sequence: bool = False, **members: Shape) -> Shape:
+    return Shape(members=tuple(members.items()), sequence=sequence)
+
+
+XYZ_FLOAT64 = _struct(x=_prim("float64"), y=_prim("float64"), z=_prim("float64"))
+QUATERNION = _struct(x=_prim("float64"), y=_prim("float64"), z=_prim("float64"),
+                     w=_prim("float64"))
+MULTI_ARRAY_LAYOUT = _struct(
+    dim=_struct(sequence=True, label=_prim("string"), size=_prim("uint32"),
+                stride=_prim("uint32")),
+    data_offset=_prim("uint32"))
+
+
+@dataclass(frozen=True)
+class Kind:
+    """One conversion pattern: the roles it reads, the VTK types it makes, what it can scale.
+
+    `element_roles` are read relative to the element of the `sequence` role (PoseArray's
+    `position` inside each of `poses`). `scalable` names the roles whose field may appear in
+    `lengths` (for pointcloud2 the pseudo-path `<data>.xyz`: the x/y/z inside the bytes)."""
+
+    roles: Tuple[Tuple[str, Shape], ...] = ()
+    element_roles: Tuple[Tuple[str, Shape], ...] = ()
+    vtk_types: Tuple[str, ...] = ()
+    scalable: Tuple[str, ...] = ()
+
+
+KINDS: Dict[str, Kind] = {
+    "value": Kind(roles=(("value", _prim("bool", "string", *NUMERIC_TYPES)),),
+                  vtk_types=tuple(VALUE_TYPES), scalable=("value",)),
+    "empty": Kind(vtk_types=("void",)),
+    "rigid_transform": Kind(roles=(("translation", XYZ_FLOAT64), ("rotation", QUATERNION)),
+                            vtk_types=("vtkMatrix4x4",), scalable=("translation",)),
+    "rigid_transform_collection": Kind(
+        roles=(("sequence", Shape(sequence=True)),),
+        element_roles=(("translation", XYZ_FLOAT64), ("rotation", QUATERNION)),
+        vtk_types=("vtkTransformCollection",), scalable=("translation",)),
+    "vector_array": Kind(roles=(("components", _prim(*NUMERIC_TYPES)),),
+                         vtk_types=("vtkDoubleArray",)),
+    "image": Kind(roles=(("height", _prim("uint32")), ("width", _prim("uint32")),
+                         ("encoding", _prim("string")), ("is_bigendian", _prim("uint8")),
+                         ("step", _prim("uint32")), ("data", _prim("uint8", sequence=True))),
+                  vtk_types=("vtkImageData",)),
+    "points": Kind(roles=(("sequence", Shape(sequence=True)),), vtk_types=("vtkPoints",),
+                   scalable=("sequence",)),
+    "pointcloud2": Kind(
+        roles=(("height", _prim("uint32")), ("width", _prim("uint32")),
+               ("fields", _struct(sequence=True, name=_prim("string"), offset=_prim("uint32"),
+                                  datatype=_prim("uint8"), count=_prim("uint32"))),
+               ("is_bigendian", _prim("bool")), ("point_step", _prim("uint32")),
+               ("row_step", _prim("uint32")), ("data", _prim("uint8", sequence=True)),
+               ("is_dense", _prim("bool"))),
+        vtk_types=("vtkPolyData",), scalable=("data",)),
+    "joint_state_table": Kind(
+        roles=(("name", _prim("string", sequence=True)),
+               ("position", _prim("float64", sequence=True)),
+               ("velocity", _prim("float64", sequence=True)),
+               ("effort", _prim("float64", sequence=True))),
+        vtk_types=("vtkTable",)),
+    "multiarray_table": Kind(roles=(("layout", MULTI_ARRAY_LAYOUT),
+                                    ("data", _prim("int64", "float64", sequence=True))),
+                             vtk_types=("vtkTable",)),
+    "multiarray_array": Kind(roles=(("layout", MULTI_ARRAY_LAYOUT),
+                                    ("data", _prim("int64", "float64", sequence=True))),
+                             vtk_types=("vtkTypeInt64Array", "vtkDoubleArray")),
+}
+# multiarray_array: the array class follows the data's element type.
+MULTIARRAY_ARRAY_TYPES = {"int64": "vtkTypeInt64Array", "float64": "vtkDoubleArray"}
+# points: x, y and z of the sequence's elements, all float32 or all float64.
+POINT_ELEMENT_TYPES = ("float32", "float64")
+
+
+# ---------------------------------------------------------------- the validated rule
+
+@dataclass(frozen=True)
+class ResolvedField:
+    """A field path checked against the specs: its C++ access path and its model field."""
+
+    path: str         # as written in the rule ("pose.position")
+    field: Field      # the last field of the path
+    base: Message     # the message the path starts from
+
+    @property
+    def primitive(self) -> str:
+        return self.field.type.name if self.field.type.is_primitive else ""
+
+
+@dataclass(frozen=True)
+class Rule:
+    short_name: str
+    aliases: Tuple[str, ...]
+    ros_type: str
+    vtk_type: str
+    kind: str
+    message: Message
+    roles: Mapping[str, Union[ResolvedField, Tuple[ResolvedField, ...]]]
+    element_roles: Mapping[str, ResolvedField]
+    header: Optional[ResolvedField]
+    scaled_roles: Tuple[str, ...]   # roles whose lengths are scaled
+    source: str                     # mapping file as given
+    line: int
+    mapping_file: str = field(default="", compare=False)  # file name for banners
+
+
+# ---------------------------------------------------------------- locating lines
+
+class _Lines:
+    """Line numbers of `[[mapping]]` tables and of `key =` lines inside them."""
+
+    def __init__(self, text: str) -> None:
+        self.lines = text.splitlines()
+        self.starts = [i + 1 for i, line in enumerate(self.lines)
+                       if re.match(r"^\s*\[\[\s*mapping\s*\]\]", line)]
+
+    def rule(self, index: int) -> int:
+        return self.starts[index] if index < len(self.starts) else 0
+
+    def key(self, index: int, key: str) -> int:
+        start = self.rule(index)
+        if not start:
+            return 0
+        end = self.starts[index + 1] if index + 1 < len(self.starts) else len(self.lines) + 1
+        pattern = re.compile(rf"^\s*{re.escape(key)}\s*=")
+        for number in range(start + 1, end):
+            if pattern.match(self.lines[number - 1]):
+                return number
+        return start
+
+
+# ---------------------------------------------------------------- loading
+
+def load_rule_tables(path: str) -> Tuple[List[dict], _Lines]:
+    """The raw `[[mapping]]` tables of one file (TOML syntax checked, nothing else)."""
+    try:
+        with open(path, "rb") as handle:
+            raw = handle.read()
+    except OSError as error:
+        raise MappingError(path, 0, f"cannot read mapping file: {error.strerror}",
+                           BAD_FILE) from None
+    try:
+        text = raw.decode("utf-8")
+        data = tomllib.loads(text)
+    except UnicodeDecodeError:
+        raise MappingError(path, 0, "mapping file is not UTF-8 text", BAD_FILE) from None
+    except tomllib.TOMLDecodeError as error:
+        match = re.search(r"\(at line (\d+), column \d+\)", str(error))
+        line = int(match.group(1)) if match else 0
+        message = re.sub(r"\s*\(at line \d+, column \d+\)", "", str(error))
+        raise MappingError(path, line, f"not valid TOML: {message}", BAD_FILE) from None
+    lines = _Lines(text)
+    unknown = sorted(set(data) - {"mapping"})
+    if unknown:
+        raise MappingError(path, 1, f"unknown top-level key(s) {', '.join(unknown)} "
+                           "(a mapping file holds [[mapping]] tables only)", BAD_KEY)
+    tables = data.get("mapping", [])
+    if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
+        raise MappingError(path, 1, "'mapping' must be an array of tables ([[mapping]])",
+                           BAD_KEY)
+    return tables, lines
+
+
+def short_names_of(paths: Sequence[str]) -> List[str]:
+    """Primary short names of every rule, in file order, reading only the TOML (what CMake
+    needs at configure time to list the outputs; full validation happens at build time)."""
+    names: List[str] = []
+    for path in paths:
+        tables, lines = load_rule_tables(path)
+        for index, table in enumerate(tables):
+            name = table.get("short_name")
+            if not isinstance(name, str) or not SHORT_NAME_RE.match(name):
+                raise MappingError(path, lines.key(index, "short_name"),
+                                   f"rule {index + 1}: short_name must be a CamelCase "
+                                   f"identifier, got {name!r}", BAD_KEY)
+            names.append(name)
+    return names
+
+
+def load_rules(paths: Sequence[str], table: Mapping[str, Message]) -> List[Rule]:
+    """Every rule of the files, validated against the messages in `table` (by ROS name)."""
+    rules: List[Rule] = []
+    for path in paths:
+        tables, lines = load_rule_tables(path)
+        for index, raw in enumerate(tables):
+            rules.append(_rule(path, index, raw, lines, table))
+    _check_unique(rules)
+    return rules
+
+
+def _rule(path: str, index: int, raw: dict, lines: _Lines,
+          table: Mapping[str, Message]) -> Rule:
+    line = lines.rule(index)
+
+    def fail(key: Optional[str], message: str, code: str) -> MappingError:
+        where = lines.key(index, key) if key else line
+        label = raw.get("short_name") if isinstance(raw.get("short_name"), str) else index + 1
+        return MappingError(path, where, f"rule {label}: {message}", code)
+
+    unknown = sorted(set(raw) - set(RULE_KEYS))
+    if unknown:
+        raise fail(unknown[0], f"unknown key(s) {', '.join(unknown)} (known: "
+                   f"{', '.join(RULE_KEYS)})", BAD_KEY)
+    for key in ("short_name", "ros_type", "vtk_type", "kind"):
+        if key not in raw:
+            raise fail(None, f"'{key}' is required", BAD_KEY)
+        if not isinstance(raw[key], str) or not raw[key]:
+            raise fail(key, f"'{key}' must be a non-empty string", BAD_KEY)
+    short_name = raw["short_name"]
+    aliases = raw.get("aliases", [])
+    if not isinstance(aliases, list) or not all(isinstance(a, str) for a in aliases):
+        raise fail("aliases", "'aliases' must be a list of strings", BAD_KEY)
+    for name in [short_name, *aliases]:
+        if not SHORT_NAME_RE.match(name):
+            raise fail("short_name" if name == short_name else "aliases",
+                       f"'{name}' is not a valid short name (CamelCase letters and digits, as "
+                       "it becomes part of a class name)", BAD_KEY)
+
+    ros_type = _normalise_ros_type(raw["ros_type"])
+    message = table.get(ros_type)
+    if message is None:
+        known = ", ".join(sorted(name for name in table if "/msg/" in name))
+        raise fail("ros_type", f"unknown ROS type '{raw['ros_type']}' (known: {known})",
+                   UNKNOWN_ROS_TYPE)
+
+    kind_name = raw["kind"]
+    kind = KINDS.get(kind_name)
+    if kind is None:
+        raise fail("kind", f"unknown kind '{kind_name}' (known: {', '.join(sorted(KINDS))})",
+                   BAD_KIND)
+    vtk_type = raw["vtk_type"]
+    if vtk_type not in kind.vtk_types:
+        raise fail("vtk_type", f"kind {kind_name} makes {' or '.join(kind.vtk_types)}, not "
+                   f"'{vtk_type}'", BAD_KIND)
+
+    fields = raw.get("fields", {})
+    if not isinstance(fields, dict):
+        raise fail("fields", "'fields' must be a table of role = \"path\"", BAD_KEY)
+    known_roles = [name for name, _ in kind.roles + kind.element_roles]
+    extra = sorted(set(fields) - set(known_roles))
+    if extra:
+        raise fail("fields", f"kind {kind_name} has no role(s) {', '.join(extra)} (its roles: "
+                   f"{', '.join(known_roles) or 'none'})", BAD_FIELD)
+    missing = [name for name in known_roles if name not in fields]
+    if missing:
+        raise fail("fields", f"kind {kind_name} needs role(s) {', '.join(missing)}", BAD_FIELD)
+
+    def resolve_role(name: str, shape: Shape, base: Message, prefix: str) -> ResolvedField:
+        value = fields[name]
+        if not isinstance(value, str) or not value:
+            raise fail("fields", f"role {name} must be a field path string", BAD_FIELD)
+        try:
+            resolved = resolve_path(base, value, table)
+            check_shape(resolved.field, shape, table)
+        except ValueError as error:
+            raise fail("fields", f"role {name}: {prefix}{error}", BAD_FIELD) from None
+        return resolved
+
+    roles: Dict[str, Union[ResolvedField, Tuple[ResolvedField, ...]]] = {}
+    for name, shape in kind.roles:
+        if kind_name == "vector_array" and name == "components":
+            roles[name] = _resolve_components(fields[name], shape, message, table, fail)
+        else:
+            roles[name] = resolve_role(name, shape, message, "")
+    element_roles: Dict[str, ResolvedField] = {}
+    if kind.element_roles:
+        sequence = roles["sequence"]
+        assert isinstance(sequence, ResolvedField)
+        if not sequence.field.type.is_message:
+            raise fail("fields", f"role sequence: '{sequence.path}' must hold messages",
+                       BAD_FIELD)
+        element = table[sequence.field.type.ros_name()]
+        for name, shape in kind.element_roles:
+            element_roles[name] = resolve_role(name, shape, element,
+                                               f"(inside each element of '{sequence.path}') ")
+    _check_kind_specifics(kind_name, vtk_type, roles, table, fail)
+
+    header = None
+    if "header" in raw:
+        if not isinstance(raw["header"], str) or not raw["header"]:
+            raise fail("header", "'header' must be a field path string", BAD_KEY)
+        try:
+            header = resolve_path(message, raw["header"], table)
+        except ValueError as error:
+            raise fail("header", f"header: {error}", BAD_FIELD) from None
+        if header.field.type.ros_name() != HEADER_TYPE or header.field.container != SCALAR:
+            raise fail("header", f"header '{raw['header']}' is not a {HEADER_TYPE}", BAD_FIELD)
+
+    lengths = raw.get("lengths", [])
+    if not isinstance(lengths, list) or not all(isinstance(p, str) for p in lengths):
+        raise fail("lengths", "'lengths' must be a list of field paths", BAD_KEY)
+    scaled = _scaled_roles(kind_name, kind, lengths, roles, element_roles, message, table,
+                           lambda text: fail("lengths", text, BAD_LENGTHS))
+
+    return Rule(short_name=short_name, aliases=tuple(aliases), ros_type=ros_type,
+                vtk_type=vtk_type, kind=kind_name, message=message, roles=roles,
+                element_roles=element_roles, header=header, scaled_roles=scaled, source=path,
+                line=line, mapping_file=path.replace("\\", "/").rsplit("/", 1)[-1])
+
+
+def _normalise_ros_type(text: str) -> str:
+    """`pkg/Type` -> `pkg/msg/Type`; anything else unchanged (then reported as unknown)."""
+    parts = text.split("/")
+    return f"{parts[0]}/msg/{parts[1]}" if len(parts) == 2 else text
+
+
+def _resolve_components(value, shape: Shape, message: Message, table, fail):
+    if not isinstance(value, list) or not value or not all(isinstance(p, str) for p in value):
+        raise fail("fields", "role components must be a non-empty list of field paths",
+                   BAD_FIELD)
+    resolved = []
+    for path in value:
+        try:
+            item = resolve_path(message, path, table)
+            check_shape(item.field, shape, table)
+        except ValueError as error:
+            raise fail("fields", f"role components: {error}", BAD_FIELD) from None
+        resolved.append(item)
+    return tuple(resolved)
+
+
+def _check_kind_specifics(kind_name: str, vtk_type: str, roles, table, fail) -> None:
+    """Type rules one Shape cannot say: value types, the array class, point precision."""
+    if kind_name == "value":
+        primitive = roles["value"].primitive
+        if primitive not in VALUE_TYPES[vtk_type]:
+            raise fail("vtk_type", f"a {primitive} field cannot be held in '{vtk_type}' "
+                       f"(that takes {' or '.join(VALUE_TYPES[vtk_type])})", BAD_KIND)
+    elif kind_name == "multiarray_array":
+        wanted = MULTIARRAY_ARRAY_TYPES[roles["data"].primitive]
+        if vtk_type != wanted:
+            raise fail("vtk_type", f"{roles['data'].primitive} data goes into {wanted}, not "
+                       f"'{vtk_type}'", BAD_KIND)
+    elif kind_name == "points":
+        sequence = roles["sequence"]
+        if not sequence.field.type.is_message:
+            raise fail("fields", f"role sequence: '{sequence.path}' must hold messages with "
+                       "x, y, z", BAD_FIELD)
+        element = table[sequence.field.type.ros_name()]
+        types = set()
+        for axis in "xyz":
+            item = next((f for f in element.fields if f.name == axis), None)
+            if item is None or item.container != SCALAR or \
+                    item.type.name not in POINT_ELEMENT_TYPES or not item.type.is_primitive:
+                raise fail("fields", f"role sequence: elements of '{sequence.path}' "
+                           f"({element.ros_type}) need a float32 or float64 field '{axis}'",
+                           BAD_FIELD)
+            types.add(item.type.name)
+        if len(types) != 1:
+            raise fail("fields", f"role sequence: x, y, z of {element.ros_type} must have "
+                       "one type", BAD_FIELD)
+
+
+def _scaled_roles(kind_name: str, kind: Kind, lengths: List[str], roles, element_roles,
+                  message: Message, table, fail) -> Tuple[str, ...]:
+    """Maps each `lengths` path to the role it scales; a path the kind cannot scale is an
+    error (the units policy must never be silently ignored)."""
+    scalable: Dict[str, str] = {}
+    for role in kind.scalable:
+        if role in element_roles:
+            scalable[f"{roles['sequence'].path}.{element_roles[role].path}"] = role
+        elif kind_name == "pointcloud2" and role == "data":
+            scalable[f"{roles['data'].path}.xyz"] = role
+        elif role in roles:
+            resolved = roles[role]
+            if kind_name == "value" and resolved.primitive not in FLOAT_TYPES:
+                continue
+            scalable[resolved.path] = role
+    scaled: List[str] = []
+    for path in lengths:
+        if path not in scalable:
+            hint = (f"this kind can scale: {', '.join(sorted(scalable))}" if scalable
+                    else f"kind {kind_name} has no length to scale")
+            if kind_name != "pointcloud2" or not path.endswith(".xyz"):
+                try:
+                    resolve_path(message, path, table)
+                except ValueError as error:
+                    raise fail(f"lengths: {error}") from None
+            raise fail(f"lengths: '{path}' is not a length of kind {kind_name} ({hint})")
+        if scalable[path] in scaled:
+            raise fail(f"lengths: '{path}' is listed twice")
+        scaled.append(scalable[path])
+    return tuple(scaled)
+
+
+def _check_unique(rules: Sequence[Rule]) -> None:
+    seen: Dict[str, Rule] = {}
+    conversions: Dict[Tuple[str, str], Rule] = {}
+    for rule in rules:
+        for name in (rule.short_name, *rule.aliases):
+            other = seen.get(name)
+            if other is not None:
+                raise MappingError(rule.source, rule.line, f"rule {rule.short_name}: short name "
+                                   f"'{name}' is already used by rule {other.short_name} "
+                                   f"({other.source}:{other.line})", DUPLICATE)
+            seen[name] = rule
+        key = (rule.ros_type, rule.vtk_type)
+        other = conversions.get(key)
+        if other is not None:
+            raise MappingError(rule.source, rule.line, f"rule {rule.short_name}: {rule.ros_type} "
+                               f"-> {rule.vtk_type} is already mapped by rule {other.short_name} "
+                               f"({other.source}:{other.line}); the converters would clash",
+                               DUPLICATE)
+        conversions[key] = rule
+
+
+# ---------------------------------------------------------------- field paths
+
+def resolve_path(message: Message, path: str, table: Mapping[str, Message]) -> ResolvedField:
+    """Walks `a.b.c` through nested message fields. Every segment but the last must be a
+    single (non-sequence) message. Raises ValueError with a readable reason."""
+    current = message
+    segments = path.split(".")
+    for position, name in enumerate(segments):
+        item = next((f for f in current.fields if f.name == name), None)
+        if item is None:
+            have = ", ".join(f.name for f in current.fields) or "no fields"
+            raise ValueError(f"'{path}': {current.ros_type} has no field '{name}' (it has: "
+                             f"{have})")
+        if position == len(segments) - 1:
+            return ResolvedField(path, item, message)
+        if not item.type.is_message or item.container != SCALAR:
+            raise ValueError(f"'{path}': '{name}' is not a single message, so it has no "
+                             f"field '{segments[position + 1]}'")
+        current = table[item.type.ros_name()]
+    raise ValueError(f"'{path}': empty path")  # unreachable: split gives at least one segment
+
+
+def check_shape(item: Field, shape: Shape, table: Mapping[str, Message]) -> None:
+    """Raises ValueError when the field does not have `shape`."""
+    is_sequence = item.container in (SEQUENCE, BOUNDED_SEQUENCE)
+    if item.container == ARRAY or is_sequence != shape.sequence:
+        raise ValueError(f"field '{item.name}' must be a {shape.describe()}, it is "
+                         f"{_describe_field(item)}")
+    if shape.primitives:
+        if not item.type.is_primitive or item.type.name not in shape.primitives:
+            raise ValueError(f"field '{item.name}' must be a {shape.describe()}, it is "
+                             f"{_describe_field(item)}")
+        return
+    if not item.type.is_message:
+        raise ValueError(f"field '{item.name}' must be a {shape.describe()}, it is "
+                         f"{_describe_field(item)}")
+    nested = table[item.type.ros_name()]
+    for name, member_shape in shape.members:
+        member = next((f for f in nested.fields if f.name == name), None)
+        if member is None:
+            raise ValueError(f"field '{item.name}' ({nested.ros_type}) lacks member '{name}' "
+                             f"({member_shape.describe()})")
+        check_shape(member, member_shape, table)
+
+
+def _describe_field(item: Field) -> str:
+    name = item.type.ros_name()
+    if item.container == ARRAY:
+        return f"{name}[{item.size}]"
+    if item.container in (SEQUENCE, BOUNDED_SEQUENCE):
+        return f"sequence of {name}"
+    return name

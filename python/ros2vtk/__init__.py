@@ -1,0 +1,56 @@
+"""ros2vtk: ROS 2 publishers, subscribers and nodes as VTK objects, without a ROS install.
+
+    import ros2vtk
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('String', '/pub')
+    pub.Publish('Hello world.')
+    logic.Spin()
+
+Every VTK-wrapped extension module in this package (the runtime's ``ros2vtkScene`` and any
+generated node module built next to it) is imported here and its ``vtk*`` classes are
+re-exported, so ``ros2vtk.vtkROS2Logic`` and the generated ``ros2vtk.vtkROS2PublisherStringNode``
+are reached the same way. Importing a generated module also registers its node classes, which is
+what makes ``CreateAndAddPublisherNode('String', ...)`` find them.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+from types import ModuleType
+from typing import Dict, List
+
+# The runtime's module first: generated modules depend on it.
+_CORE_MODULE = 'ros2vtkScene'
+
+
+def _extension_module_names() -> List[str]:
+    """Names of the compiled modules of this package, core first, the rest sorted."""
+    names = sorted(info.name for info in pkgutil.iter_modules(__path__)
+                   if info.name.startswith('ros2vtk') and not info.ispkg)
+    if _CORE_MODULE in names:
+        names.remove(_CORE_MODULE)
+        names.insert(0, _CORE_MODULE)
+    return names
+
+
+def _import_extension_modules() -> Dict[str, ModuleType]:
+    modules: Dict[str, ModuleType] = {}
+    for name in _extension_module_names():
+        modules[name] = importlib.import_module(f'{__name__}.{name}')
+    if _CORE_MODULE not in modules:
+        raise ImportError(f'ros2vtk: the wrapped module {_CORE_MODULE} is missing from {__path__}; '
+                          'build the project with ROS2VTK_WRAP_PYTHON=ON')
+    return modules
+
+
+extension_modules: Dict[str, ModuleType] = _import_extension_modules()
+
+__all__: List[str] = []
+for _module in extension_modules.values():
+    for _name in dir(_module):
+        if _name.startswith('vtk'):
+            globals()[_name] = getattr(_module, _name)
+            __all__.append(_name)
+del _module, _name

@@ -1,0 +1,31 @@
+// ros2vtk — header stamps for publishers.
+//
+// DESIGN.md: broadcast transforms (and anything else we publish with a header) carry the current
+// time, not zero. builtin_interfaces/Time is int32 sec + uint32 nanosec since the Unix epoch.
+#ifndef ros2vtk_convert_Stamp_hpp
+#define ros2vtk_convert_Stamp_hpp
+
+#include <chrono>
+#include <cstdint>
+
+namespace ros2vtk {
+namespace convert {
+
+/// builtin_interfaces/Time.
+struct Stamp
+{
+  int32_t sec = 0;
+  uint32_t nanosec = 0; ///< always < 1e9
+};
+
+/// The system clock now (what rclcpp's default ROS clock gives when sim time is off).
+Stamp now_stamp();
+
+/// A system-clock time point as a stamp; times before the epoch or after 2038 (int32 seconds)
+/// are clamped to the representable range.
+Stamp to_stamp(std::chrono::system_clock::time_point time);
+
+} // namespace convert
+} // namespace ros2vtk
+
+#endif

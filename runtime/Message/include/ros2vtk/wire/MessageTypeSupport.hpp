@@ -1,0 +1,134 @@
+// ros2vtk — the seam between generated message code and the hand-written runtime.
+//
+// The generator emits, for every message type, one constant MessageTypeSupport table (names,
+// type hash, function pointers, field descriptions). The runtime only ever consumes these
+// tables, so it never names a message type (the rosidl_typesupport_fastrtps / rmw_fastrtps
+// split). Field descriptions (introspection) drive YAML output, generic nodes and Python field
+// access without per-type code.
+#ifndef ros2vtk_wire_MessageTypeSupport_hpp
+#define ros2vtk_wire_MessageTypeSupport_hpp
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ros2vtk {
+namespace wire {
+
+class CdrReader;
+class CdrWriter;
+struct MessageTypeSupport;
+
+/// The element type of a field, as in the .msg grammar (`char` is uint8, `byte` an octet).
+enum class FieldType : uint8_t
+{
+  Bool,
+  Byte,
+  Char,
+  Int8,
+  UInt8,
+  Int16,
+  UInt16,
+  Int32,
+  UInt32,
+  Int64,
+  UInt64,
+  Float32,
+  Float64,
+  String,
+  WString,
+  Message
+};
+
+/// How many elements a field holds: one, a fixed array T[N], T[<=N] or T[].
+enum class Container : uint8_t
+{
+  None,
+  Array,
+  BoundedSequence,
+  Sequence
+};
+
+/// One member of a message struct. Container access goes through functions because the
+/// element storage differs (std::array, std::vector, std::vector<bool>).
+struct FieldInfo
+{
+  const char* name;
+  FieldType type;
+  Container container;
+  uint32_t array_size;   ///< N of T[N] or T[<=N]; 0 otherwise
+  uint32_t string_bound; ///< N of string<=N; 0 when unbounded
+  size_t offset;         ///< offsetof(struct, member)
+  const MessageTypeSupport* (*nested)(); ///< element type when type == Message, else nullptr
+
+  // Container access, all nullptr when container == None. `field` points at the member.
+  size_t (*size)(const void* field);
+  void* (*element)(void* field, size_t index); ///< nullptr for bool sequences (see get_bool)
+  bool (*resize)(void* field, size_t count);   ///< false for fixed arrays of another size
+  bool (*get_bool)(const void* field, size_t index);
+  void (*set_bool)(void* field, size_t index, bool value);
+};
+
+/// A named constant of a message (`uint8 BOOL=1`), kept for YAML/Python display.
+struct ConstantInfo
+{
+  const char* name;
+  FieldType type;
+  const char* value; ///< as written in the spec, normalised (strings unquoted)
+};
+
+/// Everything the runtime knows about one message type.
+struct MessageTypeSupport
+{
+  const char* ros_type;      ///< "std_msgs/msg/String"
+  const char* dds_type_name; ///< "std_msgs::msg::dds_::String_"
+  const char* type_hash;     ///< "RIHS01_<64 hex>" (USER_DATA typehash), as rosidl computes it
+  size_t struct_size;
+  uint32_t field_count;
+  const FieldInfo* fields;
+  uint32_t constant_count;
+  const ConstantInfo* constants;
+
+  void* (*create)();                        ///< new default-initialised message
+  void (*destroy)(void* message);           ///< deletes what create() returned
+  void (*copy)(const void* from, void* to); ///< assignment
+  bool (*equal)(const void* a, const void* b);
+  size_t (*serialized_size)(const void* message); ///< payload size, header included
+  void (*serialize)(const void* message, CdrWriter& writer);
+  bool (*deserialize)(void* message, CdrReader& reader); ///< false on hostile bytes
+};
+
+/// A service: its request and response messages (`<Srv>_Request` / `<Srv>_Response`).
+struct ServiceTypeSupport
+{
+  const char* ros_type; ///< "rcl_interfaces/srv/GetParameters"
+  const MessageTypeSupport* (*request)();
+  const MessageTypeSupport* (*response)();
+};
+
+/// Process-wide registry filled by the generated libraries when they load, so the runtime
+/// and the Python layer can find any generated type by its ROS name.
+void register_message_type(const MessageTypeSupport* type);
+void register_service_type(const ServiceTypeSupport* type);
+
+/// Accepts "pkg/msg/Type" and "pkg/Type". nullptr when unknown.
+const MessageTypeSupport* find_message_type(const std::string& ros_type);
+const ServiceTypeSupport* find_service_type(const std::string& ros_type);
+
+/// Sorted ROS names of every registered message / service type.
+std::vector<std::string> registered_message_types();
+std::vector<std::string> registered_service_types();
+
+/// Serializes into `buffer` (cleared first); the result is a complete payload.
+void serialize_message(const MessageTypeSupport& type, const void* message,
+                       std::vector<uint8_t>& buffer);
+
+/// Deserializes a complete payload; on failure returns false and sets `error`.
+bool deserialize_message(const MessageTypeSupport& type, const uint8_t* data, size_t size,
+                         void* message, std::string* error);
+
+} // namespace wire
+} // namespace ros2vtk
+
+#endif

@@ -1,0 +1,116 @@
+// ros2vtk — registry of generated type supports and whole-payload helpers.
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+
+#include "ros2vtk/wire/CdrReader.hpp"
+#include "ros2vtk/wire/CdrWriter.hpp"
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+
+namespace ros2vtk {
+namespace wire {
+namespace {
+
+struct Registry
+{
+  std::mutex mutex;
+  std::map<std::string, const MessageTypeSupport*> messages;
+  std::map<std::string, const ServiceTypeSupport*> services;
+};
+
+Registry& registry()
+{
+  static Registry instance;
+  return instance;
+}
+
+// "pkg/Type" -> "pkg/<kind>/Type"; "pkg/msg/Type" stays.
+std::string full_name(const std::string& name, const char* kind)
+{
+  const size_t first = name.find('/');
+  if (first == std::string::npos || name.find('/', first + 1) != std::string::npos)
+  {
+    return name;
+  }
+  return name.substr(0, first) + "/" + kind + name.substr(first);
+}
+
+} // namespace
+
+void register_message_type(const MessageTypeSupport* type)
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  r.messages[type->ros_type] = type;
+}
+
+void register_service_type(const ServiceTypeSupport* type)
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  r.services[type->ros_type] = type;
+}
+
+const MessageTypeSupport* find_message_type(const std::string& ros_type)
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  auto it = r.messages.find(full_name(ros_type, "msg"));
+  return it == r.messages.end() ? nullptr : it->second;
+}
+
+const ServiceTypeSupport* find_service_type(const std::string& ros_type)
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  auto it = r.services.find(full_name(ros_type, "srv"));
+  return it == r.services.end() ? nullptr : it->second;
+}
+
+std::vector<std::string> registered_message_types()
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  std::vector<std::string> names;
+  for (const auto& entry : r.messages)
+  {
+    names.push_back(entry.first);
+  }
+  return names;
+}
+
+std::vector<std::string> registered_service_types()
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  std::vector<std::string> names;
+  for (const auto& entry : r.services)
+  {
+    names.push_back(entry.first);
+  }
+  return names;
+}
+
+void serialize_message(const MessageTypeSupport& type, const void* message,
+                       std::vector<uint8_t>& buffer)
+{
+  CdrWriter writer(buffer);
+  writer.reserve(type.serialized_size(message));
+  type.serialize(message, writer);
+}
+
+bool deserialize_message(const MessageTypeSupport& type, const uint8_t* data, size_t size,
+                         void* message, std::string* error)
+{
+  CdrReader reader(data, size);
+  const bool ok = reader.ok() && type.deserialize(message, reader) && reader.ok();
+  if (!ok && error)
+  {
+    *error = reader.error().empty() ? std::string("rejected by the deserializer") : reader.error();
+  }
+  return ok;
+}
+
+} // namespace wire
+} // namespace ros2vtk

@@ -1,0 +1,146 @@
+// ros2vtk — a robot's visuals from its URDF, as VTK geometry: every <visual> of every link,
+// meshes (through ResourceResolver + MeshLoader, with the visual's scale) and primitives, the
+// visual origins and the colours. Plain C++ on urdfdom + VTK (not wrapped); the scene's robot
+// node calls it and puts each visual under the link's transform node.
+//
+// Units: everything stays in metres here (URDF units); the scene applies the m -> mm policy.
+#ifndef ros2vtk_robot_RobotLoader_hpp
+#define ros2vtk_robot_RobotLoader_hpp
+
+#include "ros2vtk/robot/MeshLoader.hpp"
+#include "ros2vtk/robot/ResourceResolver.hpp"
+
+#include <vtkMatrix4x4.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ros2vtk {
+namespace robot {
+
+/// What a visual's geometry came from. Placeholder: the mesh could not be loaded (see the
+/// link's warnings) and a 1 cm cube stands in for it.
+enum class VisualKind { Mesh, Box, Cylinder, Sphere, Placeholder };
+
+/// One <visual> of a link.
+struct LinkVisual
+{
+  std::string name; ///< the <visual name="…"> attribute (often empty)
+  VisualKind kind = VisualKind::Placeholder;
+  /// Geometry in the visual's own frame, scale applied, metres. Shared between visuals that use
+  /// the same mesh file and scale (the loader's cache): treat it as read-only.
+  vtkSmartPointer<vtkPolyData> geometry;
+  /// Pose of the visual in its link's frame (the <origin>), metres.
+  vtkSmartPointer<vtkMatrix4x4> origin;
+
+  std::string mesh_uri;  ///< as written in the URDF (meshes and placeholders)
+  std::string mesh_path; ///< the file it resolved to ("" when it did not)
+  std::array<double, 3> mesh_scale{{1.0, 1.0, 1.0}};
+
+  /// The URDF material: its name (may be empty), and its rgba when it gives one (materials named
+  /// at robot level are looked up).
+  std::string material_name;
+  bool has_material_color = false;
+  std::array<double, 4> material_color{{1.0, 1.0, 1.0, 1.0}};
+  std::string material_texture; ///< <texture filename="…">, recorded, not loaded
+
+  /// Colours from the mesh file itself (Collada/OBJ materials): one colour, or per-point colours
+  /// in geometry's kVertexColorArray; and the texture files its materials name.
+  bool has_mesh_color = false;
+  std::array<double, 4> mesh_color{{1.0, 1.0, 1.0, 1.0}};
+  bool has_vertex_colors = false;
+  std::vector<std::string> mesh_textures;
+
+  /// The colour to show: the URDF material's when it has one (RViz's rule), else the mesh
+  /// file's single colour, else a neutral grey. Per-point colours, when present, are meant to
+  /// win over this unless the URDF gave a colour.
+  std::array<double, 4> display_color() const;
+};
+
+/// All visuals of one link, in URDF order, and what went wrong while loading them.
+struct LinkVisuals
+{
+  std::string link;
+  std::vector<LinkVisual> visuals;
+  std::vector<std::string> warnings; ///< "link 'x': could not load mesh 'uri': why"
+};
+
+/// A robot's visuals. Links come parents first (depth-first from the root), so the order is
+/// stable and follows the tree.
+struct RobotVisuals
+{
+  std::string robot_name;
+  std::string root_link;
+  std::vector<LinkVisuals> links;
+  /// What urdfdom complained about while still accepting the URDF (it drops a visual whose
+  /// geometry does not parse, for instance); the affected links also carry a warning.
+  std::vector<std::string> urdf_warnings;
+
+  const LinkVisuals* link(const std::string& name) const;
+  size_t visual_count() const;
+  /// Visuals whose mesh could not be loaded (each also has a warning).
+  size_t placeholder_count() const;
+  /// urdf_warnings, then every link's warnings in link order.
+  std::vector<std::string> warnings() const;
+};
+
+/// Options of a load.
+struct RobotLoadOptions
+{
+  /// Folder for relative mesh paths. load_file() sets it to the URDF file's folder when empty.
+  std::string base_folder;
+  /// Side of the placeholder cube for meshes that do not load (metres).
+  double placeholder_size = 0.01;
+};
+
+/// Builds RobotVisuals from URDF XML. Meshes are cached by resolved file, modification time and
+/// scale, so loading the same robot (or a second robot sharing meshes) again reads no mesh file.
+/// Never throws. Not thread-safe (one loader per thread).
+class RobotLoader
+{
+public:
+  /// Uses ResourceResolver::from_environment() for package lookups.
+  RobotLoader();
+  explicit RobotLoader(ResourceResolver resolver);
+
+  ResourceResolver& resolver() { return resolver_; }
+  const ResourceResolver& resolver() const { return resolver_; }
+
+  /// Parses `urdf_xml` and loads every visual. Returns false (and a message naming the problem,
+  /// from urdfdom's own diagnostics) only when the URDF itself is broken; a mesh that does not
+  /// load is a warning on its link and a placeholder.
+  bool load_xml(const std::string& urdf_xml, const RobotLoadOptions& options, RobotVisuals* robot,
+                std::string* error);
+  /// Reads the URDF file, then load_xml() with relative paths taken from its folder.
+  bool load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
+                 RobotLoadOptions options = RobotLoadOptions());
+
+  /// Mesh files read (not served from the cache) since construction; for tests and benchmarks.
+  size_t mesh_files_read() const { return mesh_files_read_; }
+  void clear_cache() { cache_.clear(); }
+
+private:
+  struct CachedMesh
+  {
+    MeshData mesh; ///< geometry already scaled
+  };
+  bool load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale, const std::string& base_folder,
+                        LinkVisual* visual, std::string* why);
+
+  ResourceResolver resolver_;
+  MeshLoader mesh_loader_;
+  std::map<std::string, CachedMesh> cache_;
+  size_t mesh_files_read_ = 0;
+};
+
+/// "link 'x': could not load mesh 'uri': why" — the one wording of a mesh warning.
+std::string mesh_warning(const std::string& link, const std::string& uri, const std::string& why);
+
+} // namespace robot
+} // namespace ros2vtk
+
+#endif

@@ -1,0 +1,486 @@
+// ros2vtk — mesh files into vtkPolyData (VTK's reader for STL, assimp for the rest).
+//
+// Why PLY goes through assimp and not VTK 9.1: vtkPLYReader crashes on malformed files (a null
+// dereference in vtkPLY::find_element on a bad header, a free() of a non-heap address in
+// RequestData on a truncated body; both found by mutating our test PLY under AddressSanitizer).
+// Why OBJ goes through assimp and not VTK 9.1: vtkOBJReader reads no .mtl, and the MaterialNames
+// it reports are not in the order of its MaterialIds (two_colours.obj comes out with the wrong
+// colours); vtkOBJImporter needs a render window, and the parser behind it
+// (vtkOBJPolyDataProcessor) crashed in our probe when a `usemtl` named a material the .mtl lacks.
+// assimp reads OBJ + MTL as RViz 2 does (RViz loads every mesh through assimp).
+#include "ros2vtk/robot/MeshLoader.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkExecutive.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSTLReader.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace ros2vtk {
+namespace robot {
+namespace {
+
+std::string lower_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Collects what a VTK reader reports through vtkErrorMacro/vtkWarningMacro, so the messages go
+// into our error string instead of VTK's output window (an observer on ErrorEvent replaces the
+// default printing).
+class VtkMessageCollector : public vtkCommand
+{
+public:
+  static VtkMessageCollector* New() { return new VtkMessageCollector; }
+  void Execute(vtkObject*, unsigned long event, void* call_data) override
+  {
+    const char* text = static_cast<const char*>(call_data);
+    std::string message = text ? text : "";
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+      message.pop_back();
+    (event == vtkCommand::ErrorEvent ? errors : warnings).push_back(message);
+  }
+  void watch(vtkObject* object)
+  {
+    object->AddObserver(vtkCommand::ErrorEvent, this);
+    object->AddObserver(vtkCommand::WarningEvent, this);
+  }
+  std::string summary() const
+  {
+    std::string out;
+    for (const auto& message : errors)
+      out += (out.empty() ? "" : "; ") + message;
+    return out;
+  }
+  std::vector<std::string> errors;
+  std::vector<std::string> warnings;
+};
+
+unsigned char to_byte(double value)
+{
+  return static_cast<unsigned char>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0));
+}
+
+vtkSmartPointer<vtkUnsignedCharArray> make_color_array(vtkIdType points)
+{
+  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  colors->SetName(kVertexColorArray);
+  colors->SetNumberOfComponents(4);
+  colors->SetNumberOfTuples(points);
+  return colors;
+}
+
+void fill_color(vtkUnsignedCharArray* colors, vtkIdType from, vtkIdType to, const std::array<double, 4>& rgba)
+{
+  for (vtkIdType i = from; i < to; ++i)
+    for (int c = 0; c < 4; ++c)
+      colors->SetTypedComponent(i, c, to_byte(rgba[static_cast<size_t>(c)]));
+}
+
+// Triangles only, no stray vertices or lines: what the scene renders and the tests measure.
+vtkSmartPointer<vtkPolyData> triangulated(vtkPolyData* input)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(input);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
+  return out;
+}
+
+bool finish(vtkPolyData* polydata, const std::string& path, MeshData* mesh, std::string* error)
+{
+  vtkSmartPointer<vtkPolyData> result = triangulated(polydata);
+  if (result->GetNumberOfPoints() == 0 || result->GetNumberOfPolys() == 0)
+  {
+    if (error)
+      *error = "mesh file '" + path + "' holds no triangles";
+    return false;
+  }
+  if (mesh->has_vertex_colors)
+    result->GetPointData()->SetActiveScalars(kVertexColorArray);
+  mesh->polydata = result;
+  return true;
+}
+
+template <typename Reader>
+bool read_with_vtk(const std::string& path, const char* format, MeshData* mesh, std::string* error,
+                   vtkSmartPointer<vtkPolyData>* output)
+{
+  vtkNew<Reader> reader;
+  vtkNew<VtkMessageCollector> messages;
+  messages->watch(reader);
+  if (reader->GetExecutive())
+    messages->watch(reader->GetExecutive());
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (!messages->errors.empty() || reader->GetErrorCode() != 0)
+  {
+    if (error)
+      *error = std::string("VTK's ") + format + " reader failed on '" + path + "'" +
+               (messages->errors.empty() ? std::string() : ": " + messages->summary());
+    return false;
+  }
+  *output = reader->GetOutput();
+  (void)mesh;
+  return true;
+}
+
+// vtkSTLReader reads a truncated binary STL silently (it stops at the end of the file), so the
+// header's triangle count is checked against the file size here: 80-byte header, uint32 count,
+// 50 bytes per triangle. Files starting with "solid" may be ASCII and are left to VTK.
+bool check_binary_stl_size(const std::string& path, std::string* error)
+{
+  std::ifstream in(path, std::ios::binary);
+  char head[84] = {};
+  in.read(head, sizeof(head));
+  const std::streamsize got = in.gcount();
+  std::string start(head, static_cast<size_t>(std::min<std::streamsize>(got, 80)));
+  start.erase(0, start.find_first_not_of(" \t\r\n"));
+  if (start.compare(0, 5, "solid") == 0)
+    return true;
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (got < 84 || ec)
+  {
+    if (error)
+      *error = "STL file '" + path + "' is too short for a binary STL (" + std::to_string(got) +
+               " bytes) and is not ASCII STL";
+    return false;
+  }
+  std::uint32_t count = 0;
+  std::memcpy(&count, head + 80, 4);
+  const std::uintmax_t needed = 84u + 50u * static_cast<std::uintmax_t>(count);
+  if (size < needed)
+  {
+    if (error)
+      *error = "STL file '" + path + "' is truncated: its header announces " + std::to_string(count) +
+               " triangles (" + std::to_string(needed) + " bytes) but the file has " + std::to_string(size) + " bytes";
+    return false;
+  }
+  return true;
+}
+
+bool load_stl(const std::string& path, MeshData* mesh, std::string* error)
+{
+  if (!check_binary_stl_size(path, error))
+    return false;
+  vtkSmartPointer<vtkPolyData> output;
+  if (!read_with_vtk<vtkSTLReader>(path, "STL", mesh, error, &output))
+    return false;
+  return finish(output, path, mesh, error);
+}
+
+// assimp 5.2's PLY loader never returns on a header cut short (found by mutating our test PLY),
+// so the header is checked against the PLY header grammar before assimp reads the file: "ply",
+// a format line, elements with counts, typed properties, printable ASCII only, up to
+// "end_header", a vertex element with x, y, z and faces through a vertex_indices list.
+bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* error);
+
+bool is_ply_type(const std::string& word)
+{
+  static const std::set<std::string> types{"char",  "uchar",  "short",   "ushort", "int",    "uint",
+                                           "float", "double", "int8",    "uint8",  "int16",  "uint16",
+                                           "int32", "uint32", "float32", "float64"};
+  return types.count(word) > 0;
+}
+
+bool check_ply_header(const std::string& path, std::string* error)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  auto fail = [&](const std::string& why) {
+    if (error)
+      *error = "PLY file '" + path + "' has a malformed header: " + why;
+    return false;
+  };
+  if (!std::getline(in, line) || (line != "ply" && line != "ply\r"))
+    return fail("the first line is not 'ply'");
+  bool has_format = false, has_vertex = false, in_element = false;
+  std::string element;               // the element whose properties follow
+  std::set<std::string> vertex_axes; // x, y, z seen on "vertex"
+  bool face_needs_indices = false;   // a "face" element without its vertex_indices list yet
+  for (int number = 2; std::getline(in, line); ++number)
+  {
+    const std::string at = "line " + std::to_string(number) + ": ";
+    if (number > 10000)
+      return fail("no end_header in the first 10000 lines");
+    if (!line.empty() && line.back() == '\r')
+      line.pop_back();
+    for (unsigned char c : line)
+      if ((c < 0x20 && c != '\t') || c > 0x7e)
+        return fail(at + "a byte that is not printable ASCII");
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    std::vector<std::string> rest;
+    for (std::string word; words >> word;)
+      rest.push_back(word);
+    if (keyword == "end_header")
+    {
+      if (!has_format)
+        return fail("no 'format' line");
+      if (!has_vertex || vertex_axes.size() != 3)
+        return fail("no 'element vertex' with properties x, y and z");
+      if (face_needs_indices)
+        return fail("the 'face' element has no 'property list <type> <type> vertex_indices'");
+      return true;
+    }
+    if (keyword == "format")
+    {
+      if (rest.size() != 2 || (rest[0] != "ascii" && rest[0] != "binary_little_endian" && rest[0] != "binary_big_endian"))
+        return fail(at + "expected 'format ascii|binary_little_endian|binary_big_endian <version>'");
+      has_format = true;
+    }
+    else if (keyword == "element")
+    {
+      if (rest.size() != 2 || rest[1].find_first_not_of("0123456789") != std::string::npos || rest[1].size() > 12)
+        return fail(at + "expected 'element <name> <count>'");
+      if (face_needs_indices)
+        return fail(at + "the 'face' element has no 'property list <type> <type> vertex_indices'");
+      element = rest[0];
+      has_vertex = has_vertex || element == "vertex";
+      face_needs_indices = element == "face";
+      in_element = true;
+    }
+    else if (keyword == "property")
+    {
+      const bool scalar = rest.size() == 2 && is_ply_type(rest[0]);
+      const bool list = rest.size() == 4 && rest[0] == "list" && is_ply_type(rest[1]) && is_ply_type(rest[2]);
+      if (!in_element || !(scalar || list))
+        return fail(at + "expected 'property <type> <name>' or 'property list <type> <type> <name>' after an element");
+      // Faces are read through a list named vertex_indices (or vertex_index).
+      if (element == "vertex" && scalar && (rest[1] == "x" || rest[1] == "y" || rest[1] == "z"))
+        vertex_axes.insert(rest[1]);
+      if (element == "face" && list && (rest[3] == "vertex_indices" || rest[3] == "vertex_index"))
+        face_needs_indices = false;
+    }
+    else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty())
+    {
+      return fail(at + "unknown keyword '" + keyword + "'");
+    }
+  }
+  return fail("no end_header");
+}
+
+// ---- assimp -------------------------------------------------------------------------------
+
+bool material_diffuse(const aiScene* scene, unsigned index, std::array<double, 4>* rgba, std::vector<std::string>* textures)
+{
+  if (index >= scene->mNumMaterials || !scene->mMaterials[index])
+    return false;
+  const aiMaterial* material = scene->mMaterials[index];
+  aiString name;
+  // assimp invents "DefaultMaterial" for meshes without one: that is not a colour of the file.
+  if (material->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME)
+    return false;
+  aiString texture;
+  if (material->GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS && textures &&
+      std::find(textures->begin(), textures->end(), texture.C_Str()) == textures->end())
+    textures->push_back(texture.C_Str());
+  aiColor4D diffuse;
+  if (material->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) != AI_SUCCESS)
+    return false;
+  float opacity = 1.0f;
+  if (material->Get(AI_MATKEY_OPACITY, opacity) != AI_SUCCESS)
+    opacity = 1.0f;
+  *rgba = {{diffuse.r, diffuse.g, diffuse.b, std::clamp(static_cast<double>(diffuse.a * opacity), 0.0, 1.0)}};
+  return true;
+}
+
+struct AssimpCollector
+{
+  const aiScene* scene = nullptr;
+  vtkSmartPointer<vtkPoints> points = vtkSmartPointer<vtkPoints>::New();
+  vtkSmartPointer<vtkCellArray> triangles = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<std::array<double, 4>> point_colors; ///< one per point
+  std::vector<bool> point_colored;
+  std::vector<std::string> textures;
+  int depth_guard = 0;
+
+  void add_node(const aiNode* node, const aiMatrix4x4& parent)
+  {
+    // A malformed file could describe a very deep (or, through assimp's bugs, cyclic) tree.
+    if (!node || ++depth_guard > 100000)
+      return;
+    const aiMatrix4x4 transform = parent * node->mTransformation;
+    for (unsigned i = 0; i < node->mNumMeshes; ++i)
+      if (node->mMeshes[i] < scene->mNumMeshes)
+        add_mesh(scene->mMeshes[node->mMeshes[i]], transform);
+    for (unsigned c = 0; c < node->mNumChildren; ++c)
+      add_node(node->mChildren[c], transform);
+  }
+
+  void add_mesh(const aiMesh* mesh, const aiMatrix4x4& transform)
+  {
+    if (!mesh || !mesh->mVertices)
+      return;
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+    {
+      const aiVector3D p = transform * mesh->mVertices[v];
+      points->InsertNextPoint(p.x, p.y, p.z);
+    }
+    std::array<double, 4> rgba{{1.0, 1.0, 1.0, 1.0}};
+    const bool has_material_color = material_diffuse(scene, mesh->mMaterialIndex, &rgba, &textures);
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+    {
+      if (mesh->HasVertexColors(0))
+      {
+        const aiColor4D& c = mesh->mColors[0][v];
+        point_colors.push_back({{c.r, c.g, c.b, c.a}});
+        point_colored.push_back(true);
+      }
+      else
+      {
+        point_colors.push_back(rgba);
+        point_colored.push_back(has_material_color);
+      }
+    }
+    // Polygons go in as they are and vtkTriangleFilter triangulates them (finish()): assimp
+    // 5.2's own aiProcess_Triangulate aborts the process on some malformed files (an ai_assert
+    // in TriangulateProcess.cpp, met with a truncated PLY).
+    std::vector<vtkIdType> ids;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+    {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices < 3 || !face.mIndices)
+        continue; // points and lines (removed by SortByPType already) or a broken face
+      ids.clear();
+      bool valid = true;
+      for (unsigned k = 0; k < face.mNumIndices && valid; ++k)
+      {
+        valid = face.mIndices[k] < mesh->mNumVertices;
+        ids.push_back(first + static_cast<vtkIdType>(face.mIndices[k]));
+      }
+      if (valid)
+        triangles->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    }
+  }
+};
+
+bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* error)
+{
+  Assimp::Importer importer;
+  // A Collada file's <up_axis> is not applied: ROS tools (RViz, DART, Gazebo) take the authored
+  // coordinates as the link frame. Its <unit meter="…"> is applied (assimp scales the root node),
+  // so a DAE in centimetres comes out in metres like RViz shows it.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene =
+    importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  if (!scene || !scene->mRootNode)
+  {
+    if (error)
+      *error = "assimp could not read '" + path + "': " + importer.GetErrorString();
+    return false;
+  }
+  AssimpCollector collector;
+  collector.scene = scene;
+  collector.add_node(scene->mRootNode, aiMatrix4x4());
+  mesh->textures = collector.textures;
+
+  vtkNew<vtkPolyData> polydata;
+  polydata->SetPoints(collector.points);
+  polydata->SetPolys(collector.triangles);
+  const auto& colors = collector.point_colors;
+  std::set<std::array<double, 4>> distinct(colors.begin(), colors.end());
+  const bool all_colored = std::all_of(collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
+  const bool any_colored = std::any_of(collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
+  if (any_colored && all_colored && distinct.size() == 1)
+  {
+    mesh->has_color = true;
+    mesh->color = *distinct.begin();
+  }
+  else if (any_colored)
+  {
+    auto array = make_color_array(static_cast<vtkIdType>(colors.size()));
+    for (size_t i = 0; i < colors.size(); ++i)
+      fill_color(array, static_cast<vtkIdType>(i), static_cast<vtkIdType>(i + 1), colors[i]);
+    polydata->GetPointData()->AddArray(array);
+    mesh->has_vertex_colors = true;
+  }
+  return finish(polydata, path, mesh, error);
+}
+
+} // namespace
+
+std::vector<std::string> MeshLoader::vtk_extensions() { return {".stl"}; }
+
+bool MeshLoader::assimp_reads(const std::string& extension)
+{
+  Assimp::Importer importer;
+  return importer.IsExtensionSupported(extension);
+}
+
+bool MeshLoader::load(const std::string& path, MeshData* mesh, std::string* error) const
+{
+  if (!mesh)
+    return false;
+  *mesh = MeshData();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+  {
+    if (error)
+      *error = "mesh file '" + path + "' does not exist or is not a regular file";
+    return false;
+  }
+  const std::string extension = lower_extension(path);
+  try
+  {
+    if (extension == ".stl")
+      return load_stl(path, mesh, error);
+    if (extension == ".ply")
+      return check_ply_header(path, error) && load_with_assimp(path, mesh, error);
+    if (!assimp_reads(extension))
+    {
+      if (error)
+        *error = "mesh file '" + path + "': the format '" + extension +
+                 "' is not supported (STL through VTK; PLY, OBJ, Collada .dae, glTF/GLB and the other formats "
+                 "assimp reads)";
+      return false;
+    }
+    return load_with_assimp(path, mesh, error);
+  }
+  catch (const std::exception& exception)
+  {
+    if (error)
+      *error = "reading mesh file '" + path + "' failed: " + exception.what();
+  }
+  catch (...)
+  {
+    if (error)
+      *error = "reading mesh file '" + path + "' failed with an unknown exception";
+  }
+  *mesh = MeshData();
+  return false;
+}
+
+} // namespace robot
+} // namespace ros2vtk

@@ -1,0 +1,423 @@
+// ros2vtk — URDF visuals into VTK geometry (every visual of every link, cached meshes).
+#include "ros2vtk/robot/RobotLoader.hpp"
+
+#include "UrdfDiagnostics.hpp"
+#include "UrdfMaterials.hpp"
+
+#include <urdf_model/model.h>
+
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
+#include <vtkNew.h>
+#include <vtkReverseSense.h>
+#include <vtkSphereSource.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+
+namespace ros2vtk {
+namespace robot {
+namespace {
+
+// Enough facets that a 6 cm sphere or a cylinder looks round in the viewer, few enough that a
+// robot of primitives stays cheap.
+constexpr int kRoundResolution = 32;
+
+vtkSmartPointer<vtkPolyData> output_of(vtkPolyDataAlgorithm* algorithm)
+{
+  algorithm->Update();
+  vtkSmartPointer<vtkPolyData> out = algorithm->GetOutput();
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> make_box(double x, double y, double z)
+{
+  vtkNew<vtkCubeSource> box;
+  box->SetXLength(x);
+  box->SetYLength(y);
+  box->SetZLength(z);
+  return output_of(box);
+}
+
+// URDF cylinders lie along z and are centred on the origin; vtkCylinderSource's lie along y.
+vtkSmartPointer<vtkPolyData> make_cylinder(double radius, double length)
+{
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetRadius(radius);
+  cylinder->SetHeight(length);
+  cylinder->SetResolution(kRoundResolution);
+  cylinder->CappingOn();
+  vtkNew<vtkTransform> y_to_z;
+  y_to_z->RotateX(90.0);
+  vtkNew<vtkTransformPolyDataFilter> rotate;
+  rotate->SetInputConnection(cylinder->GetOutputPort());
+  rotate->SetTransform(y_to_z);
+  return output_of(rotate);
+}
+
+vtkSmartPointer<vtkPolyData> make_sphere(double radius)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(kRoundResolution);
+  sphere->SetPhiResolution(kRoundResolution / 2);
+  return output_of(sphere);
+}
+
+vtkSmartPointer<vtkPolyData> scaled(vtkPolyData* input, const std::array<double, 3>& scale)
+{
+  vtkNew<vtkTransform> transform;
+  transform->Scale(scale[0], scale[1], scale[2]);
+  vtkNew<vtkTransformPolyDataFilter> filter;
+  filter->SetInputData(input);
+  filter->SetTransform(transform);
+  filter->Update();
+  vtkSmartPointer<vtkPolyData> out = filter->GetOutput();
+  // A mirroring scale (an odd number of negative factors) turns the triangles inside out;
+  // reversing their order keeps the outside outside.
+  if (scale[0] * scale[1] * scale[2] < 0)
+  {
+    vtkNew<vtkReverseSense> reverse;
+    reverse->SetInputData(out);
+    reverse->ReverseCellsOn();
+    reverse->ReverseNormalsOff();
+    reverse->Update();
+    out = reverse->GetOutput();
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkMatrix4x4> to_matrix(const urdf::Pose& pose)
+{
+  double x = pose.rotation.x, y = pose.rotation.y, z = pose.rotation.z, w = pose.rotation.w;
+  const double norm = std::sqrt(x * x + y * y + z * z + w * w);
+  if (norm > 0)
+  {
+    x /= norm, y /= norm, z /= norm, w /= norm;
+  }
+  else
+  {
+    x = y = z = 0, w = 1;
+  }
+  const double rotation[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                                 {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                                 {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      matrix->SetElement(r, c, rotation[r][c]);
+  matrix->SetElement(0, 3, pose.position.x);
+  matrix->SetElement(1, 3, pose.position.y);
+  matrix->SetElement(2, 3, pose.position.z);
+  return matrix;
+}
+
+std::string cache_key(const std::string& path, const std::array<double, 3>& scale)
+{
+  std::error_code ec;
+  const auto stamp = std::filesystem::last_write_time(path, ec);
+  char buffer[128];
+  std::snprintf(buffer, sizeof(buffer), "|%lld|%.17g,%.17g,%.17g",
+                static_cast<long long>(ec ? 0 : stamp.time_since_epoch().count()), scale[0], scale[1], scale[2]);
+  return path + buffer;
+}
+
+vtkSmartPointer<vtkPolyData> shallow_copy(vtkPolyData* source)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(source);
+  return copy;
+}
+
+std::string in_quotes(const std::string& text) { return "'" + text + "'"; }
+
+} // namespace
+
+std::string mesh_warning(const std::string& link, const std::string& uri, const std::string& why)
+{
+  // The resolver's messages start by naming the URI too; say it once.
+  const std::string repeated = "could not resolve " + in_quotes(uri) + ": ";
+  const std::string reason = why.compare(0, repeated.size(), repeated) == 0 ? why.substr(repeated.size()) : why;
+  return "link " + in_quotes(link) + ": could not load mesh " + in_quotes(uri) + ": " + reason;
+}
+
+std::array<double, 4> LinkVisual::display_color() const
+{
+  if (has_material_color)
+    return material_color;
+  if (has_mesh_color)
+    return mesh_color;
+  return {{0.7, 0.7, 0.7, 1.0}};
+}
+
+const LinkVisuals* RobotVisuals::link(const std::string& name) const
+{
+  for (const auto& entry : links)
+    if (entry.link == name)
+      return &entry;
+  return nullptr;
+}
+
+size_t RobotVisuals::visual_count() const
+{
+  size_t count = 0;
+  for (const auto& entry : links)
+    count += entry.visuals.size();
+  return count;
+}
+
+size_t RobotVisuals::placeholder_count() const
+{
+  size_t count = 0;
+  for (const auto& entry : links)
+    for (const auto& visual : entry.visuals)
+      count += visual.kind == VisualKind::Placeholder ? 1 : 0;
+  return count;
+}
+
+std::vector<std::string> RobotVisuals::warnings() const
+{
+  std::vector<std::string> all = urdf_warnings;
+  for (const auto& entry : links)
+    all.insert(all.end(), entry.warnings.begin(), entry.warnings.end());
+  return all;
+}
+
+RobotLoader::RobotLoader() : resolver_(ResourceResolver::from_environment()) {}
+
+RobotLoader::RobotLoader(ResourceResolver resolver) : resolver_(std::move(resolver)) {}
+
+bool RobotLoader::load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale,
+                                   const std::string& base_folder, LinkVisual* visual, std::string* why)
+{
+  for (double factor : scale)
+  {
+    if (!std::isfinite(factor) || factor == 0.0)
+    {
+      char text[160];
+      std::snprintf(text, sizeof(text), "the scale (%g %g %g) has a zero or non-finite factor", scale[0], scale[1],
+                    scale[2]);
+      *why = text;
+      return false;
+    }
+  }
+  const ResolvedResource resolved = resolver_.resolve(uri, base_folder);
+  if (!resolved.ok)
+  {
+    *why = resolved.error;
+    return false;
+  }
+  visual->mesh_path = resolved.path;
+  const std::string key = cache_key(resolved.path, scale);
+  auto cached = cache_.find(key);
+  if (cached == cache_.end())
+  {
+    MeshData mesh;
+    if (!mesh_loader_.load(resolved.path, &mesh, why))
+      return false;
+    ++mesh_files_read_;
+    if (scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0)
+      mesh.polydata = scaled(mesh.polydata, scale);
+    cached = cache_.emplace(key, CachedMesh{std::move(mesh)}).first;
+  }
+  const MeshData& mesh = cached->second.mesh;
+  visual->geometry = shallow_copy(mesh.polydata);
+  visual->has_mesh_color = mesh.has_color;
+  visual->mesh_color = mesh.color;
+  visual->has_vertex_colors = mesh.has_vertex_colors;
+  visual->mesh_textures = mesh.textures;
+  return true;
+}
+
+bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& options, RobotVisuals* robot,
+                           std::string* error)
+{
+  if (!robot)
+    return false;
+  *robot = RobotVisuals();
+  std::string parse_error;
+  // tinyxml2 first: for malformed XML it names the line and the problem, urdfdom only the latter.
+  UrdfMaterials materials;
+  if (urdf_xml.find_first_not_of(" \t\r\n") != std::string::npos && !materials.read(urdf_xml, &parse_error))
+  {
+    if (error)
+      *error = parse_error;
+    return false;
+  }
+  std::vector<std::string> urdf_messages;
+  urdf::ModelInterfaceSharedPtr model = parse_urdf_with_diagnostics(urdf_xml, &parse_error, &urdf_messages);
+  if (!model)
+  {
+    if (error)
+      *error = parse_error;
+    return false;
+  }
+  robot->urdf_warnings = urdf_messages;
+  robot->robot_name = model->getName();
+  urdf::LinkConstSharedPtr root = model->getRoot();
+  if (!root)
+  {
+    if (error)
+      *error = "URDF has no root link";
+    return false;
+  }
+  robot->root_link = root->name;
+
+  // Depth-first from the root, parents before children (urdfdom keeps links in a name-sorted map).
+  std::set<std::string> visited;
+  std::function<void(const urdf::LinkConstSharedPtr&)> visit = [&](const urdf::LinkConstSharedPtr& link) {
+    if (!link || !visited.insert(link->name).second)
+      return;
+    LinkVisuals entry;
+    entry.link = link->name;
+    // urdfdom drops visuals it cannot parse; then the document's visuals no longer line up with
+    // urdfdom's, and the colours come from urdfdom's own material instead.
+    const size_t in_document = materials.visual_count(link->name);
+    const bool lined_up = in_document == link->visual_array.size();
+    if (!lined_up)
+      entry.warnings.push_back("link " + in_quotes(link->name) + ": urdfdom dropped " +
+                               std::to_string(in_document - std::min(in_document, link->visual_array.size())) +
+                               " of its " + std::to_string(in_document) + " visuals" +
+                               (urdf_messages.empty() ? std::string() : " (urdfdom: " + urdf_messages.back() + ")"));
+    for (size_t index = 0; index < link->visual_array.size(); ++index)
+    {
+      const urdf::VisualSharedPtr& source = link->visual_array[index];
+      if (!source)
+        continue;
+      LinkVisual visual;
+      visual.name = source->name;
+      visual.origin = to_matrix(source->origin);
+      MaterialSpec material = materials.visual_material(link->name, index);
+      if (!lined_up)
+      {
+        material = MaterialSpec();
+        if (source->material)
+        {
+          material.name = source->material->name;
+          material.has_color = source->material->texture_filename.empty();
+          const urdf::Color& c = source->material->color;
+          material.rgba = {{c.r, c.g, c.b, c.a}};
+          material.texture = source->material->texture_filename;
+        }
+      }
+      visual.material_name = material.name;
+      visual.has_material_color = material.has_color;
+      visual.material_color = material.rgba;
+      visual.material_texture = material.texture;
+
+      std::string why;
+      const urdf::Geometry* geometry = source->geometry.get();
+      if (!geometry)
+      {
+        why = "has no geometry";
+      }
+      else if (geometry->type == urdf::Geometry::MESH)
+      {
+        const auto* mesh = static_cast<const urdf::Mesh*>(geometry);
+        visual.kind = VisualKind::Mesh;
+        visual.mesh_uri = mesh->filename;
+        visual.mesh_scale = {{mesh->scale.x, mesh->scale.y, mesh->scale.z}};
+        if (!load_mesh_visual(mesh->filename, visual.mesh_scale, options.base_folder, &visual, &why))
+          entry.warnings.push_back(mesh_warning(link->name, mesh->filename, why));
+        else
+          why.clear();
+      }
+      else if (geometry->type == urdf::Geometry::BOX)
+      {
+        const auto* box = static_cast<const urdf::Box*>(geometry);
+        visual.kind = VisualKind::Box;
+        if (box->dim.x > 0 && box->dim.y > 0 && box->dim.z > 0)
+          visual.geometry = make_box(box->dim.x, box->dim.y, box->dim.z);
+        else
+          why = "box size must be positive";
+      }
+      else if (geometry->type == urdf::Geometry::CYLINDER)
+      {
+        const auto* cylinder = static_cast<const urdf::Cylinder*>(geometry);
+        visual.kind = VisualKind::Cylinder;
+        if (cylinder->radius > 0 && cylinder->length > 0)
+          visual.geometry = make_cylinder(cylinder->radius, cylinder->length);
+        else
+          why = "cylinder radius and length must be positive";
+      }
+      else if (geometry->type == urdf::Geometry::SPHERE)
+      {
+        const auto* sphere = static_cast<const urdf::Sphere*>(geometry);
+        visual.kind = VisualKind::Sphere;
+        if (sphere->radius > 0)
+          visual.geometry = make_sphere(sphere->radius);
+        else
+          why = "sphere radius must be positive";
+      }
+      else
+      {
+        why = "has a geometry type ros2vtk does not know";
+      }
+      if (!visual.geometry)
+      {
+        // Primitive problems are not reported by mesh_warning above.
+        if (visual.kind != VisualKind::Mesh)
+          entry.warnings.push_back("link " + in_quotes(link->name) + ": visual " + std::to_string(index) + " " + why +
+                                   "; a placeholder is shown");
+        visual.kind = VisualKind::Placeholder;
+        visual.geometry = make_box(options.placeholder_size, options.placeholder_size, options.placeholder_size);
+      }
+      entry.visuals.push_back(std::move(visual));
+    }
+    robot->links.push_back(std::move(entry));
+    for (const auto& child : link->child_links)
+      visit(child);
+  };
+  visit(root);
+  return true;
+}
+
+bool RobotLoader::load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
+                            RobotLoadOptions options)
+{
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(urdf_path, ec);
+  if (ec || !std::filesystem::is_regular_file(urdf_path, ec))
+  {
+    if (error)
+      *error = "cannot read URDF file " + in_quotes(urdf_path) + ": no such file";
+    return false;
+  }
+  if (bytes > resolver_.max_file_bytes())
+  {
+    if (error)
+      *error = "URDF file " + in_quotes(urdf_path) + " is " + std::to_string(bytes) + " bytes, over the limit of " +
+               std::to_string(resolver_.max_file_bytes()) + " bytes";
+    return false;
+  }
+  std::ifstream in(urdf_path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof())
+  {
+    if (error)
+      *error = "cannot read URDF file " + in_quotes(urdf_path);
+    return false;
+  }
+  if (options.base_folder.empty())
+    options.base_folder = std::filesystem::absolute(urdf_path, ec).parent_path().string();
+  std::string why;
+  if (!load_xml(text.str(), options, robot, &why))
+  {
+    if (error)
+      *error = "URDF file " + in_quotes(urdf_path) + ": " + why;
+    return false;
+  }
+  return true;
+}
+
+} // namespace robot
+} // namespace ros2vtk

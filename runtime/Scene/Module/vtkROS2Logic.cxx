@@ -1,0 +1,301 @@
+#include "vtkROS2Logic.h"
+
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkWeakPointer.h"
+
+#include <sys/epoll.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+namespace
+{
+const char* const DefaultNodeName = "slicer"; // as SlicerROS2
+using Clock = std::chrono::steady_clock;
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkROS2Logic::vtkInternals
+{
+public:
+  vtkNew<vtkROS2Scene> Scene;
+  int EpollFd = -1;
+  std::vector<int> Watched; // descriptors registered in EpollFd
+
+  vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkCallbackCommand> TimerCallback;
+  unsigned long TimerObserverTag = 0;
+  int TimerId = -1;
+
+  ~vtkInternals()
+  {
+    if (this->EpollFd >= 0)
+    {
+      ::close(this->EpollFd);
+    }
+  }
+
+  std::vector<vtkROS2NodeNode*> CreatedNodes() const
+  {
+    std::vector<vtkROS2NodeNode*> nodes;
+    for (int i = 0; i < this->Scene->GetNumberOfNodes(); ++i)
+    {
+      auto* node = vtkROS2NodeNode::SafeDownCast(this->Scene->GetNthNode(i));
+      if (node && node->IsCreated())
+      {
+        nodes.push_back(node);
+      }
+    }
+    return nodes;
+  }
+};
+
+vtkStandardNewMacro(vtkROS2Logic);
+
+//------------------------------------------------------------------------------
+vtkROS2Logic::vtkROS2Logic()
+  : Internals(new vtkInternals)
+{
+  this->Internals->TimerCallback->SetClientData(this);
+  this->Internals->TimerCallback->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void* callData) {
+      auto* self = static_cast<vtkROS2Logic*>(clientData);
+      const int timerId = callData ? *static_cast<int*>(callData) : -1;
+      if (timerId == self->Internals->TimerId)
+      {
+        self->Spin();
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Logic::~vtkROS2Logic()
+{
+  this->DetachFromInteractor();
+  this->Internals->Scene->Clear(); // endpoints and participants go while the logic is intact
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Scene* vtkROS2Logic::GetScene()
+{
+  return this->Internals->Scene;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2NodeNode* vtkROS2Logic::GetDefaultROS2Node()
+{
+  vtkROS2Scene* scene = this->Internals->Scene;
+  for (int i = 0; i < scene->GetNumberOfNodes(); ++i)
+  {
+    auto* node = vtkROS2NodeNode::SafeDownCast(scene->GetNthNode(i));
+    if (node && node->IsCreated() && std::string(node->GetROS2NodeName()) == DefaultNodeName &&
+      std::string(node->GetROS2NodeNamespace()) == "/")
+    {
+      return node;
+    }
+  }
+  vtkNew<vtkROS2NodeNode> node;
+  scene->AddNode(node);
+  if (!node->Create(DefaultNodeName))
+  {
+    scene->RemoveNode(node);
+    vtkErrorMacro("GetDefaultROS2Node: cannot create the ROS node '" << DefaultNodeName << "'");
+    return nullptr;
+  }
+  this->SyncWakeUpSet();
+  return node;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Logic::Spin()
+{
+  const auto start = Clock::now();
+  int handled = 0;
+  for (vtkROS2NodeNode* node : this->Internals->CreatedNodes())
+  {
+    handled += node->Spin();
+  }
+  this->LastSpinDuration = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  this->TotalSpinDuration += this->LastSpinDuration;
+  ++this->NumberOfSpins;
+  this->SyncWakeUpSet();
+  return handled;
+}
+
+//------------------------------------------------------------------------------
+double vtkROS2Logic::GetMeanSpinDuration() const
+{
+  return this->NumberOfSpins > 0 ? this->TotalSpinDuration / static_cast<double>(this->NumberOfSpins)
+                                 : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Logic::SetSpinRate(double hz)
+{
+  if (!(hz > 0.0) || !std::isfinite(hz))
+  {
+    vtkErrorMacro("SetSpinRate: the rate must be a positive number of spins per second, got " << hz);
+    return;
+  }
+  if (hz == this->SpinRate)
+  {
+    return;
+  }
+  this->SpinRate = hz;
+  this->Modified();
+  if (vtkRenderWindowInteractor* interactor = this->Internals->Interactor)
+  {
+    this->AttachToInteractor(interactor); // re-arm with the new period
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Logic::SpinFor(double seconds)
+{
+  const auto period = std::chrono::duration_cast<Clock::duration>(
+    std::chrono::duration<double>(1.0 / this->SpinRate));
+  const auto start = Clock::now();
+  const auto end = start +
+    std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(0.0, seconds)));
+  int handled = 0;
+  auto next = start;
+  do
+  {
+    handled += this->Spin();
+    next += period;
+    if (next > end)
+    {
+      break;
+    }
+    std::this_thread::sleep_until(next);
+  } while (Clock::now() < end);
+  return handled;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Logic::AttachToInteractor(vtkRenderWindowInteractor* interactor)
+{
+  if (!interactor)
+  {
+    vtkErrorMacro("AttachToInteractor: interactor is null");
+    return false;
+  }
+  this->DetachFromInteractor();
+  const auto periodMs = static_cast<unsigned long>(std::max(1.0, std::round(1000.0 / this->SpinRate)));
+  this->Internals->Interactor = interactor;
+  this->Internals->TimerObserverTag =
+    interactor->AddObserver(vtkCommand::TimerEvent, this->Internals->TimerCallback);
+  this->Internals->TimerId = interactor->CreateRepeatingTimer(periodMs);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Logic::DetachFromInteractor()
+{
+  vtkRenderWindowInteractor* interactor = this->Internals->Interactor;
+  if (interactor)
+  {
+    interactor->RemoveObserver(this->Internals->TimerObserverTag);
+    if (this->Internals->TimerId >= 0)
+    {
+      interactor->DestroyTimer(this->Internals->TimerId);
+    }
+  }
+  this->Internals->Interactor = nullptr;
+  this->Internals->TimerObserverTag = 0;
+  this->Internals->TimerId = -1;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Logic::SyncWakeUpSet()
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.EpollFd < 0)
+  {
+    internals.EpollFd = ::epoll_create1(EPOLL_CLOEXEC);
+    if (internals.EpollFd < 0)
+    {
+      vtkErrorMacro("cannot create the wake-up descriptor: " << std::strerror(errno));
+      return;
+    }
+  }
+  std::vector<int> current;
+  for (vtkROS2NodeNode* node : internals.CreatedNodes())
+  {
+    const int fd = node->GetWakeUpFileDescriptor();
+    if (fd >= 0)
+    {
+      current.push_back(fd);
+    }
+  }
+  // Re-register everything each time: a destroyed participant's descriptor number can be reused
+  // by a new one, which a set comparison would miss. A few syscalls per spin.
+  for (int fd : internals.Watched)
+  {
+    ::epoll_ctl(internals.EpollFd, EPOLL_CTL_DEL, fd, nullptr); // may already be gone: ignored
+  }
+  internals.Watched.clear();
+  for (int fd : current)
+  {
+    epoll_event event{};
+    event.events = EPOLLIN;
+    event.data.fd = fd;
+    if (::epoll_ctl(internals.EpollFd, EPOLL_CTL_ADD, fd, &event) == 0)
+    {
+      internals.Watched.push_back(fd);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Logic::GetWakeUpFileDescriptor()
+{
+  this->SyncWakeUpSet();
+  return this->Internals->EpollFd;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Logic::SpinOnWakeUp(double timeoutSeconds)
+{
+  this->SyncWakeUpSet();
+  if (this->Internals->EpollFd < 0)
+  {
+    return 0;
+  }
+  const int timeoutMs = timeoutSeconds < 0 ? -1
+                                           : static_cast<int>(std::ceil(timeoutSeconds * 1000.0));
+  epoll_event events[8];
+  int ready = -1;
+  do
+  {
+    ready = ::epoll_wait(this->Internals->EpollFd, events, 8, timeoutMs);
+  } while (ready < 0 && errno == EINTR);
+  // Spin on a timeout too: besides queued data there is periodic work (parameter requests to
+  // send or repeat, tf lookups whose frames arrived through another node, robots to update).
+  return this->Spin();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Logic::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SpinRate: " << this->SpinRate << "\n";
+  os << indent << "NumberOfSpins: " << this->NumberOfSpins << "\n";
+  os << indent << "LastSpinDuration (ms): " << this->LastSpinDuration << "\n";
+  os << indent << "MeanSpinDuration (ms): " << this->GetMeanSpinDuration() << "\n";
+  os << indent << "Scene:\n";
+  this->Internals->Scene->PrintSelf(os, indent.GetNextIndent());
+}

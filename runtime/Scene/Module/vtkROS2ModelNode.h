@@ -1,0 +1,64 @@
+// ros2vtk — a surface in the scene (Slicer's model node, in small): vtkPolyData plus display
+// properties, placed under a transform node. Robot links' visuals are model nodes; the local
+// matrix holds what sits between the link frame and the mesh (visual origin, mesh scale).
+#ifndef vtkROS2ModelNode_h
+#define vtkROS2ModelNode_h
+
+#include "ros2vtkSceneModule.h" // for export macro
+#include "vtkROS2SceneNode.h"
+
+class vtkMatrix4x4;
+class vtkPolyData;
+class vtkROS2TransformNode;
+
+class ROS2VTKSCENE_EXPORT vtkROS2ModelNode : public vtkROS2SceneNode
+{
+public:
+  static vtkROS2ModelNode* New();
+  vtkTypeMacro(vtkROS2ModelNode, vtkROS2SceneNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The surface (reference counted, not copied).
+  void SetPolyData(vtkPolyData* polyData);
+  vtkPolyData* GetPolyData() const { return this->PolyData; }
+
+  /// Model -> parent transform node (owned; use SetMatrixModelToParent to change it).
+  vtkMatrix4x4* GetMatrixModelToParent() { return this->MatrixModelToParent; }
+  void SetMatrixModelToParent(vtkMatrix4x4* matrix);
+
+  /// The transform node this model hangs under (the "transform" reference); nullptr = world.
+  void SetParentTransformNodeID(const char* id);
+  const char* GetParentTransformNodeID() const;
+  vtkROS2TransformNode* GetParentTransformNode() const;
+
+  /// Parent's world matrix x model-to-parent.
+  void GetMatrixModelToWorld(vtkMatrix4x4* matrix);
+
+  /// Display properties (RGB 0..1, opacity 0..1).
+  vtkSetVector3Macro(Color, double);
+  vtkGetVector3Macro(Color, double);
+  vtkSetClampMacro(Opacity, double, 0.0, 1.0);
+  vtkGetMacro(Opacity, double);
+  vtkSetMacro(Visibility, bool);
+  vtkGetMacro(Visibility, bool);
+  vtkBooleanMacro(Visibility, bool);
+
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
+
+protected:
+  vtkROS2ModelNode();
+  ~vtkROS2ModelNode() override;
+
+  vtkPolyData* PolyData = nullptr;
+  vtkMatrix4x4* MatrixModelToParent;
+  double Color[3] = { 0.8, 0.8, 0.8 };
+  double Opacity = 1.0;
+  bool Visibility = true;
+
+private:
+  vtkROS2ModelNode(const vtkROS2ModelNode&) = delete;
+  void operator=(const vtkROS2ModelNode&) = delete;
+};
+
+#endif

@@ -1,0 +1,861 @@
+#include "vtkROS2NodeNode.h"
+
+#include "NodeClassRegistry.hpp"
+#include "vtkROS2PublisherGenericNode.h"
+#include "vtkROS2PublisherNode.h"
+#include "vtkROS2Scene.h"
+#include "vtkROS2SubscriberGenericNode.h"
+#include "vtkROS2SubscriberNode.h"
+#include "vtkROS2ParameterNode.h"
+#include "vtkROS2Tf2BroadcasterNode.h"
+#include "vtkROS2Tf2LookupNode.h"
+
+#include "ros2vtk/tf2/BufferCore.hpp"
+#include "ros2vtk/tf2_ros/TransformBroadcaster.hpp"
+#include "ros2vtk/tf2_ros/TransformListener.hpp"
+#include "ros2vtk/wire/ParameterServer.hpp"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+
+#include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLDataElement.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace
+{
+const char* const PublisherRole = "publisher";
+const char* const SubscriberRole = "subscriber";
+const char* const Tf2LookupRole = "tf2Lookup";
+const char* const Tf2BroadcasterRole = "tf2Broadcaster";
+const char* const ParameterRole = "parameter";
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkROS2NodeNode::vtkInternals
+{
+public:
+  std::unique_ptr<ros2vtk::wire::Participant> Participant;
+  std::string NodeName;      // as given to Create, kept for scene files after Destroy
+  std::string NodeNamespace; // as given to Create
+  bool CreateOnRestore = false; // read from a scene file: Create in OnSceneRestored
+  // Own parameters, tf2: released before the participant they live in.
+  std::unique_ptr<ros2vtk::wire::ParameterServer> Parameters;
+  std::unique_ptr<ros2vtk::tf2::BufferCore> Tf2Buffer;
+  std::unique_ptr<ros2vtk::tf2_ros::TransformListener> Tf2Listener;
+  std::unique_ptr<ros2vtk::tf2_ros::TransformBroadcaster> Tf2Broadcasters[2]; // dynamic, static
+  uint64_t Tf2RejectionsReported = 0;
+  std::vector<std::pair<vtkROS2SceneNode*, std::function<int()>>> SpinCallbacks;
+
+  void ReleaseParticipantObjects()
+  {
+    this->Tf2Listener.reset();
+    this->Tf2Broadcasters[0].reset();
+    this->Tf2Broadcasters[1].reset();
+    this->Parameters.reset();
+  }
+};
+
+vtkStandardNewMacro(vtkROS2NodeNode);
+
+//------------------------------------------------------------------------------
+vtkROS2NodeNode::vtkROS2NodeNode()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkROS2NodeNode::~vtkROS2NodeNode()
+{
+  // Endpoints were released when the node left its scene (OnRemovedFromScene); endpoints can
+  // only be attached to a node of their own scene, so none can outlive the participant here.
+  this->Internals->ReleaseParticipantObjects();
+  this->Internals->Participant.reset();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::Create(const char* nodeName, const char* nodeNamespace)
+{
+  if (this->Internals->Participant)
+  {
+    vtkErrorMacro("Create: ROS node '" << this->Internals->Participant->fully_qualified_name()
+                                       << "' already exists; call Destroy first");
+    return false;
+  }
+  std::string error;
+  auto participant = ros2vtk::wire::Participant::create(nodeName ? nodeName : "",
+    nodeNamespace ? nodeNamespace : "", ros2vtk::wire::ParticipantOptions::from_environment(),
+    &error);
+  if (!participant)
+  {
+    vtkErrorMacro("Create: cannot create ROS node '" << (nodeName ? nodeName : "(null)")
+                                                     << "': " << error);
+    return false;
+  }
+  this->Internals->Participant = std::move(participant);
+  this->Internals->Parameters =
+    ros2vtk::wire::ParameterServer::create(*this->Internals->Participant, &error);
+  if (!this->Internals->Parameters)
+  {
+    vtkWarningMacro("Create: ROS node '" << nodeName << "' serves no parameters: " << error);
+  }
+  this->Internals->NodeName = nodeName;
+  this->Internals->NodeNamespace = nodeNamespace ? nodeNamespace : "";
+  if (!*this->GetName())
+  {
+    this->SetName(nodeName);
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::Destroy()
+{
+  if (!this->Internals->Participant)
+  {
+    return false;
+  }
+  // Endpoints first: they live inside the participant.
+  for (const char* role : { PublisherRole, SubscriberRole })
+  {
+    std::vector<vtkSmartPointer<vtkROS2TopicNode>> endpoints;
+    for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
+    {
+      if (auto* endpoint = vtkROS2TopicNode::SafeDownCast(this->GetNthNodeReference(role, i)))
+      {
+        endpoints.emplace_back(endpoint);
+      }
+    }
+    for (const auto& endpoint : endpoints)
+    {
+      endpoint->RemoveFromROS2Node();
+    }
+  }
+  this->Internals->ReleaseParticipantObjects();
+  this->Internals->Participant.reset();
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::IsCreated() const
+{
+  return this->Internals->Participant != nullptr;
+}
+
+//------------------------------------------------------------------------------
+ros2vtk::wire::Participant* vtkROS2NodeNode::GetParticipant() const
+{
+  return this->Internals->Participant.get();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2NodeNode::GetROS2NodeName() const
+{
+  return this->Internals->NodeName.c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2NodeNode::GetROS2NodeNamespace() const
+{
+  if (this->Internals->Participant)
+  {
+    return this->Internals->Participant->node_namespace().c_str();
+  }
+  return this->Internals->NodeNamespace.c_str();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::OnRemovedFromScene()
+{
+  this->Destroy();
+  this->Superclass::OnRemovedFromScene();
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2NodeNode::CreateAndAdd(bool publisher, const char* type, const char* topic)
+{
+  using ros2vtk::scene::NodeDirection;
+  const char* what = publisher ? "CreateAndAddPublisherNode" : "CreateAndAddSubscriberNode";
+  if (!this->Scene)
+  {
+    vtkErrorMacro(<< what << ": add this ROS node to a scene first");
+    return nullptr;
+  }
+  if (!this->Internals->Participant)
+  {
+    vtkErrorMacro(<< what << ": the ROS node is not created (call Create first)");
+    return nullptr;
+  }
+  if (!type || !topic)
+  {
+    vtkErrorMacro(<< what << ": type and topic are required");
+    return nullptr;
+  }
+  const char* role = publisher ? PublisherRole : SubscriberRole;
+  if (this->FindByTopic<vtkROS2TopicNode>(role, topic))
+  {
+    vtkErrorMacro(<< what << ": this ROS node already has a " << role << " on '" << topic
+                  << "'; remove it first");
+    return nullptr;
+  }
+  const auto resolution = ros2vtk::scene::NodeClassRegistry::instance().resolve(
+    publisher ? NodeDirection::Publisher : NodeDirection::Subscriber, type);
+  vtkSmartPointer<vtkROS2TopicNode> node;
+  if (resolution.mapped_class)
+  {
+    node.TakeReference(vtkROS2TopicNode::SafeDownCast(resolution.mapped_class->create()));
+  }
+  else if (resolution.generic_type)
+  {
+    const char* rosType = resolution.generic_type->ros_type;
+    if (publisher)
+    {
+      auto generic = vtkSmartPointer<vtkROS2PublisherGenericNode>::New();
+      node = generic->SetROSType(rosType) ? generic : nullptr;
+    }
+    else
+    {
+      auto generic = vtkSmartPointer<vtkROS2SubscriberGenericNode>::New();
+      node = generic->SetROSType(rosType) ? generic : nullptr;
+    }
+  }
+  else
+  {
+    vtkErrorMacro(<< what << ": " << resolution.error);
+    return nullptr;
+  }
+  if (!node)
+  {
+    vtkErrorMacro(<< what << ": could not create a node for '" << type << "'");
+    return nullptr;
+  }
+  node->SetName(topic);
+  this->Scene->AddNode(node);
+  if (!node->AddToROS2Node(this->GetID(), topic))
+  {
+    this->Scene->RemoveNode(node);
+    return nullptr;
+  }
+  return node; // the scene holds it
+}
+
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode* vtkROS2NodeNode::CreateAndAddPublisherNode(const char* type, const char* topic)
+{
+  return vtkROS2PublisherNode::SafeDownCast(this->CreateAndAdd(true, type, topic));
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode* vtkROS2NodeNode::CreateAndAddSubscriberNode(const char* type, const char* topic)
+{
+  return vtkROS2SubscriberNode::SafeDownCast(this->CreateAndAdd(false, type, topic));
+}
+
+//------------------------------------------------------------------------------
+template <typename NodeType>
+NodeType* vtkROS2NodeNode::FindByTopic(const char* role, const char* topic)
+{
+  if (!topic)
+  {
+    return nullptr;
+  }
+  std::string resolved = topic;
+  std::string ignored;
+  if (this->Internals->Participant)
+  {
+    this->Internals->Participant->resolve_name(topic, resolved, &ignored);
+  }
+  for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
+  {
+    auto* node = NodeType::SafeDownCast(this->GetNthNodeReference(role, i));
+    if (node && (resolved == node->GetTopic() || std::string(topic) == node->GetTopic()))
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode* vtkROS2NodeNode::GetPublisherNodeByTopic(const char* topic)
+{
+  return this->FindByTopic<vtkROS2PublisherNode>(PublisherRole, topic);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode* vtkROS2NodeNode::GetSubscriberNodeByTopic(const char* topic)
+{
+  return this->FindByTopic<vtkROS2SubscriberNode>(SubscriberRole, topic);
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfPublisherNodes()
+{
+  return this->GetNumberOfNodeReferences(PublisherRole);
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfSubscriberNodes()
+{
+  return this->GetNumberOfNodeReferences(SubscriberRole);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeletePublisherNode(const char* topic)
+{
+  vtkROS2PublisherNode* node = this->GetPublisherNodeByTopic(topic);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeletePublisherNode: no publisher on '" << (topic ? topic : "(null)")
+                                                                    << "'");
+    return false;
+  }
+  node->RemoveFromROS2Node();
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteSubscriberNode(const char* topic)
+{
+  vtkROS2SubscriberNode* node = this->GetSubscriberNodeByTopic(topic);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteSubscriberNode: no subscriber on '" << (topic ? topic : "(null)")
+                                                                      << "'");
+    return false;
+  }
+  node->RemoveFromROS2Node();
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+std::string JoinClassNames(ros2vtk::scene::NodeDirection direction)
+{
+  std::string joined;
+  for (const auto* info : ros2vtk::scene::NodeClassRegistry::instance().classes(direction))
+  {
+    joined += (joined.empty() ? "" : " ") + info->class_name;
+  }
+  return joined;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetRegisteredROS2PublisherNodes() const
+{
+  return JoinClassNames(ros2vtk::scene::NodeDirection::Publisher);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetRegisteredROS2SubscriberNodes() const
+{
+  return JoinClassNames(ros2vtk::scene::NodeDirection::Subscriber);
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::Spin()
+{
+  if (!this->Internals->Participant)
+  {
+    return 0;
+  }
+  // Clear before draining: a sample queued after this point raises the wake-up again.
+  this->Internals->Participant->wake_up().clear();
+  std::vector<vtkSmartPointer<vtkROS2SubscriberNode>> subscribers;
+  for (int i = 0; i < this->GetNumberOfNodeReferences(SubscriberRole); ++i)
+  {
+    if (auto* node = vtkROS2SubscriberNode::SafeDownCast(this->GetNthNodeReference(SubscriberRole, i)))
+    {
+      subscribers.emplace_back(node); // observers may remove nodes while we iterate
+    }
+  }
+  int handled = 0;
+  if (this->Internals->Parameters)
+  {
+    handled += static_cast<int>(this->Internals->Parameters->process());
+  }
+  for (const auto& subscriber : subscribers)
+  {
+    handled += subscriber->ProcessIncomingMessages();
+  }
+  handled += this->SpinParametersAndTf2();
+  // Copy: a callback may add or remove callbacks.
+  const auto callbacks = this->Internals->SpinCallbacks;
+  for (const auto& callback : callbacks)
+  {
+    handled += callback.second();
+  }
+  return handled;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetWakeUpFileDescriptor()
+{
+  return this->Internals->Participant ? this->Internals->Participant->wake_up().fd() : -1;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  element->SetAttribute("ros2NodeName", this->Internals->NodeName.c_str());
+  element->SetAttribute("ros2NodeNamespace", this->Internals->NodeNamespace.c_str());
+  element->SetIntAttribute("created", this->IsCreated() ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  const char* name = element->GetAttribute("ros2NodeName");
+  const char* nodeNamespace = element->GetAttribute("ros2NodeNamespace");
+  this->Internals->NodeName = name ? name : "";
+  this->Internals->NodeNamespace = nodeNamespace ? nodeNamespace : "";
+  int created = 0;
+  element->GetScalarAttribute("created", created);
+  if (created && this->Internals->NodeName.empty())
+  {
+    vtkErrorMacro("ReadXML: created ROS node '" << element->GetAttribute("id")
+                                                << "' has no ros2NodeName");
+    return false;
+  }
+  this->Internals->CreateOnRestore = created != 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::OnSceneRestored()
+{
+  this->Superclass::OnSceneRestored();
+  const bool create = this->Internals->CreateOnRestore;
+  this->Internals->CreateOnRestore = false;
+  if (create && !this->IsCreated())
+  {
+    this->Create(this->Internals->NodeName.c_str(), this->Internals->NodeNamespace.c_str());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ROS2NodeName: " << this->Internals->NodeName << "\n";
+  os << indent << "ROS2NodeNamespace: " << this->Internals->NodeNamespace << "\n";
+  os << indent << "Created: " << this->IsCreated() << "\n";
+}
+
+//------------------------------------------------------------------------------
+// tf2, parameters and spin callbacks
+//------------------------------------------------------------------------------
+namespace
+{
+std::string AbsoluteNodeName(const char* name)
+{
+  std::string value = name ? name : "";
+  return !value.empty() && value[0] != '/' ? "/" + value : value;
+}
+
+template <typename NodeType>
+std::vector<vtkSmartPointer<NodeType>> Referenced(vtkROS2SceneNode* owner, const char* role)
+{
+  std::vector<vtkSmartPointer<NodeType>> nodes;
+  for (int i = 0; i < owner->GetNumberOfNodeReferences(role); ++i)
+  {
+    if (auto* node = NodeType::SafeDownCast(owner->GetNthNodeReference(role, i)))
+    {
+      nodes.emplace_back(node);
+    }
+  }
+  return nodes;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::SpinParametersAndTf2()
+{
+  int handled = 0;
+  for (const auto& node : Referenced<vtkROS2ParameterNode>(this, ParameterRole))
+  {
+    handled += node->ProcessParameterUpdates();
+  }
+  if (this->Internals->Tf2Listener)
+  {
+    handled += static_cast<int>(this->Internals->Tf2Listener->process());
+    const uint64_t rejected = this->Internals->Tf2Listener->rejected_count();
+    if (rejected > this->Internals->Tf2RejectionsReported)
+    {
+      // One line per spin at most, whatever the number of bad transforms.
+      vtkWarningMacro("tf2: rejected " << rejected - this->Internals->Tf2RejectionsReported
+                                       << " transform(s): "
+                                       << this->Internals->Tf2Listener->last_rejection());
+      this->Internals->Tf2RejectionsReported = rejected;
+    }
+    for (const auto& node : Referenced<vtkROS2Tf2LookupNode>(this, Tf2LookupRole))
+    {
+      handled += node->UpdateFromBuffer(*this->Internals->Tf2Buffer) ? 1 : 0;
+    }
+  }
+  return handled;
+}
+
+//------------------------------------------------------------------------------
+ros2vtk::tf2::BufferCore* vtkROS2NodeNode::GetTf2Buffer()
+{
+  if (!this->Internals->Participant)
+  {
+    return nullptr;
+  }
+  if (!this->Internals->Tf2Listener)
+  {
+    if (!this->Internals->Tf2Buffer)
+    {
+      this->Internals->Tf2Buffer.reset(new ros2vtk::tf2::BufferCore());
+    }
+    std::string error;
+    this->Internals->Tf2Listener = ros2vtk::tf2_ros::TransformListener::create(
+      *this->Internals->Participant, *this->Internals->Tf2Buffer, &error);
+    if (!this->Internals->Tf2Listener)
+    {
+      vtkErrorMacro("tf2: cannot subscribe to /tf and /tf_static: " << error);
+      return nullptr;
+    }
+  }
+  return this->Internals->Tf2Buffer.get();
+}
+
+//------------------------------------------------------------------------------
+ros2vtk::tf2_ros::TransformBroadcaster* vtkROS2NodeNode::GetTf2Broadcaster(bool isStatic)
+{
+  if (!this->Internals->Participant)
+  {
+    return nullptr;
+  }
+  auto& broadcaster = this->Internals->Tf2Broadcasters[isStatic ? 1 : 0];
+  if (!broadcaster)
+  {
+    std::string error;
+    broadcaster = ros2vtk::tf2_ros::TransformBroadcaster::create(*this->Internals->Participant, isStatic, &error);
+    if (!broadcaster)
+    {
+      vtkErrorMacro("tf2: cannot publish on " << (isStatic ? "/tf_static" : "/tf") << ": " << error);
+    }
+  }
+  return broadcaster.get();
+}
+
+//------------------------------------------------------------------------------
+ros2vtk::wire::ParameterServer* vtkROS2NodeNode::GetParameterServer() const
+{
+  return this->Internals->Parameters.get();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::AddSpinCallback(vtkROS2SceneNode* owner, std::function<int()> callback)
+{
+  this->Internals->SpinCallbacks.emplace_back(owner, std::move(callback));
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::RemoveSpinCallbacks(vtkROS2SceneNode* owner)
+{
+  auto& callbacks = this->Internals->SpinCallbacks;
+  callbacks.erase(std::remove_if(callbacks.begin(), callbacks.end(),
+                    [owner](const auto& entry) { return entry.first == owner; }),
+    callbacks.end());
+}
+
+//------------------------------------------------------------------------------
+template <typename NodeType>
+NodeType* vtkROS2NodeNode::FindByFrames(const char* role, const char* parentFrame, const char* childFrame)
+{
+  if (!parentFrame || !childFrame)
+  {
+    return nullptr;
+  }
+  for (const auto& node : Referenced<NodeType>(this, role))
+  {
+    if (std::string(node->GetParentID()) == parentFrame && std::string(node->GetChildID()) == childFrame)
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::CheckReadyFor(const char* what)
+{
+  if (!this->Scene)
+  {
+    vtkErrorMacro(<< what << ": add this ROS node to a scene first");
+    return false;
+  }
+  if (!this->Internals->Participant)
+  {
+    vtkErrorMacro(<< what << ": the ROS node is not created (call Create first)");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame)
+{
+  if (!this->CheckReadyFor("CreateAndAddTf2LookupNode") || !this->GetTf2Buffer())
+  {
+    return nullptr;
+  }
+  if (!parentFrame || !*parentFrame || !childFrame || !*childFrame)
+  {
+    vtkErrorMacro("CreateAndAddTf2LookupNode: parent and child frames are required");
+    return nullptr;
+  }
+  if (this->FindByFrames<vtkROS2Tf2LookupNode>(Tf2LookupRole, parentFrame, childFrame))
+  {
+    vtkErrorMacro("CreateAndAddTf2LookupNode: " << parentFrame << " <- " << childFrame << " exists already");
+    return nullptr;
+  }
+  vtkNew<vtkROS2Tf2LookupNode> node;
+  node->SetParentID(parentFrame);
+  node->SetChildID(childFrame);
+  node->SetName((std::string("ros2:tf2lookup:") + parentFrame + "To" + childFrame).c_str());
+  this->Scene->AddNode(node);
+  node->SetNodeReferenceID("ros2Node", this->GetID());
+  this->AddNodeReferenceID(Tf2LookupRole, node->GetID());
+  // A first lookup right away, so data already in the buffer shows without waiting for a spin.
+  node->UpdateFromBuffer(*this->Internals->Tf2Buffer);
+  return node;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame)
+{
+  return this->FindByFrames<vtkROS2Tf2LookupNode>(Tf2LookupRole, parentFrame, childFrame);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame)
+{
+  vtkROS2Tf2LookupNode* node = this->GetTf2LookupNodeByParentChild(parentFrame, childFrame);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: no lookup " << (parentFrame ? parentFrame : "") << " <- "
+                                                             << (childFrame ? childFrame : ""));
+    return false;
+  }
+  this->RemoveNodeReferenceID(Tf2LookupRole, node->GetID());
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const char* parentFrame,
+                                                                           const char* childFrame)
+{
+  if (!this->CheckReadyFor("CreateAndAddTf2BroadcasterNode"))
+  {
+    return nullptr;
+  }
+  if (!parentFrame || !*parentFrame || !childFrame || !*childFrame)
+  {
+    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: parent and child frames are required");
+    return nullptr;
+  }
+  if (this->FindByFrames<vtkROS2Tf2BroadcasterNode>(Tf2BroadcasterRole, parentFrame, childFrame))
+  {
+    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: " << parentFrame << " <- " << childFrame << " exists already");
+    return nullptr;
+  }
+  vtkNew<vtkROS2Tf2BroadcasterNode> node;
+  node->SetParentID(parentFrame);
+  node->SetChildID(childFrame);
+  node->SetName((std::string("ros2:tf2broadcaster:") + parentFrame + "To" + childFrame).c_str());
+  this->Scene->AddNode(node);
+  node->SetNodeReferenceID("ros2Node", this->GetID());
+  this->AddNodeReferenceID(Tf2BroadcasterRole, node->GetID());
+  return node;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByParentChild(const char* parentFrame,
+                                                                               const char* childFrame)
+{
+  return this->FindByFrames<vtkROS2Tf2BroadcasterNode>(Tf2BroadcasterRole, parentFrame, childFrame);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame)
+{
+  vtkROS2Tf2BroadcasterNode* node = this->GetTf2BroadcasterNodeByParentChild(parentFrame, childFrame);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: no broadcaster " << (parentFrame ? parentFrame : "")
+                                                                       << " <- " << (childFrame ? childFrame : ""));
+    return false;
+  }
+  this->RemoveNodeReferenceID(Tf2BroadcasterRole, node->GetID());
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ParameterNode* vtkROS2NodeNode::CreateAndAddParameterNode(const char* monitoredNodeName)
+{
+  if (!this->CheckReadyFor("CreateAndAddParameterNode"))
+  {
+    return nullptr;
+  }
+  const std::string remote = AbsoluteNodeName(monitoredNodeName);
+  if (remote.empty())
+  {
+    vtkErrorMacro("CreateAndAddParameterNode: the monitored node name is required");
+    return nullptr;
+  }
+  if (this->GetParameterNodeByNode(remote.c_str()))
+  {
+    vtkErrorMacro("CreateAndAddParameterNode: " << remote << " is monitored already");
+    return nullptr;
+  }
+  vtkNew<vtkROS2ParameterNode> node;
+  node->SetName(("ros2:param:" + remote).c_str());
+  this->Scene->AddNode(node);
+  if (!node->Attach(this, remote))
+  {
+    this->Scene->RemoveNode(node);
+    return nullptr;
+  }
+  this->AddNodeReferenceID(ParameterRole, node->GetID());
+  return node;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ParameterNode* vtkROS2NodeNode::GetParameterNodeByNode(const char* monitoredNodeName)
+{
+  const std::string remote = AbsoluteNodeName(monitoredNodeName);
+  for (const auto& node : Referenced<vtkROS2ParameterNode>(this, ParameterRole))
+  {
+    if (remote == node->GetMonitoredNodeName())
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteParameterNode(const char* monitoredNodeName)
+{
+  vtkROS2ParameterNode* node = this->GetParameterNodeByNode(monitoredNodeName);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteParameterNode: " << AbsoluteNodeName(monitoredNodeName) << " is not monitored");
+    return false;
+  }
+  this->RemoveNodeReferenceID(ParameterRole, node->GetID());
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+template <typename Fill>
+bool SetOwnParameter(ros2vtk::wire::ParameterServer* server, const char* name, uint8_t type, Fill fill,
+                     std::string* error)
+{
+  if (!server)
+  {
+    *error = "the ROS node is not created";
+    return false;
+  }
+  if (!name || !*name)
+  {
+    *error = "a parameter needs a name";
+    return false;
+  }
+  ros2vtk::rcl_interfaces::msg::Parameter parameter;
+  parameter.name = name;
+  parameter.value.type = type;
+  fill(parameter.value);
+  ros2vtk::wire::ParameterStore& store = server->store();
+  if (!store.has(name))
+  {
+    return store.declare(name, parameter.value, error);
+  }
+  const auto results = store.set_parameters({ parameter });
+  if (!results.front().successful)
+  {
+    *error = results.front().reason;
+    return false;
+  }
+  return true;
+}
+} // namespace
+
+#define ROS2VTK_SET_OWN_PARAMETER(TYPE_ID, FIELD)                                                    \
+  std::string error;                                                                                \
+  if (!SetOwnParameter(this->Internals->Parameters.get(), name, TYPE_ID,                            \
+        [&](ros2vtk::rcl_interfaces::msg::ParameterValue& v) { v.FIELD = value; }, &error))         \
+  {                                                                                                 \
+    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);                       \
+    return false;                                                                                   \
+  }                                                                                                 \
+  return true;
+
+bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value) { ROS2VTK_SET_OWN_PARAMETER(1, bool_value) }
+bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value) { ROS2VTK_SET_OWN_PARAMETER(2, integer_value) }
+bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value) { ROS2VTK_SET_OWN_PARAMETER(3, double_value) }
+bool vtkROS2NodeNode::SetParameterAsString(const char* name, const char* text)
+{
+  const std::string value = text ? text : "";
+  ROS2VTK_SET_OWN_PARAMETER(4, string_value)
+}
+#undef ROS2VTK_SET_OWN_PARAMETER
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::PrintOwnParameter(const char* name)
+{
+  const auto* value = this->Internals->Parameters && name ? this->Internals->Parameters->store().get(name) : nullptr;
+  return std::string(name ? name : "") + " (" + ros2vtk::wire::parameter_type_name(value ? value->type : 0) +
+    "): " + (value ? ros2vtk::wire::parameter_value_to_string(*value) : std::string("not set"));
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetNodeNamesAndNamespaces()
+{
+  std::string lines;
+  if (this->Internals->Participant)
+  {
+    for (const auto& node : this->Internals->Participant->node_names_and_namespaces())
+    {
+      lines += (node.second == "/" ? "/" + node.first : node.second + "/" + node.first) + "\n";
+    }
+  }
+  return lines;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetTopicNamesAndTypes()
+{
+  std::string lines;
+  if (this->Internals->Participant)
+  {
+    for (const auto& topic : this->Internals->Participant->topic_names_and_types())
+    {
+      lines += topic.name;
+      for (const auto& type : topic.types)
+      {
+        lines += " " + type;
+      }
+      lines += "\n";
+    }
+  }
+  return lines;
+}

@@ -1,0 +1,181 @@
+// ros2vtk — one ROS 2 node (one DDS participant) in the scene, with its publishers and
+// subscribers (SlicerROS2's vtkMRMLROS2NodeNode).
+//
+//   node = vtkROS2NodeNode::New(); scene->AddNode(node); node->Create("slicer");
+//   pub = node->CreateAndAddPublisherNode("String", "/pub");
+//   node->Spin(); // on the thread that owns the scene
+//
+// Publishers and subscribers are scene nodes of their own; the ROS node references them
+// (roles "publisher" / "subscriber") and they reference it (role "ROS2Node").
+#ifndef vtkROS2NodeNode_h
+#define vtkROS2NodeNode_h
+
+#include "ros2vtkSceneModule.h" // for export macro
+
+#include "vtkROS2SceneNode.h"
+
+#include <memory> // for std::unique_ptr (pimpl)
+#include <string> // for std::string
+
+class vtkROS2PublisherNode;
+class vtkROS2SubscriberNode;
+
+namespace ros2vtk {
+namespace wire {
+class Participant;
+}
+}
+
+class vtkROS2ParameterNode;
+class vtkROS2Tf2BroadcasterNode;
+class vtkROS2Tf2LookupNode;
+namespace ros2vtk
+{
+namespace tf2
+{
+class BufferCore;
+}
+namespace tf2_ros
+{
+class TransformBroadcaster;
+}
+namespace wire
+{
+class ParameterServer;
+}
+}
+#ifndef __VTK_WRAP__
+#include <functional> // for std::function (spin callbacks)
+#endif
+
+class ROS2VTKSCENE_EXPORT vtkROS2NodeNode : public vtkROS2SceneNode
+{
+public:
+  static vtkROS2NodeNode* New();
+  vtkTypeMacro(vtkROS2NodeNode, vtkROS2SceneNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Creates the ROS node (DDS participant; ROS_DOMAIN_ID and discovery range from the
+  /// environment). The scene node's Name becomes the ROS node name when it has none.
+  /// False (vtkErrorMacro) for an invalid name/namespace, a DDS failure, or when already created.
+  bool Create(const char* nodeName, const char* nodeNamespace = "");
+  /// Removes every publisher and subscriber from DDS (they stay in the scene) and destroys the
+  /// participant. False when not created.
+  bool Destroy();
+  bool IsCreated() const;
+
+  /// As given to Create ("slicer", "/" or "/robot1"); empty before Create.
+  const char* GetROS2NodeName() const;
+  const char* GetROS2NodeNamespace() const;
+
+  /// Creates a publisher/subscriber node of `type`, adds it to this node's scene and to this
+  /// ROS node on `topic`. `type` is a short name ("String"), a class name
+  /// ("vtkROS2PublisherStringNode", "vtkMRMLROS2PublisherStringNode") or a ROS type
+  /// ("geometry_msgs/msg/Point", "geometry_msgs/Point"; a generic node when no single mapped
+  /// class exists). Returns the new node (owned by the scene) or nullptr with vtkErrorMacro
+  /// (unknown type: the message lists the known names; topic already used by this node).
+  vtkROS2PublisherNode* CreateAndAddPublisherNode(const char* type, const char* topic);
+  vtkROS2SubscriberNode* CreateAndAddSubscriberNode(const char* type, const char* topic);
+  /// Removes the publisher/subscriber of this node on `topic` from DDS and from the scene.
+  bool RemoveAndDeletePublisherNode(const char* topic);
+  bool RemoveAndDeleteSubscriberNode(const char* topic);
+  /// nullptr when this node has none on `topic` (name as given or resolved).
+  vtkROS2PublisherNode* GetPublisherNodeByTopic(const char* topic);
+  vtkROS2SubscriberNode* GetSubscriberNodeByTopic(const char* topic);
+  int GetNumberOfPublisherNodes();
+  int GetNumberOfSubscriberNodes();
+
+  /// Space-separated class names of the publisher / subscriber classes that can be created.
+  std::string GetRegisteredROS2PublisherNodes() const;
+  std::string GetRegisteredROS2SubscriberNodes() const;
+
+  /// Processes what DDS queued for this node's subscribers, on the calling thread (each
+  /// subscriber with new messages fires one ModifiedEvent). Returns the number of messages.
+  int Spin();
+  /// Readable (poll POLLIN) while this node has queued data; -1 before Create. Stays open
+  /// until Destroy.
+  int GetWakeUpFileDescriptor();
+
+  ///@{
+  /// tf2 (SlicerROS2's names). A lookup node is a transform node kept equal to the latest
+  /// parent <- child transform on every Spin (frames from /tf and /tf_static); a broadcaster
+  /// node publishes matrices as transforms (dynamic, or static with SetStatic). Frame pairs are
+  /// unique per ROS node. Remove* return false (vtkErrorMacro) when there is no such node.
+  vtkROS2Tf2LookupNode* CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame);
+  vtkROS2Tf2LookupNode* GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame);
+  bool RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame);
+  vtkROS2Tf2BroadcasterNode* CreateAndAddTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
+  vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByParentChild(const char* parentFrame, const char* childFrame);
+  bool RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
+  ///@}
+
+  ///@{
+  /// Parameters of another ROS node (SlicerROS2's parameter node), one scene node per
+  /// monitored node ("/robot_state_publisher"; a name without '/' is taken as absolute).
+  vtkROS2ParameterNode* CreateAndAddParameterNode(const char* monitoredNodeName);
+  vtkROS2ParameterNode* GetParameterNodeByNode(const char* monitoredNodeName);
+  bool RemoveAndDeleteParameterNode(const char* monitoredNodeName);
+  ///@}
+
+  ///@{
+  /// The ROS graph as this node sees it (like `ros2 node list` / `ros2 topic list -t`): one
+  /// entry per line, "/ns/name" and "/topic type1 type2". Discovery takes about a second.
+  std::string GetNodeNamesAndNamespaces();
+  std::string GetTopicNamesAndTypes();
+  ///@}
+
+  ///@{
+  /// This ROS node's own parameters, served to `ros2 param` and rclpy clients (declared on
+  /// first set; a later set must keep the type). False with vtkErrorMacro otherwise.
+  bool SetParameterAsBool(const char* name, bool value);
+  bool SetParameterAsInteger(const char* name, vtkTypeInt64 value);
+  bool SetParameterAsDouble(const char* name, double value);
+  bool SetParameterAsString(const char* name, const char* value);
+  /// "name (type): value", or "name (not set): not set".
+  std::string PrintOwnParameter(const char* name);
+  ///@}
+
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
+  /// Re-creates the ROS node saved in the scene file.
+  void OnSceneRestored() override;
+
+#ifndef __VTK_WRAP__
+  /// The participant (nullptr before Create), for publishers/subscribers and C++ users.
+  ros2vtk::wire::Participant* GetParticipant() const;
+  /// The node's tf2 buffer, fed from /tf and /tf_static on each Spin (subscribed on first use).
+  /// nullptr before Create.
+  ros2vtk::tf2::BufferCore* GetTf2Buffer();
+  /// The node's /tf (or /tf_static) broadcaster, created on first use; nullptr before Create.
+  ros2vtk::tf2_ros::TransformBroadcaster* GetTf2Broadcaster(bool isStatic);
+  /// The server of this node's own parameters (nullptr before Create).
+  ros2vtk::wire::ParameterServer* GetParameterServer() const;
+  /// Work a scene node wants done on every Spin of this ROS node, after topics, parameters
+  /// and tf (e.g. a robot updating its links). Returns what it handled.
+  void AddSpinCallback(vtkROS2SceneNode* owner, std::function<int()> callback);
+  void RemoveSpinCallbacks(vtkROS2SceneNode* owner);
+#endif
+
+protected:
+  vtkROS2NodeNode();
+  ~vtkROS2NodeNode() override;
+
+  void OnRemovedFromScene() override;
+
+private:
+  vtkROS2NodeNode(const vtkROS2NodeNode&) = delete;
+  void operator=(const vtkROS2NodeNode&) = delete;
+
+  template <typename NodeType>
+  NodeType* FindByTopic(const char* role, const char* topic);
+  vtkROS2SceneNode* CreateAndAdd(bool publisher, const char* type, const char* topic);
+  template <typename NodeType>
+  NodeType* FindByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  bool CheckReadyFor(const char* what);
+  int SpinParametersAndTf2();
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

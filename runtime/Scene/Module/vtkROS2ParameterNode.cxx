@@ -1,0 +1,339 @@
+#include "vtkROS2ParameterNode.h"
+
+#include "vtkROS2NodeNode.h"
+
+#include "ros2vtk/wire/ParameterClient.hpp"
+#include "ros2vtk/wire/ParameterStore.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkStringArray.h"
+#include "vtkTypeInt64Array.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkXMLDataElement.h"
+
+#include <set>
+#include <sstream>
+
+vtkStandardNewMacro(vtkROS2ParameterNode);
+
+namespace
+{
+namespace rcl = ::ros2vtk::rcl_interfaces::msg;
+}
+
+//------------------------------------------------------------------------------
+class vtkROS2ParameterNode::vtkInternals
+{
+public:
+  std::string RemoteNode;
+  std::set<std::string> Names; // kept here too, so a scene file restores them before attaching
+  std::unique_ptr<ros2vtk::wire::ParameterClient> Client;
+};
+
+//------------------------------------------------------------------------------
+vtkROS2ParameterNode::vtkROS2ParameterNode()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkROS2ParameterNode::~vtkROS2ParameterNode() = default;
+
+//------------------------------------------------------------------------------
+void vtkROS2ParameterNode::OnRemovedFromScene()
+{
+  this->Internals->Client.reset();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::Attach(vtkROS2NodeNode* rosNode, const std::string& remoteNode)
+{
+  if (!rosNode || !rosNode->GetParticipant())
+  {
+    vtkErrorMacro("parameter node for " << remoteNode << ": the ROS node is not created");
+    return false;
+  }
+  std::string error;
+  auto client = ros2vtk::wire::ParameterClient::create(*rosNode->GetParticipant(), remoteNode, &error);
+  if (!client)
+  {
+    vtkErrorMacro("parameter node for " << remoteNode << ": " << error);
+    return false;
+  }
+  this->Internals->RemoteNode = client->remote_node();
+  for (const auto& name : this->Internals->Names)
+  {
+    client->add(name);
+  }
+  this->Internals->Client = std::move(client);
+  this->SetNodeReferenceID("ros2Node", rosNode->GetID());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ParameterNode::OnSceneRestored()
+{
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (rosNode && rosNode->GetParticipant() && !this->Internals->Client && !this->Internals->RemoteNode.empty())
+  {
+    this->Attach(rosNode, this->Internals->RemoteNode);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ParameterNode::ProcessParameterUpdates()
+{
+  if (!this->Internals->Client)
+  {
+    return 0;
+  }
+  const bool wasReady = this->IsMonitoredNodeReady();
+  const std::set<std::string> changed = this->Internals->Client->process();
+  if (!changed.empty() || wasReady != this->IsMonitoredNodeReady())
+  {
+    this->Modified();
+  }
+  if (!changed.empty())
+  {
+    this->InvokeEvent(ParameterModifiedEvent);
+  }
+  return static_cast<int>(changed.size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ParameterNode::GetMonitoredNodeName() const
+{
+  return this->Internals->RemoteNode.c_str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::IsMonitoredNodeReady() const
+{
+  return this->Internals->Client &&
+    this->Internals->Client->state() == ros2vtk::wire::ParameterClient::State::Ready;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::AddParameter(const char* name)
+{
+  if (!name || !*name)
+  {
+    vtkErrorMacro("AddParameter: empty parameter name");
+    return false;
+  }
+  this->Internals->Names.insert(name);
+  if (this->Internals->Client)
+  {
+    this->Internals->Client->add(name);
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::RemoveParameter(const char* name)
+{
+  if (!name || !this->Internals->Names.erase(name))
+  {
+    vtkErrorMacro("RemoveParameter: '" << (name ? name : "") << "' is not followed");
+    return false;
+  }
+  if (this->Internals->Client)
+  {
+    this->Internals->Client->remove(name);
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ParameterNode::GetParameterNames() const
+{
+  std::string names;
+  for (const auto& name : this->Internals->Names)
+  {
+    names += (names.empty() ? "" : " ") + name;
+  }
+  return names;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+const rcl::ParameterValue* Find(const std::unique_ptr<ros2vtk::wire::ParameterClient>& client, const char* name)
+{
+  return client && name ? client->value(name) : nullptr;
+}
+} // namespace
+
+#define ROS2VTK_PARAMETER_VALUE(name, expected, fallback)                                           \
+  const rcl::ParameterValue* value = Find(this->Internals->Client, name);                        \
+  if (!value || value->type != (expected))                                                        \
+  {                                                                                               \
+    vtkErrorMacro("parameter '" << (name ? name : "") << "' of " << this->Internals->RemoteNode   \
+                                << " is " << (value ? ros2vtk::wire::parameter_type_name(value->type) : "not set") \
+                                << ", not " << ros2vtk::wire::parameter_type_name(expected));     \
+    return fallback;                                                                              \
+  }
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::IsParameterSet(const char* name, bool noWarning) const
+{
+  const bool set = Find(this->Internals->Client, name) != nullptr;
+  if (!set && !noWarning)
+  {
+    vtkWarningMacro("parameter '" << (name ? name : "") << "' of " << this->Internals->RemoteNode
+                                  << " is not set (yet)");
+  }
+  return set;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ParameterNode::GetParameterType(const char* name) const
+{
+  const rcl::ParameterValue* value = Find(this->Internals->Client, name);
+  return ros2vtk::wire::parameter_type_name(value ? value->type : 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::GetParameterAsBool(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 1, false)
+  return value->bool_value;
+}
+
+vtkTypeInt64 vtkROS2ParameterNode::GetParameterAsInteger(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 2, 0)
+  return value->integer_value;
+}
+
+double vtkROS2ParameterNode::GetParameterAsDouble(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 3, 0.0)
+  return value->double_value;
+}
+
+std::string vtkROS2ParameterNode::GetParameterAsString(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 4, std::string())
+  return value->string_value;
+}
+
+bool vtkROS2ParameterNode::GetParameterAsByteArray(const char* name, vtkUnsignedCharArray* values) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 5, false)
+  if (!values)
+    return false;
+  values->SetNumberOfValues(static_cast<vtkIdType>(value->byte_array_value.size()));
+  for (size_t i = 0; i < value->byte_array_value.size(); ++i)
+    values->SetValue(static_cast<vtkIdType>(i), value->byte_array_value[i]);
+  return true;
+}
+
+bool vtkROS2ParameterNode::GetParameterAsVectorOfBools(const char* name, vtkIntArray* values) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 6, false)
+  if (!values)
+    return false;
+  values->SetNumberOfValues(static_cast<vtkIdType>(value->bool_array_value.size()));
+  for (size_t i = 0; i < value->bool_array_value.size(); ++i)
+    values->SetValue(static_cast<vtkIdType>(i), value->bool_array_value[i] ? 1 : 0);
+  return true;
+}
+
+bool vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(const char* name, vtkTypeInt64Array* values) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 7, false)
+  if (!values)
+    return false;
+  values->SetNumberOfValues(static_cast<vtkIdType>(value->integer_array_value.size()));
+  for (size_t i = 0; i < value->integer_array_value.size(); ++i)
+    values->SetValue(static_cast<vtkIdType>(i), value->integer_array_value[i]);
+  return true;
+}
+
+bool vtkROS2ParameterNode::GetParameterAsVectorOfDoubles(const char* name, vtkDoubleArray* values) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 8, false)
+  if (!values)
+    return false;
+  values->SetNumberOfValues(static_cast<vtkIdType>(value->double_array_value.size()));
+  for (size_t i = 0; i < value->double_array_value.size(); ++i)
+    values->SetValue(static_cast<vtkIdType>(i), value->double_array_value[i]);
+  return true;
+}
+
+bool vtkROS2ParameterNode::GetParameterAsVectorOfStrings(const char* name, vtkStringArray* values) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, 9, false)
+  if (!values)
+    return false;
+  values->SetNumberOfValues(static_cast<vtkIdType>(value->string_array_value.size()));
+  for (size_t i = 0; i < value->string_array_value.size(); ++i)
+    values->SetValue(static_cast<vtkIdType>(i), value->string_array_value[i]);
+  return true;
+}
+
+#undef ROS2VTK_PARAMETER_VALUE
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ParameterNode::PrintParameter(const char* name) const
+{
+  const rcl::ParameterValue* value = Find(this->Internals->Client, name);
+  std::ostringstream text;
+  text << (name ? name : "") << " (" << ros2vtk::wire::parameter_type_name(value ? value->type : 0)
+       << "): " << (value ? ros2vtk::wire::parameter_value_to_string(*value) : std::string("not set"));
+  return text.str();
+}
+
+//------------------------------------------------------------------------------
+vtkROS2NodeNode* vtkROS2ParameterNode::GetROS2Node() const
+{
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ParameterNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  element->SetAttribute("monitoredNode", this->Internals->RemoteNode.c_str());
+  element->SetAttribute("parameters", this->GetParameterNames().c_str());
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ParameterNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  if (const char* node = element->GetAttribute("monitoredNode"))
+  {
+    this->Internals->RemoteNode = node;
+  }
+  if (const char* names = element->GetAttribute("parameters"))
+  {
+    std::istringstream list(names);
+    std::string name;
+    while (list >> name)
+    {
+      this->Internals->Names.insert(name);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ParameterNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MonitoredNode: " << this->Internals->RemoteNode << "\n";
+  os << indent << "Ready: " << this->IsMonitoredNodeReady() << "\n";
+  for (const auto& name : this->Internals->Names)
+  {
+    os << indent << this->PrintParameter(name.c_str()) << "\n";
+  }
+}

@@ -1,0 +1,84 @@
+#include "vtkROS2PublisherGenericNode.h"
+
+#include "GenericMessageType.hpp"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/MessageYaml.hpp"
+
+#include "vtkObjectFactory.h"
+#include "vtkXMLDataElement.h"
+
+#include <memory>
+
+vtkStandardNewMacro(vtkROS2PublisherGenericNode);
+
+//------------------------------------------------------------------------------
+vtkROS2PublisherGenericNode::vtkROS2PublisherGenericNode() = default;
+
+//------------------------------------------------------------------------------
+vtkROS2PublisherGenericNode::~vtkROS2PublisherGenericNode() = default;
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::SetROSType(const char* rosType)
+{
+  if (this->IsAddedToROS2Node())
+  {
+    vtkErrorMacro("SetROSType: cannot change the type while added to a ROS node");
+    return false;
+  }
+  std::string error;
+  const ros2vtk::wire::MessageTypeSupport* type = ros2vtk::scene::find_generic_type(rosType, error);
+  if (!type)
+  {
+    vtkErrorMacro("SetROSType: " << error);
+    return false;
+  }
+  if (type != this->Type)
+  {
+    this->Type = type;
+    this->Modified();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherGenericNode::GetMessageTypeSupport() const
+{
+  return *this->Type; // callers check HasMessageTypeSupport() first
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::PublishYAML(const char* yaml)
+{
+  if (!this->Type)
+  {
+    this->RecordFailedPublish("the message type is not set (SetROSType)");
+    return false;
+  }
+  const ros2vtk::wire::MessageTypeSupport& type = *this->Type;
+  std::unique_ptr<void, void (*)(void*)> message(type.create(), type.destroy);
+  std::string error;
+  if (!ros2vtk::wire::from_yaml(type, yaml ? yaml : "", message.get(), &error))
+  {
+    this->RecordFailedPublish(("invalid YAML for " + std::string(type.ros_type) + ": " + error).c_str());
+    return false;
+  }
+  return this->PublishMessage(message.get());
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::ReadXML(vtkXMLDataElement* element)
+{
+  const char* rosType = element ? element->GetAttribute("rosType") : nullptr;
+  if (rosType && *rosType && !this->SetROSType(rosType))
+  {
+    return false;
+  }
+  return this->Superclass::ReadXML(element);
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2PublisherGenericNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

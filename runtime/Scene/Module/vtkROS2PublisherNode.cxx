@@ -1,0 +1,88 @@
+#include "vtkROS2PublisherNode.h"
+
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/Publisher.hpp"
+
+//------------------------------------------------------------------------------
+class vtkROS2PublisherNode::vtkInternals
+{
+public:
+  std::unique_ptr<ros2vtk::wire::Publisher> Publisher;
+};
+
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode::vtkROS2PublisherNode()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode::~vtkROS2PublisherNode() = default;
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherNode::CreateEndpoint(ros2vtk::wire::Participant& participant,
+  const std::string& topic, const ros2vtk::wire::QoS& qos, std::string* error)
+{
+  this->Internals->Publisher =
+    participant.create_publisher(this->GetMessageTypeSupport(), topic, qos, error);
+  return this->Internals->Publisher != nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2PublisherNode::DestroyEndpoint()
+{
+  this->Internals->Publisher.reset();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherNode::HasEndpoint() const
+{
+  return this->Internals->Publisher != nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherNode::GetNumberOfMatchedSubscriptions() const
+{
+  return this->Internals->Publisher
+    ? static_cast<int>(this->Internals->Publisher->matched_subscriptions())
+    : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherNode::PublishMessage(const void* rosMessage)
+{
+  ++this->NumberOfCalls;
+  if (!this->Internals->Publisher)
+  {
+    vtkErrorMacro("Publish: not added to a ROS node (call AddToROS2Node or use "
+                  "vtkROS2NodeNode::CreateAndAddPublisherNode)");
+    return false;
+  }
+  if (!rosMessage)
+  {
+    vtkErrorMacro("Publish: no message");
+    return false;
+  }
+  if (!this->Internals->Publisher->publish(rosMessage))
+  {
+    vtkErrorMacro("Publish: DDS refused the sample on '" << this->GetTopic() << "'");
+    return false;
+  }
+  ++this->NumberOfMessagesSent; // no ModifiedEvent: publishing is not a change of the node
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2PublisherNode::RecordFailedPublish(const char* reason)
+{
+  ++this->NumberOfCalls;
+  vtkErrorMacro("Publish on '" << this->GetTopic() << "': " << (reason ? reason : "failed"));
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2PublisherNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfCalls: " << this->NumberOfCalls << "\n";
+  os << indent << "NumberOfMessagesSent: " << this->NumberOfMessagesSent << "\n";
+}

@@ -1,0 +1,55 @@
+// ros2vtk — base class of every publisher node (vtkROS2Publisher<Short>Node, generic).
+//
+// Abstract. A subclass supplies its message type (GetMessageTypeSupport) and a Publish(...)
+// taking its VTK/C++ value, converts it into a message struct and hands it to PublishMessage().
+// Counts calls and messages sent, as SlicerROS2 does.
+#ifndef vtkROS2PublisherNode_h
+#define vtkROS2PublisherNode_h
+
+#include "ros2vtkSceneModule.h" // for export macro
+
+#include "vtkROS2TopicNode.h"
+
+#include <memory> // for std::unique_ptr (pimpl)
+
+class ROS2VTKSCENE_EXPORT vtkROS2PublisherNode : public vtkROS2TopicNode
+{
+public:
+  vtkTypeMacro(vtkROS2PublisherNode, vtkROS2TopicNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Calls of Publish (successful or not) and messages actually handed to DDS.
+  vtkTypeInt64 GetNumberOfCalls() const { return this->NumberOfCalls; }
+  vtkTypeInt64 GetNumberOfMessagesSent() const { return this->NumberOfMessagesSent; }
+  /// Subscriptions (local or remote) currently matched with this publisher; 0 when not added.
+  int GetNumberOfMatchedSubscriptions() const;
+
+protected:
+  vtkROS2PublisherNode();
+  ~vtkROS2PublisherNode() override;
+
+  /// Publishes a message struct of GetMessageTypeSupport()'s type. False (vtkErrorMacro) when
+  /// the node is not added to a ROS node or DDS refused the sample. Counts the call.
+  bool PublishMessage(const void* rosMessage);
+  /// For subclasses whose conversion failed before a message existed: counts the call and
+  /// reports `reason` with vtkErrorMacro.
+  void RecordFailedPublish(const char* reason);
+
+  bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
+    const ros2vtk::wire::QoS& qos, std::string* error) override;
+  void DestroyEndpoint() override;
+  bool HasEndpoint() const override;
+  const char* GetROS2NodeReferenceRole() const override { return "publisher"; }
+
+  vtkTypeInt64 NumberOfCalls = 0;
+  vtkTypeInt64 NumberOfMessagesSent = 0;
+
+private:
+  vtkROS2PublisherNode(const vtkROS2PublisherNode&) = delete;
+  void operator=(const vtkROS2PublisherNode&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,390 @@
+#include "vtkROS2Scene.h"
+
+#include "NodeClassRegistry.hpp"
+#include "vtkROS2SceneNode.h"
+
+#include "vtkCollection.h"
+#include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLUtilities.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+// Root element and format version of scene files.
+const char* const SceneTag = "ROS2Scene";
+const int SceneFormatVersion = 1;
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkROS2Scene::vtkInternals
+{
+public:
+  std::vector<vtkSmartPointer<vtkROS2SceneNode>> Nodes; // in the order they were added
+  std::map<std::string, vtkROS2SceneNode*> ByID;
+  std::map<std::string, int> NextIndexByClass; // for `<ClassName><n>` IDs
+
+  std::string UniqueID(const std::string& className)
+  {
+    int& next = this->NextIndexByClass[className];
+    std::string id;
+    do
+    {
+      id = className + std::to_string(++next);
+    } while (this->ByID.count(id) > 0);
+    return id;
+  }
+};
+
+vtkStandardNewMacro(vtkROS2Scene);
+
+//------------------------------------------------------------------------------
+vtkROS2Scene::vtkROS2Scene()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Scene::~vtkROS2Scene()
+{
+  this->Clear();
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::AddNode(vtkROS2SceneNode* node)
+{
+  if (!node)
+  {
+    vtkErrorMacro("AddNode: node is null");
+    return nullptr;
+  }
+  if (!this->AddNodeWithID(node, this->Internals->UniqueID(node->GetClassName())))
+  {
+    return nullptr;
+  }
+  return node;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Scene::AddNodeWithID(vtkROS2SceneNode* node, const std::string& id)
+{
+  if (node->GetScene())
+  {
+    vtkErrorMacro("AddNode: node '" << node->GetID() << "' is already in a scene");
+    return false;
+  }
+  if (id.empty() || this->Internals->ByID.count(id) > 0)
+  {
+    vtkErrorMacro("AddNode: node ID '" << id << "' is empty or already used");
+    return false;
+  }
+  this->Internals->Nodes.emplace_back(node);
+  this->Internals->ByID[id] = node;
+  node->SetSceneAndID(this, id.c_str());
+  this->Modified();
+  this->InvokeEvent(NodeAddedEvent, node);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
+{
+  if (!node || node->GetScene() != this)
+  {
+    vtkErrorMacro("RemoveNode: node is not in this scene");
+    return false;
+  }
+  auto& nodes = this->Internals->Nodes;
+  auto it = std::find(nodes.begin(), nodes.end(), node);
+  if (it == nodes.end())
+  {
+    vtkErrorMacro("RemoveNode: node is not in this scene");
+    return false;
+  }
+  // Keep the node alive until observers have seen it go.
+  vtkSmartPointer<vtkROS2SceneNode> keep = node;
+  const std::string id = node->GetID();
+  node->SetSceneAndID(nullptr, id.c_str()); // lets it release ROS resources while the scene is intact
+  nodes.erase(std::find(nodes.begin(), nodes.end(), node));
+  this->Internals->ByID.erase(id);
+  for (const auto& other : nodes)
+  {
+    other->ForgetReferencesTo(id.c_str());
+  }
+  this->Modified();
+  this->InvokeEvent(NodeRemovedEvent, node);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Scene::Clear()
+{
+  while (!this->Internals->Nodes.empty())
+  {
+    this->RemoveNode(this->Internals->Nodes.back());
+  }
+  this->Internals->NextIndexByClass.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Scene::GetNumberOfNodes() const
+{
+  return static_cast<int>(this->Internals->Nodes.size());
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::GetNthNode(int n) const
+{
+  if (n < 0 || n >= this->GetNumberOfNodes())
+  {
+    return nullptr;
+  }
+  return this->Internals->Nodes[static_cast<size_t>(n)];
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::GetNodeByID(const char* id) const
+{
+  if (!id)
+  {
+    return nullptr;
+  }
+  auto it = this->Internals->ByID.find(id);
+  return it == this->Internals->ByID.end() ? nullptr : it->second;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::GetFirstNodeByName(const char* name) const
+{
+  if (!name)
+  {
+    return nullptr;
+  }
+  for (const auto& node : this->Internals->Nodes)
+  {
+    if (std::string(node->GetName()) == name)
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Scene::GetNodesByClass(const char* className, vtkCollection* nodes) const
+{
+  if (!className || !nodes)
+  {
+    return;
+  }
+  for (const auto& node : this->Internals->Nodes)
+  {
+    if (node->IsA(className))
+    {
+      nodes->AddItem(node);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Scene::GetNumberOfNodesByClass(const char* className) const
+{
+  if (!className)
+  {
+    return 0;
+  }
+  return static_cast<int>(std::count_if(this->Internals->Nodes.begin(),
+    this->Internals->Nodes.end(), [className](const auto& node) { return node->IsA(className); }));
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::GetNthNodeByClass(int n, const char* className) const
+{
+  if (!className || n < 0)
+  {
+    return nullptr;
+  }
+  for (const auto& node : this->Internals->Nodes)
+  {
+    if (node->IsA(className) && n-- == 0)
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::CreateNodeByClass(const char* className)
+{
+  auto& registry = ros2vtk::scene::NodeClassRegistry::instance();
+  const auto* info = className ? registry.find_class(className) : nullptr;
+  if (!info)
+  {
+    std::ostringstream known;
+    for (auto direction : { ros2vtk::scene::NodeDirection::Other,
+           ros2vtk::scene::NodeDirection::Publisher, ros2vtk::scene::NodeDirection::Subscriber })
+    {
+      for (const auto* entry : registry.classes(direction))
+      {
+        known << " " << entry->class_name;
+      }
+    }
+    vtkErrorMacro("CreateNodeByClass: unknown class '" << (className ? className : "(null)")
+                                                       << "'. Known classes:" << known.str());
+    return nullptr;
+  }
+  return info->create();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2Scene::WriteToXMLString()
+{
+  vtkNew<vtkXMLDataElement> root;
+  root->SetName(SceneTag);
+  root->SetIntAttribute("version", SceneFormatVersion);
+  for (const auto& node : this->Internals->Nodes)
+  {
+    vtkNew<vtkXMLDataElement> element;
+    element->SetName(node->GetXMLTagName());
+    node->WriteXML(element);
+    root->AddNestedElement(element);
+  }
+  std::ostringstream stream;
+  vtkIndent indent; // one element per line: scene files are read and diffed by people
+  vtkXMLUtilities::FlattenElement(root, stream, &indent, 1);
+  return stream.str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Scene::WriteToXMLFile(const char* fileName)
+{
+  if (!fileName || !*fileName)
+  {
+    vtkErrorMacro("WriteToXMLFile: no file name");
+    return false;
+  }
+  std::ofstream file(fileName);
+  file << this->WriteToXMLString();
+  file.close();
+  if (!file)
+  {
+    vtkErrorMacro("WriteToXMLFile: cannot write '" << fileName << "'");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Scene::ReadFromXMLFile(const char* fileName)
+{
+  if (!fileName || !*fileName)
+  {
+    vtkErrorMacro("ReadFromXMLFile: no file name");
+    return false;
+  }
+  std::ifstream file(fileName);
+  if (!file)
+  {
+    vtkErrorMacro("ReadFromXMLFile: cannot open '" << fileName << "'");
+    return false;
+  }
+  vtkXMLDataElement* root = vtkXMLUtilities::ReadElementFromStream(file);
+  if (!root)
+  {
+    vtkErrorMacro("ReadFromXMLFile: '" << fileName << "' is not an XML file");
+    return false;
+  }
+  const bool ok = this->ReadFromXMLElement(root);
+  root->Delete();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Scene::ReadFromXMLString(const char* xml)
+{
+  vtkXMLDataElement* root = xml ? vtkXMLUtilities::ReadElementFromString(xml) : nullptr;
+  if (!root)
+  {
+    vtkErrorMacro("ReadFromXMLString: not an XML document");
+    return false;
+  }
+  const bool ok = this->ReadFromXMLElement(root);
+  root->Delete();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
+{
+  if (!root->GetName() || std::string(root->GetName()) != SceneTag)
+  {
+    vtkErrorMacro("ReadFromXML: root element is <" << (root->GetName() ? root->GetName() : "")
+                                                    << ">, expected <" << SceneTag << ">");
+    return false;
+  }
+  int version = 0;
+  if (!root->GetScalarAttribute("version", version) || version != SceneFormatVersion)
+  {
+    vtkErrorMacro("ReadFromXML: unsupported scene format version (expected " << SceneFormatVersion
+                                                                               << ")");
+    return false;
+  }
+  this->Clear();
+  std::vector<vtkROS2SceneNode*> restored;
+  for (int i = 0; i < root->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* element = root->GetNestedElement(i);
+    const char* className = element->GetName();
+    const char* id = element->GetAttribute("id");
+    if (!id || !*id)
+    {
+      vtkErrorMacro("ReadFromXML: element " << i << " <" << (className ? className : "")
+                                            << "> has no id");
+      return false;
+    }
+    vtkSmartPointer<vtkROS2SceneNode> node;
+    node.TakeReference(this->CreateNodeByClass(className));
+    if (!node)
+    {
+      vtkErrorMacro("ReadFromXML: cannot create node '" << id << "'");
+      return false;
+    }
+    if (!node->ReadXML(element))
+    {
+      vtkErrorMacro("ReadFromXML: invalid properties for node '" << id << "'");
+      return false;
+    }
+    if (!this->AddNodeWithID(node, id))
+    {
+      return false;
+    }
+    restored.push_back(node);
+  }
+  for (vtkROS2SceneNode* node : restored)
+  {
+    if (node->GetScene() == this)
+    {
+      node->OnSceneRestored();
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Scene::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfNodes: " << this->Internals->Nodes.size() << "\n";
+  for (const auto& node : this->Internals->Nodes)
+  {
+    os << indent.GetNextIndent() << node->GetID() << " (" << node->GetClassName() << ") '"
+       << node->GetName() << "'\n";
+  }
+}

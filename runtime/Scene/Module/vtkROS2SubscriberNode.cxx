@@ -1,0 +1,170 @@
+#include "vtkROS2SubscriberNode.h"
+
+#include "RateLimitedReport.hpp"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/MessageYaml.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/Subscription.hpp"
+
+#include "vtkCommand.h"
+
+#include <vector>
+
+namespace
+{
+// At most one warning about malformed samples per subscriber in this interval.
+constexpr std::chrono::seconds RejectionReportInterval(5);
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkROS2SubscriberNode::vtkInternals
+{
+public:
+  std::unique_ptr<ros2vtk::wire::Subscription> Subscription;
+  // Messages of the latest spin that brought any; the newest is Batch.back().
+  std::vector<ros2vtk::wire::MessagePtr> Batch;
+  int NumberOfNewMessages = 0;
+  uint64_t RejectedSeen = 0; // rejected_count() of the current subscription already counted
+  std::string LastRejectionReason;
+  ros2vtk::scene::RateLimitedReport RejectionReport{ RejectionReportInterval };
+};
+
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode::vtkROS2SubscriberNode()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode::~vtkROS2SubscriberNode() = default;
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberNode::CreateEndpoint(ros2vtk::wire::Participant& participant,
+  const std::string& topic, const ros2vtk::wire::QoS& qos, std::string* error)
+{
+  this->Internals->Subscription =
+    participant.create_subscription(this->GetMessageTypeSupport(), topic, qos, error);
+  this->Internals->RejectedSeen = 0;
+  return this->Internals->Subscription != nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::DestroyEndpoint()
+{
+  this->Internals->Subscription.reset();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberNode::HasEndpoint() const
+{
+  return this->Internals->Subscription != nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2SubscriberNode::GetNumberOfMatchedPublications() const
+{
+  return this->Internals->Subscription
+    ? static_cast<int>(this->Internals->Subscription->matched_publications())
+    : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2SubscriberNode::ProcessIncomingMessages()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Subscription)
+  {
+    return 0;
+  }
+  this->ReportRejections();
+
+  std::vector<ros2vtk::wire::MessagePtr> taken;
+  internals.Subscription->take(taken);
+  internals.NumberOfNewMessages = static_cast<int>(taken.size());
+  if (taken.empty())
+  {
+    return 0;
+  }
+  internals.Batch = std::move(taken);
+  this->NumberOfMessages += internals.NumberOfNewMessages;
+  this->OnNewMessages();
+
+  // One event per spin, with the count: MTime is bumped by hand because vtkObject::Modified()
+  // would fire its own ModifiedEvent without call data.
+  int count = internals.NumberOfNewMessages;
+  this->MTime.Modified();
+  this->InvokeEvent(vtkCommand::ModifiedEvent, &count);
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::ReportRejections()
+{
+  vtkInternals& internals = *this->Internals;
+  const uint64_t rejected = internals.Subscription->rejected_count();
+  const uint64_t fresh = rejected > internals.RejectedSeen ? rejected - internals.RejectedSeen : 0;
+  internals.RejectedSeen = rejected;
+  if (fresh > 0)
+  {
+    this->NumberOfRejectedMessages += static_cast<vtkTypeInt64>(fresh);
+    internals.LastRejectionReason = internals.Subscription->last_rejection();
+  }
+  const uint64_t due =
+    internals.RejectionReport.record(fresh, ros2vtk::scene::RateLimitedReport::Clock::now());
+  if (due > 0)
+  {
+    vtkWarningMacro("topic '" << this->GetTopic() << "': " << due
+                              << " malformed sample(s) rejected (total "
+                              << this->NumberOfRejectedMessages
+                              << "); latest: " << internals.LastRejectionReason);
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2SubscriberNode::GetLastRejectionReason() const
+{
+  return this->Internals->LastRejectionReason.c_str();
+}
+
+//------------------------------------------------------------------------------
+const void* vtkROS2SubscriberNode::GetLastRawMessage() const
+{
+  return this->Internals->Batch.empty() ? nullptr : this->Internals->Batch.back().get();
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2SubscriberNode::GetNumberOfNewMessages() const
+{
+  return this->Internals->NumberOfNewMessages;
+}
+
+//------------------------------------------------------------------------------
+const void* vtkROS2SubscriberNode::GetNewRawMessage(int i) const
+{
+  if (i < 0 || i >= this->Internals->NumberOfNewMessages)
+  {
+    return nullptr;
+  }
+  return this->Internals->Batch[static_cast<size_t>(i)].get();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2SubscriberNode::GetLastMessageYAML() const
+{
+  const void* message = this->GetLastRawMessage();
+  if (!message)
+  {
+    return std::string();
+  }
+  return ros2vtk::wire::to_yaml(*this->Internals->Batch.back().type(), message);
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfMessages: " << this->NumberOfMessages << "\n";
+  os << indent << "NumberOfRejectedMessages: " << this->NumberOfRejectedMessages << "\n";
+  os << indent << "LastRejectionReason: " << this->Internals->LastRejectionReason << "\n";
+}

@@ -1,0 +1,74 @@
+// ros2vtk — base class of every subscriber node (vtkROS2Subscriber<Short>Node, generic).
+//
+// Abstract. DDS threads only queue samples; when the owning vtkROS2NodeNode spins (on the
+// caller's thread), ProcessIncomingMessages() takes the queue, keeps the newest raw message and
+// the raw messages of this spin, calls OnNewMessages() so subclasses can drop their converted
+// cache, and fires ONE ModifiedEvent with the number of new messages (int*) as call data.
+// Malformed samples are counted and reported, at most once per few seconds.
+#ifndef vtkROS2SubscriberNode_h
+#define vtkROS2SubscriberNode_h
+
+#include "ros2vtkSceneModule.h" // for export macro
+
+#include "vtkROS2TopicNode.h"
+
+#include <memory> // for std::unique_ptr (pimpl)
+#include <string> // for std::string
+
+class ROS2VTKSCENE_EXPORT vtkROS2SubscriberNode : public vtkROS2TopicNode
+{
+public:
+  vtkTypeMacro(vtkROS2SubscriberNode, vtkROS2TopicNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Messages received (taken by spins) since the node was created.
+  vtkTypeInt64 GetNumberOfMessages() const { return this->NumberOfMessages; }
+  /// Samples rejected as malformed (bad CDR) and the reason of the latest one.
+  vtkTypeInt64 GetNumberOfRejectedMessages() const { return this->NumberOfRejectedMessages; }
+  const char* GetLastRejectionReason() const;
+  /// Publishers (local or remote) currently matched; 0 when not added.
+  int GetNumberOfMatchedPublications() const;
+
+  /// The newest message as YAML, as `ros2 topic echo` prints it; empty before the first one.
+  std::string GetLastMessageYAML() const;
+
+  /// Takes the queued messages; returns how many were new. Called by vtkROS2NodeNode::Spin on
+  /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.
+  int ProcessIncomingMessages();
+
+protected:
+  vtkROS2SubscriberNode();
+  ~vtkROS2SubscriberNode() override;
+
+  /// Newest message received (struct of GetMessageTypeSupport()'s type); nullptr before the
+  /// first. Valid until a later spin brings new messages.
+  const void* GetLastRawMessage() const;
+  /// Messages brought by the latest spin (0 when it brought none), oldest first; the last one is
+  /// GetLastRawMessage(). nullptr for an index out of range.
+  int GetNumberOfNewMessages() const;
+  const void* GetNewRawMessage(int i) const;
+
+  /// Called by ProcessIncomingMessages when a spin brought messages, before ModifiedEvent.
+  /// Subclasses invalidate their converted value here (convert lazily on Get).
+  virtual void OnNewMessages() {}
+
+  bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
+    const ros2vtk::wire::QoS& qos, std::string* error) override;
+  void DestroyEndpoint() override;
+  bool HasEndpoint() const override;
+  const char* GetROS2NodeReferenceRole() const override { return "subscriber"; }
+
+  vtkTypeInt64 NumberOfMessages = 0;
+  vtkTypeInt64 NumberOfRejectedMessages = 0;
+
+private:
+  vtkROS2SubscriberNode(const vtkROS2SubscriberNode&) = delete;
+  void operator=(const vtkROS2SubscriberNode&) = delete;
+
+  void ReportRejections();
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,135 @@
+#include "vtkROS2Tf2LookupNode.h"
+
+#include "vtkROS2NodeNode.h"
+
+#include "ros2vtk/convert/Units.hpp"
+#include "ros2vtk/tf2/BufferCore.hpp"
+
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkXMLDataElement.h"
+
+vtkStandardNewMacro(vtkROS2Tf2LookupNode);
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode::vtkROS2Tf2LookupNode() = default;
+vtkROS2Tf2LookupNode::~vtkROS2Tf2LookupNode() = default;
+
+//------------------------------------------------------------------------------
+void vtkROS2Tf2LookupNode::SetParentID(const char* frame)
+{
+  const std::string value = frame ? frame : "";
+  if (value != this->ParentFrame)
+  {
+    this->ParentFrame = value;
+    this->Status = 0;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Tf2LookupNode::SetChildID(const char* frame)
+{
+  const std::string value = frame ? frame : "";
+  if (value != this->ChildFrame)
+  {
+    this->ChildFrame = value;
+    this->Status = 0;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2Tf2LookupNode::GetLookupStatus() const
+{
+  return this->Status == 1 ? "ok" : this->Status == 2 ? "failed" : "waiting";
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Tf2LookupNode::IsDifferentFromLast(int sec, int nsec) const
+{
+  return this->LastStampNanoseconds != static_cast<long long>(sec) * 1000000000LL + nsec;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2NodeNode* vtkROS2Tf2LookupNode::GetROS2Node() const
+{
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buffer)
+{
+  if (!this->IsParentAndChildSet())
+  {
+    return false;
+  }
+  const ros2vtk::tf2::LookupResult result =
+    buffer.lookup_transform(this->ParentFrame, this->ChildFrame, ros2vtk::tf2::kLatestTime);
+  if (!result.ok)
+  {
+    // Reported once per failure episode (SlicerROS2 logs it at every spin, 50 times a second).
+    // Waiting for frames at start-up is normal: only a lookup that used to work is logged.
+    this->LastError = result.message;
+    if (this->Status == 1)
+    {
+      vtkWarningMacro("tf2 lookup " << this->ParentFrame << " <- " << this->ChildFrame
+                                    << " failed: " << result.message);
+      this->Status = 2;
+      this->Modified();
+    }
+    return false;
+  }
+  this->Status = 1;
+  this->LastError.clear();
+  this->LastStampNanoseconds = result.stamp;
+  this->LastStamp = static_cast<double>(result.stamp) * 1e-9;
+  const Eigen::Isometry3d isometry = result.isometry();
+  const double scale = this->ScaleLengths ? ros2vtk::convert::kMillimetresPerMetre : 1.0;
+  vtkNew<vtkMatrix4x4> matrix;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      matrix->SetElement(i, j, isometry.linear()(i, j));
+    }
+    matrix->SetElement(i, 3, isometry.translation()(i) * scale);
+  }
+  return this->SetMatrixTransformToParent(matrix);
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Tf2LookupNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  element->SetAttribute("parentFrame", this->ParentFrame.c_str());
+  element->SetAttribute("childFrame", this->ChildFrame.c_str());
+  element->SetIntAttribute("scaleLengths", this->ScaleLengths ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Tf2LookupNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  this->SetParentID(element->GetAttribute("parentFrame"));
+  this->SetChildID(element->GetAttribute("childFrame"));
+  int scale = 1;
+  if (element->GetScalarAttribute("scaleLengths", scale))
+  {
+    this->ScaleLengths = scale != 0;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Tf2LookupNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParentID: " << this->ParentFrame << "\n";
+  os << indent << "ChildID: " << this->ChildFrame << "\n";
+  os << indent << "LookupStatus: " << this->GetLookupStatus() << "\n";
+}

@@ -1,0 +1,246 @@
+#include "ros2vtk/tf2/BufferCore.hpp"
+
+#include "FrameListing.hpp"
+#include "FrameTable.hpp"
+#include "TransformInputCheck.hpp"
+#include "TreeWalker.hpp"
+
+#include "ros2vtk/tf2/StaticCache.hpp"
+#include "ros2vtk/tf2/TimeCache.hpp"
+
+#include <algorithm>
+
+namespace ros2vtk {
+namespace tf2 {
+
+namespace {
+
+/// tf2's validateFrameId for lookups: empty or '/'-prefixed ids are invalid arguments, unknown
+/// ids a lookup error. Returns kNoFrame and fills `result` on failure.
+FrameId validate_frame_id(const FrameTable& frames, const char* function_name,
+  const std::string& frame, LookupResult& result)
+{
+  if (frame.empty() || frame[0] == '/') {
+    result.error = Tf2Error::InvalidArgument;
+    result.message = "Invalid argument \"" + frame + "\" passed to " + function_name +
+      (frame.empty() ? " - in tf2 frame_ids cannot be empty"
+                     : " - in tf2 frame_ids cannot start with a '/'");
+    return kNoFrame;
+  }
+  const FrameId id = frames.ids.find(frame);
+  if (id == kNoFrame) {
+    result.error = Tf2Error::Lookup;
+    result.message = "\"" + frame + "\" passed to " + function_name + " does not exist.";
+  }
+  return id;
+}
+
+} // namespace
+
+BufferCore::BufferCore(Duration cache_time)
+  : cache_time_(std::max<Duration>(cache_time, 0))
+  , frames_(std::make_unique<FrameTable>())
+{
+}
+
+BufferCore::~BufferCore() = default;
+
+bool BufferCore::set_transform(const TransformStamped& transform, const std::string& authority,
+  bool is_static, std::string* error)
+{
+  const CheckedTransform checked = check_transform_input(transform, authority);
+  if (!checked.ok) {
+    if (error) {
+      *error = checked.message;
+    }
+    return false;
+  }
+
+  std::lock_guard<std::mutex> lock(mutex_);
+  const FrameId child = frames_->intern(checked.child);
+  const FrameId parent = frames_->intern(checked.parent);
+  auto& cache = frames_->caches[child];
+  if (!cache || cache->is_static() != is_static) {
+    // First data, or data with the other static flag: tf2 starts the frame over with a cache of
+    // the matching kind.
+    if (is_static) {
+      cache = std::make_unique<StaticCache>();
+    } else {
+      cache = std::make_unique<TimeCache>(cache_time_);
+    }
+  }
+  if (!cache->insert(TransformRecord{ transform.stamp, checked.transform, parent, child })) {
+    if (error) {
+      *error = "TF_OLD_DATA ignoring data from the past for frame " + checked.child + " at time " +
+        display_time(transform.stamp) + " according to authority " + authority +
+        "\nPossible reasons are listed at http://wiki.ros.org/tf/Errors%20explained";
+    }
+    return false;
+  }
+  frames_->authorities[child] = authority;
+  return true;
+}
+
+LookupResult BufferCore::lookup_locked(const std::string& target_frame,
+  const std::string& source_frame, TimePoint time, const char* function_name) const
+{
+  LookupResult result;
+  result.target_frame = target_frame;
+  result.source_frame = source_frame;
+  if (target_frame == source_frame) {
+    // tf2 answers this before validating, so it works even for frames never seen.
+    result.ok = true;
+    result.stamp = time;
+    if (time == kLatestTime) {
+      const TimeCacheInterface* cache = frames_->cache(frames_->ids.find(target_frame));
+      result.stamp = cache ? cache->newest_stamp() : kLatestTime;
+    }
+    return result;
+  }
+
+  const std::string prefix(function_name);
+  const FrameId target = validate_frame_id(*frames_, (prefix + " argument target_frame").c_str(),
+    target_frame, result);
+  if (target == kNoFrame) {
+    return result;
+  }
+  const FrameId source = validate_frame_id(*frames_, (prefix + " argument source_frame").c_str(),
+    source_frame, result);
+  if (source == kNoFrame) {
+    return result;
+  }
+
+  WalkResult walk = TreeWalker(*frames_).transform_between(target, source, time);
+  result.error = walk.error;
+  result.message = std::move(walk.message);
+  result.ok = walk.error == Tf2Error::NoError;
+  result.stamp = walk.time;
+  if (result.ok) {
+    result.transform = walk.transform;
+  }
+  return result;
+}
+
+LookupResult BufferCore::lookup_transform(const std::string& target_frame,
+  const std::string& source_frame, TimePoint time) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return lookup_locked(target_frame, source_frame, time, "lookupTransform");
+}
+
+LookupResult BufferCore::lookup_transform(const std::string& target_frame, TimePoint target_time,
+  const std::string& source_frame, TimePoint source_time, const std::string& fixed_frame) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  LookupResult result;
+  result.target_frame = target_frame;
+  result.source_frame = source_frame;
+  // tf2 validates all three names before looking anything up.
+  const std::pair<const char*, const std::string*> arguments[] = {
+    { "lookupTransform argument target_frame", &target_frame },
+    { "lookupTransform argument source_frame", &source_frame },
+    { "lookupTransform argument fixed_frame", &fixed_frame },
+  };
+  for (const auto& [function_name, frame] : arguments) {
+    if (validate_frame_id(*frames_, function_name, *frame, result) == kNoFrame) {
+      return result;
+    }
+  }
+
+  LookupResult fixed_from_source =
+    lookup_locked(fixed_frame, source_frame, source_time, "lookupTransform");
+  if (!fixed_from_source.ok) {
+    fixed_from_source.target_frame = target_frame;
+    return fixed_from_source;
+  }
+  LookupResult target_from_fixed =
+    lookup_locked(target_frame, fixed_frame, target_time, "lookupTransform");
+  if (!target_from_fixed.ok) {
+    target_from_fixed.source_frame = source_frame;
+    return target_from_fixed;
+  }
+  result.ok = true;
+  result.stamp = target_from_fixed.stamp;
+  result.transform = target_from_fixed.transform * fixed_from_source.transform;
+  return result;
+}
+
+bool BufferCore::can_transform(const std::string& target_frame, const std::string& source_frame,
+  TimePoint time, std::string* error) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const LookupResult result = lookup_locked(target_frame, source_frame, time, "canTransform");
+  if (!result.ok && error) {
+    *error = result.message;
+  }
+  return result.ok;
+}
+
+bool BufferCore::can_transform(const std::string& target_frame, TimePoint target_time,
+  const std::string& source_frame, TimePoint source_time, const std::string& fixed_frame,
+  std::string* error) const
+{
+  const LookupResult result =
+    lookup_transform(target_frame, target_time, source_frame, source_time, fixed_frame);
+  if (!result.ok && error) {
+    *error = result.message;
+  }
+  return result.ok;
+}
+
+bool BufferCore::frame_exists(const std::string& frame) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frames_->ids.find(frame) != kNoFrame;
+}
+
+bool BufferCore::get_frame_parent(const std::string& frame, TimePoint time,
+  std::string& parent) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const TimeCacheInterface* cache = frames_->cache(frames_->ids.find(frame));
+  if (!cache) {
+    return false;
+  }
+  const FrameId parent_id = cache->parent_at(time);
+  if (parent_id == kNoFrame) {
+    return false;
+  }
+  parent = frames_->ids.name(parent_id);
+  return true;
+}
+
+std::vector<std::string> BufferCore::all_frame_names() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::string> names;
+  for (FrameId id = 1; id < frames_->ids.size(); ++id) {
+    names.push_back(frames_->ids.name(id));
+  }
+  return names;
+}
+
+std::string BufferCore::all_frames_as_string() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frames_as_string(*frames_);
+}
+
+std::string BufferCore::all_frames_as_yaml(TimePoint current_time) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frames_as_yaml(*frames_, current_time);
+}
+
+void BufferCore::clear()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (auto& cache : frames_->caches) {
+    if (cache) {
+      cache->clear();
+    }
+  }
+}
+
+} // namespace tf2
+} // namespace ros2vtk

@@ -1,0 +1,213 @@
+#include "TreeWalker.hpp"
+
+#include "FrameListing.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace ros2vtk {
+namespace tf2 {
+
+namespace {
+
+/// One step of the time walk: a frame's newest stamp and the parent that sample names.
+struct NewestLink
+{
+  TimePoint stamp;
+  FrameId parent;
+};
+
+constexpr TimePoint kNoTimeYet = std::numeric_limits<TimePoint>::max();
+
+void take_min(TimePoint& common, TimePoint stamp)
+{
+  if (stamp != kLatestTime) { // static frames report 0 and do not constrain the time
+    common = std::min(common, stamp);
+  }
+}
+
+TimePoint finish(TimePoint common)
+{
+  return common == kNoTimeYet ? kLatestTime : common;
+}
+
+} // namespace
+
+WalkResult TreeWalker::loop_error() const
+{
+  WalkResult result;
+  result.error = Tf2Error::Lookup;
+  result.message =
+    "The tf tree is invalid because it contains a loop.\n" + frames_as_string(frames_) + "\n";
+  return result;
+}
+
+WalkResult TreeWalker::connectivity_error(FrameId target, FrameId source) const
+{
+  WalkResult result;
+  result.error = Tf2Error::Connectivity;
+  // tf2's text, including the missing space after "tree.".
+  result.message = "Could not find a connection between '" + frames_.ids.name(target) + "' and '" +
+    frames_.ids.name(source) +
+    "' because they are not part of the same tree.Tf has two or more unconnected trees.";
+  return result;
+}
+
+std::string TreeWalker::direction(FrameId source, FrameId target) const
+{
+  return ", when looking up transform from frame [" + frames_.ids.name(source) + "] to frame [" +
+    frames_.ids.name(target) + "]";
+}
+
+WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
+{
+  WalkResult result;
+  if (source == target) {
+    const TimeCacheInterface* cache = frames_.cache(source);
+    result.time = cache ? cache->newest_stamp() : kLatestTime;
+    return result;
+  }
+
+  // Source towards its root, remembering each frame's newest link.
+  std::vector<NewestLink> source_path;
+  std::unordered_set<FrameId> seen{ source };
+  TimePoint common = kNoTimeYet;
+  for (FrameId frame = source;;) {
+    const TimeCacheInterface* cache = frames_.cache(frame);
+    if (!cache) {
+      break; // a root: known only as somebody's parent
+    }
+    const auto [stamp, parent] = cache->latest_time_and_parent();
+    if (parent == kNoFrame) {
+      break; // no data (cleared); a path from the target may still reach us
+    }
+    take_min(common, stamp);
+    source_path.push_back({ stamp, parent });
+    if (parent == target) {
+      result.time = finish(common);
+      return result;
+    }
+    if (!seen.insert(parent).second) {
+      return loop_error();
+    }
+    frame = parent;
+  }
+
+  // Target upwards until its parent lies on the source's path (or is the source).
+  common = kNoTimeYet;
+  FrameId common_parent = kNoFrame;
+  std::unordered_set<FrameId> seen_from_target{ target };
+  for (FrameId frame = target;;) {
+    const TimeCacheInterface* cache = frames_.cache(frame);
+    if (!cache) {
+      break;
+    }
+    const auto [stamp, parent] = cache->latest_time_and_parent();
+    if (parent == kNoFrame) {
+      break;
+    }
+    take_min(common, stamp);
+    if (parent == source) {
+      result.time = finish(common);
+      return result;
+    }
+    auto on_path = std::find_if(source_path.begin(), source_path.end(),
+      [parent = parent](const NewestLink& link) { return link.parent == parent; });
+    if (on_path != source_path.end()) {
+      common_parent = parent;
+      break;
+    }
+    if (!seen_from_target.insert(parent).second) {
+      return loop_error();
+    }
+    frame = parent;
+  }
+
+  if (common_parent == kNoFrame) {
+    return connectivity_error(target, source);
+  }
+  // The source's links up to (and including) the one into the common parent.
+  for (const NewestLink& link : source_path) {
+    take_min(common, link.stamp);
+    if (link.parent == common_parent) {
+      break;
+    }
+  }
+  result.time = finish(common);
+  return result;
+}
+
+WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoint time) const
+{
+  WalkResult result;
+  result.time = time;
+  if (source == target) {
+    return result;
+  }
+  if (time == kLatestTime) {
+    result = latest_common_time(target, source);
+    if (result.error != Tf2Error::NoError) {
+      return result;
+    }
+  }
+
+  // Source towards its root: source_to[i] maps source into path[i].
+  std::vector<Transform> source_to{ Transform::identity() };
+  std::unordered_map<FrameId, std::size_t> index_on_path{ { source, 0 } };
+  SampleError source_stop; // why the source walk ended early, if it did
+  for (FrameId frame = source; frame != target;) {
+    const TimeCacheInterface* cache = frames_.cache(frame);
+    if (!cache) {
+      break;
+    }
+    TransformRecord link;
+    if (!cache->sample(result.time, link, &source_stop)) {
+      break; // the target may still reach this frame from below
+    }
+    if (!index_on_path.emplace(link.parent, source_to.size()).second) {
+      return loop_error();
+    }
+    source_to.push_back(link.transform * source_to.back());
+    frame = link.parent;
+  }
+
+  // Target upwards until it meets the source's path; target_to maps target into `frame`.
+  Transform target_to = Transform::identity();
+  std::unordered_set<FrameId> seen_from_target{ target };
+  for (FrameId frame = target;;) {
+    auto met = index_on_path.find(frame);
+    if (met != index_on_path.end()) {
+      result.transform = target_to.inverse() * source_to[met->second];
+      return result;
+    }
+    const TimeCacheInterface* cache = frames_.cache(frame);
+    if (!cache) {
+      break;
+    }
+    TransformRecord link;
+    SampleError target_stop;
+    if (!cache->sample(result.time, link, &target_stop)) {
+      result.error = target_stop.code;
+      result.message = target_stop.message + direction(source, target);
+      return result;
+    }
+    if (!seen_from_target.insert(link.parent).second) {
+      return loop_error();
+    }
+    target_to = link.transform * target_to;
+    frame = link.parent;
+  }
+
+  if (source_stop.code != Tf2Error::NoError) {
+    result.error = source_stop.code;
+    result.message = source_stop.message + direction(source, target);
+    return result;
+  }
+  return connectivity_error(target, source);
+}
+
+} // namespace tf2
+} // namespace ros2vtk

@@ -1,0 +1,52 @@
+// ros2vtk (private) — the two tree walks of a lookup: finding the latest time at which a chain
+// of frames has data (for time 0), and composing the transforms along the chain from source up
+// to the first frame the target also reaches.
+#ifndef ros2vtk_tf2_TreeWalker_hpp
+#define ros2vtk_tf2_TreeWalker_hpp
+
+#include "FrameTable.hpp"
+
+#include <string>
+
+namespace ros2vtk {
+namespace tf2 {
+
+struct WalkResult
+{
+  Tf2Error error = Tf2Error::NoError;
+  std::string message;
+  TimePoint time = 0;   ///< the time used (resolved from kLatestTime when asked for it)
+  Transform transform;  ///< maps source into target when error == NoError
+};
+
+class TreeWalker
+{
+public:
+  explicit TreeWalker(const FrameTable& frames)
+    : frames_(frames)
+  {
+  }
+
+  /// tf2's getLatestCommonTime: the minimum over the newest stamps of every dynamic frame on the
+  /// path between the two frames (static frames do not count; 0 when all are static).
+  /// Connectivity error when the frames share no ancestor; Lookup error on a loop.
+  WalkResult latest_common_time(FrameId target, FrameId source) const;
+
+  /// The transform from `source` into `target` at `time` (kLatestTime: latest common time).
+  /// Walks source towards its root, then target upwards until it meets the source's path.
+  /// Frames above the meeting point are not sampled, so a lookup inside a subtree does not
+  /// depend on how fresh the transforms above it are.
+  WalkResult transform_between(FrameId target, FrameId source, TimePoint time) const;
+
+private:
+  WalkResult loop_error() const;
+  WalkResult connectivity_error(FrameId target, FrameId source) const;
+  std::string direction(FrameId source, FrameId target) const;
+
+  const FrameTable& frames_;
+};
+
+} // namespace tf2
+} // namespace ros2vtk
+
+#endif

@@ -1,0 +1,48 @@
+// ros2vtk — feeds a tf2 BufferCore from /tf and /tf_static as tf2_ros's TransformListener does
+// (QoS: keep last 100 reliable volatile for /tf, keep last 100 reliable transient local for
+// /tf_static). DDS threads only queue; process() inserts on the owner's thread.
+#ifndef ros2vtk_tf2_ros_TransformListener_hpp
+#define ros2vtk_tf2_ros_TransformListener_hpp
+
+#include "ros2vtk/tf2/BufferCore.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace ros2vtk {
+namespace wire {
+class Participant;
+class Subscription;
+}
+namespace tf2_ros {
+
+class TransformListener
+{
+public:
+  static std::unique_ptr<TransformListener> create(wire::Participant& participant, tf2::BufferCore& buffer,
+                                                   std::string* error);
+  ~TransformListener();
+
+  /// Inserts every queued transform into the buffer. Returns how many were inserted; rejected
+  /// ones (NaN, self transform, bad quaternion…) are counted, the last reason kept.
+  size_t process();
+
+  uint64_t rejected_count() const { return rejected_; }
+  const std::string& last_rejection() const { return last_rejection_; }
+
+private:
+  TransformListener(tf2::BufferCore& buffer);
+  size_t drain(wire::Subscription& subscription, bool is_static);
+
+  tf2::BufferCore& buffer_;
+  std::unique_ptr<wire::Subscription> dynamic_;
+  std::unique_ptr<wire::Subscription> static_;
+  uint64_t rejected_ = 0;
+  std::string last_rejection_;
+};
+
+} // namespace tf2_ros
+} // namespace ros2vtk
+
+#endif

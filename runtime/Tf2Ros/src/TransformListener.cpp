@@ -1,0 +1,76 @@
+// ros2vtk — /tf and /tf_static into a tf2 buffer (tf2_ros/src/transform_listener.cpp semantics).
+#include "ros2vtk/tf2_ros/TransformListener.hpp"
+
+#include "ros2vtk/tf2_msgs/msg/tf_message.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/Subscription.hpp"
+
+#include <vector>
+
+namespace ros2vtk {
+namespace tf2_ros {
+
+std::unique_ptr<TransformListener> TransformListener::create(wire::Participant& participant, tf2::BufferCore& buffer,
+                                                             std::string* error)
+{
+  std::unique_ptr<TransformListener> listener(new TransformListener(buffer));
+  const wire::MessageTypeSupport& type = tf2_msgs::msg::TFMessage::type_support();
+  wire::QoS dynamic_qos{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
+                         wire::QoS::Durability::Volatile };
+  wire::QoS static_qos{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
+                        wire::QoS::Durability::TransientLocal };
+  listener->dynamic_ = participant.create_subscription(type, "/tf", dynamic_qos, error);
+  listener->static_ = participant.create_subscription(type, "/tf_static", static_qos, error);
+  if (!listener->dynamic_ || !listener->static_)
+    return nullptr;
+  return listener;
+}
+
+TransformListener::TransformListener(tf2::BufferCore& buffer)
+  : buffer_(buffer)
+{
+}
+
+TransformListener::~TransformListener() = default;
+
+size_t TransformListener::drain(wire::Subscription& subscription, bool is_static)
+{
+  std::vector<wire::MessagePtr> messages;
+  subscription.take(messages);
+  size_t inserted = 0;
+  for (const auto& message : messages)
+  {
+    const auto* tf = static_cast<const tf2_msgs::msg::TFMessage*>(message.get());
+    for (const auto& t : tf->transforms)
+    {
+      tf2::TransformStamped transform;
+      transform.frame_id = t.header.frame_id;
+      transform.child_frame_id = t.child_frame_id;
+      transform.stamp = tf2::time_from_sec_nanosec(t.header.stamp.sec, t.header.stamp.nanosec);
+      transform.transform.translation = Eigen::Vector3d(t.transform.translation.x, t.transform.translation.y,
+                                                        t.transform.translation.z);
+      // Eigen's constructor order is (w, x, y, z).
+      transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w, t.transform.rotation.x,
+                                                        t.transform.rotation.y, t.transform.rotation.z);
+      std::string reason;
+      if (buffer_.set_transform(transform, "ros2vtk_tf_listener", is_static, &reason))
+      {
+        ++inserted;
+      }
+      else
+      {
+        ++rejected_;
+        last_rejection_ = reason;
+      }
+    }
+  }
+  return inserted;
+}
+
+size_t TransformListener::process()
+{
+  return drain(*static_, true) + drain(*dynamic_, false);
+}
+
+} // namespace tf2_ros
+} // namespace ros2vtk

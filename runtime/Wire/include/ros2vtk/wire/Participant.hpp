@@ -1,0 +1,104 @@
+// ros2vtk — one ROS 2 node on the wire: a Fast DDS DomainParticipant that behaves as
+// rmw_fastrtps does, so `ros2 node list`, rclpy and rclcpp see and talk to it.
+#ifndef ros2vtk_wire_Participant_hpp
+#define ros2vtk_wire_Participant_hpp
+
+#include "ros2vtk/wire/QoS.hpp"
+#include "ros2vtk/wire/WakeUp.hpp"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ros2vtk {
+namespace wire {
+
+struct MessageTypeSupport;
+struct ServiceTypeSupport;
+class Publisher;
+class ServiceClient;
+class ServiceServer;
+class Subscription;
+
+/// Where discovery looks for peers (ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY).
+enum class DiscoveryRange : uint8_t { Subnet, Localhost, Off };
+
+struct ParticipantOptions
+{
+  int domain_id = 0;
+  DiscoveryRange range = DiscoveryRange::Subnet;
+  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_LOCALHOST_ONLY.
+  static ParticipantOptions from_environment();
+};
+
+/// A remote or local endpoint as the ROS graph reports it.
+struct TopicInfo
+{
+  std::string name; ///< ROS name, "/chatter"
+  std::vector<std::string> types; ///< ROS types, "std_msgs/msg/String"
+};
+
+/// One ROS 2 node. Creating it announces the node on `ros_discovery_info`; every publisher,
+/// subscription, service and client it creates is added to that announcement.
+class Participant
+{
+public:
+  /// Returns nullptr and fills `error` when the name is not a valid ROS node name or DDS
+  /// refuses to create the participant.
+  static std::unique_ptr<Participant> create(const std::string& node_name,
+                                             const std::string& node_namespace,
+                                             const ParticipantOptions& options,
+                                             std::string* error);
+  ~Participant();
+  Participant(const Participant&) = delete;
+  Participant& operator=(const Participant&) = delete;
+
+  const std::string& name() const;
+  const std::string& node_namespace() const;      ///< "/" or "/robot1"
+  std::string fully_qualified_name() const;       ///< "/robot1/slicer"
+
+  /// Expands a topic or service name as rcl does (absolute, relative, `~`).
+  bool resolve_name(const std::string& name, std::string& resolved, std::string* error) const;
+
+  /// nullptr (and `error`) on an invalid topic name or a DDS failure.
+  std::unique_ptr<Publisher> create_publisher(const MessageTypeSupport& type,
+                                              const std::string& topic, const QoS& qos,
+                                              std::string* error);
+  std::unique_ptr<Subscription> create_subscription(const MessageTypeSupport& type,
+                                                    const std::string& topic, const QoS& qos,
+                                                    std::string* error);
+
+  /// Services: the server uses `qos` for its request reader and reply writer; the parameter
+  /// services of rclcpp use QoS::parameters(), everything else QoS::services().
+  std::unique_ptr<ServiceServer> create_service_server(const ServiceTypeSupport& type,
+                                                       const std::string& service_name,
+                                                       const QoS& qos, std::string* error);
+  std::unique_ptr<ServiceClient> create_service_client(const ServiceTypeSupport& type,
+                                                       const std::string& service_name,
+                                                       const QoS& qos, std::string* error);
+
+  /// Raised whenever any subscription, server or client of this node queued data.
+  WakeUp& wake_up();
+
+  /// The ROS graph as seen from here (from DDS discovery and ros_discovery_info).
+  std::vector<std::pair<std::string, std::string>> node_names_and_namespaces() const;
+  std::vector<TopicInfo> topic_names_and_types() const;
+  size_t count_publishers(const std::string& topic) const;
+  size_t count_subscribers(const std::string& topic) const;
+
+  /// 16-byte DDS GUID of the participant (the rmw gid).
+  std::vector<uint8_t> gid() const;
+
+  class Impl;
+  Impl& impl() { return *impl_; }
+
+private:
+  explicit Participant(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace wire
+} // namespace ros2vtk
+
+#endif

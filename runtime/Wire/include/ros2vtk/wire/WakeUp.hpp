@@ -1,0 +1,42 @@
+// ros2vtk — the signal DDS threads raise when data is pending, for event-driven spinning.
+#ifndef ros2vtk_wire_WakeUp_hpp
+#define ros2vtk_wire_WakeUp_hpp
+
+#include <functional>
+#include <mutex>
+
+namespace ros2vtk {
+namespace wire {
+
+/// An eventfd that becomes readable when any subscription of a participant has queued data,
+/// plus an optional callback (called on the DDS thread: it must only schedule work, e.g. post
+/// to a Qt or VTK event loop). A host loop polls fd() or calls wait_for().
+class WakeUp
+{
+public:
+  WakeUp();
+  ~WakeUp();
+  WakeUp(const WakeUp&) = delete;
+  WakeUp& operator=(const WakeUp&) = delete;
+
+  /// Readable (POLLIN) while a notification is pending; never closed before destruction.
+  int fd() const { return fd_; }
+  /// Called by DDS threads after enqueuing.
+  void notify();
+  /// Clears pending notifications (the spinner calls this before draining queues).
+  void clear();
+  /// Blocks up to `timeout_ms` (-1: forever) for a notification; true when one is pending.
+  bool wait_for(int timeout_ms) const;
+  /// Replaces the callback run on each notify (nullptr to remove).
+  void set_callback(std::function<void()> callback);
+
+private:
+  int fd_ = -1;
+  std::mutex callback_mutex_;
+  std::function<void()> callback_;
+};
+
+} // namespace wire
+} // namespace ros2vtk
+
+#endif

@@ -1,0 +1,234 @@
+// ros2vtk — the ROS graph (ros_discovery_info + DDS discovery).
+#include "GraphCache.hpp"
+
+#include "ParticipantImpl.hpp"
+#include "ShippedTypes.hpp"
+#include "TypeAdapter.hpp"
+#include "ros2vtk/rmw_dds_common/msg/participant_entities_info.hpp"
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/Names.hpp"
+
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+namespace ros2vtk {
+namespace wire {
+
+namespace dds = eprosima::fastdds::dds;
+using ParticipantEntitiesInfo = ros2vtk::rmw_dds_common::msg::ParticipantEntitiesInfo;
+using NodeEntitiesInfo = ros2vtk::rmw_dds_common::msg::NodeEntitiesInfo;
+
+Gid to_gid(const eprosima::fastrtps::rtps::GUID_t& guid)
+{
+  Gid gid{};
+  std::memcpy(gid.data(), guid.guidPrefix.value, 12);
+  std::memcpy(gid.data() + 12, guid.entityId.value, 4);
+  return gid;
+}
+
+bool GraphCache::init(dds::DomainParticipant* participant, dds::Publisher* publisher,
+                      dds::Subscriber* subscriber, dds::Topic* topic,
+                      const std::string& node_namespace, const std::string& node_name,
+                      std::string* error)
+{
+  info_type_ = &shipped_message_type("rmw_dds_common/msg/ParticipantEntitiesInfo");
+  publisher_ = publisher;
+  subscriber_ = subscriber;
+  own_gid_ = to_gid(participant->guid());
+  node_namespace_ = node_namespace;
+  node_name_ = node_name;
+
+  dds::DataWriterQos writer_qos = make_writer_qos(QoS::transient_local(1), "");
+  writer_ = publisher->create_datawriter(topic, writer_qos);
+  QoS reader_profile = QoS::transient_local(1);
+  reader_profile.history = QoS::History::KeepAll;
+  dds::DataReaderQos reader_qos = make_reader_qos(reader_profile, "");
+  reader_ = subscriber->create_datareader(topic, reader_qos, this);
+  if (!writer_ || !reader_)
+  {
+    if (error)
+    {
+      *error = "could not create the ros_discovery_info endpoints";
+    }
+    return false;
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  publish_locked();
+  return true;
+}
+
+void GraphCache::shutdown()
+{
+  if (reader_)
+  {
+    reader_->set_listener(nullptr);
+    subscriber_->delete_datareader(reader_);
+    reader_ = nullptr;
+  }
+  if (writer_)
+  {
+    publisher_->delete_datawriter(writer_);
+    writer_ = nullptr;
+  }
+}
+
+void GraphCache::add_local_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
+                                    const std::string& dds_type)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  local_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type };
+  publish_locked();
+}
+
+void GraphCache::remove_local_endpoint(const Gid& gid)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (local_endpoints_.erase(gid) > 0)
+  {
+    publish_locked();
+  }
+}
+
+void GraphCache::add_remote_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
+                                     const std::string& dds_type)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  remote_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type };
+}
+
+void GraphCache::remove_remote_endpoint(const Gid& gid)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  remote_endpoints_.erase(gid);
+}
+
+void GraphCache::remove_remote_participant(const Gid& participant_gid)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  remote_nodes_.erase(participant_gid);
+  // Endpoints of that participant share its 12-byte GUID prefix.
+  for (auto it = remote_endpoints_.begin(); it != remote_endpoints_.end();)
+  {
+    if (std::equal(participant_gid.begin(), participant_gid.begin() + 12, it->first.begin()))
+    {
+      it = remote_endpoints_.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+}
+
+void GraphCache::publish_locked()
+{
+  if (!writer_)
+  {
+    return;
+  }
+  ParticipantEntitiesInfo info;
+  std::copy(own_gid_.begin(), own_gid_.end(), info.gid.data.begin());
+  NodeEntitiesInfo node;
+  node.node_namespace = node_namespace_;
+  node.node_name = node_name_;
+  for (const auto& entry : local_endpoints_)
+  {
+    ros2vtk::rmw_dds_common::msg::Gid gid;
+    std::copy(entry.first.begin(), entry.first.end(), gid.data.begin());
+    (entry.second.is_writer ? node.writer_gid_seq : node.reader_gid_seq).push_back(gid);
+  }
+  info.node_entities_info_seq.push_back(node);
+  writer_->write(&info);
+}
+
+void GraphCache::on_data_available(dds::DataReader* reader)
+{
+  ReceivedSample sample;
+  dds::SampleInfo sample_info;
+  while (reader->take_next_sample(&sample, &sample_info) == ReturnCode_t::RETCODE_OK)
+  {
+    if (!sample_info.valid_data || !sample.valid)
+    {
+      continue;
+    }
+    const auto* info = static_cast<const ParticipantEntitiesInfo*>(sample.message);
+    Gid participant_gid{};
+    std::copy(info->gid.data.begin(), info->gid.data.end(), participant_gid.begin());
+    if (participant_gid == own_gid_)
+    {
+      continue;
+    }
+    std::vector<NodeInfo> nodes;
+    for (const auto& node : info->node_entities_info_seq)
+    {
+      nodes.push_back(NodeInfo{ node.node_namespace, node.node_name });
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    remote_nodes_[participant_gid] = std::move(nodes);
+  }
+  if (sample.message)
+  {
+    info_type_->destroy(sample.message);
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> GraphCache::node_names_and_namespaces() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::pair<std::string, std::string>> result;
+  result.emplace_back(node_name_, node_namespace_);
+  for (const auto& participant : remote_nodes_)
+  {
+    for (const auto& node : participant.second)
+    {
+      result.emplace_back(node.node_name, node.node_namespace);
+    }
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+std::vector<TopicInfo> GraphCache::topic_names_and_types() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::map<std::string, std::set<std::string>> topics;
+  for (const auto* endpoints : { &local_endpoints_, &remote_endpoints_ })
+  {
+    for (const auto& entry : *endpoints)
+    {
+      std::string ros_topic;
+      if (dds_to_topic(entry.second.dds_topic, ros_topic))
+      {
+        topics[ros_topic].insert(dds_type_to_ros(entry.second.dds_type));
+      }
+    }
+  }
+  std::vector<TopicInfo> result;
+  for (const auto& topic : topics)
+  {
+    result.push_back(TopicInfo{ topic.first, std::vector<std::string>(topic.second.begin(), topic.second.end()) });
+  }
+  return result;
+}
+
+size_t GraphCache::count_endpoints(const std::string& dds_topic, bool writers) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  size_t count = 0;
+  for (const auto* endpoints : { &local_endpoints_, &remote_endpoints_ })
+  {
+    for (const auto& entry : *endpoints)
+    {
+      if (entry.second.is_writer == writers && entry.second.dds_topic == dds_topic)
+      {
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
+} // namespace wire
+} // namespace ros2vtk

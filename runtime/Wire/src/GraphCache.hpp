@@ -1,0 +1,100 @@
+// ros2vtk — the ROS graph of one participant: what we announce on `ros_discovery_info` and
+// what we learn from DDS discovery and from other participants' announcements.
+//
+// This is protocol, not a message mapping: rmw itself speaks rmw_dds_common's
+// ParticipantEntitiesInfo on this topic, so the wire layer uses that generated type directly.
+#ifndef ros2vtk_wire_GraphCache_hpp
+#define ros2vtk_wire_GraphCache_hpp
+
+#include "ros2vtk/wire/Participant.hpp"
+
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/rtps/common/Guid.h>
+
+#include <array>
+#include <map>
+#include <mutex>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ros2vtk {
+namespace wire {
+
+struct MessageTypeSupport;
+
+using Gid = std::array<uint8_t, 16>;
+Gid to_gid(const eprosima::fastrtps::rtps::GUID_t& guid);
+
+class GraphCache : public eprosima::fastdds::dds::DataReaderListener
+{
+public:
+  GraphCache() = default;
+  ~GraphCache() override = default;
+
+  /// Creates the ros_discovery_info writer (keep last 1, reliable, transient local) and reader
+  /// (keep all, reliable, transient local) as rmw does (WIRE_NOTES §3.2).
+  bool init(eprosima::fastdds::dds::DomainParticipant* participant,
+            eprosima::fastdds::dds::Publisher* publisher,
+            eprosima::fastdds::dds::Subscriber* subscriber, eprosima::fastdds::dds::Topic* topic,
+            const std::string& node_namespace, const std::string& node_name, std::string* error);
+  /// Deletes the graph endpoints (before the participant's entities are deleted).
+  void shutdown();
+
+  void add_local_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
+                          const std::string& dds_type);
+  void remove_local_endpoint(const Gid& gid);
+
+  void add_remote_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
+                           const std::string& dds_type);
+  void remove_remote_endpoint(const Gid& gid);
+  void remove_remote_participant(const Gid& participant_gid);
+
+  std::vector<std::pair<std::string, std::string>> node_names_and_namespaces() const;
+  std::vector<TopicInfo> topic_names_and_types() const;
+  size_t count_endpoints(const std::string& dds_topic, bool writers) const;
+
+  // DataReaderListener: ParticipantEntitiesInfo samples from other participants.
+  void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
+
+private:
+  struct Endpoint
+  {
+    bool is_writer = false;
+    std::string dds_topic;
+    std::string dds_type;
+  };
+  struct NodeInfo
+  {
+    std::string node_namespace;
+    std::string node_name;
+  };
+
+  void publish_locked();
+
+  const MessageTypeSupport* info_type_ = nullptr;
+  eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
+  eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;
+  eprosima::fastdds::dds::DataWriter* writer_ = nullptr;
+  eprosima::fastdds::dds::DataReader* reader_ = nullptr;
+  Gid own_gid_{};
+  std::string node_namespace_;
+  std::string node_name_;
+
+  mutable std::mutex mutex_;
+  std::map<Gid, Endpoint> local_endpoints_;
+  std::map<Gid, Endpoint> remote_endpoints_;
+  std::map<Gid, std::vector<NodeInfo>> remote_nodes_; ///< by participant gid
+};
+
+} // namespace wire
+} // namespace ros2vtk
+
+#endif

@@ -1,0 +1,421 @@
+// ros2vtk — one ROS 2 node as a Fast DDS 2.9 DomainParticipant, configured the way
+// rmw_fastrtps configures its participants (WIRE_NOTES §2, §3).
+#include "ParticipantImpl.hpp"
+
+#include "PublisherImpl.hpp"
+#include "ShippedTypes.hpp"
+#include "SubscriptionImpl.hpp"
+#include "TypeAdapter.hpp"
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/Names.hpp"
+#include "ros2vtk/wire/Publisher.hpp"
+#include "ros2vtk/wire/Subscription.hpp"
+
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastrtps/utils/IPLocator.h>
+
+#include <cstdlib>
+#include <cstring>
+
+namespace ros2vtk {
+namespace wire {
+
+namespace dds = eprosima::fastdds::dds;
+namespace rtps = eprosima::fastrtps::rtps;
+
+namespace {
+
+bool set_error(std::string* error, const std::string& message)
+{
+  if (error)
+  {
+    *error = message;
+  }
+  return false;
+}
+
+std::vector<rtps::octet> user_data_of(const std::string& text, bool with_nul)
+{
+  std::vector<rtps::octet> bytes(text.begin(), text.end());
+  if (with_nul)
+  {
+    bytes.push_back(0);
+  }
+  return bytes;
+}
+
+void apply_common_endpoint_qos(const QoS& qos, dds::HistoryQosPolicy& history,
+                               dds::ReliabilityQosPolicy& reliability,
+                               dds::DurabilityQosPolicy& durability)
+{
+  history.kind = qos.history == QoS::History::KeepAll ? dds::KEEP_ALL_HISTORY_QOS
+                                                      : dds::KEEP_LAST_HISTORY_QOS;
+  history.depth = static_cast<int32_t>(qos.depth == 0 ? 1 : qos.depth);
+  reliability.kind = qos.reliability == QoS::Reliability::Reliable ? dds::RELIABLE_RELIABILITY_QOS
+                                                                   : dds::BEST_EFFORT_RELIABILITY_QOS;
+  durability.kind = qos.durability == QoS::Durability::TransientLocal
+    ? dds::TRANSIENT_LOCAL_DURABILITY_QOS
+    : dds::VOLATILE_DURABILITY_QOS;
+}
+
+} // namespace
+
+dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash)
+{
+  dds::DataWriterQos writer_qos = dds::DATAWRITER_QOS_DEFAULT;
+  apply_common_endpoint_qos(qos, writer_qos.history(), writer_qos.reliability(),
+                            writer_qos.durability());
+  writer_qos.publish_mode().kind = dds::SYNCHRONOUS_PUBLISH_MODE;
+  writer_qos.data_sharing().off();
+  writer_qos.endpoint().history_memory_policy =
+    rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  writer_qos.representation().m_value.clear();
+  writer_qos.representation().m_value.push_back(dds::XCDR_DATA_REPRESENTATION);
+  if (!type_hash.empty())
+  {
+    writer_qos.user_data().data_vec(user_data_of("typehash=" + type_hash + ";", false));
+  }
+  return writer_qos;
+}
+
+dds::DataReaderQos make_reader_qos(const QoS& qos, const std::string& type_hash)
+{
+  dds::DataReaderQos reader_qos = dds::DATAREADER_QOS_DEFAULT;
+  apply_common_endpoint_qos(qos, reader_qos.history(), reader_qos.reliability(),
+                            reader_qos.durability());
+  reader_qos.data_sharing().off();
+  reader_qos.endpoint().history_memory_policy =
+    rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  reader_qos.type_consistency().representation.m_value.clear();
+  reader_qos.type_consistency().representation.m_value.push_back(dds::XCDR_DATA_REPRESENTATION);
+  if (!type_hash.empty())
+  {
+    reader_qos.user_data().data_vec(user_data_of("typehash=" + type_hash + ";", false));
+  }
+  return reader_qos;
+}
+
+//------------------------------------------------------------------------------
+ParticipantOptions ParticipantOptions::from_environment()
+{
+  ParticipantOptions options;
+  if (const char* domain = std::getenv("ROS_DOMAIN_ID"))
+  {
+    char* end = nullptr;
+    const long value = std::strtol(domain, &end, 10);
+    if (end != domain && *end == '\0' && value >= 0 && value <= 232)
+    {
+      options.domain_id = static_cast<int>(value);
+    }
+  }
+  const char* range = std::getenv("ROS_AUTOMATIC_DISCOVERY_RANGE");
+  const char* localhost_only = std::getenv("ROS_LOCALHOST_ONLY");
+  if (range && std::strcmp(range, "LOCALHOST") == 0)
+  {
+    options.range = DiscoveryRange::Localhost;
+  }
+  else if (range && std::strcmp(range, "OFF") == 0)
+  {
+    options.range = DiscoveryRange::Off;
+  }
+  else if ((!range || range[0] == '\0') && localhost_only && std::strcmp(localhost_only, "1") == 0)
+  {
+    options.range = DiscoveryRange::Localhost;
+  }
+  return options;
+}
+
+//------------------------------------------------------------------------------
+Participant::Impl::Impl(std::string node_name, std::string node_namespace)
+  : name(std::move(node_name))
+  , ns(std::move(node_namespace))
+{
+}
+
+Participant::Impl::~Impl()
+{
+  if (!participant)
+  {
+    return;
+  }
+  graph.shutdown();
+  participant->set_listener(nullptr);
+  participant->delete_contained_entities();
+  dds::DomainParticipantFactory::get_instance()->delete_participant(participant);
+}
+
+bool Participant::Impl::init(const ParticipantOptions& options, std::string* error)
+{
+  dds::DomainParticipantQos qos = dds::PARTICIPANT_QOS_DEFAULT;
+  qos.name("/");
+  // rmw_fastrtps writes "enclave=/;" plus a NUL (WIRE_NOTES §3.1).
+  qos.user_data().data_vec(user_data_of("enclave=/;", true));
+
+  // UDPv4 only: shared memory between Fast DDS 2.9 and 3.x does not interoperate (segment
+  // names changed), and peers would route same-host traffic there and lose it (§2.7.3).
+  auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
+  qos.transport().use_builtin_transports = false;
+  if (options.range != DiscoveryRange::Subnet)
+  {
+    // No interface whitelist: with a loopback-only whitelist Fast DDS 2.9 cannot use the
+    // locators a Fast DDS 3 peer announces (its interface addresses) and never matches it.
+    // Staying on this host comes from unicast-only discovery with loopback initial peers.
+    udp->maxInitialPeersRange = 32;
+    // A unicast metatraffic locator (port chosen by Fast DDS) stops the default multicast one.
+    rtps::Locator_t unicast;
+    unicast.kind = LOCATOR_KIND_UDPv4;
+    qos.wire_protocol().builtin.metatrafficUnicastLocatorList.push_back(unicast);
+    if (options.range == DiscoveryRange::Localhost)
+    {
+      // The well-known metatraffic unicast ports of participants 0..31 on this domain
+      // (RTPS: 7400 + 250 * domain + 10 + 2 * participant id), as rmw's LOCALHOST mode does.
+      for (uint32_t participant_id = 0; participant_id < 32; ++participant_id)
+      {
+        rtps::Locator_t peer;
+        peer.kind = LOCATOR_KIND_UDPv4;
+        eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, 127, 0, 0, 1);
+        peer.port = 7400 + 250 * static_cast<uint32_t>(options.domain_id) + 10 + 2 * participant_id;
+        qos.wire_protocol().builtin.initialPeersList.push_back(peer);
+      }
+    }
+  }
+  qos.transport().user_transports.push_back(udp);
+
+  const dds::StatusMask mask = dds::StatusMask::none();
+  participant = dds::DomainParticipantFactory::get_instance()->create_participant(
+    options.domain_id, qos, this, mask);
+  if (!participant)
+  {
+    return set_error(error, "Fast DDS could not create a participant on domain " +
+                              std::to_string(options.domain_id));
+  }
+  publisher = participant->create_publisher(dds::PUBLISHER_QOS_DEFAULT);
+  subscriber = participant->create_subscriber(dds::SUBSCRIBER_QOS_DEFAULT);
+  if (!publisher || !subscriber)
+  {
+    return set_error(error, "Fast DDS could not create a publisher/subscriber");
+  }
+  const MessageTypeSupport& info_type =
+    shipped_message_type("rmw_dds_common/msg/ParticipantEntitiesInfo");
+  dds::Topic* graph_topic = acquire_topic("ros_discovery_info", info_type, error);
+  if (!graph_topic)
+  {
+    return false;
+  }
+  return graph.init(participant, publisher, subscriber, graph_topic, ns, name, error);
+}
+
+dds::Topic* Participant::Impl::acquire_topic(const std::string& dds_name,
+                                             const MessageTypeSupport& type, std::string* error)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto existing = topics_.find(dds_name);
+  if (existing != topics_.end())
+  {
+    if (existing->second.topic->get_type_name() != type.dds_type_name)
+    {
+      set_error(error, "topic '" + dds_name + "' already has type " +
+                         dds_type_to_ros(existing->second.topic->get_type_name()) + " in this node, not " +
+                         type.ros_type);
+      return nullptr;
+    }
+    ++existing->second.references;
+    return existing->second.topic;
+  }
+  if (types_.find(type.dds_type_name) == types_.end())
+  {
+    dds::TypeSupport support(new TypeAdapter(type));
+    if (support.register_type(participant) != ReturnCode_t::RETCODE_OK)
+    {
+      set_error(error, std::string("could not register type ") + type.ros_type);
+      return nullptr;
+    }
+    types_.emplace(type.dds_type_name, support);
+  }
+  dds::Topic* topic = participant->create_topic(dds_name, type.dds_type_name, dds::TOPIC_QOS_DEFAULT);
+  if (!topic)
+  {
+    set_error(error, "could not create DDS topic '" + dds_name + "'");
+    return nullptr;
+  }
+  topics_[dds_name] = TopicEntry{ topic, 1 };
+  return topic;
+}
+
+void Participant::Impl::release_topic(dds::Topic* topic)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = topics_.find(topic->get_name());
+  if (it != topics_.end() && --it->second.references == 0)
+  {
+    participant->delete_topic(topic);
+    topics_.erase(it);
+  }
+}
+
+void Participant::Impl::add_local_endpoint(const rtps::GUID_t& guid, bool is_writer,
+                                           const std::string& dds_topic, const std::string& dds_type)
+{
+  graph.add_local_endpoint(to_gid(guid), is_writer, dds_topic, dds_type);
+}
+
+void Participant::Impl::remove_local_endpoint(const rtps::GUID_t& guid)
+{
+  graph.remove_local_endpoint(to_gid(guid));
+}
+
+void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
+                                                 rtps::ParticipantDiscoveryInfo&& info)
+{
+  if (info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
+      info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+  {
+    graph.remove_remote_participant(to_gid(info.info.m_guid));
+  }
+}
+
+void Participant::Impl::on_subscriber_discovery(dds::DomainParticipant*,
+                                                rtps::ReaderDiscoveryInfo&& info)
+{
+  if (info.status == rtps::ReaderDiscoveryInfo::DISCOVERED_READER)
+  {
+    graph.add_remote_endpoint(to_gid(info.info.guid()), false, info.info.topicName().to_string(),
+                              info.info.typeName().to_string());
+  }
+  else if (info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER)
+  {
+    graph.remove_remote_endpoint(to_gid(info.info.guid()));
+  }
+}
+
+void Participant::Impl::on_publisher_discovery(dds::DomainParticipant*,
+                                               rtps::WriterDiscoveryInfo&& info)
+{
+  if (info.status == rtps::WriterDiscoveryInfo::DISCOVERED_WRITER)
+  {
+    graph.add_remote_endpoint(to_gid(info.info.guid()), true, info.info.topicName().to_string(),
+                              info.info.typeName().to_string());
+  }
+  else if (info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER)
+  {
+    graph.remove_remote_endpoint(to_gid(info.info.guid()));
+  }
+}
+
+//------------------------------------------------------------------------------
+std::unique_ptr<Participant> Participant::create(const std::string& node_name,
+                                                 const std::string& node_namespace,
+                                                 const ParticipantOptions& options,
+                                                 std::string* error)
+{
+  std::string ns;
+  if (!validate_node_name(node_name, error) || !normalize_namespace(node_namespace, ns, error))
+  {
+    return nullptr;
+  }
+  auto impl = std::make_unique<Impl>(node_name, ns);
+  if (!impl->init(options, error))
+  {
+    return nullptr;
+  }
+  return std::unique_ptr<Participant>(new Participant(std::move(impl)));
+}
+
+Participant::Participant(std::unique_ptr<Impl> impl)
+  : impl_(std::move(impl))
+{
+}
+
+Participant::~Participant() = default;
+
+const std::string& Participant::name() const
+{
+  return impl_->name;
+}
+
+const std::string& Participant::node_namespace() const
+{
+  return impl_->ns;
+}
+
+std::string Participant::fully_qualified_name() const
+{
+  return fully_qualified_node_name(impl_->ns, impl_->name);
+}
+
+bool Participant::resolve_name(const std::string& name, std::string& resolved,
+                               std::string* error) const
+{
+  return expand_topic_name(name, impl_->name, impl_->ns, resolved, error);
+}
+
+std::unique_ptr<Publisher> Participant::create_publisher(const MessageTypeSupport& type,
+                                                         const std::string& topic,
+                                                         const QoS& qos, std::string* error)
+{
+  std::string resolved;
+  if (!resolve_name(topic, resolved, error))
+  {
+    return nullptr;
+  }
+  auto impl = Publisher::Impl::create(*impl_, type, resolved, qos, error);
+  if (!impl)
+  {
+    return nullptr;
+  }
+  return std::unique_ptr<Publisher>(new Publisher(std::move(impl)));
+}
+
+std::unique_ptr<Subscription> Participant::create_subscription(const MessageTypeSupport& type,
+                                                               const std::string& topic,
+                                                               const QoS& qos, std::string* error)
+{
+  std::string resolved;
+  if (!resolve_name(topic, resolved, error))
+  {
+    return nullptr;
+  }
+  auto impl = Subscription::Impl::create(*impl_, type, resolved, qos, error);
+  if (!impl)
+  {
+    return nullptr;
+  }
+  return std::unique_ptr<Subscription>(new Subscription(std::move(impl)));
+}
+
+WakeUp& Participant::wake_up()
+{
+  return impl_->wake_up;
+}
+
+std::vector<std::pair<std::string, std::string>> Participant::node_names_and_namespaces() const
+{
+  return impl_->graph.node_names_and_namespaces();
+}
+
+std::vector<TopicInfo> Participant::topic_names_and_types() const
+{
+  return impl_->graph.topic_names_and_types();
+}
+
+size_t Participant::count_publishers(const std::string& topic) const
+{
+  std::string resolved;
+  return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), true) : 0;
+}
+
+size_t Participant::count_subscribers(const std::string& topic) const
+{
+  std::string resolved;
+  return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), false) : 0;
+}
+
+std::vector<uint8_t> Participant::gid() const
+{
+  const Gid gid = to_gid(impl_->participant->guid());
+  return std::vector<uint8_t>(gid.begin(), gid.end());
+}
+
+} // namespace wire
+} // namespace ros2vtk

@@ -1,0 +1,49 @@
+// ros2vtk — internals of Subscription: a DataReader whose listener deserializes and queues.
+#ifndef ros2vtk_wire_SubscriptionImpl_hpp
+#define ros2vtk_wire_SubscriptionImpl_hpp
+
+#include "ParticipantImpl.hpp"
+#include "ros2vtk/wire/Subscription.hpp"
+
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+
+#include <atomic>
+#include <deque>
+#include <memory>
+#include <mutex>
+
+namespace ros2vtk {
+namespace wire {
+
+class Subscription::Impl : public eprosima::fastdds::dds::DataReaderListener
+{
+public:
+  static std::unique_ptr<Impl> create(Participant::Impl& owner, const MessageTypeSupport& type,
+                                      const std::string& topic, const QoS& qos, std::string* error);
+  Impl(Participant::Impl& owner, const MessageTypeSupport& type, std::string topic, QoS qos);
+  ~Impl() override;
+
+  /// Runs on a Fast DDS thread: take, deserialize (already done by TypeAdapter), enqueue.
+  void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
+
+  Participant::Impl& owner;
+  const MessageTypeSupport& type;
+  std::string topic;
+  QoS qos;
+  eprosima::fastdds::dds::Topic* dds_topic = nullptr;
+  eprosima::fastdds::dds::DataReader* reader = nullptr;
+
+  mutable std::mutex mutex;
+  std::deque<MessagePtr> queue;
+  size_t queue_limit = 1000;
+  std::string last_rejection;
+  std::atomic<uint64_t> received{ 0 };
+  std::atomic<uint64_t> rejected{ 0 };
+  std::atomic<uint64_t> dropped{ 0 };
+};
+
+} // namespace wire
+} // namespace ros2vtk
+
+#endif

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Fresh-machine set-up for ros2vtk, safe to run again (every step is skipped when already done):
+#   1. Debian packages (apt-get update runs only when something is missing),
+#   2. a venv at <repo>/.venv (with Debian's site-packages visible, for vtk, yaml and pytest),
+#   3. the pinned ROS 2 Kilted wheels of scripts/requirements-ros.txt into it.
+# Runs as root (no sudo); as another user it uses sudo for apt-get only.
+set -euo pipefail
+
+# The project's Debian packages. One list; append here when the project needs a new one.
+DEBIAN_PACKAGES=(
+  build-essential
+  cmake
+  ninja-build
+  libfastrtps-dev
+  libfastcdr-dev
+  libvtk9-dev
+  python3-vtk9
+  libeigen3-dev
+  liburdfdom-dev
+  liburdfdom-headers-dev
+  python3-jinja2
+  libassimp-dev
+  python3-dev
+  python3-venv
+  python3-pytest
+  libgtest-dev
+  nlohmann-json3-dev
+  libyaml-cpp-dev
+  xvfb
+  xauth
+  libtinyxml2-dev
+  libconsole-bridge-dev
+  python3-yaml
+)
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+VENV="${ROS2VTK_VENV:-$ROOT/.venv}"
+REQUIREMENTS="$ROOT/scripts/requirements-ros.txt"
+STAMP="$VENV/.ros2vtk-requirements.sha256"
+
+log() { echo "[setup] $*"; }
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then
+    "$@"
+  else
+    sudo "$@"
+  fi
+}
+
+install_debian_packages() {
+  local missing=()
+  local pkg status
+  for pkg in "${DEBIAN_PACKAGES[@]}"; do
+    status="$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)"
+    if [ "$status" != "install ok installed" ]; then
+      missing+=("$pkg")
+    fi
+  done
+  if [ "${#missing[@]}" -eq 0 ]; then
+    log "Debian packages: all ${#DEBIAN_PACKAGES[@]} installed"
+    return
+  fi
+  log "Debian packages missing: ${missing[*]}"
+  log "apt-get update"
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  log "apt-get install -y ${missing[*]}"
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+make_venv() {
+  if [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c 'import sys; sys.exit(0)' 2>/dev/null; then
+    log "venv: $VENV exists"
+    return
+  fi
+  log "venv: creating $VENV (/usr/bin/python3 -m venv --system-site-packages)"
+  /usr/bin/python3 -m venv --system-site-packages "$VENV"
+}
+
+install_wheels() {
+  # The stamp holds a hash of the requirement list (and of the venv's python), so pip runs
+  # again exactly when the pinned set changes.
+  local wanted
+  wanted="$( (cat "$REQUIREMENTS"; readlink -f "$VENV/bin/python") | sha256sum | cut -d' ' -f1)"
+  if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$wanted" ]; then
+    log "ROS 2 wheels: pinned set already installed ($(basename "$REQUIREMENTS"))"
+    return
+  fi
+  log "ROS 2 wheels: pip install -r $(basename "$REQUIREMENTS") (this takes a few minutes the first time)"
+  "$VENV/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$REQUIREMENTS"
+  log "ROS 2 wheels: checking that rclpy imports"
+  "$VENV/bin/python" -c 'import rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+  echo "$wanted" > "$STAMP"
+}
+
+log "ros2vtk set-up in $ROOT"
+install_debian_packages
+make_venv
+install_wheels
+log "done: venv python is $VENV/bin/python"

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Runs every test of ros2vtk: set-up (idempotent), configure, build, then CTest (unit, golden,
+# fuzz, Python and interop tests against real rclpy peers). Usage: scripts/test.sh [ctest args]
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${ROS2VTK_BUILD_DIR:-$ROOT/build}"
+JOBS="${ROS2VTK_JOBS:-2}"
+
+"$ROOT/scripts/setup.sh"
+
+# Tests never leave this machine: discovery stays on the loopback (ROS 2's own switch).
+export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST
+export ROS_DOMAIN_ID="${ROS_DOMAIN_ID:-42}"
+
+echo "[test] configuring $BUILD"
+cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DPython3_EXECUTABLE=/usr/bin/python3 -DROS2VTK_VENV_PYTHON="$ROOT/.venv/bin/python"
+echo "[test] building with $JOBS jobs"
+cmake --build "$BUILD" -j "$JOBS"
+echo "[test] running tests"
+cd "$BUILD"
+ctest --output-on-failure --timeout 600 "$@"

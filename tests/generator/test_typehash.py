@@ -1,0 +1,154 @@
+"""RIHS01 type hashes against the values tabled in shared/ROS2_WIRE_NOTES.md §2.6 (computed
+there independently and partly cross-checked against third-party code)."""
+import os
+
+import pytest
+
+from conftest import FIXTURES, MSG_SPECS, SHIPPED_PACKAGES
+from ros2vtk_gen.msg_parser import parse_spec_file, resolve
+from ros2vtk_gen.typehash import hashable_description, type_hash
+
+EXPECTED = {
+    "builtin_interfaces/msg/Time":
+        "b106235e25a4c5ed35098aa0a61a3ee9c9b18d197f398b0e4206cea9acf9c197",
+    "builtin_interfaces/msg/Duration":
+        "e8d009f659816f758b75334ee1a9ca5b5c0b859843261f14c7f937349599d93b",
+    "std_msgs/msg/Header":
+        "f49fb3ae2cf070f793645ff749683ac6b06203e41c891e17701b1cb597ce6a01",
+    "std_msgs/msg/String":
+        "df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18",
+    "std_msgs/msg/Bool":
+        "feb91e995ff9ebd09c0cb3d2aed18b11077585839fb5db80193b62d74528f6c9",
+    "std_msgs/msg/Int64":
+        "8cd1048c2f186b6bd9a92472dc1ce51723c0833a221e2b7aecfff111774f4b49",
+    "std_msgs/msg/Float64":
+        "705ba9c3d1a09df43737eb67095534de36fd426c0587779bda2bc51fe790182a",
+    "std_msgs/msg/Empty":
+        "20b625256f32d5dbc0d04fee44f43c41e51c70d3502f84b4a08e7a9c26a96312",
+    "std_msgs/msg/MultiArrayDimension":
+        "5e773a60a4c7fc8a54985f307c7837aa2994252a126c301957a24e31282c9cbe",
+    "std_msgs/msg/MultiArrayLayout":
+        "4c66e6f78e740ac103a94cf63259f968e48c617e7699e829b63c21a5cb50dac6",
+    "std_msgs/msg/Int64MultiArray":
+        "e60f9fe34d697f0939ad49d33158693c1277fbac0e2f04b7c2995dc21c89b422",
+    "std_msgs/msg/Float64MultiArray":
+        "1025ddc6b9552d191f89ef1a8d2f60f3d373e28b283d8891ddcc974e8c55397f",
+    "geometry_msgs/msg/Point":
+        "6963084842a9b04494d6b2941d11444708d892da2f4b09843b9c43f42a7f6881",
+    "geometry_msgs/msg/Point32":
+        "2fc4db7cae16a4582c79a56b66173a8d48d52c7dc520ddc55a0d4bcf2a4bfdbc",
+    "geometry_msgs/msg/Quaternion":
+        "8a765f66778c8ff7c8ab94afcc590a2ed5325a1d9a076ffff38fbce36f458684",
+    "geometry_msgs/msg/Vector3":
+        "cc12fe83e4c02719f1ce8070bfd14aecd40f75a96696a67a2a1f37f7dbb0765d",
+    "geometry_msgs/msg/Pose":
+        "d501954e9476cea2996984e812054b68026ae0bfae789d9a10b23daf35cc90fa",
+    "geometry_msgs/msg/PoseStamped":
+        "10f3786d7d40fd2b54367835614bff85d4ad3b5dab62bf8bca0cc232d73b4cd8",
+    "geometry_msgs/msg/PoseArray":
+        "af0cc36d190e104d546d168d6b39df04fa4b4ccecf59cb4c9ed328d3d5004aa0",
+    "geometry_msgs/msg/Transform":
+        "beb83fbe698636351461f6f35d1abb20010c43d55374d81bd041f1ba2581fddc",
+    "geometry_msgs/msg/TransformStamped":
+        "0a241f87d04668d94099cbb5ba11691d5ad32c2f29682e4eb5653424bd275206",
+    "geometry_msgs/msg/Wrench":
+        "018e8519d57c16adbe97c9fe1460ef21fec7e31bc541de3d653a35895677ce52",
+    "geometry_msgs/msg/WrenchStamped":
+        "8dc3deaf06b2ab281f9f9a742a8961c328ca7cec16e3fd6586d3a5c83fa78f77",
+    "sensor_msgs/msg/Image":
+        "d31d41a9a4c4bc8eae9be757b0beed306564f7526c88ea6a4588fb9582527d47",
+    "sensor_msgs/msg/ChannelFloat32":
+        "92665437ddf39346f4ba39ee32e648390605b633cc077d40f4bd4d7b58af6cd4",
+    "sensor_msgs/msg/PointCloud":
+        "614593df71d3c2b9bd4604a71b750fd218f0d65c045ea988b713719455a65b3b",
+    "sensor_msgs/msg/PointField":
+        "5c6a4750728c2bcfbbf7037225b20b02d4429634732146b742dee1726637ef01",
+    "sensor_msgs/msg/PointCloud2":
+        "9198cabf7da3796ae6fe19c4cb3bdd3525492988c70522628af5daa124bae2b5",
+    "sensor_msgs/msg/JointState":
+        "a13ee3a330e346c9d87b5aa18d24e11690752bd33a0350f11c5882bc9179260e",
+    "rmw_dds_common/msg/Gid":
+        "ab6f21cfbb0a6dbb837161e1110c2051a2850ed9f9c53944d7115d9bcebedf71",
+    "rmw_dds_common/msg/NodeEntitiesInfo":
+        "8ffef65ee2d088c63b1e8fcd31e800ba9fc8dbe0ee15ca60d1676de5218087a7",
+    "rmw_dds_common/msg/ParticipantEntitiesInfo":
+        "91a0593bacdcc50ea9bdcf849a938b128412cc1ea821245c663bcd26f83c295e",
+    "rcl_interfaces/msg/ParameterValue":
+        "115fc089a387e23c7ecd3525c9189c379109119d6ab82e8dfbde0fdf6a7f9b68",
+    "rcl_interfaces/msg/Parameter":
+        "ddfe6442cffc462317adb5c92536a7b6dd55858c5c3e1e328165a6b73c2831af",
+    "rcl_interfaces/msg/ParameterDescriptor":
+        "52175dbfda6c51153101d33d2a9da05743f66f02d5ab2ca9ec4709b46b73d704",
+    "rcl_interfaces/msg/SetParametersResult":
+        "cfcc0fb0371ee5159b403960ef4300f8f9d2f1fd6117c8666b7f9654d528a9b1",
+    "rcl_interfaces/msg/ListParametersResult":
+        "237ae3428413dcbcfb452b510c42355f3a2b021dc091afa3e18526d57022f1cd",
+    "rcl_interfaces/msg/ParameterEvent":
+        "043e627780fcad87a22d225bc2a037361dba713fca6a6b9f4b869a5aa0393204",
+    "rcl_interfaces/msg/Log":
+        "e28ce254ca8abc06abf92773b74602cdbf116ed34fbaf294fb9f81da9f318eac",
+    "rcl_interfaces/srv/GetParameters_Request":
+        "135a9e1c3d7cebef792f6687d7ddf99949b21a0bd9a320d863a9110a3f5cf4d6",
+    "rcl_interfaces/srv/GetParameters_Response":
+        "9fa773b46e39cc5d02db6224d8fd520bb9caeeffc2b27c96c1e59431baba9f2a",
+    "rcl_interfaces/srv/GetParameterTypes_Request":
+        "87d7ec5ef545d4daa289d500025d31fb2437bc8b8365ca367161c4dac4be33fd",
+    "rcl_interfaces/srv/GetParameterTypes_Response":
+        "ac1335dce67c478e669434f6ac2fbff34fcd529580f272d3006785ba8b54e47f",
+    "rcl_interfaces/srv/SetParameters_Request":
+        "130d46386b7e84ea9ecf60608a4d83cbe5e5cb7c6cc5b712b7a4e3a6c254e932",
+    "rcl_interfaces/srv/SetParameters_Response":
+        "7a0e8140a0b8d98308fa81a5403a766e610af29a239caf54b7553227906fc266",
+    "rcl_interfaces/srv/SetParametersAtomically_Request":
+        "db0bd950ed5ed867a0e90b225e44dea382d762c0762ff3e0ee842190042a59e5",
+    "rcl_interfaces/srv/SetParametersAtomically_Response":
+        "31b1a38c5b0b9d893ee24da45f69638f4561c78461d82d52750f429b534502b8",
+    "rcl_interfaces/srv/DescribeParameters_Request":
+        "05dd1c2bc87dec2627105c8070d6f9725c781a4f2ab852975bf105462b82b644",
+    "rcl_interfaces/srv/DescribeParameters_Response":
+        "ad6747319613c6131589e062e095b469a46cc764f7d0f12a001a49e6cd893995",
+    "rcl_interfaces/srv/ListParameters_Request":
+        "a1b0b5d6b967a5b8ac5bc8563c3ea678f349e312a6a4967227c5a96bc5ce38df",
+    "rcl_interfaces/srv/ListParameters_Response":
+        "31b937b82de3612426be79f231e386259f97e8dc843e3f2845288b4bfa296bdd",
+}
+
+
+@pytest.fixture(scope="module")
+def table():
+    paths = []
+    for package in SHIPPED_PACKAGES:
+        for root, _, files in os.walk(os.path.join(MSG_SPECS, package)):
+            paths += [os.path.join(root, f) for f in files]
+    return resolve([parse_spec_file(p) for p in sorted(paths)])
+
+
+@pytest.mark.parametrize("ros_type", sorted(EXPECTED))
+def test_type_hash_matches_rosidl(table, ros_type):
+    assert type_hash(table[ros_type], table) == "RIHS01_" + EXPECTED[ros_type]
+
+
+def test_every_tabled_type_is_shipped(table):
+    assert len(EXPECTED) == 51
+    assert set(EXPECTED) <= set(table)
+
+
+def test_defaults_do_not_change_the_hash(table):
+    # Quaternion has defaults (w = 1); the description carries no default values at all.
+    description = hashable_description(table["geometry_msgs/msg/Quaternion"], table)
+    assert "default_value" not in str(description)
+
+
+def test_referenced_types_are_sorted_and_unique(table):
+    description = hashable_description(table["tf2_msgs/msg/TFMessage"], table)
+    names = [d["type_name"] for d in description["referenced_type_descriptions"]]
+    assert names == sorted(set(names))
+    assert names == ["builtin_interfaces/msg/Time", "geometry_msgs/msg/Quaternion",
+                     "geometry_msgs/msg/Transform", "geometry_msgs/msg/TransformStamped",
+                     "geometry_msgs/msg/Vector3", "std_msgs/msg/Header"]
+
+
+def test_empty_message_hashes_its_dummy_member(table):
+    description = hashable_description(table["std_msgs/msg/Empty"], table)
+    assert description["type_description"]["fields"][0]["name"] == \
+        "structure_needs_at_least_one_member"

@@ -1,0 +1,276 @@
+#!/usr/bin/env python3
+"""Our side of scene-level interop tests: the VTK-wrapped `ros2vtk` API, driven like a user's
+script, printing what it observed as one JSON object per line.
+
+    scene_runner.py lookup PARENT CHILD [--seconds S]       tf2 lookup node -> matrices (mm)
+    scene_runner.py broadcast PARENT CHILD [--static] [--seconds S]
+    scene_runner.py params NODE NAME... [--seconds S]        parameter node -> values and events
+    scene_runner.py serve [--seconds S]                      own parameters for rclpy clients
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+
+import ros2vtk
+import vtk
+
+
+def matrix_rows(matrix) -> list:
+    return [[matrix.GetElement(i, j) for j in range(4)] for i in range(4)]
+
+
+def run(logic, seconds: float, step) -> None:
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        logic.SpinOnWakeUp(0.05)
+        if step():
+            return
+
+
+def cmd_lookup(args, logic, node) -> int:
+    lookup = node.CreateAndAddTf2LookupNode(args.parent, args.child)
+    events = []
+    lookup.AddObserver(ros2vtk.vtkROS2TransformNode.TransformModifiedEvent,
+                       lambda caller, event: events.append(1))
+    print(json.dumps({'ready': True, 'status': lookup.GetLookupStatus()}), flush=True)
+
+    def step():
+        return lookup.GetLookupStatus() == 'ok' and len(events) >= args.changes
+
+    run(logic, args.seconds, step)
+    run(logic, args.linger, lambda: False)  # more transforms, same matrix: no more events
+    print(json.dumps({'status': lookup.GetLookupStatus(), 'error': lookup.GetLastLookupError(),
+                      'events': len(events), 'matrix': matrix_rows(lookup.GetMatrixTransformToParent()),
+                      'stamp': lookup.GetLastLookupTime()}), flush=True)
+    return 0
+
+
+def cmd_broadcast(args, logic, node) -> int:
+    broadcaster = node.CreateAndAddTf2BroadcasterNode(args.parent, args.child)
+    broadcaster.SetStatic(args.static)
+    matrix = vtk.vtkMatrix4x4()
+    # 90° about z, translated (100, -20, 300) mm: on the wire (0.1, -0.02, 0.3) m.
+    for i, row in enumerate([[0, -1, 0, 100], [1, 0, 0, -20], [0, 0, 1, 300], [0, 0, 0, 1]]):
+        for j, value in enumerate(row):
+            matrix.SetElement(i, j, value)
+    print(json.dumps({'ready': True}), flush=True)
+    end = time.monotonic() + args.seconds
+    sent = 0
+    while time.monotonic() < end:
+        if not args.static or sent == 0:
+            sent += 1 if broadcaster.Broadcast(matrix) else 0
+        logic.SpinOnWakeUp(0.05)
+    print(json.dumps({'sent': sent, 'broadcasts': broadcaster.GetNumberOfBroadcasts()}), flush=True)
+    return 0
+
+
+def cmd_params(args, logic, node) -> int:
+    parameters = node.CreateAndAddParameterNode(args.node)
+    for name in args.names:
+        parameters.AddParameter(name)
+    events = []
+    parameters.AddObserver(ros2vtk.vtkROS2ParameterNode.ParameterModifiedEvent,
+                           lambda caller, event: events.append(1))
+    history = []
+
+    def snapshot():
+        values = {}
+        for name in args.names:
+            kind = parameters.GetParameterType(name)
+            if kind == 'bool':
+                values[name] = parameters.GetParameterAsBool(name)
+            elif kind == 'integer':
+                values[name] = parameters.GetParameterAsInteger(name)
+            elif kind == 'double':
+                values[name] = parameters.GetParameterAsDouble(name)
+            elif kind == 'string':
+                values[name] = parameters.GetParameterAsString(name)
+            elif kind in ('bool_array', 'integer_array', 'double_array', 'string_array', 'byte_array'):
+                array = {'bool_array': vtk.vtkIntArray, 'integer_array': vtk.vtkTypeInt64Array,
+                         'double_array': vtk.vtkDoubleArray, 'string_array': vtk.vtkStringArray,
+                         'byte_array': vtk.vtkUnsignedCharArray}[kind]()
+                getter = {'bool_array': parameters.GetParameterAsVectorOfBools,
+                          'integer_array': parameters.GetParameterAsVectorOfIntegers,
+                          'double_array': parameters.GetParameterAsVectorOfDoubles,
+                          'string_array': parameters.GetParameterAsVectorOfStrings,
+                          'byte_array': parameters.GetParameterAsByteArray}[kind]
+                getter(name, array)
+                values[name] = [array.GetValue(i) for i in range(array.GetNumberOfValues())]
+                if kind == 'bool_array':
+                    values[name] = [bool(v) for v in values[name]]
+            values[name] = {'type': kind, 'value': values.get(name)}
+        return values
+
+    def step():
+        current = snapshot()
+        if not history or history[-1] != current:
+            history.append(current)
+        return args.until_changes and len(history) > args.until_changes
+
+    run(logic, args.seconds, step)
+    print(json.dumps({'ready': parameters.IsMonitoredNodeReady(), 'events': len(events),
+                      'history': history}), flush=True)
+    return 0
+
+
+def to_plain(value):
+    """A converted VTK value as JSON (what tests compare)."""
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return value
+    name = value.GetClassName()
+    if name == 'vtkMatrix4x4':
+        return matrix_rows(value)
+    if name == 'vtkTransformCollection':
+        value.InitTraversal()
+        return [matrix_rows(value.GetItemAsObject(i).GetMatrix()) for i in range(value.GetNumberOfItems())]
+    if name == 'vtkTable':
+        return {value.GetColumnName(c): [value.GetValue(r, c).ToString() if value.GetColumn(c).IsA('vtkStringArray')
+                                         else value.GetValue(r, c).ToDouble() for r in range(value.GetNumberOfRows())]
+                for c in range(value.GetNumberOfColumns())}
+    if name == 'vtkImageData':
+        scalars = value.GetPointData().GetScalars()
+        return {'dimensions': list(value.GetDimensions()), 'components': scalars.GetNumberOfComponents(),
+                'scalars': [scalars.GetComponent(i, c) for i in range(scalars.GetNumberOfTuples())
+                            for c in range(scalars.GetNumberOfComponents())]}
+    if name == 'vtkPoints':
+        return [list(value.GetPoint(i)) for i in range(value.GetNumberOfPoints())]
+    if name == 'vtkPolyData':
+        return [list(value.GetPoint(i)) for i in range(value.GetNumberOfPoints())]
+    if value.IsA('vtkDataArray'):
+        return [value.GetComponent(i, c) for i in range(value.GetNumberOfTuples())
+                for c in range(value.GetNumberOfComponents())]
+    return repr(value)
+
+
+def cmd_sub(args, logic, node) -> int:
+    sub = node.CreateAndAddSubscriberNode(args.type, args.topic)
+    print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
+    run(logic, args.seconds, lambda: sub.GetNumberOfMessages() >= args.count)
+    value = sub.GetLastMessage()
+    print(json.dumps({'count': sub.GetNumberOfMessages(), 'rejected': sub.GetNumberOfRejectedMessages(),
+                      'rejection': sub.GetLastRejectionReason(),
+                      'conversion_error': sub.GetLastConversionError() if hasattr(sub, 'GetLastConversionError') else '',
+                      'value': to_plain(value), 'slicer_type': sub.GetSlicerType()}), flush=True)
+    return 0
+
+
+def vtk_sample(short: str):
+    """What a user would publish for each mapped type (lengths in mm)."""
+    def matrix(rows):
+        m = vtk.vtkMatrix4x4()
+        for i, row in enumerate(rows):
+            for j, v in enumerate(row):
+                m.SetElement(i, j, v)
+        return m
+    pose = matrix([[0, -1, 0, 100], [1, 0, 0, -250], [0, 0, 1, 1500], [0, 0, 0, 1]])
+    if short in ('PoseStamped', 'TransformStamped'):
+        return pose
+    if short == 'PoseArray':
+        collection = vtk.vtkTransformCollection()
+        for m in (pose, matrix([[1, 0, 0, -200], [0, 1, 0, 0], [0, 0, 1, 300], [0, 0, 0, 1]])):
+            t = vtk.vtkTransform()
+            t.SetMatrix(m)
+            collection.AddItem(t)
+        return collection
+    if short == 'WrenchStamped':
+        a = vtk.vtkDoubleArray()
+        for v in (1.0, -2.0, 9.81, 0.1, 0.0, -0.05):
+            a.InsertNextValue(v)
+        return a
+    if short == 'DoubleArray':
+        a = vtk.vtkDoubleArray()
+        for v in (0.5, -1.25, 1e-9, 12345.678):
+            a.InsertNextValue(v)
+        return a
+    if short == 'IntTable':
+        t = vtk.vtkTable()
+        for c, col in enumerate(([1, 4], [-2, -5], [3, 6])):
+            a = vtk.vtkTypeInt64Array()
+            a.SetName(str(c))
+            for v in col:
+                a.InsertNextValue(v)
+            t.AddColumn(a)
+        return t
+    if short == 'PointCloud':
+        p = vtk.vtkPoints()
+        p.InsertNextPoint(500.0, 1500.0, -2000.0)
+        p.InsertNextPoint(250.0, 0.0, 4000.0)
+        return p
+    if short == 'Image':
+        image = vtk.vtkImageData()
+        image.SetDimensions(3, 2, 1)
+        image.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 3)
+        for i in range(6):
+            for c in range(3):
+                image.GetPointData().GetScalars().SetComponent(i, c, 10 * i + c)
+        return image
+    return {'String': 'Hello world.', 'Bool': True, 'Int': -9007199254740993, 'Double': 3.141592653589793}[short]
+
+
+def cmd_pub(args, logic, node) -> int:
+    pub = node.CreateAndAddPublisherNode(args.type, args.topic)
+    if hasattr(pub, 'SetFrameID'):
+        pub.SetFrameID('ct_scanner')
+    value = vtk_sample(args.type)
+    print(json.dumps({'ready': True, 'class': pub.GetClassName()}), flush=True)
+    end = time.monotonic() + args.seconds
+    sent = 0
+    while time.monotonic() < end:
+        if pub.GetNumberOfMatchedSubscriptions() > 0:
+            sent += pub.Publish(value) if args.type != 'Empty' else pub.Publish()
+        logic.SpinOnWakeUp(0.1)
+    print(json.dumps({'sent': sent}), flush=True)
+    return 0
+
+
+def cmd_serve(args, logic, node) -> int:
+    node.SetParameterAsBool('use_registration', True)
+    node.SetParameterAsInteger('frame_count', 42)
+    node.SetParameterAsDouble('needle_depth_mm', 37.5)
+    node.SetParameterAsString('image_frame', 'ct')
+    print(json.dumps({'ready': True}), flush=True)
+    end = time.monotonic() + args.seconds
+    while time.monotonic() < end:
+        logic.SpinOnWakeUp(0.05)
+    print(json.dumps({'needle_depth_mm': node.PrintOwnParameter('needle_depth_mm')}), flush=True)
+    return 0
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument('--node-name', default='slicer')
+    parser.add_argument('--seconds', type=float, default=15.0)
+    sub = parser.add_subparsers(dest='command', required=True)
+    lookup = sub.add_parser('lookup')
+    lookup.add_argument('parent')
+    lookup.add_argument('child')
+    lookup.add_argument('--changes', type=int, default=1)
+    lookup.add_argument('--linger', type=float, default=0.0)
+    broadcast = sub.add_parser('broadcast')
+    broadcast.add_argument('parent')
+    broadcast.add_argument('child')
+    broadcast.add_argument('--static', action='store_true')
+    params = sub.add_parser('params')
+    params.add_argument('node')
+    params.add_argument('names', nargs='+')
+    params.add_argument('--until-changes', type=int, default=0)
+    sub.add_parser('serve')
+    subscriber = sub.add_parser('sub')
+    subscriber.add_argument('type')
+    subscriber.add_argument('topic')
+    subscriber.add_argument('--count', type=int, default=1)
+    publisher = sub.add_parser('pub')
+    publisher.add_argument('type')
+    publisher.add_argument('topic')
+    args = parser.parse_args()
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    return {'lookup': cmd_lookup, 'broadcast': cmd_broadcast, 'params': cmd_params,
+            'serve': cmd_serve, 'sub': cmd_sub, 'pub': cmd_pub}[args.command](args, logic, node)
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,139 @@
+"""Every mapped type through our VTK-wrapped Python API against real rclpy nodes, both ways,
+with the units policy: lengths in mm on our side, metres on the wire; nothing else scaled.
+Expected values are written out by hand from tests/interop/samples.py."""
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from samples import SAMPLES
+from test_wire_topics import assert_matches
+
+S = math.sqrt(0.5)
+ROT_Z90 = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+
+
+def rigid(rotation, translation):
+    return [rotation[i] + [translation[i]] for i in range(3)] + [[0, 0, 0, 1]]
+
+
+def close(expected, actual, tol=1e-9, path='value'):
+    if isinstance(expected, list):
+        assert isinstance(actual, list) and len(actual) == len(expected), f'{path}: {actual!r}'
+        for i, (e, a) in enumerate(zip(expected, actual)):
+            close(e, a, tol, f'{path}[{i}]')
+    elif isinstance(expected, dict):
+        for key, e in expected.items():
+            assert key in actual, f'{path}.{key} missing: {sorted(actual)}'
+            close(e, actual[key], tol, f'{path}.{key}')
+    elif isinstance(expected, float) or (isinstance(expected, int) and isinstance(actual, float)):
+        assert math.isclose(actual, expected, rel_tol=1e-12, abs_tol=tol), f'{path}: {actual} != {expected}'
+    else:
+        assert actual == expected, f'{path}: {actual!r} != {expected!r}'
+
+
+IMAGE = SAMPLES['sensor_msgs/msg/Image']['data']
+# rclpy -> our subscriber: (short name, ROS type, expected VTK value as JSON)
+INCOMING = [
+    ('String', 'std_msgs/msg/String', 'Hello world.'),
+    ('Bool', 'std_msgs/msg/Bool', True),
+    ('Int', 'std_msgs/msg/Int64', -9007199254740993),
+    ('Double', 'std_msgs/msg/Float64', 3.141592653589793),
+    ('PoseStamped', 'geometry_msgs/msg/PoseStamped', rigid(ROT_Z90, [100.0, -250.0, 1500.0])),
+    ('TransformStamped', 'geometry_msgs/msg/TransformStamped',
+     rigid([[1, 0, 0], [0, 1, 0], [0, 0, 1]], [10.0, 20.0, -300.0])),
+    ('PoseArray', 'geometry_msgs/msg/PoseArray',
+     [rigid(ROT_Z90, [100.0, -250.0, 1500.0]), rigid([[1, 0, 0], [0, -1, 0], [0, 0, -1]], [-200.0, 0.0, 300.0])]),
+    ('WrenchStamped', 'geometry_msgs/msg/WrenchStamped', [1.0, -2.0, 9.81, 0.1, 0.0, -0.05]),
+    ('DoubleArray', 'std_msgs/msg/Float64MultiArray', [0.5, -1.25, 1e-9, 12345.678]),
+    ('IntArray', 'std_msgs/msg/Int64MultiArray', [1, -2, 3, 4, -5, 6]),
+    ('PointCloud', 'sensor_msgs/msg/PointCloud', [[500.0, 1500.0, -2000.0], [250.0, 0.0, 4000.0]]),
+    ('PointCloud2', 'sensor_msgs/msg/PointCloud2', [[1000.0, 2000.0, 3000.0], [4000.0, 5000.0, 6000.0]]),
+    # ROS row 0 is the top row; VTK's y goes up, so VTK row 0 is ROS row 1.
+    ('Image', 'sensor_msgs/msg/Image', {'dimensions': [3, 2, 1], 'components': 3,
+                                        'scalars': [float(v) for v in IMAGE[9:18] + IMAGE[0:9]]}),
+]
+
+
+@pytest.mark.parametrize('short,ros_type,expected', INCOMING, ids=[c[0] for c in INCOMING])
+def test_rclpy_publisher_to_our_vtk_subscriber(ros, short, ros_type, expected):
+    topic = '/scene_in/' + short.lower()
+    ours = ros.scene('--seconds', '20', 'sub', short, topic)
+    ros.wait_ready(ours)
+    peer = ros.peer('pub', topic, ros_type, json.dumps(SAMPLES[ros_type]), '--count', '40', '--rate', '10')
+    code, out, err = ros.finish(ours)
+    ros.finish(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] >= 1 and result['rejected'] == 0, result
+    close(expected, result['value'])
+
+
+def test_joint_state_becomes_a_table_without_scaling(ros):
+    ours = ros.scene('--seconds', '20', 'sub', 'JointState', '/scene_in/joints')
+    ros.wait_ready(ours)
+    peer = ros.peer('pub', '/scene_in/joints', 'sensor_msgs/msg/JointState',
+                    json.dumps(SAMPLES['sensor_msgs/msg/JointState']), '--count', '40', '--rate', '10')
+    code, out, err = ros.finish(ours)
+    ros.finish(peer)
+    assert code == 0, err
+    table = json.loads(out.splitlines()[-1])['value']
+    names = next(v for v in table.values() if v and isinstance(v[0], str))
+    assert names == ['shoulder', 'elbow', 'wrist']
+    columns = [v for v in table.values() if v and not isinstance(v[0], str)]
+    assert [0.1, -0.5, 1.25] in columns and [0.0, 0.5, -0.25] in columns
+
+
+# our publisher -> rclpy subscriber: (short name, ROS type, expected JSON on the wire)
+POSE_WIRE = {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5}, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S}}
+OUTGOING = [
+    ('String', 'std_msgs/msg/String', {'data': 'Hello world.'}),
+    ('Bool', 'std_msgs/msg/Bool', {'data': True}),
+    ('Int', 'std_msgs/msg/Int64', {'data': -9007199254740993}),
+    ('Double', 'std_msgs/msg/Float64', {'data': 3.141592653589793}),
+    ('PoseStamped', 'geometry_msgs/msg/PoseStamped', {'header': {'frame_id': 'ct_scanner'}, 'pose': POSE_WIRE}),
+    ('TransformStamped', 'geometry_msgs/msg/TransformStamped',
+     {'header': {'frame_id': 'ct_scanner'},
+      'transform': {'translation': {'x': 0.1, 'y': -0.25, 'z': 1.5}, 'rotation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S}}}),
+    ('WrenchStamped', 'geometry_msgs/msg/WrenchStamped',
+     {'wrench': {'force': {'x': 1.0, 'y': -2.0, 'z': 9.81}, 'torque': {'x': 0.1, 'y': 0.0, 'z': -0.05}}}),
+    ('DoubleArray', 'std_msgs/msg/Float64MultiArray', {'data': [0.5, -1.25, 1e-9, 12345.678]}),
+    ('IntTable', 'std_msgs/msg/Int64MultiArray', {'data': [1, -2, 3, 4, -5, 6]}),
+    ('PointCloud', 'sensor_msgs/msg/PointCloud',
+     {'points': [{'x': 0.5, 'y': 1.5, 'z': -2.0}, {'x': 0.25, 'y': 0.0, 'z': 4.0}]}),
+    ('Image', 'sensor_msgs/msg/Image',
+     {'height': 2, 'width': 3, 'encoding': 'rgb8', 'step': 9,
+      'data': [30, 31, 32, 40, 41, 42, 50, 51, 52, 0, 1, 2, 10, 11, 12, 20, 21, 22]}),
+]
+
+
+@pytest.mark.parametrize('short,ros_type,expected', OUTGOING, ids=[c[0] for c in OUTGOING])
+def test_our_vtk_publisher_to_rclpy_subscriber(ros, short, ros_type, expected):
+    topic = '/scene_out/' + short.lower()
+    echo = ros.peer('echo', topic, ros_type, '--count', '2', '--timeout', '25')
+    ros.wait_ready(echo)
+    ours = ros.scene('--seconds', '10', 'pub', short, topic)
+    code, out, err = ros.finish(echo, timeout=40)
+    ros.finish(ours)
+    assert code == 0, err
+    message = json.loads(out.splitlines()[-1])
+    close(expected, message)
+    if 'header' in message:
+        assert message['header']['stamp']['sec'] > 1600000000, 'stamped with the current time'
+
+
+def test_pose_array_rotations_and_metres(ros):
+    echo = ros.peer('echo', '/scene_out/poses', 'geometry_msgs/msg/PoseArray', '--count', '1', '--timeout', '25')
+    ros.wait_ready(echo)
+    ours = ros.scene('--seconds', '8', 'pub', 'PoseArray', '/scene_out/poses')
+    code, out, err = ros.finish(echo, timeout=40)
+    ros.finish(ours)
+    assert code == 0, err
+    poses = json.loads(out.splitlines()[-1])['poses']
+    close(POSE_WIRE, poses[0])
+    close({'x': -0.2, 'y': 0.0, 'z': 0.3}, poses[1]['position'])
+    q = poses[1]['orientation']  # the second matrix has no rotation
+    close({'x': 0.0, 'y': 0.0, 'z': 0.0}, q)
+    assert math.isclose(abs(q['w']), 1.0, abs_tol=1e-12)

@@ -1,0 +1,63 @@
+// A project's own specs and rules through ros2vtk_generate() (the downstream CMake function):
+// a float listed under `lengths` is scaled, a pose with other field names maps, and the
+// classes register under their short names and aliases.
+#include "ros2vtkTestNodesConvert.hpp"
+
+#include "NodeClassRegistry.hpp"
+#include "vtkROS2SceneNode.h"
+
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <gtest/gtest.h>
+
+extern "C" void ros2vtk_register_ros2vtkTestNodes_nodes();
+
+TEST(DownstreamNodes, ScaledValueBothWays)
+{
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::Distance distance;
+  distance.metres = 0.25;
+  double millimetres = 0.0;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(distance, &millimetres));
+  EXPECT_DOUBLE_EQ(millimetres, 250.0);
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(distance, &millimetres, ros2vtk::convert::kNoLengthScaling));
+  EXPECT_DOUBLE_EQ(millimetres, 0.25);
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::Distance back;
+  ASSERT_TRUE(ros2vtk::nodes::VTKToROS2(1500.0, back));
+  EXPECT_DOUBLE_EQ(back.metres, 1.5);
+  std::string error;
+  EXPECT_FALSE(ros2vtk::nodes::VTKToROS2(1.0, back, 0.0, &error));
+  EXPECT_NE(error.find("length scale"), std::string::npos) << error;
+}
+
+TEST(DownstreamNodes, PoseWithOwnFieldNames)
+{
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::Marker marker;
+  marker.where.y = 0.002;
+  marker.facing.w = 1.0;
+  marker.id = 7;
+  vtkNew<vtkMatrix4x4> matrix;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(marker, matrix));
+  EXPECT_NEAR(matrix->GetElement(1, 3), 2.0, 1e-12);
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::Marker back;
+  back.id = 7;
+  ASSERT_TRUE(ros2vtk::nodes::VTKToROS2(matrix, back));
+  EXPECT_EQ(back, marker);
+}
+
+TEST(DownstreamNodes, ClassesRegisterWithAliases)
+{
+  ros2vtk_register_ros2vtkTestNodes_nodes();
+  auto& registry = ros2vtk::scene::NodeClassRegistry::instance();
+  using ros2vtk::scene::NodeDirection;
+  const auto* info = registry.find_short_name(NodeDirection::Subscriber, "Range");
+  ASSERT_NE(info, nullptr);
+  vtkSmartPointer<vtkROS2SceneNode> node;
+  node.TakeReference(info->create());
+  EXPECT_STREQ(node->GetClassName(), "vtkROS2SubscriberDistanceNode");
+  const auto resolution =
+    registry.resolve(NodeDirection::Publisher, "ros2vtk_nodes_test_msgs/msg/Marker");
+  ASSERT_NE(resolution.mapped_class, nullptr) << resolution.error;
+  EXPECT_EQ(resolution.mapped_class->class_name, "vtkROS2PublisherMarkerNode");
+}

@@ -1,0 +1,218 @@
+"""The mapping-rule loader (generator/ros2vtk_gen/mapping.py): the shipped rules load, and every
+kind of mistake is reported as `file:line: message [code]` with exit 1 and no traceback."""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+from typing import Dict, List
+
+import pytest
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(REPO, "generator"))
+
+from ros2vtk_gen.emit import expand_spec_paths  # noqa: E402
+from ros2vtk_gen.mapping import MappingError, load_rules, short_names_of  # noqa: E402
+from ros2vtk_gen.model import Message  # noqa: E402
+from ros2vtk_gen.msg_parser import parse_spec_file, resolve  # noqa: E402
+
+MSG_SPECS = os.path.join(REPO, "msg_specs")
+SHIPPED_MAPPINGS = sorted(os.path.join(MSG_SPECS, "mappings", name)
+                          for name in os.listdir(os.path.join(MSG_SPECS, "mappings"))
+                          if name.endswith(".toml"))
+
+GOOD_POSE = """\
+[[mapping]]
+short_name = "PoseStamped"
+ros_type = "geometry_msgs/msg/PoseStamped"
+vtk_type = "vtkMatrix4x4"
+kind = "rigid_transform"
+fields = { translation = "pose.position", rotation = "pose.orientation" }
+header = "header"
+lengths = ["pose.position"]
+"""
+
+
+@pytest.fixture(scope="module")
+def table() -> Dict[str, Message]:
+    paths = expand_spec_paths([os.path.join(MSG_SPECS, p) for p in
+                               ("builtin_interfaces", "std_msgs", "geometry_msgs", "sensor_msgs")])
+    return resolve([parse_spec_file(p) for p in paths])
+
+
+def write(tmp_path, text: str, name: str = "rules.toml") -> str:
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(text))
+    return str(path)
+
+
+def error_of(tmp_path, table, text: str) -> MappingError:
+    with pytest.raises(MappingError) as caught:
+        load_rules([write(tmp_path, text)], table)
+    return caught.value
+
+
+def test_shipped_rules_load_with_their_kinds_and_scaling(table):
+    rules = {rule.short_name: rule for rule in load_rules(SHIPPED_MAPPINGS, table)}
+    assert len(rules) == 17
+    assert rules["PoseStamped"].scaled_roles == ("translation",)
+    assert rules["PoseArray"].scaled_roles == ("translation",)
+    assert rules["PointCloud"].scaled_roles == ("sequence",)
+    assert rules["PointCloud2"].scaled_roles == ("data",)
+    assert rules["WrenchStamped"].scaled_roles == ()
+    assert rules["Image"].aliases == ("UInt8Image",)
+    assert rules["Image"].header is not None and rules["Image"].header.path == "header"
+    assert rules["String"].header is None
+
+
+def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
+    (rule,) = load_rules([write(tmp_path, "# comment\n\n" + GOOD_POSE)], table)
+    assert rule.line == 3
+    assert rule.roles["translation"].path == "pose.position"
+
+
+@pytest.mark.parametrize("change, line, fragment, code", [
+    (('ros_type = "geometry_msgs/msg/PoseStamped"', 'ros_type = "geometry_msgs/msg/Posed"'),
+     3, "unknown ROS type 'geometry_msgs/msg/Posed'", "R2V203"),
+    (('kind = "rigid_transform"', 'kind = "rigid"'), 5, "unknown kind 'rigid'", "R2V204"),
+    (('vtk_type = "vtkMatrix4x4"', 'vtk_type = "vtkTransform"'), 4,
+     "kind rigid_transform makes vtkMatrix4x4, not 'vtkTransform'", "R2V204"),
+    (('"pose.position", rotation', '"pose.positon", rotation'), 6,
+     "geometry_msgs/msg/Pose has no field 'positon'", "R2V205"),
+    (('translation = "pose.position"', 'translation = "header"'), 6,
+     "field 'header' (std_msgs/msg/Header) lacks member 'x'", "R2V205"),
+    (('translation = "pose.position"', 'translation = "pose.position.x"'), 6,
+     "field 'x' must be a message with x, y, z, it is float64", "R2V205"),
+    (('translation = "pose.position", ', ''), 6, "needs role(s) translation", "R2V205"),
+    (('rotation = "pose.orientation"', 'rotation = "pose.orientation", scale = "pose"'), 6,
+     "has no role(s) scale", "R2V205"),
+    (('header = "header"', 'header = "pose"'), 7, "is not a std_msgs/msg/Header", "R2V205"),
+    (('lengths = ["pose.position"]', 'lengths = ["pose.orientation"]'), 8,
+     "'pose.orientation' is not a length of kind rigid_transform", "R2V207"),
+    (('lengths = ["pose.position"]', 'lengths = ["pose.nowhere"]'), 8,
+     "has no field 'nowhere'", "R2V207"),
+    (('short_name = "PoseStamped"', 'short_name = "pose stamped"'), 2,
+     "'pose stamped' is not a valid short name", "R2V202"),
+    (('kind = "rigid_transform"', 'kind = "rigid_transform"\ncolour = "red"'), 6,
+     "unknown key(s) colour", "R2V202"),
+])
+def test_each_mistake_names_file_line_and_reason(tmp_path, table, change, line, fragment, code):
+    old, new = change
+    assert old in GOOD_POSE
+    error = error_of(tmp_path, table, GOOD_POSE.replace(old, new))
+    text = str(error)
+    assert text.startswith(f"{error.path}:{line}: "), text
+    assert fragment in text
+    assert error.code == code
+
+
+def test_missing_required_key_points_at_the_rule(tmp_path, table):
+    error = error_of(tmp_path, table, "\n" + GOOD_POSE.replace('kind = "rigid_transform"\n', ""))
+    assert error.line == 2 and "'kind' is required" in error.message
+
+
+def test_duplicate_short_names_and_aliases(tmp_path, table):
+    second = GOOD_POSE.replace('ros_type = "geometry_msgs/msg/PoseStamped"',
+                               'ros_type = "geometry_msgs/msg/TransformStamped"').replace(
+        "pose.position", "transform.translation").replace("pose.orientation",
+                                                           "transform.rotation")
+    error = error_of(tmp_path, table, GOOD_POSE + "\n" + second)
+    assert error.code == "R2V206" and "already used by rule PoseStamped" in error.message
+    assert error.line == 10
+    aliased = second.replace('short_name = "PoseStamped"',
+                             'short_name = "Transform"\naliases = ["PoseStamped"]')
+    assert "'PoseStamped' is already used" in error_of(tmp_path, table, GOOD_POSE + aliased).message
+
+
+def test_same_ros_and_vtk_type_twice_would_clash(tmp_path, table):
+    twice = GOOD_POSE + GOOD_POSE.replace('short_name = "PoseStamped"', 'short_name = "Pose2"')
+    assert "the converters would clash" in error_of(tmp_path, table, twice).message
+
+
+def test_kind_specific_type_rules(tmp_path, table):
+    value = """\
+    [[mapping]]
+    short_name = "Text"
+    ros_type = "std_msgs/msg/String"
+    vtk_type = "double"
+    kind = "value"
+    fields = { value = "data" }
+    """
+    assert "a string field cannot be held in 'double'" in error_of(tmp_path, table, value).message
+    array = """\
+    [[mapping]]
+    short_name = "Ints"
+    ros_type = "std_msgs/Int64MultiArray"
+    vtk_type = "vtkDoubleArray"
+    kind = "multiarray_array"
+    fields = { layout = "layout", data = "data" }
+    """
+    assert "int64 data goes into vtkTypeInt64Array" in error_of(tmp_path, table, array).message
+    image = """\
+    [[mapping]]
+    short_name = "Picture"
+    ros_type = "sensor_msgs/msg/Image"
+    vtk_type = "vtkImageData"
+    kind = "image"
+    fields = { height = "width", width = "width", encoding = "encoding", is_bigendian = "step", step = "step", data = "data" }
+    """
+    assert "field 'step' must be a uint8, it is uint32" in error_of(tmp_path, table, image).message
+
+
+def test_scaled_plain_value_only_for_floats(tmp_path, table):
+    length = """\
+    [[mapping]]
+    short_name = "Distance"
+    ros_type = "std_msgs/msg/Float64"
+    vtk_type = "double"
+    kind = "value"
+    fields = { value = "data" }
+    lengths = ["data"]
+    """
+    (rule,) = load_rules([write(tmp_path, length)], table)
+    assert rule.scaled_roles == ("value",)
+    counted = length.replace("Float64", "Int64").replace('"double"', '"vtkTypeInt64"')
+    assert "kind value has no length to scale" in error_of(tmp_path, table, counted).message
+
+
+def test_toml_syntax_error_has_its_line(tmp_path, table):
+    error = error_of(tmp_path, table, '[[mapping]]\nshort_name = "A"\nkind = \n')
+    assert error.code == "R2V201" and error.line == 3 and "not valid TOML" in error.message
+
+
+def test_short_names_of_reads_only_the_toml(tmp_path):
+    path = write(tmp_path, GOOD_POSE.replace("geometry_msgs/msg/PoseStamped", "no/msg/Such"))
+    assert short_names_of([path]) == ["PoseStamped"]
+
+
+def run_cli(tmp_path, mapping: str) -> subprocess.CompletedProcess:
+    args = tmp_path / "args.json"
+    specs = [os.path.join(MSG_SPECS, p) for p in ("builtin_interfaces", "std_msgs",
+                                                  "geometry_msgs")]
+    import json
+    args.write_text(json.dumps({"family": "nodes", "target": "t", "output_dir": str(tmp_path / "o"),
+                                "specs": specs, "mappings": [mapping]}))
+    return subprocess.run([sys.executable, "-m", "ros2vtk_gen", "--args-file", str(args)],
+                          capture_output=True, text=True,
+                          env=dict(os.environ, PYTHONPATH=os.path.join(REPO, "generator")))
+
+
+def test_cli_reports_one_line_and_exit_1(tmp_path):
+    bad = write(tmp_path, GOOD_POSE.replace("pose.orientation", "pose.orient"))
+    result = run_cli(tmp_path, bad)
+    assert result.returncode == 1
+    assert "Traceback" not in result.stderr
+    lines: List[str] = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"{bad}:6: rule PoseStamped: role rotation")
+    assert not (tmp_path / "o").exists(), "nothing is written when a rule is bad"
+
+
+def test_cli_generates_the_classes_of_a_good_rule(tmp_path):
+    result = run_cli(tmp_path, write(tmp_path, GOOD_POSE))
+    assert result.returncode == 0, result.stderr
+    out = tmp_path / "o"
+    assert (out / "vtk" / "vtkROS2PublisherPoseStampedNode.h").is_file()
+    assert (out / "vtk" / "vtkROS2SubscriberPoseStampedNode.cxx").is_file()
+    assert "ros2vtk_register_t_nodes" in (out / "src" / "tRegistration.cxx").read_text()

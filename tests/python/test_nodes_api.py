@@ -1,0 +1,118 @@
+"""The generated node classes (ros2vtk.ros2vtkNodes) under Python, the SlicerROS2 way:
+String publisher, PoseStamped/vtkMatrix4x4 subscriber with an observer, units, aliases."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkCommonMath import vtkMatrix4x4
+from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
+
+from conftest import spin_until
+
+
+def connect(logic, pub, sub) -> None:
+    assert spin_until(logic, lambda: pub.GetNumberOfMatchedSubscriptions() > 0
+                      and sub.GetNumberOfMatchedPublications() > 0), 'never matched'
+
+
+def test_generated_module_is_imported_and_reexported(ros2vtk):
+    assert 'ros2vtkNodes' in ros2vtk.extension_modules
+    for name in ('vtkROS2PublisherStringNode', 'vtkROS2SubscriberPoseStampedNode',
+                 'vtkROS2PublisherImageNode', 'vtkROS2SubscriberJointStateNode'):
+        assert getattr(ros2vtk, name).__name__ == name
+
+
+def test_paper_hello_world(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('String', '/pub')
+    assert type(pub).__name__ == 'vtkROS2PublisherStringNode'
+    sub = node.CreateAndAddSubscriberNode('vtkMRMLROS2SubscriberStringNode', '/pub')
+    connect(logic, pub, sub)
+    assert pub.Publish('Hello world.') == 1
+    assert spin_until(logic, lambda: sub.GetNumberOfMessages() >= 1)
+    assert sub.GetLastMessage() == 'Hello world.'
+    assert 'Hello world.' in sub.GetLastMessageYAML()
+    assert pub.GetNumberOfMessagesSent() == 1
+
+
+def test_pose_stamped_subscriber_observer_gets_millimetres(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('vtkMRMLROS2PublisherPoseStampedNode', '/py_pose')
+    sub = node.CreateAndAddSubscriberNode('PoseStamped', '/py_pose')
+    connect(logic, pub, sub)
+    seen = []
+
+    def on_modified(caller, _event):
+        matrix = caller.GetLastMessage()
+        seen.append((matrix.GetElement(0, 3), matrix.GetElement(2, 3), caller.GetLastMessageFrameID()))
+
+    sub.AddObserver(vtkCommand.ModifiedEvent, on_modified)
+    pub.SetFrameID('base')
+    matrix = pub.GetBlankMessage()
+    assert isinstance(matrix, vtkMatrix4x4)
+    matrix.SetElement(0, 3, 100.0)  # mm
+    matrix.SetElement(2, 3, -5.0)
+    assert pub.Publish(matrix) == 1
+    assert spin_until(logic, lambda: bool(seen))
+    assert seen[0][0] == pytest.approx(100.0)
+    assert seen[0][1] == pytest.approx(-5.0)
+    assert seen[0][2] == 'base'
+    # The same message in metres when the subscriber does not scale.
+    sub.ScaleLengthsOff()
+    metres = vtkMatrix4x4()
+    assert sub.GetLastMessage(metres)
+    assert metres.GetElement(0, 3) == pytest.approx(0.1)
+    assert sub.GetLastMessageTime() > time.time() - 60
+
+
+def test_alias_and_image_round_trip(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('UInt8Image', '/py_image')
+    sub = node.CreateAndAddSubscriberNode('sensor_msgs/msg/Image', '/py_image')
+    assert type(pub).__name__ == 'vtkROS2PublisherImageNode'
+    assert type(sub).__name__ == 'vtkROS2SubscriberImageNode'
+    connect(logic, pub, sub)
+    image = vtkImageData()
+    image.SetDimensions(3, 2, 1)
+    image.AllocateScalars(VTK_UNSIGNED_CHAR, 3)
+    image.SetScalarComponentFromDouble(2, 1, 0, 1, 200)
+    pub.SetEncoding('bgr8')
+    assert pub.Publish(image) == 1
+    assert spin_until(logic, lambda: sub.GetNumberOfMessages() >= 1)
+    assert 'encoding: bgr8' in sub.GetLastMessageYAML()
+    received = sub.GetLastMessage()
+    assert received.GetDimensions() == (3, 2, 1)
+    assert received.GetScalarComponentAsDouble(2, 1, 0, 1) == 200
+
+
+def test_wrench_values_are_not_scaled(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('WrenchStamped', '/py_wrench')
+    sub = node.CreateAndAddSubscriberNode('WrenchStamped', '/py_wrench')
+    connect(logic, pub, sub)
+    values = vtkDoubleArray()
+    for value in (1.0, 2.0, 3.0, 0.1, 0.2, 0.3):
+        values.InsertNextValue(value)
+    assert pub.Publish(values) == 1
+    assert spin_until(logic, lambda: sub.GetNumberOfMessages() >= 1)
+    received = sub.GetLastMessage()
+    assert [received.GetValue(i) for i in range(6)] == [1.0, 2.0, 3.0, 0.1, 0.2, 0.3]
+
+
+def test_bad_publish_returns_zero_with_a_reason(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('PoseStamped', '/py_bad_pose')
+    sheared = vtkMatrix4x4()
+    sheared.SetElement(0, 1, 0.5)
+    pub.GlobalWarningDisplayOff()
+    try:
+        assert pub.Publish(sheared) == 0
+        assert pub.Publish(None) == 0
+    finally:
+        pub.GlobalWarningDisplayOn()
+    assert pub.GetLastConversionError() != ''
+    assert pub.GetNumberOfMessagesSent() == 0

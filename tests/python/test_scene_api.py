@@ -1,0 +1,172 @@
+"""The wrapped scene API under Python: import, SlicerROS2-style calls, observers on Spin."""
+
+from __future__ import annotations
+
+import threading
+import time
+
+import pytest
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_INT
+
+from conftest import spin_until
+
+
+def test_package_reexports_the_scene_classes(ros2vtk):
+    for name in ('vtkROS2Logic', 'vtkROS2Scene', 'vtkROS2NodeNode', 'vtkROS2PublisherNode',
+                 'vtkROS2SubscriberNode', 'vtkROS2PublisherGenericNode',
+                 'vtkROS2SubscriberGenericNode'):
+        assert name in ros2vtk.__all__
+        assert getattr(ros2vtk, name).__name__ == name
+    assert 'ros2vtkScene' in ros2vtk.extension_modules
+
+
+def test_default_node_is_slicer_and_created_once(logic):
+    node = logic.GetDefaultROS2Node()
+    assert node.GetROS2NodeName() == 'slicer'
+    assert node.GetROS2NodeNamespace() == '/'
+    assert node.IsCreated()
+    assert logic.GetDefaultROS2Node() is node
+    assert logic.GetScene().GetNumberOfNodes() == 1
+    assert node.GetWakeUpFileDescriptor() >= 0
+
+
+def test_generic_nodes_come_back_as_their_python_class(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('geometry_msgs/msg/Point', '/py_point')
+    sub = node.CreateAndAddSubscriberNode('geometry_msgs/Point', '/py_point')
+    assert pub.GetClassName() == 'vtkROS2PublisherGenericNode'
+    assert type(pub).__name__ == 'vtkROS2PublisherGenericNode'
+    assert sub.GetROSType() == 'geometry_msgs/msg/Point'
+    assert node.GetPublisherNodeByTopic('/py_point') is pub
+    assert node.GetSubscriberNodeByTopic('/py_point') is sub
+    assert pub.GetSlicerType() == 'YAML'
+
+
+def test_unknown_type_returns_none(logic):
+    node = logic.GetDefaultROS2Node()
+    node.GlobalWarningDisplayOff()
+    try:
+        assert node.CreateAndAddPublisherNode('NoSuchType', '/nowhere') is None
+    finally:
+        node.GlobalWarningDisplayOn()
+    assert node.GetPublisherNodeByTopic('/nowhere') is None
+
+
+def test_observer_fires_once_per_spin_on_the_spinning_thread_with_the_count(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('geometry_msgs/msg/Point', '/py_observed')
+    sub = node.CreateAndAddSubscriberNode('geometry_msgs/msg/Point', '/py_observed')
+    assert spin_until(logic, lambda: pub.GetNumberOfMatchedSubscriptions() > 0
+                      and sub.GetNumberOfMatchedPublications() > 0)
+
+    calls = []
+
+    # `count` defaults: other changes of the node (e.g. removal) fire ModifiedEvent without data.
+    @calldata_type(VTK_INT)
+    def on_modified(caller, event, count=None):
+        calls.append((caller.GetTopic(), event, count, threading.get_ident()))
+
+    sub.AddObserver('ModifiedEvent', on_modified)
+    for x in (1.0, 2.0, 3.0):
+        assert pub.PublishYAML(f'{{x: {x}, y: 0.0, z: 0.0}}')
+    handled = []
+    end = time.monotonic() + 10.0
+    while sub.GetNumberOfMessages() < 3 and time.monotonic() < end:
+        handled.append(logic.Spin())
+        time.sleep(0.005)
+    assert sum(handled) == 3
+    assert [c[2] for c in calls] == [h for h in handled if h > 0]
+    assert all(c[0] == '/py_observed' and c[1] == 'ModifiedEvent' for c in calls)
+    assert {c[3] for c in calls} == {threading.get_ident()}
+    assert sub.GetLastMessage() == 'x: 3.0\ny: 0.0\nz: 0.0\n'
+    assert sub.GetLastMessageYAML() == sub.GetLastMessage()
+    assert pub.GetNumberOfMessagesSent() == 3
+
+
+def test_invalid_yaml_is_refused_and_counted(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('geometry_msgs/msg/Point', '/py_bad_yaml')
+    pub.GlobalWarningDisplayOff()
+    try:
+        assert not pub.PublishYAML('{x: [1, 2}')
+        assert not pub.PublishYAML('{no_such_field: 1}')
+    finally:
+        pub.GlobalWarningDisplayOn()
+    assert pub.GetNumberOfCalls() == 2
+    assert pub.GetNumberOfMessagesSent() == 0
+
+
+def test_qos_setters_validate_and_report(logic):
+    node = logic.GetDefaultROS2Node()
+    sub = node.CreateAndAddSubscriberNode('geometry_msgs/msg/Point', '/py_qos')
+    assert sub.SetQoSProfile('sensor_data')
+    assert (sub.GetReliability(), sub.GetDurability(), sub.GetHistoryDepth()) == \
+        ('best_effort', 'volatile', 5)
+    assert sub.IsAddedToROS2Node()
+    sub.GlobalWarningDisplayOff()
+    try:
+        assert not sub.SetReliability('maybe')
+        assert not sub.SetHistoryDepth(0)
+    finally:
+        sub.GlobalWarningDisplayOn()
+    assert sub.GetQoSDescription().startswith('best_effort')
+
+
+def test_remove_and_delete(logic):
+    node = logic.GetDefaultROS2Node()
+    node.CreateAndAddSubscriberNode('geometry_msgs/msg/Point', '/py_gone')
+    assert node.RemoveAndDeleteSubscriberNode('/py_gone')
+    assert node.GetSubscriberNodeByTopic('/py_gone') is None
+    assert logic.GetScene().GetNumberOfNodes() == 1
+
+
+def test_scene_file_round_trip(logic, ros2vtk, tmp_path):
+    node = logic.GetDefaultROS2Node()
+    sub = node.CreateAndAddSubscriberNode('geometry_msgs/msg/Point', '/py_saved')
+    sub.SetDurability('transient_local')
+    sub.SetAttribute('purpose', 'test')
+    path = str(tmp_path / 'scene.xml')
+    assert logic.GetScene().WriteToXMLFile(path)
+
+    other = ros2vtk.vtkROS2Logic()
+    assert other.GetScene().ReadFromXMLFile(path)
+    restored = other.GetScene().GetNodeByID(sub.GetID())
+    assert restored.GetClassName() == 'vtkROS2SubscriberGenericNode'
+    assert restored.IsAddedToROS2Node()
+    assert restored.GetDurability() == 'transient_local'
+    assert restored.GetAttribute('purpose') == 'test'
+    assert other.GetDefaultROS2Node().GetID() == node.GetID()
+    other.GetScene().Clear()
+
+
+def test_spin_on_wake_up_times_out_without_data(logic):
+    logic.GetDefaultROS2Node()
+    assert logic.SpinOnWakeUp(0.05) == 0
+    assert logic.GetWakeUpFileDescriptor() >= 0
+
+
+def test_interactor_timer_spins_at_the_rate_and_detaches(logic):
+    from vtkmodules.vtkRenderingUI import vtkGenericRenderWindowInteractor
+
+    interactor = vtkGenericRenderWindowInteractor()
+    created, destroyed = [], []
+    interactor.AddObserver('CreateTimerEvent', lambda o, e: created.append(
+        (o.GetTimerEventId(), o.GetTimerEventDuration())))
+    interactor.AddObserver('DestroyTimerEvent', lambda o, e: destroyed.append(o.GetTimerEventId()))
+    interactor.Enable()
+    logic.SetSpinRate(25.0)
+    assert logic.AttachToInteractor(interactor)
+    assert len(created) == 1 and created[0][1] == 40  # ms between spins at 25 Hz
+    timer_id = created[0][0]
+
+    spins = logic.GetNumberOfSpins()
+    interactor.SetTimerEventId(timer_id)
+    interactor.TimerEvent()
+    assert logic.GetNumberOfSpins() == spins + 1
+
+    logic.DetachFromInteractor()
+    assert set(destroyed) == {timer_id}  # VTK 9.1 reports a destroyed timer once per interactor layer
+    interactor.SetTimerEventId(timer_id)
+    interactor.TimerEvent()
+    assert logic.GetNumberOfSpins() == spins + 1
