@@ -28,9 +28,10 @@ public:
   explicit CdrWriter(std::vector<uint8_t>& buffer)
     : buffer_(buffer)
   {
-    buffer_.clear();
+    // assign, not clear + insert: g++ 12 reports a false -Warray-bounds/-Wstringop-overflow
+    // for a range insert at the end of a vector it has just seen cleared.
     const uint8_t header[4] = { 0x00, 0x01, 0x00, 0x00 };
-    buffer_.insert(buffer_.end(), header, header + 4);
+    buffer_.assign(header, header + 4);
   }
 
   /// Pre-allocates room for a payload of `total_size` bytes (header included).
