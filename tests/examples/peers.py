@@ -87,6 +87,26 @@ def cmd_vf(args) -> int:
     return 0
 
 
+# ------------------------------------------------------------------------------ trajectory
+def cmd_trajectory(args) -> int:
+    """Receives one PoseArray and prints it (positions in metres, quaternions x y z w)."""
+    node = rclpy.create_node('motion_planner')
+    received: list = []
+    node.create_subscription(PoseArray, args.topic, received.append, QoSProfile(depth=10))
+    print(json.dumps({'ready': True}), flush=True)
+    if not wait_for(node, lambda: received, args.timeout):
+        print(json.dumps({'error': f'no PoseArray on {args.topic} within {args.timeout} s'}), flush=True)
+        return 4
+    message = received[0]
+    print(json.dumps({'frame_id': message.header.frame_id,
+                      'stamp': message.header.stamp.sec + 1e-9 * message.header.stamp.nanosec,
+                      'positions': [[p.position.x, p.position.y, p.position.z] for p in message.poses],
+                      'orientations': [[p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w]
+                                       for p in message.poses]}), flush=True)
+    node.destroy_node()
+    return 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser()
     sub = parser.add_subparsers(dest='command', required=True)
@@ -98,10 +118,13 @@ def main() -> int:
     vf.add_argument('--frame-id', default='base')
     vf.add_argument('--wait', type=float, default=20.0)
     vf.add_argument('--timeout', type=float, default=5.0)
+    trajectory = sub.add_parser('trajectory')
+    trajectory.add_argument('--topic', default='/trajectory')
+    trajectory.add_argument('--timeout', type=float, default=30.0)
     args = parser.parse_args()
     rclpy.init()
     try:
-        return {'vf': cmd_vf}[args.command](args)
+        return {'vf': cmd_vf, 'trajectory': cmd_trajectory}[args.command](args)
     finally:
         rclpy.try_shutdown()
 
