@@ -6,6 +6,7 @@ script, printing what it observed as one JSON object per line.
     scene_runner.py broadcast PARENT CHILD [--static] [--seconds S]
     scene_runner.py params NODE NAME... [--seconds S]        parameter node -> values and events
     scene_runner.py serve [--seconds S]                      own parameters for rclpy clients
+    scene_runner.py robot NAME [--source parameter|topic]    robot node -> link matrices (mm)
 """
 from __future__ import annotations
 
@@ -239,6 +240,41 @@ def cmd_serve(args, logic, node) -> int:
     return 0
 
 
+def cmd_robot(args, logic, node) -> int:
+    """A robot node from a robot_state_publisher's parameter or topic; prints its state once
+    loaded, then a snapshot of every link's world matrix (mm) every --every seconds."""
+    if args.source == 'parameter':
+        robot = node.CreateAndAddRobotNode(args.name, args.rsp_node, 'robot_description', '', args.tf_prefix)
+    else:
+        robot = node.CreateAndAddRobotNodeFromTopic(args.name, args.topic, '', args.tf_prefix)
+    for folder in args.mesh_path:
+        robot.AddMeshSearchPath(folder)
+    robot.SetMeshBaseFolder(args.mesh_base_folder)
+    loaded = []
+    robot.AddObserver(ros2vtk.vtkROS2RobotNode.RobotLoadedEvent, lambda caller, event: loaded.append(1))
+    print(json.dumps({'ready': True, 'state': robot.GetRobotState()}), flush=True)
+    run(logic, args.seconds, robot.IsLoaded)
+    models = [robot.GetNthModelNode(i) for i in range(robot.GetNumberOfModelNodes())]
+    print(json.dumps({'state': robot.GetRobotState(), 'loaded_events': len(loaded),
+                      'links': robot.GetLinkNames().split(), 'models': len(models),
+                      'placeholders': robot.GetNumberOfPlaceholders(), 'warnings': robot.GetWarnings(),
+                      'load_seconds': robot.GetLastLoadDuration(),
+                      'model_links': [m.GetAttribute('ros2vtk.link') for m in models]}), flush=True)
+    matrix = vtk.vtkMatrix4x4()
+    end = time.monotonic() + args.follow
+    next_snapshot = time.monotonic()
+    while time.monotonic() < end:
+        logic.SpinOnWakeUp(0.02)
+        if time.monotonic() >= next_snapshot:
+            next_snapshot += args.every
+            links = {}
+            for link in robot.GetLinkNames().split():
+                robot.GetLinkTransformNode(link).GetMatrixTransformToWorld(matrix)
+                links[link] = matrix_rows(matrix)
+            print(json.dumps({'tracked': robot.GetNumberOfLinksTracked(), 'links': links}), flush=True)
+    return 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument('--node-name', default='slicer')
@@ -265,11 +301,21 @@ def main() -> int:
     publisher = sub.add_parser('pub')
     publisher.add_argument('type')
     publisher.add_argument('topic')
+    robot = sub.add_parser('robot')
+    robot.add_argument('name')
+    robot.add_argument('--source', choices=('parameter', 'topic'), default='parameter')
+    robot.add_argument('--rsp-node', default='/robot_state_publisher')
+    robot.add_argument('--topic', default='/robot_description')
+    robot.add_argument('--tf-prefix', default='')
+    robot.add_argument('--mesh-path', action='append', default=[])
+    robot.add_argument('--mesh-base-folder', default='')
+    robot.add_argument('--follow', type=float, default=8.0)
+    robot.add_argument('--every', type=float, default=0.2)
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
     return {'lookup': cmd_lookup, 'broadcast': cmd_broadcast, 'params': cmd_params,
-            'serve': cmd_serve, 'sub': cmd_sub, 'pub': cmd_pub}[args.command](args, logic, node)
+            'serve': cmd_serve, 'sub': cmd_sub, 'pub': cmd_pub, 'robot': cmd_robot}[args.command](args, logic, node)
 
 
 if __name__ == '__main__':

@@ -7,6 +7,7 @@
 #include "vtkROS2SubscriberGenericNode.h"
 #include "vtkROS2SubscriberNode.h"
 #include "vtkROS2ParameterNode.h"
+#include "vtkROS2RobotNode.h"
 #include "vtkROS2Tf2BroadcasterNode.h"
 #include "vtkROS2Tf2LookupNode.h"
 
@@ -32,6 +33,7 @@ const char* const SubscriberRole = "subscriber";
 const char* const Tf2LookupRole = "tf2Lookup";
 const char* const Tf2BroadcasterRole = "tf2Broadcaster";
 const char* const ParameterRole = "parameter";
+const char* const RobotRole = "robot";
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -858,4 +860,95 @@ std::string vtkROS2NodeNode::GetTopicNamesAndTypes()
     }
   }
   return lines;
+}
+
+//------------------------------------------------------------------------------
+// robots
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
+                                               const char* tfPrefix)
+{
+  if (!this->CheckReadyFor(what))
+  {
+    return nullptr;
+  }
+  if (!robotName || !*robotName)
+  {
+    vtkErrorMacro(<< what << ": a robot name is required");
+    return nullptr;
+  }
+  if (this->GetRobotNodeByName(robotName))
+  {
+    vtkErrorMacro(<< what << ": robot '" << robotName << "' exists already on this ROS node");
+    return nullptr;
+  }
+  vtkNew<vtkROS2RobotNode> robot;
+  robot->SetRobotName(robotName);
+  robot->SetFixedFrame(fixedFrame);
+  robot->SetTfPrefix(tfPrefix);
+  this->Scene->AddNode(robot);
+  this->AddNodeReferenceID(RobotRole, robot->GetID());
+  return robot;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
+  const char* parameterName, const char* fixedFrame, const char* tfPrefix)
+{
+  const std::string remote = AbsoluteNodeName(parameterNodeName);
+  const std::string parameter = parameterName && *parameterName ? parameterName : "robot_description";
+  if (remote.empty())
+  {
+    vtkErrorMacro("CreateAndAddRobotNode: the node serving the description is required "
+                  "(e.g. /robot_state_publisher)");
+    return nullptr;
+  }
+  vtkROS2RobotNode* robot = this->AddRobotNode("CreateAndAddRobotNode", robotName, fixedFrame, tfPrefix);
+  if (robot && !robot->AttachToParameter(this, remote, parameter))
+  {
+    this->RemoveAndDeleteRobotNode(robotName);
+    return nullptr;
+  }
+  return robot;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic,
+  const char* fixedFrame, const char* tfPrefix)
+{
+  const std::string name = topic && *topic ? topic : "/robot_description";
+  vtkROS2RobotNode* robot =
+    this->AddRobotNode("CreateAndAddRobotNodeFromTopic", robotName, fixedFrame, tfPrefix);
+  if (robot && !robot->AttachToTopic(this, name))
+  {
+    this->RemoveAndDeleteRobotNode(robotName);
+    return nullptr;
+  }
+  return robot;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::GetRobotNodeByName(const char* robotName)
+{
+  for (const auto& node : Referenced<vtkROS2RobotNode>(this, RobotRole))
+  {
+    if (robotName && std::string(node->GetRobotName()) == robotName)
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteRobotNode(const char* robotName)
+{
+  vtkROS2RobotNode* robot = this->GetRobotNodeByName(robotName);
+  if (!robot)
+  {
+    vtkErrorMacro("RemoveAndDeleteRobotNode: no robot '" << (robotName ? robotName : "(null)") << "'");
+    return false;
+  }
+  this->RemoveNodeReferenceID(RobotRole, robot->GetID());
+  return this->Scene ? this->Scene->RemoveNode(robot) : true;
 }

@@ -27,6 +27,7 @@ class Participant;
 }
 
 class vtkROS2ParameterNode;
+class vtkROS2RobotNode;
 class vtkROS2Tf2BroadcasterNode;
 class vtkROS2Tf2LookupNode;
 namespace ros2vtk
@@ -118,6 +119,22 @@ public:
   ///@}
 
   ///@{
+  /// Robots (SlicerROS2's robot node). The description is the `parameterName` parameter of the
+  /// remote `parameterNodeName` (a robot_state_publisher), or a std_msgs/String topic (transient
+  /// local, like RViz 2's RobotModel). Links are looked up from `fixedFrame` (empty: the root
+  /// link) with `tfPrefix` prepended to link names. The robot appears on the spin that brings its
+  /// description. Names are unique per ROS node; nullptr / false (vtkErrorMacro) otherwise.
+  vtkROS2RobotNode* CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
+    const char* parameterName = "robot_description", const char* fixedFrame = "", const char* tfPrefix = "");
+  vtkROS2RobotNode* CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic = "/robot_description",
+    const char* fixedFrame = "", const char* tfPrefix = "");
+  vtkROS2RobotNode* GetRobotNodeByName(const char* robotName);
+  /// Removes the robot and every node it created (links, models, and its description source
+  /// when it created that).
+  bool RemoveAndDeleteRobotNode(const char* robotName);
+  ///@}
+
+  ///@{
   /// The ROS graph as this node sees it (like `ros2 node list` / `ros2 topic list -t`): one
   /// entry per line, "/ns/name" and "/topic type1 type2". Discovery takes about a second.
   std::string GetNodeNamesAndNamespaces();
@@ -172,6 +189,8 @@ private:
   template <typename NodeType>
   NodeType* FindByFrames(const char* role, const char* parentFrame, const char* childFrame);
   bool CheckReadyFor(const char* what);
+  vtkROS2RobotNode* AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
+    const char* tfPrefix);
   int SpinParametersAndTf2();
 
   class vtkInternals;

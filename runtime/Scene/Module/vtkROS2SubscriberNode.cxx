@@ -161,6 +161,29 @@ std::string vtkROS2SubscriberNode::GetLastMessageYAML() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2SubscriberNode::GetLastMessageStringField(const char* fieldName, std::string& value) const
+{
+  const void* message = this->GetLastRawMessage();
+  if (!message || !fieldName)
+  {
+    return false;
+  }
+  const ros2vtk::wire::MessageTypeSupport& type = *this->Internals->Batch.back().type();
+  for (uint32_t i = 0; i < type.field_count; ++i)
+  {
+    const ros2vtk::wire::FieldInfo& field = type.fields[i];
+    if (field.type == ros2vtk::wire::FieldType::String &&
+      field.container == ros2vtk::wire::Container::None && std::string(field.name) == fieldName)
+    {
+      // Generated structs hold `string` fields as std::string at the recorded offset.
+      value = *reinterpret_cast<const std::string*>(static_cast<const char*>(message) + field.offset);
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2SubscriberNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -32,6 +32,11 @@ public:
   /// The newest message as YAML, as `ros2 topic echo` prints it; empty before the first one.
   std::string GetLastMessageYAML() const;
 
+  /// A top-level string field of the newest message, read through the type's introspection
+  /// (e.g. "data" of a std_msgs/String, as robot_description is). False (and `value` untouched)
+  /// before the first message or when the type has no string field of that name.
+  bool GetLastMessageStringField(const char* fieldName, std::string& value) const;
+
   /// Takes the queued messages; returns how many were new. Called by vtkROS2NodeNode::Spin on
   /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.
   int ProcessIncomingMessages();

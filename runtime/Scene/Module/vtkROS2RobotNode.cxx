@@ -1,0 +1,613 @@
+#include "vtkROS2RobotNode.h"
+
+#include "vtkROS2ModelNode.h"
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2ParameterNode.h"
+#include "vtkROS2Scene.h"
+#include "vtkROS2SubscriberNode.h"
+#include "vtkROS2Tf2LookupNode.h"
+#include "vtkROS2TransformNode.h"
+
+#include "ros2vtk/robot/RobotLoader.hpp"
+
+#include "vtkCallbackCommand.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
+
+#include <chrono>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+const char* const ROS2NodeRole = "ros2Node";
+const char* const DescriptionRole = "robotDescription";
+constexpr double MillimetresPerMetre = 1000.0;
+
+// Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
+// shared through the loader's cache) and the matrix brings it into the millimetre scene.
+void VisualToLinkMillimetres(vtkMatrix4x4* origin, vtkMatrix4x4* result)
+{
+  result->Identity();
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int column = 0; column < 3; ++column)
+    {
+      result->SetElement(row, column, origin->GetElement(row, column) * MillimetresPerMetre);
+    }
+    result->SetElement(row, 3, origin->GetElement(row, 3) * MillimetresPerMetre);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+class vtkROS2RobotNode::vtkInternals
+{
+public:
+  std::string RobotName;
+  std::string Source; // "parameter" | "topic" | "" (direct loads only)
+  std::string ParameterNodeName;
+  std::string ParameterName;
+  std::string Topic;
+  std::string FixedFrame;
+  std::string TfPrefix;
+  std::vector<std::string> SearchPaths;
+  std::string MeshBaseFolder;
+
+  // The description source node, and whether this robot created it (then it removes it).
+  vtkWeakPointer<vtkROS2SceneNode> SourceNode;
+  bool OwnsSourceNode = false;
+  unsigned long SourceObserverTag = 0;
+  vtkNew<vtkCallbackCommand> SourceObserver;
+  bool SourceChanged = true; // check the source on the first spin
+
+  std::string LoadedDescription; // the URDF text of the current robot
+  std::string LoadedBaseFolder;
+  std::string LastFailedDescription; // refused once: not parsed again on every spin
+  ros2vtk::robot::RobotVisuals Visuals;
+  std::unique_ptr<ros2vtk::robot::RobotLoader> Loader;
+  bool Loaded = false;
+  bool FramesChanged = false;
+  std::string State = "waiting for robot_description";
+  std::string LastError;
+  int NumberOfLoads = 0;
+  double LastLoadDuration = 0.0;
+
+  // What this robot put in the scene.
+  vtkWeakPointer<vtkROS2TransformNode> Base;
+  std::vector<std::pair<std::string, vtkWeakPointer<vtkROS2TransformNode>>> Links;
+  std::vector<vtkWeakPointer<vtkROS2SceneNode>> OwnedLinkNodes; // lookups created here, identity nodes
+  std::vector<vtkWeakPointer<vtkROS2ModelNode>> Models;
+
+  std::string EffectiveFixedFrame() const
+  {
+    return this->FixedFrame.empty() ? this->TfPrefix + this->Visuals.root_link : this->FixedFrame;
+  }
+};
+
+vtkStandardNewMacro(vtkROS2RobotNode);
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode::vtkROS2RobotNode()
+  : Internals(new vtkInternals)
+{
+  this->Internals->SourceObserver->SetClientData(this->Internals.get());
+  this->Internals->SourceObserver->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+    static_cast<vtkInternals*>(clientData)->SourceChanged = true;
+  });
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode::~vtkROS2RobotNode() = default;
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::SetRobotName(const char* robotName)
+{
+  this->Internals->RobotName = robotName ? robotName : "";
+  this->SetName(("ros2:robot:" + this->Internals->RobotName).c_str());
+}
+
+const char* vtkROS2RobotNode::GetRobotName() const
+{
+  return this->Internals->RobotName.c_str();
+}
+
+const char* vtkROS2RobotNode::GetDescriptionSource() const
+{
+  return this->Internals->Source.c_str();
+}
+
+const char* vtkROS2RobotNode::GetParameterNodeName() const
+{
+  return this->Internals->ParameterNodeName.c_str();
+}
+
+const char* vtkROS2RobotNode::GetParameterName() const
+{
+  return this->Internals->ParameterName.c_str();
+}
+
+const char* vtkROS2RobotNode::GetDescriptionTopic() const
+{
+  return this->Internals->Topic.c_str();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::SetFixedFrame(const char* frame)
+{
+  const std::string value = frame ? frame : "";
+  if (value != this->Internals->FixedFrame)
+  {
+    this->Internals->FixedFrame = value;
+    this->Internals->FramesChanged = this->Internals->Loaded;
+    this->Modified();
+  }
+}
+
+const char* vtkROS2RobotNode::GetFixedFrame() const
+{
+  return this->Internals->FixedFrame.c_str();
+}
+
+void vtkROS2RobotNode::SetTfPrefix(const char* prefix)
+{
+  const std::string value = prefix ? prefix : "";
+  if (value != this->Internals->TfPrefix)
+  {
+    this->Internals->TfPrefix = value;
+    this->Internals->FramesChanged = this->Internals->Loaded;
+    this->Modified();
+  }
+}
+
+const char* vtkROS2RobotNode::GetTfPrefix() const
+{
+  return this->Internals->TfPrefix.c_str();
+}
+
+void vtkROS2RobotNode::AddMeshSearchPath(const char* folder)
+{
+  if (!folder || !*folder)
+  {
+    vtkErrorMacro("AddMeshSearchPath: a folder is required");
+    return;
+  }
+  this->Internals->SearchPaths.emplace_back(folder);
+  if (this->Internals->Loader)
+  {
+    this->Internals->Loader->resolver().add_search_path(folder);
+  }
+}
+
+void vtkROS2RobotNode::SetMeshBaseFolder(const char* folder)
+{
+  this->Internals->MeshBaseFolder = folder ? folder : "";
+}
+
+const char* vtkROS2RobotNode::GetMeshBaseFolder() const
+{
+  return this->Internals->MeshBaseFolder.c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2RobotNode::GetRobotState() const
+{
+  return this->Internals->State.c_str();
+}
+
+bool vtkROS2RobotNode::IsLoaded() const
+{
+  return this->Internals->Loaded;
+}
+
+const char* vtkROS2RobotNode::GetLastError() const
+{
+  return this->Internals->LastError.c_str();
+}
+
+std::string vtkROS2RobotNode::GetWarnings() const
+{
+  std::string all;
+  for (const std::string& warning : this->Internals->Visuals.warnings())
+  {
+    all += warning + "\n";
+  }
+  return all;
+}
+
+int vtkROS2RobotNode::GetNumberOfLoads() const
+{
+  return this->Internals->NumberOfLoads;
+}
+
+double vtkROS2RobotNode::GetLastLoadDuration() const
+{
+  return this->Internals->LastLoadDuration;
+}
+
+int vtkROS2RobotNode::GetNumberOfLinks() const
+{
+  return static_cast<int>(this->Internals->Links.size());
+}
+
+std::string vtkROS2RobotNode::GetLinkNames() const
+{
+  std::string names;
+  for (const auto& link : this->Internals->Links)
+  {
+    names += (names.empty() ? "" : " ") + link.first;
+  }
+  return names;
+}
+
+vtkROS2TransformNode* vtkROS2RobotNode::GetLinkTransformNode(const char* link)
+{
+  for (const auto& entry : this->Internals->Links)
+  {
+    if (link && entry.first == link)
+    {
+      return entry.second;
+    }
+  }
+  return nullptr;
+}
+
+int vtkROS2RobotNode::GetNumberOfLinksTracked()
+{
+  int tracked = 0;
+  for (const auto& entry : this->Internals->Links)
+  {
+    vtkROS2TransformNode* node = entry.second;
+    auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
+    if (node && (!lookup || std::string(lookup->GetLookupStatus()) == "ok"))
+    {
+      ++tracked;
+    }
+  }
+  return tracked;
+}
+
+vtkROS2TransformNode* vtkROS2RobotNode::GetBaseTransformNode()
+{
+  return this->Internals->Base;
+}
+
+int vtkROS2RobotNode::GetNumberOfModelNodes() const
+{
+  return static_cast<int>(this->Internals->Models.size());
+}
+
+vtkROS2ModelNode* vtkROS2RobotNode::GetNthModelNode(int n)
+{
+  if (n < 0 || n >= this->GetNumberOfModelNodes())
+  {
+    return nullptr;
+  }
+  return this->Internals->Models[static_cast<size_t>(n)];
+}
+
+int vtkROS2RobotNode::GetNumberOfPlaceholders() const
+{
+  return this->Internals->Loaded ? static_cast<int>(this->Internals->Visuals.placeholder_count()) : 0;
+}
+
+vtkROS2NodeNode* vtkROS2RobotNode::GetROS2Node() const
+{
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeRole));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::AttachToParameter(vtkROS2NodeNode* rosNode, const std::string& remoteNode,
+                                         const std::string& parameterName)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkROS2ParameterNode* parameters = rosNode->GetParameterNodeByNode(remoteNode.c_str());
+  internals.OwnsSourceNode = parameters == nullptr;
+  if (!parameters)
+  {
+    parameters = rosNode->CreateAndAddParameterNode(remoteNode.c_str());
+  }
+  if (!parameters || !parameters->AddParameter(parameterName.c_str()))
+  {
+    return false;
+  }
+  internals.Source = "parameter";
+  internals.ParameterNodeName = parameters->GetMonitoredNodeName();
+  internals.ParameterName = parameterName;
+  internals.SourceNode = parameters;
+  internals.SourceObserverTag = parameters->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
+  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
+  this->SetNodeReferenceID(DescriptionRole, parameters->GetID());
+  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::AttachToTopic(vtkROS2NodeNode* rosNode, const std::string& topic)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkROS2SubscriberNode* subscriber = rosNode->GetSubscriberNodeByTopic(topic.c_str());
+  internals.OwnsSourceNode = subscriber == nullptr;
+  if (!subscriber)
+  {
+    // robot_state_publisher publishes the description once, reliable + transient local (as RViz 2
+    // subscribes): a late joiner still gets it.
+    subscriber = rosNode->CreateAndAddSubscriberNode("std_msgs/msg/String", topic.c_str());
+    if (!subscriber || !subscriber->SetQoSProfile("transient_local"))
+    {
+      return false;
+    }
+  }
+  else if (std::string(subscriber->GetROSType()) != "std_msgs/msg/String")
+  {
+    vtkErrorMacro("CreateAndAddRobotNode: " << topic << " is subscribed already with type "
+                                            << subscriber->GetROSType() << ", not std_msgs/msg/String");
+    return false;
+  }
+  internals.Source = "topic";
+  internals.Topic = subscriber->GetTopic();
+  internals.SourceNode = subscriber;
+  internals.SourceObserverTag = subscriber->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
+  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
+  this->SetNodeReferenceID(DescriptionRole, subscriber->GetID());
+  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2RobotNode::CheckForNewDescription()
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.FramesChanged && internals.Loaded)
+  {
+    // New prefix or fixed frame: rebuild the nodes from the description already parsed.
+    internals.FramesChanged = false;
+    const std::string description = internals.LoadedDescription;
+    this->LoadRobotDescription(description.c_str(), internals.LoadedBaseFolder.c_str());
+    return 1;
+  }
+  if (!internals.SourceChanged || !internals.SourceNode)
+  {
+    return 0;
+  }
+  internals.SourceChanged = false;
+  std::string description;
+  if (auto* parameters = vtkROS2ParameterNode::SafeDownCast(internals.SourceNode))
+  {
+    if (!parameters->IsParameterSet(internals.ParameterName.c_str(), /*noWarning=*/true) ||
+      parameters->GetParameterType(internals.ParameterName.c_str()) != "string")
+    {
+      return 0;
+    }
+    description = parameters->GetParameterAsString(internals.ParameterName.c_str());
+  }
+  else if (auto* subscriber = vtkROS2SubscriberNode::SafeDownCast(internals.SourceNode))
+  {
+    if (!subscriber->GetLastMessageStringField("data", description))
+    {
+      return 0;
+    }
+  }
+  if (description.empty() || (internals.Loaded && description == internals.LoadedDescription) ||
+    description == internals.LastFailedDescription)
+  {
+    return 0;
+  }
+  this->LoadRobotDescription(description.c_str(), internals.MeshBaseFolder.c_str());
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* baseFolder)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (!this->Scene || !rosNode || !rosNode->IsCreated())
+  {
+    vtkErrorMacro("LoadRobotDescription: the robot node must belong to a created ROS node");
+    return false;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  if (!internals.Loader)
+  {
+    internals.Loader.reset(new ros2vtk::robot::RobotLoader());
+    for (const std::string& folder : internals.SearchPaths)
+    {
+      internals.Loader->resolver().add_search_path(folder);
+    }
+  }
+  ros2vtk::robot::RobotLoadOptions options;
+  options.base_folder = baseFolder ? baseFolder : "";
+  ros2vtk::robot::RobotVisuals visuals;
+  std::string error;
+  const std::string description = urdfXml ? urdfXml : "";
+  if (!internals.Loader->load_xml(description, options, &visuals, &error))
+  {
+    // The robot already shown (if any) stays; the bad description is not parsed again.
+    internals.LastFailedDescription = description;
+    internals.LastError = error;
+    internals.State = "failed: " + error;
+    vtkErrorMacro("robot '" << internals.RobotName << "': robot_description refused: " << error);
+    this->Modified();
+    return false;
+  }
+  this->Unload();
+  internals.Visuals = std::move(visuals);
+  internals.LoadedDescription = description;
+  internals.LoadedBaseFolder = options.base_folder;
+  internals.LastFailedDescription.clear();
+  internals.LastError.clear();
+
+  vtkROS2Scene* scene = this->Scene;
+  const std::string& name = internals.RobotName;
+  vtkNew<vtkROS2TransformNode> base;
+  base->SetName((name + ":base").c_str());
+  scene->AddNode(base);
+  internals.Base = base;
+  internals.OwnedLinkNodes.emplace_back(base.GetPointer());
+
+  const std::string fixedFrame = internals.EffectiveFixedFrame();
+  vtkNew<vtkMatrix4x4> modelToLink;
+  for (const ros2vtk::robot::LinkVisuals& link : internals.Visuals.links)
+  {
+    const std::string frame = internals.TfPrefix + link.link;
+    vtkSmartPointer<vtkROS2TransformNode> linkNode;
+    bool owned = true;
+    if (frame == fixedFrame)
+    {
+      linkNode = vtkSmartPointer<vtkROS2TransformNode>::New(); // the fixed frame itself: identity
+      scene->AddNode(linkNode);
+    }
+    else if ((linkNode = rosNode->GetTf2LookupNodeByParentChild(fixedFrame.c_str(), frame.c_str())))
+    {
+      owned = false; // someone's lookup already: shared, left in place on unload
+    }
+    else
+    {
+      linkNode = rosNode->CreateAndAddTf2LookupNode(fixedFrame.c_str(), frame.c_str());
+    }
+    if (!linkNode)
+    {
+      continue; // CreateAndAddTf2LookupNode said why
+    }
+    if (owned)
+    {
+      linkNode->SetName((name + ":" + link.link).c_str());
+      linkNode->SetParentTransformNodeID(base->GetID());
+      internals.OwnedLinkNodes.emplace_back(linkNode.GetPointer());
+    }
+    internals.Links.emplace_back(link.link, linkNode.GetPointer());
+    for (size_t i = 0; i < link.visuals.size(); ++i)
+    {
+      const ros2vtk::robot::LinkVisual& visual = link.visuals[i];
+      vtkNew<vtkROS2ModelNode> model;
+      std::ostringstream modelName;
+      modelName << name << ":" << link.link << ":visual" << i;
+      model->SetName(modelName.str().c_str());
+      model->SetPolyData(visual.geometry);
+      VisualToLinkMillimetres(visual.origin, modelToLink);
+      model->SetMatrixModelToParent(modelToLink);
+      const auto color = visual.display_color();
+      model->SetColor(color[0], color[1], color[2]);
+      model->SetOpacity(color[3]);
+      model->SetAttribute("ros2vtk.robot", name.c_str());
+      model->SetAttribute("ros2vtk.link", link.link.c_str());
+      if (!visual.mesh_path.empty())
+      {
+        model->SetAttribute("ros2vtk.meshFile", visual.mesh_path.c_str());
+      }
+      scene->AddNode(model);
+      model->SetParentTransformNodeID(linkNode->GetID());
+      internals.Models.emplace_back(model.GetPointer());
+    }
+  }
+  for (const std::string& warning : internals.Visuals.warnings())
+  {
+    vtkWarningMacro("robot '" << name << "': " << warning);
+  }
+  internals.Loaded = true;
+  internals.FramesChanged = false;
+  internals.State = "loaded";
+  ++internals.NumberOfLoads;
+  internals.LastLoadDuration =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->Modified();
+  this->InvokeEvent(RobotLoadedEvent);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::Unload()
+{
+  vtkInternals& internals = *this->Internals;
+  vtkROS2Scene* scene = this->Scene;
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  for (const auto& model : internals.Models)
+  {
+    if (model && scene && model->GetScene() == scene)
+    {
+      scene->RemoveNode(model);
+    }
+  }
+  for (const auto& weak : internals.OwnedLinkNodes)
+  {
+    vtkROS2SceneNode* node = weak;
+    auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
+    if (lookup && rosNode && rosNode->GetTf2LookupNodeByParentChild(lookup->GetParentID(), lookup->GetChildID()) == lookup)
+    {
+      rosNode->RemoveAndDeleteTf2LookupNode(lookup->GetParentID(), lookup->GetChildID());
+    }
+    else if (node && scene && node->GetScene() == scene)
+    {
+      scene->RemoveNode(node);
+    }
+  }
+  internals.Models.clear();
+  internals.OwnedLinkNodes.clear();
+  internals.Links.clear();
+  internals.Base = nullptr;
+  internals.Loaded = false;
+  internals.State = "waiting for robot_description";
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::ReleaseSource()
+{
+  vtkInternals& internals = *this->Internals;
+  vtkROS2SceneNode* source = internals.SourceNode;
+  if (source)
+  {
+    source->RemoveObserver(internals.SourceObserverTag);
+  }
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (rosNode)
+  {
+    rosNode->RemoveSpinCallbacks(this);
+  }
+  if (source && internals.OwnsSourceNode && rosNode)
+  {
+    if (internals.Source == "parameter")
+    {
+      rosNode->RemoveAndDeleteParameterNode(internals.ParameterNodeName.c_str());
+    }
+    else
+    {
+      rosNode->RemoveAndDeleteSubscriberNode(internals.Topic.c_str());
+    }
+  }
+  internals.SourceNode = nullptr;
+  internals.OwnsSourceNode = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::OnRemovedFromScene()
+{
+  // Everything this robot built goes with it (RemoveAndDeleteRobotNode, or the scene closing).
+  this->Unload();
+  this->ReleaseSource();
+  this->Superclass::OnRemovedFromScene();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const vtkInternals& internals = *this->Internals;
+  os << indent << "RobotName: " << internals.RobotName << "\n";
+  os << indent << "DescriptionSource: " << internals.Source << "\n";
+  if (internals.Source == "parameter")
+  {
+    os << indent << "Parameter: " << internals.ParameterNodeName << " " << internals.ParameterName << "\n";
+  }
+  else if (internals.Source == "topic")
+  {
+    os << indent << "Topic: " << internals.Topic << "\n";
+  }
+  os << indent << "FixedFrame: " << internals.FixedFrame << "\n";
+  os << indent << "TfPrefix: " << internals.TfPrefix << "\n";
+  os << indent << "State: " << internals.State << "\n";
+  os << indent << "Links: " << internals.Links.size() << ", models: " << internals.Models.size() << "\n";
+}

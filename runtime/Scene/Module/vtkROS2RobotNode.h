@@ -1,0 +1,138 @@
+// ros2vtk — a robot in the scene, built from its URDF robot_description (SlicerROS2's
+// vtkMRMLROS2RobotNode, RViz 2's RobotModel display).
+//
+//   robot = rosNode->CreateAndAddRobotNode("PSM1", "/PSM1/robot_state_publisher", "robot_description");
+//   robot = rosNode->CreateAndAddRobotNodeFromTopic("arm", "/robot_description"); // RViz 2's way
+//
+// The description comes from a parameter of a robot_state_publisher (through a parameter node)
+// or from its transient-local robot_description topic (through a subscriber node). When it
+// arrives (on a spin of the ROS node), the robot node builds, in the scene:
+//   * a base transform node "<robot>:base" (identity; edit it to place the whole robot),
+//   * one transform node per link under it: a tf2 lookup node (fixed frame <- prefix + link),
+//     or a plain identity node for the fixed frame's own link,
+//   * one model node per URDF <visual> under its link's node: meshes (STL, OBJ, PLY, DAE, glTF)
+//     and primitives, placed by the visual origin and mesh scale, coloured from the URDF material
+//     or the mesh file.
+// Lengths follow the toolkit's units policy: the scene is in millimetres. A new description
+// (robot_state_publisher restarted with another URDF) reloads the robot; a missing mesh is a
+// warning and a placeholder; a broken URDF is a state (GetRobotState) and one error message.
+#ifndef vtkROS2RobotNode_h
+#define vtkROS2RobotNode_h
+
+#include "ros2vtkSceneModule.h" // for export macro
+
+#include "vtkROS2SceneNode.h"
+
+#include "vtkCommand.h" // for vtkCommand::UserEvent
+
+#include <memory> // for std::unique_ptr (pimpl)
+#include <string> // for std::string
+
+class vtkROS2ModelNode;
+class vtkROS2NodeNode;
+class vtkROS2TransformNode;
+
+class ROS2VTKSCENE_EXPORT vtkROS2RobotNode : public vtkROS2SceneNode
+{
+public:
+  static vtkROS2RobotNode* New();
+  vtkTypeMacro(vtkROS2RobotNode, vtkROS2SceneNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Fired (with ModifiedEvent) on the spin that finished (re)building the robot's nodes.
+  enum
+  {
+    RobotLoadedEvent = vtkCommand::UserEvent + 60
+  };
+
+  /// The name given at creation ("PSM1"); also the prefix of the names of the nodes it builds.
+  void SetRobotName(const char* robotName);
+  const char* GetRobotName() const;
+  /// "parameter" (SlicerROS2's way) or "topic" (RViz 2's way).
+  const char* GetDescriptionSource() const;
+  /// The parameter source: remote node and parameter ("/robot_state_publisher", "robot_description").
+  const char* GetParameterNodeName() const;
+  const char* GetParameterName() const;
+  /// The topic source ("/PSM1/robot_description").
+  const char* GetDescriptionTopic() const;
+
+  /// The frame links are looked up from. Empty (default): the root link, with the tf prefix.
+  /// Changing it after a load rebuilds the lookups on the next spin.
+  void SetFixedFrame(const char* frame);
+  const char* GetFixedFrame() const;
+  /// Prepended to every link name to form its tf frame (robot_state_publisher's frame_prefix,
+  /// e.g. "robot1/"). Changing it after a load rebuilds the lookups on the next spin.
+  void SetTfPrefix(const char* prefix);
+  const char* GetTfPrefix() const;
+  /// A folder searched first for package:// and relative mesh paths (besides AMENT_PREFIX_PATH
+  /// and ROS_PACKAGE_PATH). Applies to the next load.
+  void AddMeshSearchPath(const char* folder);
+  /// The folder relative mesh paths ("../meshes/arm.stl") are taken from when the description
+  /// comes over the network and so has no folder of its own: usually the URDF file's folder.
+  /// Empty (default): the current folder. Applies to the next load.
+  void SetMeshBaseFolder(const char* folder);
+  const char* GetMeshBaseFolder() const;
+
+  /// "waiting for robot_description", "loaded" or "failed: <why>".
+  const char* GetRobotState() const;
+  bool IsLoaded() const;
+  /// Why the latest description was refused (empty when it loaded).
+  const char* GetLastError() const;
+  /// Warnings of the latest load (missing meshes, urdfdom complaints), one per line.
+  std::string GetWarnings() const;
+  /// Descriptions loaded so far (a reload counts again).
+  int GetNumberOfLoads() const;
+  /// Seconds from taking the description to every node being in the scene (latest load).
+  double GetLastLoadDuration() const;
+
+  int GetNumberOfLinks() const;
+  /// Link names in URDF tree order (parents first), space-separated.
+  std::string GetLinkNames() const;
+  /// The transform node of a link (a vtkROS2Tf2LookupNode, or the identity node of the fixed
+  /// frame's link); nullptr when there is no such link.
+  vtkROS2TransformNode* GetLinkTransformNode(const char* link);
+  /// Links whose tf lookup currently succeeds (the fixed frame's own link counts).
+  int GetNumberOfLinksTracked();
+  /// The transform node every link hangs under; edit its matrix to place the robot.
+  vtkROS2TransformNode* GetBaseTransformNode();
+
+  /// One model node per URDF visual, in link order.
+  int GetNumberOfModelNodes() const;
+  vtkROS2ModelNode* GetNthModelNode(int n);
+  /// Visuals whose mesh could not be loaded (a placeholder cube stands in for each).
+  int GetNumberOfPlaceholders() const;
+
+  /// Builds the robot from URDF text right away (besides the automatic load from the source),
+  /// with relative mesh paths taken from `baseFolder`. False (state "failed") on a broken URDF.
+  bool LoadRobotDescription(const char* urdfXml, const char* baseFolder = "");
+
+  /// The ROS node that spins this robot.
+  vtkROS2NodeNode* GetROS2Node() const;
+
+#ifndef __VTK_WRAP__
+  /// Used by vtkROS2NodeNode: takes the description from `parameterName` of `remoteNode`.
+  bool AttachToParameter(vtkROS2NodeNode* rosNode, const std::string& remoteNode, const std::string& parameterName);
+  /// Used by vtkROS2NodeNode: takes the description from a std_msgs/String `topic`.
+  bool AttachToTopic(vtkROS2NodeNode* rosNode, const std::string& topic);
+#endif
+
+protected:
+  vtkROS2RobotNode();
+  ~vtkROS2RobotNode() override;
+
+  void OnRemovedFromScene() override;
+
+private:
+  vtkROS2RobotNode(const vtkROS2RobotNode&) = delete;
+  void operator=(const vtkROS2RobotNode&) = delete;
+
+  /// Spin callback: loads a new description when the source brought one.
+  int CheckForNewDescription();
+  void Unload();
+  void ReleaseSource();
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,120 @@
+"""Robots in our scene, driven by a real rclpy node playing robot_state_publisher (rsp_peer.py):
+the robot node builds the robot from the description (parameter or topic), and every link's world
+transform follows tf through several joint configurations, equal to yourdfpy's independent
+forward kinematics to 1e-6 m."""
+from __future__ import annotations
+
+import json
+import os
+import xml.etree.ElementTree as ElementTree
+from pathlib import Path
+
+import pytest
+
+from conftest import BUILD, HERE, REPO, VENV_PYTHON, tf2_msgs_env
+
+ARM = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+ARM_PACKAGE = REPO / 'examples' / 'robots' / 'surgical_arm'
+ROBOT_DATA = VENV_PYTHON.parents[1] / 'lib' / 'python3.11' / 'site-packages' / 'cmeel.prefix'
+UR5 = ROBOT_DATA / 'share' / 'example-robot-data' / 'robots' / 'ur_description' / 'urdf' / 'ur5_robot.urdf'
+TOLERANCE_MM = 1e-3  # 1e-6 m
+
+
+def start_rsp(ros, urdf: Path, *args: str):
+    env = dict(ros.env)
+    for key, value in tf2_msgs_env().items():
+        env[key] = os.pathsep.join(filter(None, [value, env.get(key)]))
+    return ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(urdf), *args], env)
+
+
+def start_scene_robot(ros, *args: str, prefix: Path | None = None):
+    env = dict(ros.env, PYTHONPATH=str(BUILD / 'python'))
+    if prefix is not None:
+        env['AMENT_PREFIX_PATH'] = str(prefix)
+    return ros.start(['/usr/bin/python3', str(HERE / 'scene_runner.py'), *args], env)
+
+
+def visual_count(urdf: Path) -> tuple[int, dict]:
+    """Visuals per link, read from the URDF independently of our loader."""
+    root = ElementTree.parse(urdf).getroot()
+    per_link = {link.get('name'): len(link.findall('visual')) for link in root.findall('link')}
+    return sum(per_link.values()), per_link
+
+
+def matches(snapshot: dict, expected: dict, prefix_len: int = 0) -> float:
+    """Largest difference (mm, or unitless for rotation) between a snapshot of our link world
+    matrices (mm) and yourdfpy's (m), over every link."""
+    worst = 0.0
+    for link, rows in expected.items():
+        ours = snapshot[link]
+        for i in range(3):
+            for j in range(3):
+                worst = max(worst, abs(ours[i][j] - rows[i][j]))
+            worst = max(worst, abs(ours[i][3] - 1000.0 * rows[i][3]))
+    return worst
+
+
+def run_robot(ros, urdf: Path, source: str, *, configs: int = 3, namespace: str = '', prefix: str = '',
+              mesh_paths: list[Path] = (), ament_prefix: Path | None = None):
+    hold = 2.5
+    rsp = start_rsp(ros, urdf, '--configs', str(configs), '--hold', str(hold), '--namespace', namespace,
+                    '--frame-prefix', prefix)
+    rsp_node = f'{namespace}/robot_state_publisher' if namespace else '/robot_state_publisher'
+    args = ['--seconds', '30', 'robot', 'arm', '--source', source, '--rsp-node', rsp_node,
+            '--topic', f'{namespace}/robot_description', '--tf-prefix', prefix,
+            '--follow', str(configs * hold + 1.0)]  # after the load
+    for folder in mesh_paths:
+        args += ['--mesh-path', str(folder)]
+    args += ['--mesh-base-folder', str(urdf.parent)]
+    ours = start_scene_robot(ros, *args, prefix=ament_prefix)
+    code, out, err = ros.finish(ours, timeout=configs * hold + 60)
+    rsp_code, rsp_out, rsp_err = ros.finish(rsp, timeout=30)
+    assert code == 0, err
+    assert rsp_code == 0, rsp_err
+    lines = [json.loads(line) for line in out.splitlines()]
+    peer = [json.loads(line) for line in rsp_out.splitlines()]
+    ready = peer[0]
+    assert ready.get('ready'), rsp_out
+    expected = [line for line in peer if 'config' in line]
+    assert len(expected) == configs
+    return ready, lines[1], lines[2:], expected
+
+
+@pytest.mark.parametrize('source', ['parameter', 'topic'])
+def test_arm_appears_and_follows_every_configuration(ros, source):
+    ready, state, snapshots, expected = run_robot(ros, ARM, source, mesh_paths=[ARM_PACKAGE])
+    assert state['state'] == 'loaded', state
+    assert state['loaded_events'] == 1
+    assert sorted(state['links']) == sorted(ready['links'])
+    total, per_link = visual_count(ARM)
+    assert state['models'] == total
+    assert state['placeholders'] == 0, state['warnings']
+    assert {link: state['model_links'].count(link) for link in per_link} == per_link
+    assert snapshots, 'no snapshot after the robot loaded'
+    for config in expected:
+        best = min(matches(snapshot['links'], config['links']) for snapshot in snapshots)
+        assert best < TOLERANCE_MM, f"configuration {config['config']} never matched (best {best})"
+    # It moves: the configurations differ, and so do our snapshots.
+    first, last = snapshots[0]['links'], snapshots[-1]['links']
+    assert any(abs(first[l][i][3] - last[l][i][3]) > 1.0 for l in first for i in range(3))
+
+
+def test_namespaced_robot_with_tf_prefix(ros):
+    ready, state, snapshots, expected = run_robot(ros, ARM, 'topic', configs=2, namespace='/PSM1',
+                                                  prefix='PSM1/', mesh_paths=[ARM_PACKAGE])
+    assert state['state'] == 'loaded', state
+    for config in expected:
+        best = min(matches(snapshot['links'], config['links']) for snapshot in snapshots)
+        assert best < TOLERANCE_MM, f"configuration {config['config']} never matched (best {best})"
+
+
+@pytest.mark.skipif(not UR5.exists(), reason=f'example-robot-data not installed in the venv ({UR5})')
+def test_example_robot_data_ur5_with_collada_meshes(ros):
+    ready, state, snapshots, expected = run_robot(ros, UR5, 'parameter', configs=2, ament_prefix=ROBOT_DATA)
+    assert state['state'] == 'loaded', state
+    assert state['placeholders'] == 0, state['warnings']
+    total, _ = visual_count(UR5)
+    assert state['models'] == total
+    for config in expected:
+        best = min(matches(snapshot['links'], config['links']) for snapshot in snapshots)
+        assert best < TOLERANCE_MM, f"configuration {config['config']} never matched (best {best})"
