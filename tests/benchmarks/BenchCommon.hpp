@@ -1,0 +1,97 @@
+// Shared helpers of the C++ benchmark programs: a monotonic clock in milliseconds, wall-clock
+// seconds (comparable with header stamps written by rclpy's time.time()), the process's RSS,
+// and a tiny JSON writer for the results the Python driver reads (one object on stdout).
+#ifndef ros2vtk_bench_BenchCommon_hpp
+#define ros2vtk_bench_BenchCommon_hpp
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+using Clock = std::chrono::steady_clock;
+
+inline double ms_between(Clock::time_point start, Clock::time_point end)
+{
+  return std::chrono::duration<double, std::milli>(end - start).count();
+}
+
+/// Seconds since the epoch (system clock), as header stamps are.
+inline double wall_seconds()
+{
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+/// Resident set size of this process in MiB (VmRSS of /proc/self/status), -1 when unknown.
+inline double rss_mib()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmRSS:", 0) == 0)
+    {
+      std::istringstream fields(line.substr(6));
+      double kib = -1;
+      fields >> kib;
+      return kib / 1024.0;
+    }
+  }
+  return -1.0;
+}
+
+/// Builds one JSON object, key by key (keys and strings are plain ASCII here).
+class JsonObject
+{
+public:
+  JsonObject& number(const std::string& key, double value)
+  {
+    std::ostringstream out;
+    out.precision(9);
+    out << value;
+    return raw(key, out.str());
+  }
+  JsonObject& text(const std::string& key, const std::string& value)
+  {
+    std::string escaped;
+    for (char c : value)
+    {
+      if (c == '"' || c == '\\')
+        escaped += '\\';
+      escaped += (c == '\n') ? ' ' : c;
+    }
+    return raw(key, "\"" + escaped + "\"");
+  }
+  JsonObject& numbers(const std::string& key, const std::vector<double>& values)
+  {
+    std::ostringstream out;
+    out.precision(6);
+    out << '[';
+    for (size_t i = 0; i < values.size(); ++i)
+      out << (i ? "," : "") << values[i];
+    out << ']';
+    return raw(key, out.str());
+  }
+  JsonObject& raw(const std::string& key, const std::string& json)
+  {
+    body_ += (body_.empty() ? "" : ", ") + ("\"" + key + "\": ") + json;
+    return *this;
+  }
+  std::string str() const { return "{" + body_ + "}"; }
+  void print() const
+  {
+    std::printf("%s\n", str().c_str());
+    std::fflush(stdout);
+  }
+
+private:
+  std::string body_;
+};
+
+} // namespace bench
+
+#endif

@@ -1,0 +1,200 @@
+// bench_subscribe — throughput and latency of a scene subscriber node (event-driven spin).
+//
+// A ROS 2 peer (tests/benchmarks/ros_publisher.py, rclpy) publishes stamped messages; this
+// program owns a vtkROS2Logic whose default node subscribes through the generated subscriber
+// node of the type, spins on wake-up, and in the ModifiedEvent observer converts the newest
+// message to its VTK type (vtkMatrix4x4, vtkImageData, vtkPolyData, vtkTransformCollection).
+// Per message it records the end-to-end latency: wall clock once the VTK value is ready minus the
+// header stamp the publisher wrote just before publishing (same host, same clock). Per spin it
+// records the conversion time (the GetLastMessage() call) and the spin time.
+//
+//   bench_subscribe --type PoseStamped|Image|PointCloud2|PoseArray --topic T [--seconds S]
+//                   [--idle S] [--depth N]
+//
+// Ends --idle seconds after the last message (or at --seconds); prints one JSON object.
+#include "BenchCommon.hpp"
+
+#include "vtkROS2Logic.h"
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
+#include "vtkROS2SubscriberImageNode.h"
+#include "vtkROS2SubscriberPointCloud2Node.h"
+#include "vtkROS2SubscriberPoseArrayNode.h"
+#include "vtkROS2SubscriberPoseStampedNode.h"
+
+#include "ros2vtk/geometry_msgs/msg/pose_array.hpp"
+#include "ros2vtk/geometry_msgs/msg/pose_stamped.hpp"
+#include "ros2vtk/sensor_msgs/msg/image.hpp"
+#include "ros2vtk/sensor_msgs/msg/point_cloud2.hpp"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkImageData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+extern "C" void ros2vtk_register_ros2vtkNodes_nodes();
+
+namespace {
+
+/// The generated subscriber node of a type, with the raw messages of a spin reachable (they are
+/// protected in the node's API): the benchmark needs every message's header stamp, not only the
+/// newest one's.
+template <typename Base>
+class StampedProbe : public Base
+{
+public:
+  static StampedProbe* New()
+  {
+    auto* probe = new StampedProbe;
+    probe->InitializeObjectBase();
+    return probe;
+  }
+  const void* Raw(int i) const { return this->GetNewRawMessage(i); }
+  int NewCount() const { return this->Base::GetNumberOfNewMessages(); }
+};
+
+struct Options
+{
+  std::string type;
+  std::string topic;
+  double seconds = 60.0;
+  double idle = 2.0;
+  int depth = 1000;
+};
+
+struct Record
+{
+  std::vector<double> latency_ms;    // per message
+  std::vector<double> conversion_ms; // per spin that brought messages
+  std::vector<double> per_spin_messages;
+  std::string conversion_error;
+  size_t converted_size = 0; // points, pixels or poses of the newest conversion
+};
+
+template <typename Message>
+double stamp_seconds(const void* raw)
+{
+  const auto& stamp = static_cast<const Message*>(raw)->header.stamp;
+  return stamp.sec + 1e-9 * stamp.nanosec;
+}
+
+size_t size_of(vtkMatrix4x4* m) { return m ? 1 : 0; }
+size_t size_of(vtkImageData* image) { return image ? static_cast<size_t>(image->GetNumberOfPoints()) : 0; }
+size_t size_of(vtkPolyData* cloud) { return cloud ? static_cast<size_t>(cloud->GetNumberOfPoints()) : 0; }
+size_t size_of(vtkTransformCollection* poses) { return poses ? static_cast<size_t>(poses->GetNumberOfItems()) : 0; }
+
+template <typename Node, typename Message>
+int run(const Options& options)
+{
+  vtkNew<vtkROS2Logic> logic;
+  vtkROS2NodeNode* node = logic->GetDefaultROS2Node();
+  auto probe = vtkSmartPointer<StampedProbe<Node>>::New();
+  probe->SetName(options.topic.c_str());
+  // Reliable, volatile, keep last `depth`: what a ROS 2 peer uses for "no loss" streams.
+  probe->SetReliability("reliable");
+  probe->SetHistory("keep_last");
+  probe->SetHistoryDepth(options.depth);
+  logic->GetScene()->AddNode(probe);
+  if (!node || !probe->AddToROS2Node(node->GetID(), options.topic.c_str()))
+  {
+    std::fprintf(stderr, "bench_subscribe: cannot subscribe to %s\n", options.topic.c_str());
+    return 1;
+  }
+  Record record;
+  struct Context
+  {
+    StampedProbe<Node>* probe;
+    Record* record;
+  } context{ probe, &record };
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&context);
+  observer->SetCallback([](vtkObject*, unsigned long, void* client_data, void*) {
+    auto* c = static_cast<Context*>(client_data);
+    const auto start = bench::Clock::now();
+    auto* value = c->probe->GetLastMessage();
+    const auto end = bench::Clock::now();
+    const double ready = bench::wall_seconds();
+    c->record->conversion_ms.push_back(bench::ms_between(start, end));
+    if (!value)
+      c->record->conversion_error = c->probe->GetLastConversionError();
+    c->record->converted_size = size_of(value);
+    const int count = c->probe->NewCount();
+    c->record->per_spin_messages.push_back(count);
+    for (int i = 0; i < count; ++i)
+      c->record->latency_ms.push_back(1000.0 * (ready - stamp_seconds<Message>(c->probe->Raw(i))));
+  });
+  probe->AddObserver(vtkCommand::ModifiedEvent, observer);
+
+  std::printf("{\"ready\": true}\n");
+  std::fflush(stdout);
+  std::vector<double> spin_ms;
+  const auto end = bench::Clock::now() + std::chrono::duration<double>(options.seconds);
+  auto last_message = bench::Clock::now();
+  bool any = false;
+  while (bench::Clock::now() < end)
+  {
+    // Event-driven: SpinOnWakeUp blocks until data is queued, then spins once. Its own
+    // duration is the spin; the wait is not.
+    const int handled = logic->SpinOnWakeUp(0.1);
+    if (handled > 0)
+    {
+      spin_ms.push_back(logic->GetLastSpinDuration());
+      last_message = bench::Clock::now();
+      any = true;
+    }
+    else if (any && bench::ms_between(last_message, bench::Clock::now()) > 1000.0 * options.idle)
+      break;
+  }
+  bench::JsonObject()
+    .text("type", options.type)
+    .number("received", static_cast<double>(probe->GetNumberOfMessages()))
+    .number("rejected", static_cast<double>(probe->GetNumberOfRejectedMessages()))
+    .number("converted_size", static_cast<double>(record.converted_size))
+    .text("conversion_error", record.conversion_error)
+    .numbers("latency_ms", record.latency_ms)
+    .numbers("conversion_ms", record.conversion_ms)
+    .numbers("spin_ms", spin_ms)
+    .numbers("messages_per_spin", record.per_spin_messages)
+    .print();
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  ros2vtk_register_ros2vtkNodes_nodes();
+  Options options;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string arg = argv[i];
+    const char* value = argv[i + 1];
+    if (arg == "--type")
+      options.type = value;
+    else if (arg == "--topic")
+      options.topic = value;
+    else if (arg == "--seconds")
+      options.seconds = std::atof(value);
+    else if (arg == "--idle")
+      options.idle = std::atof(value);
+    else if (arg == "--depth")
+      options.depth = std::atoi(value);
+  }
+  namespace gm = ros2vtk::geometry_msgs::msg;
+  namespace sm = ros2vtk::sensor_msgs::msg;
+  if (options.type == "PoseStamped")
+    return run<vtkROS2SubscriberPoseStampedNode, gm::PoseStamped>(options);
+  if (options.type == "Image")
+    return run<vtkROS2SubscriberImageNode, sm::Image>(options);
+  if (options.type == "PointCloud2")
+    return run<vtkROS2SubscriberPointCloud2Node, sm::PointCloud2>(options);
+  if (options.type == "PoseArray")
+    return run<vtkROS2SubscriberPoseArrayNode, gm::PoseArray>(options);
+  std::fprintf(stderr, "usage: bench_subscribe --type PoseStamped|Image|PointCloud2|PoseArray --topic T\n");
+  return 2;
+}
