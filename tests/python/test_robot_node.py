@@ -1,0 +1,145 @@
+"""The robot node through the wrapped API, with descriptions given directly (LoadRobotDescription)
+and tf from a broadcaster node of this process: what it builds, units, reload, bad input and
+removal. The wire side (robot_state_publisher as a real rclpy node) is tests/interop/test_scene_robot.py."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from conftest import spin_until
+
+ARM = Path(__file__).resolve().parents[2] / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+
+TWO_LINKS = """<robot name="two">
+  <material name="red"><color rgba="1 0 0 0.5"/></material>
+  <link name="base"><visual><geometry><box size="0.1 0.2 0.3"/></geometry><material name="red"/></visual></link>
+  <link name="tool">
+    <visual><origin xyz="0 0 0.05"/><geometry><sphere radius="0.01"/></geometry></visual>
+    <visual><geometry><mesh filename="missing/tool.stl"/></geometry></visual>
+  </link>
+  <joint name="j" type="prismatic"><parent link="base"/><child link="tool"/><origin xyz="0.1 0 0"/>
+    <axis xyz="0 0 1"/><limit lower="0" upper="0.1" effort="1" velocity="1"/></joint>
+</robot>"""
+
+
+def bounds(model, vtk):
+    """World bounds of a model node's surface (mm)."""
+    matrix = vtk.vtkMatrix4x4()
+    model.GetMatrixModelToWorld(matrix)
+    transform = vtk.vtkTransform()
+    transform.SetMatrix(matrix)
+    moved = vtk.vtkTransformPolyDataFilter()
+    moved.SetTransform(transform)
+    moved.SetInputData(model.GetPolyData())
+    moved.Update()
+    return moved.GetOutput().GetBounds()
+
+
+@pytest.fixture
+def vtk():
+    import vtk as module
+    return module
+
+
+def make_robot(logic, name='two', fixed_frame=''):
+    node = logic.GetDefaultROS2Node()
+    robot = node.CreateAndAddRobotNodeFromTopic(name, f'/{name}/robot_description', fixed_frame, '')
+    assert robot is not None
+    return node, robot
+
+
+def test_builds_links_models_and_placeholders_in_millimetres(logic, vtk):
+    node, robot = make_robot(logic)
+    assert robot.GetRobotState() == 'waiting for robot_description'
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    assert robot.IsLoaded() and robot.GetRobotState() == 'loaded'
+    assert robot.GetLinkNames() == 'base tool'
+    assert robot.GetNumberOfModelNodes() == 3
+    assert robot.GetNumberOfPlaceholders() == 1
+    assert "link 'tool'" in robot.GetWarnings() and 'missing/tool.stl' in robot.GetWarnings()
+    box = robot.GetNthModelNode(0)
+    assert box.GetColor() == (1.0, 0.0, 0.0) and box.GetOpacity() == 0.5
+    b = bounds(box, vtk)  # the base link is the fixed frame: identity, box centred, in mm
+    assert [round(v, 6) for v in b] == [-50.0, 50.0, -100.0, 100.0, -150.0, 150.0]
+    # The tool link is a tf lookup base <- tool, waiting for tf.
+    tool = robot.GetLinkTransformNode('tool')
+    assert tool.GetClassName() == 'vtkROS2Tf2LookupNode'
+    assert (tool.GetParentID(), tool.GetChildID()) == ('base', 'tool')
+    assert robot.GetNumberOfLinksTracked() == 1
+
+
+def test_links_follow_tf_and_the_base_transform_places_the_robot(logic, vtk, ros2vtk):
+    node, robot = make_robot(logic)
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    broadcaster = node.CreateAndAddTf2BroadcasterNode('base', 'tool')
+    matrix = vtk.vtkMatrix4x4()
+    matrix.SetElement(0, 3, 100.0)  # mm: the joint origin
+    matrix.SetElement(2, 3, 40.0)   # mm: prismatic joint at 0.04 m
+    assert broadcaster.Broadcast(matrix)
+    assert spin_until(logic, lambda: robot.GetNumberOfLinksTracked() == 2)
+    sphere = robot.GetNthModelNode(1)
+    b = bounds(sphere, vtk)
+    centre = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2]
+    assert centre == pytest.approx([100.0, 0.0, 90.0], abs=1e-6)  # 40 mm + the 50 mm visual origin
+    placement = vtk.vtkMatrix4x4()
+    placement.SetElement(1, 3, 500.0)
+    robot.GetBaseTransformNode().SetMatrixTransformToParent(placement)
+    b = bounds(sphere, vtk)
+    assert (b[2] + b[3]) / 2 == pytest.approx(500.0, abs=1e-6)
+
+
+def test_a_broken_description_is_a_state_and_the_robot_shown_stays(logic):
+    node, robot = make_robot(logic)
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    assert not robot.LoadRobotDescription('<robot name="x"><link name="a"/><joint name="j" type="fixed">'
+                                          '<parent link="a"/><child link="nowhere"/></joint></robot>', '')
+    assert robot.GetRobotState().startswith('failed: ')
+    assert robot.GetLastError()
+    assert robot.GetNumberOfModelNodes() == 3  # still the previous robot
+    assert not robot.LoadRobotDescription('this is not XML', '')
+
+
+def test_a_new_description_replaces_every_node(logic):
+    node, robot = make_robot(logic)
+    scene = logic.GetScene()
+    before = scene.GetNumberOfNodes()
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    loaded = scene.GetNumberOfNodes()
+    assert loaded == before + 1 + 2 + 3  # base transform, two link nodes, three models
+    robot.AddMeshSearchPath(str(ARM.parents[1]))  # the package of package://ros2vtk_surgical_arm
+    assert robot.LoadRobotDescription(ARM.read_text(), str(ARM.parent))
+    assert robot.GetNumberOfLoads() == 2
+    assert robot.GetNumberOfPlaceholders() == 0, robot.GetWarnings()
+    assert robot.GetNumberOfLinks() == 8
+    assert scene.GetNumberOfNodes() == before + 1 + robot.GetNumberOfLinks() + robot.GetNumberOfModelNodes()
+
+
+def test_prefix_and_fixed_frame_rebuild_the_lookups(logic):
+    node, robot = make_robot(logic, fixed_frame='world')
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    assert robot.GetLinkTransformNode('base').GetParentID() == 'world'
+    robot.SetTfPrefix('r1/')
+    logic.Spin()
+    assert robot.GetLinkTransformNode('base').GetChildID() == 'r1/base'
+    assert node.GetTf2LookupNodeByParentChild('world', 'base') is None  # the old lookup is gone
+
+
+def test_remove_deletes_everything_it_created(logic):
+    node, robot = make_robot(logic)
+    scene = logic.GetScene()
+    before = scene.GetNumberOfNodes()  # the ROS node, the robot, its description subscriber
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    assert node.GetSubscriberNodeByTopic('/two/robot_description') is not None
+    assert node.RemoveAndDeleteRobotNode('two')
+    assert scene.GetNumberOfNodes() == before - 2
+    assert node.GetSubscriberNodeByTopic('/two/robot_description') is None
+    assert node.GetRobotNodeByName('two') is None
+    assert not node.RemoveAndDeleteRobotNode('two')
+
+
+def test_names_are_unique_and_required(logic):
+    node, robot = make_robot(logic)
+    assert node.CreateAndAddRobotNodeFromTopic('two', '/other', '', '') is None
+    assert node.CreateAndAddRobotNode('', '/robot_state_publisher') is None
+    assert node.CreateAndAddRobotNode('p', '') is None
