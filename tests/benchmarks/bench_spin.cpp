@@ -2,26 +2,29 @@
 //
 // C++ rather than Python so the figure is our spin alone: a Python loop would add the wrapper
 // call and the interpreter's own jitter to every sample. Each Spin() takes every pending message
-// (tf of all robots), updates every tf lookup node (each robot link's transform, which its model
-// nodes hang under) and fires their observers (a counting callback stands in for a viewer's;
-// rendering is excluded). The robots are ros2vtk-sim-robot processes the driver starts, with
-// frame prefixes robot1/ .. robotN/.
+// (tf of all robots), updates every robot link's transform (the tf lookup nodes of each
+// vtkROS2RobotNode, which its model nodes hang under) and fires their observers (a counting
+// callback stands in for a viewer's; rendering is excluded). The robots are ros2vtk-sim-robot
+// processes the driver starts in namespaces /robot1 .. /robotN with frame prefixes robot1/ ..
+// robotN/; each becomes a robot node through CreateAndAddRobotNodeFromTopic, as users do.
 //
-//   bench_spin --urdf FILE --robots N [--spins 1000] [--rate 50] [--wait 30]
+//   bench_spin --robots N [--spins 1000] [--rate 50] [--wait 30]
 //
 // Prints one JSON object: spin_ms (per spin), messages (per spin), links, tracked, ...
 #include "BenchCommon.hpp"
-#include "RobotScene.hpp"
 
 #include "vtkROS2Logic.h"
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2RobotNode.h"
 #include "vtkROS2Scene.h"
+#include "vtkROS2TransformNode.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
 
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -30,7 +33,6 @@ namespace {
 
 struct Options
 {
-  std::string urdf;
   int robots = 1;
   int spins = 1000;
   double rate = 50.0;
@@ -43,9 +45,7 @@ bool parse(int argc, char** argv, Options& o)
   {
     const std::string arg = argv[i];
     const char* value = argv[i + 1];
-    if (arg == "--urdf")
-      o.urdf = value;
-    else if (arg == "--robots")
+    if (arg == "--robots")
       o.robots = std::atoi(value);
     else if (arg == "--spins")
       o.spins = std::atoi(value);
@@ -56,12 +56,36 @@ bool parse(int argc, char** argv, Options& o)
     else
       return false;
   }
-  return !o.urdf.empty() && o.robots > 0 && o.spins > 0 && o.rate > 0;
+  return o.robots > 0 && o.spins > 0 && o.rate > 0;
 }
 
 void count_event(vtkObject*, unsigned long, void* client_data, void*)
 {
   ++*static_cast<long*>(client_data);
+}
+
+bool all_loaded(const std::vector<vtkROS2RobotNode*>& robots)
+{
+  for (auto* robot : robots)
+    if (!robot->IsLoaded())
+      return false;
+  return true;
+}
+
+size_t links_of(const std::vector<vtkROS2RobotNode*>& robots)
+{
+  size_t links = 0;
+  for (auto* robot : robots)
+    links += static_cast<size_t>(robot->GetNumberOfLinks());
+  return links;
+}
+
+size_t tracked_of(const std::vector<vtkROS2RobotNode*>& robots)
+{
+  size_t tracked = 0;
+  for (auto* robot : robots)
+    tracked += static_cast<size_t>(robot->GetNumberOfLinksTracked());
+  return tracked;
 }
 
 } // namespace
@@ -71,18 +95,9 @@ int main(int argc, char** argv)
   Options options;
   if (!parse(argc, argv, options))
   {
-    std::fprintf(stderr, "usage: bench_spin --urdf FILE --robots N [--spins N] [--rate HZ] [--wait S]\n");
+    std::fprintf(stderr, "usage: bench_spin --robots N [--spins N] [--rate HZ] [--wait S]\n");
     return 2;
   }
-  ros2vtk::robot::RobotLoader loader;
-  ros2vtk::robot::RobotVisuals visuals;
-  std::string error;
-  if (!loader.load_file(options.urdf, &visuals, &error))
-  {
-    std::fprintf(stderr, "bench_spin: %s\n", error.c_str());
-    return 1;
-  }
-
   vtkNew<vtkROS2Logic> logic;
   vtkROS2NodeNode* node = logic->GetDefaultROS2Node();
   if (!node)
@@ -90,33 +105,43 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bench_spin: no default ROS node\n");
     return 1;
   }
+  std::vector<vtkROS2RobotNode*> robots; // owned by the scene
+  for (int i = 1; i <= options.robots; ++i)
+  {
+    const std::string name = "robot" + std::to_string(i);
+    auto* robot = node->CreateAndAddRobotNodeFromTopic(name.c_str(), ("/" + name + "/robot_description").c_str(), "",
+                                                       (name + "/").c_str());
+    if (!robot)
+      return 1;
+    robots.push_back(robot);
+  }
+
+  // Wait until every robot is loaded and every link tracked (discovery, description, first tf).
+  const auto period = std::chrono::duration_cast<bench::Clock::duration>(std::chrono::duration<double>(1.0 / options.rate));
+  const auto wait_end = bench::Clock::now() + std::chrono::duration<double>(options.wait);
+  while (bench::Clock::now() < wait_end)
+  {
+    logic->Spin();
+    if (all_loaded(robots) && tracked_of(robots) == links_of(robots))
+      break;
+    std::this_thread::sleep_for(period);
+  }
+  const size_t links = links_of(robots);
+  const size_t tracked = tracked_of(robots);
+  // Observers on every link transform (what a viewer hooks to move the actors).
   long observed = 0;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetCallback(count_event);
   observer->SetClientData(&observed);
-  std::vector<bench::SceneRobot> robots;
-  size_t links = 0;
-  for (int i = 1; i <= options.robots; ++i)
+  size_t models = 0;
+  for (auto* robot : robots)
   {
-    robots.push_back(bench::add_robot_to_scene(node, logic->GetScene(), visuals, "robot" + std::to_string(i) + "/"));
-    for (auto* lookup : robots.back().lookups)
-      lookup->AddObserver(vtkCommand::ModifiedEvent, observer);
-    links += robots.back().lookups.size();
-  }
-
-  // Wait until every link of every robot is tracked (discovery + first tf).
-  const auto period = std::chrono::duration_cast<bench::Clock::duration>(std::chrono::duration<double>(1.0 / options.rate));
-  const auto wait_end = bench::Clock::now() + std::chrono::duration<double>(options.wait);
-  size_t tracked = 0;
-  while (bench::Clock::now() < wait_end)
-  {
-    logic->Spin();
-    tracked = 0;
-    for (const auto& robot : robots)
-      tracked += robot.tracked();
-    if (tracked == links)
-      break;
-    std::this_thread::sleep_for(period);
+    std::istringstream names(robot->GetLinkNames());
+    std::string link;
+    while (names >> link)
+      if (auto* transform = robot->GetLinkTransformNode(link.c_str()))
+        transform->AddObserver(vtkCommand::ModifiedEvent, observer);
+    models += static_cast<size_t>(robot->GetNumberOfModelNodes());
   }
   // One second of warm-up spins so caches and queues are in their steady state.
   auto next = bench::Clock::now();
@@ -142,12 +167,7 @@ int main(int argc, char** argv)
     messages.push_back(handled);
     std::this_thread::sleep_until(next);
   }
-  size_t tracked_end = 0;
-  for (const auto& robot : robots)
-    tracked_end += robot.tracked();
-  size_t models = 0;
-  for (const auto& robot : robots)
-    models += robot.models;
+  const size_t tracked_end = tracked_of(robots);
 
   bench::JsonObject()
     .number("robots", options.robots)
@@ -157,7 +177,7 @@ int main(int argc, char** argv)
     .number("tracked_after", static_cast<double>(tracked_end))
     .number("observer_calls", static_cast<double>(observed - observed_before))
     .number("logic_mean_spin_ms", logic->GetMeanSpinDuration())
-    .text("driven_by", "tf lookup node per link + model nodes (examples/demo DemoRobot)")
+    .text("driven_by", "vtkROS2RobotNode (CreateAndAddRobotNodeFromTopic)")
     .numbers("spin_ms", spin_ms)
     .numbers("messages", messages)
     .print();
