@@ -12,7 +12,7 @@ ROBOTS=1
 ARGS=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    --urdf) URDF="$2"; shift 2 ;;
+    --urdf) URDF="$(readlink -f "$2")"; ARGS+=("$1" "$URDF"); shift 2 ;;
     --robots) ROBOTS="$2"; ARGS+=("$1" "$2"); shift 2 ;;
     *) ARGS+=("$1"); shift ;;
   esac
@@ -42,6 +42,11 @@ else
 fi
 
 VIEWER=(/usr/bin/python3 "$ROOT/examples/demo/demo.py" --phantom "$PHANTOM")
+# example-robot-data's robots (pip, in the venv): their package:// meshes resolve through the ament
+# layout of its cmeel prefix, e.g. --urdf .venv/lib/python3.11/site-packages/cmeel.prefix/share/example-robot-data/robots/ur_description/urdf/ur5_robot.urdf
+for prefix in "$ROOT"/.venv/lib/python3*/site-packages/cmeel.prefix; do
+  [ -d "$prefix" ] && export AMENT_PREFIX_PATH="$prefix${AMENT_PREFIX_PATH:+:$AMENT_PREFIX_PATH}"
+done
 export PYTHONPATH="$BUILD/python"
 if [ -z "${DISPLAY:-}" ]; then
   case " ${ARGS[*]-} " in *" --offscreen "*) ;; *) ARGS+=(--offscreen "$BUILD/demo-frames") ;; esac

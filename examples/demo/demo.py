@@ -3,10 +3,11 @@
 
 Run it through scripts/demo.sh (it sets up, builds, starts the simulated robot and this viewer).
 What happens here, with the ros2vtk Python API only:
-  * our default ROS node (`/slicer`) subscribes the simulated robot's `robot_description`
-    (reliable + transient local, as RViz 2 does) and builds the robot from it: one transform node
-    per link, kept equal to the tf lookup (fixed frame <- link) on every spin, and one model node
-    per URDF visual (meshes and primitives, with their origins, scales and colours);
+  * our default ROS node (`/slicer`) gets a robot node per robot, fed by the simulated robot's
+    `robot_description` topic (reliable + transient local, as RViz 2 subscribes); the robot node
+    builds the robot from it: one transform node per link, kept equal to the tf lookup (fixed
+    frame <- link) on every spin, and one model node per URDF visual (STL/OBJ/PLY/DAE meshes and
+    primitives, with their origins, scales and colours), under a base transform that places it;
   * a CT-like phantom (gel block, tongue-like tissue, pseudotumour, fiducials) is shown as three
     orthogonal slices with a soft-tissue window, placed by an editable registration transform;
   * it spins (timer-driven at 50 Hz, or event-driven), prints one status line a second, and
@@ -20,7 +21,6 @@ import math
 import os
 import sys
 import time
-import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
 import ros2vtk
@@ -28,125 +28,6 @@ import vtk
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
-
-
-# ------------------------------------------------------------------------------ robot
-def resolve_mesh(uri: str, urdf_dir: Path, package_paths: list[Path]) -> Path | None:
-    """package://, file:// and relative mesh URIs (the C++ RobotLoader does the full job)."""
-    if uri.startswith('package://'):
-        package, _, rest = uri[len('package://'):].partition('/')
-        for root in package_paths:
-            for candidate in (root / package / rest, root / 'share' / package / rest):
-                if candidate.exists():
-                    return candidate
-            if (root / 'package.xml').exists() and f'<name>{package}</name>' in (root / 'package.xml').read_text():
-                if (root / rest).exists():
-                    return root / rest
-        return None
-    if uri.startswith('file://'):
-        return Path(uri[len('file://'):])
-    path = Path(uri)
-    return path if path.is_absolute() else (urdf_dir / path).resolve()
-
-
-def visual_polydata(geometry, urdf_dir: Path, package_paths: list[Path]):
-    """(vtkPolyData in metres, scale) for one <geometry>, or (None, reason)."""
-    mesh = geometry.find('mesh')
-    if mesh is not None:
-        path = resolve_mesh(mesh.get('filename', ''), urdf_dir, package_paths)
-        if path is None or not path.exists():
-            return None, f"mesh '{mesh.get('filename')}' not found"
-        reader = vtk.vtkSTLReader() if path.suffix.lower() == '.stl' else None
-        if reader is None:
-            return None, f'{path.suffix} meshes need the C++ robot loader'
-        reader.SetFileName(str(path))
-        reader.Update()
-        scale = [float(v) for v in mesh.get('scale', '1 1 1').split()]
-        return reader.GetOutput(), scale
-    if geometry.find('box') is not None:
-        sx, sy, sz = (float(v) for v in geometry.find('box').get('size').split())
-        source = vtk.vtkCubeSource()
-        source.SetXLength(sx), source.SetYLength(sy), source.SetZLength(sz)
-    elif geometry.find('cylinder') is not None:
-        c = geometry.find('cylinder')
-        source = vtk.vtkCylinderSource()  # VTK's axis is y, URDF's is z
-        source.SetRadius(float(c.get('radius'))), source.SetHeight(float(c.get('length')))
-        source.SetResolution(32)
-        rotate = vtk.vtkTransformPolyDataFilter()
-        t = vtk.vtkTransform()
-        t.RotateX(90)
-        rotate.SetTransform(t)
-        rotate.SetInputConnection(source.GetOutputPort())
-        source = rotate
-    elif geometry.find('sphere') is not None:
-        source = vtk.vtkSphereSource()
-        source.SetRadius(float(geometry.find('sphere').get('radius')))
-        source.SetThetaResolution(24), source.SetPhiResolution(16)
-    else:
-        return None, 'unsupported geometry'
-    source.Update()
-    return source.GetOutput(), [1.0, 1.0, 1.0]
-
-
-def rpy_matrix(xyz, rpy, scale, mm: float):
-    """URDF origin (metres, roll-pitch-yaw) x mesh scale -> vtkMatrix4x4 in millimetres."""
-    t = vtk.vtkTransform()
-    t.PostMultiply()
-    t.Scale(*(s * mm for s in scale))
-    t.RotateX(math.degrees(rpy[0]))
-    t.RotateY(math.degrees(rpy[1]))
-    t.RotateZ(math.degrees(rpy[2]))
-    t.Translate(*(v * mm for v in xyz))
-    return t.GetMatrix()
-
-
-class DemoRobot:
-    """A robot in the scene from its URDF: transform nodes per link driven by tf lookups from
-    the fixed frame, model nodes per visual. (The C++ vtkROS2RobotNode does this with every mesh
-    format; this stand-in covers the shipped arm's STL meshes and primitives.)"""
-
-    def __init__(self, node, scene, urdf: str, urdf_dir: Path, package_paths: list[Path], prefix: str = ''):
-        root = ElementTree.fromstring(urdf)
-        materials = {m.get('name'): [float(v) for v in m.find('color').get('rgba').split()]
-                     for m in root.findall('material') if m.find('color') is not None}
-        children = {j.find('child').get('link') for j in root.findall('joint')}
-        links = [l.get('name') for l in root.findall('link')]
-        self.fixed_frame = prefix + next(l for l in links if l not in children)
-        self.lookups = {}
-        self.models = []
-        self.warnings = []
-        for link in root.findall('link'):
-            name = link.get('name')
-            lookup = node.CreateAndAddTf2LookupNode(self.fixed_frame, prefix + name) \
-                if prefix + name != self.fixed_frame else None
-            self.lookups[name] = lookup
-            for visual in link.findall('visual'):
-                polydata, info = visual_polydata(visual.find('geometry'), urdf_dir, package_paths)
-                if polydata is None:
-                    self.warnings.append(f"link '{name}': {info}")
-                    continue
-                origin = visual.find('origin')
-                xyz = [float(v) for v in (origin.get('xyz', '0 0 0') if origin is not None else '0 0 0').split()]
-                rpy = [float(v) for v in (origin.get('rpy', '0 0 0') if origin is not None else '0 0 0').split()]
-                model = ros2vtk.vtkROS2ModelNode()
-                model.SetName(f'{prefix}{name}_model')
-                model.SetPolyData(polydata)
-                model.SetMatrixModelToParent(rpy_matrix(xyz, rpy, info, 1000.0))
-                material = visual.find('material')
-                if material is not None:
-                    color = material.find('color')
-                    rgba = [float(v) for v in color.get('rgba').split()] if color is not None \
-                        else materials.get(material.get('name'), [0.8, 0.8, 0.8, 1])
-                    model.SetColor(*rgba[:3])
-                scene.AddNode(model)
-                if lookup is not None:
-                    model.SetParentTransformNodeID(lookup.GetID())
-                self.models.append(model)
-
-    def state(self) -> str:
-        lookups = [l for l in self.lookups.values() if l is not None]
-        ok = sum(1 for l in lookups if l.GetLookupStatus() == 'ok')
-        return f'{ok}/{len(lookups)} links tracked'
 
 
 # ------------------------------------------------------------------------------ viewer
@@ -213,8 +94,10 @@ class Viewer:
         """Model nodes of the scene -> actors with their world matrices."""
         models = vtk.vtkCollection()
         self.scene.GetNodesByClass('vtkROS2ModelNode', models)
+        present = set()
         for i in range(models.GetNumberOfItems()):
             model = models.GetItemAsObject(i)
+            present.add(model.GetID())
             actor = self.actors.get(model.GetID())
             if actor is None:
                 mapper = vtk.vtkPolyDataMapper()
@@ -222,12 +105,15 @@ class Viewer:
                 actor = vtk.vtkActor()
                 actor.SetMapper(mapper)
                 actor.GetProperty().SetColor(*model.GetColor())
+                actor.GetProperty().SetOpacity(model.GetOpacity())
                 actor.SetUserMatrix(vtk.vtkMatrix4x4())
                 self.renderer.AddActor(actor)
                 self.actors[model.GetID()] = actor
             model.GetMatrixModelToWorld(actor.GetUserMatrix())
             actor.GetUserMatrix().Modified()
             actor.Modified()
+        for gone in set(self.actors) - present:
+            self.renderer.RemoveActor(self.actors.pop(gone))
 
     def reset_camera(self) -> None:
         camera = self.renderer.GetActiveCamera()
@@ -268,6 +154,11 @@ class Viewer:
 
 
 # ------------------------------------------------------------------------------ main
+def announced_loads(announced: set, ns: str) -> set:
+    """The loads of robot `ns` already announced (a new description reloads the robot)."""
+    return {load for name, load in announced if name == ns}
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--phantom', required=True, help='MetaImage (.mha) made by ros2vtk-make-phantom')
@@ -277,7 +168,10 @@ def main() -> int:
     parser.add_argument('--offscreen', default='', help='write PNG frames here instead of a window')
     parser.add_argument('--duration', type=float, default=0.0, help='seconds (0: until interrupted)')
     parser.add_argument('--frames-per-second', type=float, default=2.0, help='PNG frames written per second')
-    parser.add_argument('--package-path', action='append', default=[str(REPO / 'examples' / 'robots' / 'surgical_arm')])
+    parser.add_argument('--urdf', default=str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'),
+                        help='the URDF the simulated robot serves (its folder is the base of relative mesh paths)')
+    parser.add_argument('--package-path', action='append', default=[],
+                        help='folder searched for package:// meshes (besides AMENT_PREFIX_PATH, ROS_PACKAGE_PATH)')
     args = parser.parse_args()
 
     logic = ros2vtk.vtkROS2Logic()
@@ -299,13 +193,24 @@ def main() -> int:
     scene.AddNode(registration)
 
     namespaces = ['/'] if args.robots == 1 else [f'/robot{i + 1}' for i in range(args.robots)]
-    descriptions = {}
-    for ns in namespaces:
-        topic = '/robot_description' if ns == '/' else f'{ns}/robot_description'
-        sub = node.CreateAndAddSubscriberNode('String', topic)
-        sub.SetQoSProfile('transient_local')
-        descriptions[ns] = sub
+    urdf_folder = Path(args.urdf).resolve().parent
+    package_paths = args.package_path or [str(urdf_folder.parent)]  # <package>/urdf/robot.urdf
     robots = {}
+    placements = {}
+    for index, ns in enumerate(namespaces):
+        name = 'robot' if ns == '/' else ns.strip('/')
+        prefix = '' if ns == '/' else name + '/'  # ros2vtk-sim-robot --frame-prefix robotN/
+        topic = '/robot_description' if ns == '/' else f'{ns}/robot_description'
+        robot = node.CreateAndAddRobotNodeFromTopic(name, topic, '', prefix)
+        robot.SetMeshBaseFolder(str(urdf_folder))
+        for folder in package_paths:
+            robot.AddMeshSearchPath(folder)
+        # Several robots stand side by side along y, 700 mm apart, through their base transforms.
+        placement = vtk.vtkMatrix4x4()
+        placement.SetElement(1, 3, 700.0 * (index - (len(namespaces) - 1) / 2))
+        placements[ns] = placement
+        robots[ns] = robot
+    announced = set()
     viewer = Viewer(scene, image, registration, args.offscreen or None)
     viewer.reset_camera()
     interactor = None
@@ -330,16 +235,14 @@ def main() -> int:
             logic.Spin()
         spin_time += time.perf_counter() - t0
         spins_since += 1
-        for index, (ns, sub) in enumerate(descriptions.items()):
-            if ns not in robots and sub.GetNumberOfMessages() > 0:
-                prefix = '' if ns == '/' else ns.strip('/') + '/'
-                robots[ns] = DemoRobot(node, scene, sub.GetLastMessage(),
-                                       REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf',
-                                       [Path(p) for p in args.package_path], prefix)
-                for w in robots[ns].warnings:
-                    print(f'[demo] {ns}: {w}', flush=True)
-                print(f'[demo] robot in {ns}: {len(robots[ns].models)} visuals, fixed frame '
-                      f'{robots[ns].fixed_frame}', flush=True)
+        for ns, robot in robots.items():
+            if robot.IsLoaded() and robot.GetNumberOfLoads() not in announced_loads(announced, ns):
+                announced.add((ns, robot.GetNumberOfLoads()))
+                robot.GetBaseTransformNode().SetMatrixTransformToParent(placements[ns])
+                for warning in robot.GetWarnings().splitlines():
+                    print(f'[demo] {ns}: {warning}', flush=True)
+                print(f'[demo] robot in {ns}: {robot.GetNumberOfLinks()} links, {robot.GetNumberOfModelNodes()} '
+                      f'visuals, loaded in {1000 * robot.GetLastLoadDuration():.1f} ms', flush=True)
                 viewer.update()
                 viewer.reset_camera()  # frame the robots and the phantom together
         viewer.update()
@@ -356,8 +259,10 @@ def main() -> int:
             if args.spin == 'timer':
                 time.sleep(max(0.0, 1.0 / args.rate - (time.perf_counter() - t0)))
         if now - last_status >= 1.0:
-            received = sum(s.GetNumberOfMessages() for s in descriptions.values())
-            state = '; '.join(f'{ns}: {r.state()}' for ns, r in robots.items()) or 'waiting for robot_description'
+            state = '; '.join(f'{ns}: {r.GetRobotState()}, {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} '
+                              f'links tracked' for ns, r in robots.items())
+            received = sum(node.GetSubscriberNodeByTopic(r.GetDescriptionTopic()).GetNumberOfMessages()
+                           for r in robots.values())
             print(f'[demo] {spins_since / (now - last_status):5.1f} spins/s, spin '
                   f'{1000 * spin_time / max(spins_since, 1):.3f} ms, mean {logic.GetMeanSpinDuration():.3f} ms, '
                   f'robot_description msgs {received}, {state}', flush=True)

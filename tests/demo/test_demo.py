@@ -63,7 +63,7 @@ def test_demo_shows_a_moving_robot_beside_the_phantom():
         sim.kill()
         sim.wait()
     assert demo.returncode == 0, demo.stderr
-    assert '7/7 links tracked' in demo.stdout, demo.stdout
+    assert 'loaded, 8/8 links tracked' in demo.stdout, demo.stdout
     frames = sorted(ARTIFACTS.glob('frame_*.png'))
     assert len(frames) >= 6, demo.stdout
     # The last frames have the robot: each sizeable model's projected centre is not background.
