@@ -31,6 +31,7 @@ class Process:
 
     def __init__(self, args: list[str], env: dict) -> None:
         self.args = args
+        self.name = next((Path(a).name for a in args if a.endswith('.py')), args[0])
         self.popen = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
         self.lines: queue.Queue = queue.Queue()
         self.stdout: list[str] = []
@@ -54,7 +55,7 @@ class Process:
         while True:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
-                raise AssertionError(f'{Path(self.args[1]).name}: no matching line within {timeout} s; '
+                raise AssertionError(f'{self.name}: no matching line within {timeout} s; '
                                      f'stdout so far: {"".join(self.stdout)[-2000:]}')
             try:
                 line = self.lines.get(timeout=remaining)
@@ -63,7 +64,7 @@ class Process:
             if line is None:
                 self.popen.wait()
                 self._err_thread.join(2)
-                raise AssertionError(f'{Path(self.args[1]).name} ended (rc {self.popen.returncode}) before a '
+                raise AssertionError(f'{self.name} ended (rc {self.popen.returncode}) before a '
                                      f'matching line; stderr: {self.stderr[-2000:]}; stdout: {"".join(self.stdout)[-2000:]}')
             line = line.strip()
             if not line.startswith('{'):
@@ -93,10 +94,14 @@ class Ros:
         self.env.pop('ROS_LOCALHOST_ONLY', None)
         self.processes: list[Process] = []
 
-    def example(self, name: str, *args: str) -> Process:
-        """examples/<name>/<name>.py with our Python API."""
+    def example(self, name: str, *args: str, display: bool = False) -> Process:
+        """examples/<name>/<name>.py with our Python API; `display`: it renders (offscreen), which
+        VTK's X11 build still needs an X server for: Xvfb when there is no DISPLAY."""
         env = dict(self.env, PYTHONPATH=str(BUILD / 'python'))
-        process = Process(['/usr/bin/python3', str(EXAMPLES / name / f'{name}.py'), *args], env)
+        command = ['/usr/bin/python3', str(EXAMPLES / name / f'{name}.py'), *args]
+        if display and not os.environ.get('DISPLAY'):
+            command = ['xvfb-run', '-a', '-s', '-screen 0 1024x768x24'] + command
+        process = Process(command, env)
         self.processes.append(process)
         return process
 
