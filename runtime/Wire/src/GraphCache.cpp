@@ -54,8 +54,7 @@ bool GraphCache::init(dds::DomainParticipant* participant, dds::Publisher* publi
     }
     return false;
   }
-  std::lock_guard<std::mutex> lock(mutex_);
-  publish_locked();
+  publish();
   return true;
 }
 
@@ -67,6 +66,7 @@ void GraphCache::shutdown()
     subscriber_->delete_datareader(reader_);
     reader_ = nullptr;
   }
+  std::lock_guard<std::mutex> publish_lock(publish_mutex_);
   if (writer_)
   {
     publisher_->delete_datawriter(writer_);
@@ -77,17 +77,23 @@ void GraphCache::shutdown()
 void GraphCache::add_local_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
                                     const std::string& dds_type)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  local_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type };
-  publish_locked();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    local_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type };
+  }
+  publish();
 }
 
 void GraphCache::remove_local_endpoint(const Gid& gid)
 {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (local_endpoints_.erase(gid) > 0)
+  bool removed = false;
   {
-    publish_locked();
+    std::lock_guard<std::mutex> lock(mutex_);
+    removed = local_endpoints_.erase(gid) > 0;
+  }
+  if (removed)
+  {
+    publish();
   }
 }
 
@@ -122,8 +128,13 @@ void GraphCache::remove_remote_participant(const Gid& participant_gid)
   }
 }
 
-void GraphCache::publish_locked()
+void GraphCache::publish()
 {
+  // write() runs while mutex_ is free: with intraprocess delivery it takes the DDS locks of
+  // every reader in this process, ours included, and a DDS thread holding such a lock may be
+  // inside on_data_available waiting for mutex_. publish_mutex_ only keeps announcements in
+  // order (the last one written is the newest state); no DDS thread ever takes it.
+  std::lock_guard<std::mutex> publish_lock(publish_mutex_);
   if (!writer_)
   {
     return;
@@ -133,11 +144,14 @@ void GraphCache::publish_locked()
   NodeEntitiesInfo node;
   node.node_namespace = node_namespace_;
   node.node_name = node_name_;
-  for (const auto& entry : local_endpoints_)
   {
-    ros2vtk::rmw_dds_common::msg::Gid gid;
-    std::copy(entry.first.begin(), entry.first.end(), gid.data.begin());
-    (entry.second.is_writer ? node.writer_gid_seq : node.reader_gid_seq).push_back(gid);
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& entry : local_endpoints_)
+    {
+      ros2vtk::rmw_dds_common::msg::Gid gid;
+      std::copy(entry.first.begin(), entry.first.end(), gid.data.begin());
+      (entry.second.is_writer ? node.writer_gid_seq : node.reader_gid_seq).push_back(gid);
+    }
   }
   info.node_entities_info_seq.push_back(node);
   writer_->write(&info);

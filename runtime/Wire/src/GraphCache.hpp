@@ -77,7 +77,10 @@ private:
     std::string node_name;
   };
 
-  void publish_locked();
+  /// Announces the local endpoints on ros_discovery_info. Lock order: publish_mutex_, then
+  /// DDS; mutex_ is never held while calling into DDS, because DDS threads call
+  /// on_data_available (which takes mutex_) with their reader's lock held.
+  void publish();
 
   const MessageTypeSupport* info_type_ = nullptr;
   eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
@@ -88,7 +91,8 @@ private:
   std::string node_namespace_;
   std::string node_name_;
 
-  mutable std::mutex mutex_;
+  std::mutex publish_mutex_; ///< serializes publish() and guards writer_; never taken by DDS threads
+  mutable std::mutex mutex_; ///< the maps below; never held while calling into DDS
   std::map<Gid, Endpoint> local_endpoints_;
   std::map<Gid, Endpoint> remote_endpoints_;
   std::map<Gid, std::vector<NodeInfo>> remote_nodes_; ///< by participant gid

@@ -1,0 +1,110 @@
+// Two ROS nodes of one process changing their endpoints at the same time, on two threads.
+//
+// Every endpoint change is announced on ros_discovery_info. Fast DDS delivers that sample
+// in-process to every reader of the topic, the announcing node's own included, taking each
+// reader's lock on the way, and it calls a reader's listener with that lock held. The graph
+// once announced while holding its own lock, which its listener also takes: a DDS thread
+// delivering into the reader and the announcing thread then waited for each other forever
+// (the CI hang of SpinTest, in GetDefaultROS2Node). This test churns announcements of two
+// nodes so that any such lock-order inversion shows up as a hang (caught by the watchdog).
+#include "ros2vtk/std_msgs/msg/string.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/Publisher.hpp"
+#include "ros2vtk/wire/QoS.hpp"
+#include "ros2vtk/wire/Subscription.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace
+{
+using ros2vtk::wire::Participant;
+using ros2vtk::wire::ParticipantOptions;
+
+// Ends the process with a message if the test body has not finished in `seconds`: a deadlock
+// cannot be recovered from, and a named failure beats a CTest timeout. Not a timing assertion:
+// the bound is far above what the churn needs on a loaded machine.
+class Watchdog
+{
+public:
+  Watchdog(const char* what, int seconds)
+    : Thread([this, what, seconds] {
+      std::unique_lock<std::mutex> lock(this->Mutex);
+      if (!this->Condition.wait_for(
+            lock, std::chrono::seconds(seconds), [this] { return this->Done; }))
+      {
+        std::fprintf(stderr, "watchdog: %s did not finish in %d s: deadlock\n", what, seconds);
+        std::fflush(stderr);
+        std::_Exit(1);
+      }
+    })
+  {
+  }
+  ~Watchdog()
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Done = true;
+    }
+    this->Condition.notify_all();
+    this->Thread.join();
+  }
+
+private:
+  std::mutex Mutex;
+  std::condition_variable Condition;
+  bool Done = false;
+  std::thread Thread; // last: starts once the members it uses exist
+};
+} // namespace
+
+TEST(GraphConcurrency, TwoNodesChangingTheirEndpointsTogetherNeverDeadlock)
+{
+  Watchdog watchdog("the endpoint churn", 90);
+  const ParticipantOptions options = ParticipantOptions::from_environment();
+  std::string error;
+  auto first = Participant::create("churn_first", "", options, &error);
+  ASSERT_TRUE(first) << error;
+  auto second = Participant::create("churn_second", "", options, &error);
+  ASSERT_TRUE(second) << error;
+
+  const auto& type = ros2vtk::std_msgs::msg::String::type_support();
+  std::atomic<int> failures{ 0 };
+  auto churn = [&type, &failures](Participant* node, const std::string& prefix) {
+    for (int i = 0; i < 60; ++i)
+    {
+      std::string churnError;
+      // Shared topics make the two nodes' endpoints match each other as well.
+      auto subscription = node->create_subscription(
+        type, "/churn_" + std::to_string(i % 3), ros2vtk::wire::QoS{}, &churnError);
+      auto publisher = node->create_publisher(
+        type, prefix + std::to_string(i % 3), ros2vtk::wire::QoS{}, &churnError);
+      auto shared = node->create_publisher(
+        type, "/churn_" + std::to_string((i + 1) % 3), ros2vtk::wire::QoS{}, &churnError);
+      if (!subscription || !publisher || !shared)
+      {
+        ++failures;
+      }
+    }
+  };
+  std::thread firstThread(churn, first.get(), "/first_");
+  std::thread secondThread(churn, second.get(), "/second_");
+  firstThread.join();
+  secondThread.join();
+  EXPECT_EQ(failures.load(), 0);
+
+  // And a third node joining while the two are alive: the late joiner's graph reader gets the
+  // others' announcements delivered by DDS threads while its own are being written.
+  auto third = Participant::create("churn_third", "", options, &error);
+  ASSERT_TRUE(third) << error;
+  second.reset();
+  first.reset();
+}
