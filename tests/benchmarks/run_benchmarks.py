@@ -617,8 +617,10 @@ def main() -> int:
     parser.add_argument('--json', type=Path)
     parser.add_argument('--markdown', type=Path)
     args = parser.parse_args()
-    json_path = args.json or args.build / 'bench' / 'results.json'
-    md_path = args.markdown or (REPO / 'docs' / 'benchmarks.md')
+    # A --quick smoke run never replaces the full run's report.
+    json_path = args.json or args.build / 'bench' / ('results-quick.json' if args.quick else 'results.json')
+    md_path = args.markdown or (args.build / 'bench' / 'benchmarks-quick.md' if args.quick
+                                else REPO / 'docs' / 'benchmarks.md')
     if args.render:
         md_path.write_text(markdown(json.loads(args.render.read_text())))
         return 0
