@@ -103,6 +103,8 @@ def cmd_params(args, logic, node) -> int:
                 if kind == 'bool_array':
                     values[name] = [bool(v) for v in values[name]]
             values[name] = {'type': kind, 'value': values.get(name)}
+        if args.with_ready:
+            values['_ready'] = parameters.IsMonitoredNodeReady()
         return values
 
     def step():
@@ -293,6 +295,7 @@ def main() -> int:
     params.add_argument('node')
     params.add_argument('names', nargs='+')
     params.add_argument('--until-changes', type=int, default=0)
+    params.add_argument('--with-ready', action='store_true', help='record IsMonitoredNodeReady in the history')
     sub.add_parser('serve')
     subscriber = sub.add_parser('sub')
     subscriber.add_argument('type')

@@ -89,6 +89,29 @@ def test_parameter_node_follows_every_type_and_a_remote_change(ros):
     assert result['events'] >= 2
 
 
+def test_parameter_node_reports_an_absent_node_and_reconnects_when_it_returns(ros):
+    import time
+    ours = ros.scene('--seconds', '24', 'params', '/surgeon_console', 'gain', '--with-ready')
+    time.sleep(3.0)  # nobody serves /surgeon_console yet
+    first = ros.peer('--node', 'surgeon_console', 'param_node', '--seconds', '6', '--change-after', '100')
+    assert ros.finish(first, timeout=30)[0] == 0
+    time.sleep(4.0)  # gone
+    second = ros.peer('--node', 'surgeon_console', 'param_node', '--seconds', '8', '--change-after', '100',
+                      '--gain', '3.5')
+    assert ros.finish(second, timeout=30)[0] == 0
+    code, out, err = ros.finish(ours, timeout=40)
+    assert code == 0, err
+    states = [(h['_ready'], h['gain']['value']) for h in json.loads(out.splitlines()[-1])['history']]
+    # Collapse repeats, then look for: absent -> served (0.5) -> absent -> served again (3.5).
+    sequence = [s for i, s in enumerate(states) if i == 0 or s[0] != states[i - 1][0] or s[1] != states[i - 1][1]]
+    ready = [s for s in sequence if s[0]]
+    assert sequence[0][0] is False, sequence
+    assert (True, 0.5) in ready and (True, 3.5) in ready, sequence
+    assert ready.index((True, 0.5)) < ready.index((True, 3.5))
+    between = sequence[sequence.index((True, 0.5)):sequence.index((True, 3.5))]
+    assert any(not s[0] for s in between), f'the node going away was never reported: {sequence}'
+
+
 def test_rclpy_parameter_client_reads_and_sets_our_nodes_parameters(ros):
     ours = ros.scene('--seconds', '20', 'serve')
     ros.wait_ready(ours)
