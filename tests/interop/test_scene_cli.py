@@ -33,3 +33,48 @@ def test_nodes_and_topics_list_the_rclpy_node(ros):
     ros.finish(peer)
     assert '/cli_peer' in nodes_out.split()
     assert '/cli/chatter std_msgs/msg/String' in topics_out.splitlines()
+
+
+# Every short name the README/user guide promise, each with a publisher and a subscriber class
+# (written out by hand, not read from the registry under test).
+SHORT_NAMES = ['Bool', 'DoubleArray', 'Double', 'DoubleTable', 'Empty', 'Image', 'IntArray', 'Int',
+               'IntTable', 'JointState', 'PointCloud2', 'PointCloud', 'PoseArray', 'PoseStamped',
+               'String', 'TransformStamped', 'UInt8Image', 'WrenchStamped']
+
+
+def test_types_lists_a_publisher_and_a_subscriber_class_per_short_name(ros):
+    code, out, err = ros.finish(cli(ros, 'types'), timeout=20)
+    assert code == 0, err
+    lines = out.splitlines()
+    assert len(lines) == 2 and lines[0].startswith('publishers:') and lines[1].startswith('subscribers:'), out
+    publishers = lines[0].split()[1:]
+    subscribers = lines[1].split()[1:]
+    assert sorted(publishers) == sorted(f'vtkROS2Publisher{s}Node' for s in SHORT_NAMES)
+    assert sorted(subscribers) == sorted(f'vtkROS2Subscriber{s}Node' for s in SHORT_NAMES)
+
+
+def test_params_prints_every_type_of_an_rclpy_node(ros):
+    peer = ros.peer('--node', 'cli_params', 'param_node', '--seconds', '25', '--change-after', '100')
+    ros.wait_ready(peer)
+    ours = cli(ros, 'params', '/cli_params', 'flag', 'count', 'gain', 'frame', 'bytes', 'flags',
+               'counts', 'gains', 'frames')
+    code, out, err = ros.finish(ours, timeout=20)
+    assert code == 0, err
+    # the values param_node declares, one line per requested name, in the order asked
+    assert out.splitlines() == [
+        'flag (bool): true',
+        'count (integer): -7',
+        'gain (double): 0.5',
+        'frame (string): ct_scanner',
+        'bytes (byte_array): [1, 255]',
+        'flags (bool_array): [true, false, true]',
+        'counts (integer_array): [1, -2, 3]',
+        'gains (double_array): [0.25, 1.5]',
+        "frames (string_array): ['base', 'tool']",
+    ]
+
+
+def test_params_of_an_absent_node_fails_with_a_message(ros):
+    code, out, err = ros.finish(cli(ros, 'params', '/no_such_node', 'gain'), timeout=25)
+    assert code == 3 and out == '', (code, out)
+    assert '/no_such_node: not reachable' in err
