@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import json
+import socket
+import struct
 import time
 
 from samples import SAMPLES
@@ -87,3 +89,65 @@ def test_thousand_messages_at_1khz_none_lost(ros):
     assert code == 0, err
     values = [int(line.split(':')[1]) for line in out.splitlines() if line.startswith('data:')]
     assert values == list(range(1000))
+
+
+def localhost_only_env(ros) -> dict:
+    """ROS 2 Humble's switch: ROS_LOCALHOST_ONLY=1, with no ROS_AUTOMATIC_DISCOVERY_RANGE set."""
+    env = dict(ros.env, ROS_LOCALHOST_ONLY='1')
+    env.pop('ROS_AUTOMATIC_DISCOVERY_RANGE', None)
+    return env
+
+
+def test_ros_localhost_only_talks_to_a_localhost_rclpy_peer_both_ways(ros):
+    env = localhost_only_env(ros)
+    echo = ros.peer('echo', '/lo_only/out', 'std_msgs/msg/String', '--count', '1', '--timeout', '20')
+    ros.wait_ready(echo)
+    ours_pub = ros.tool('pub', '/lo_only/out', 'std_msgs/msg/String', json.dumps({'data': 'from ros2vtk'}),
+                        '--count', '100', '--rate', '10', '--wait-matched', '0', env=env)
+    ours_echo = ros.tool('echo', '/lo_only/in', 'std_msgs/msg/Float64', '--count', '1', '--timeout', '20',
+                         env=env)
+    peer = ros.peer('pub', '/lo_only/in', 'std_msgs/msg/Float64', json.dumps({'data': -1.5}),
+                    '--count', '100', '--rate', '10', '--wait-matched', '0')
+    code, out, err = ros.finish(echo)
+    assert code == 0, f'rclpy never received from a ROS_LOCALHOST_ONLY=1 ros2vtk: {err}'
+    assert json.loads(out.splitlines()[-1]) == {'data': 'from ros2vtk'}
+    code, out, err = ros.finish(ours_echo)
+    assert code == 0, f'a ROS_LOCALHOST_ONLY=1 ros2vtk never received from rclpy: {err}'
+    assert 'data: -1.5' in out
+    for process in (ours_pub, peer):
+        process.kill()
+
+
+def rtps_multicast_packets(ros, env: dict, seconds: float) -> int:
+    """RTPS packets seen on the domain's SPDP multicast group (239.255.0.1, 7400 + 250 * domain)
+    while our publisher runs with env: a localhost-only participant sends none."""
+    listener = socket.socket(socket.AF_INET, socket.SOCK_DGRAM, socket.IPPROTO_UDP)
+    listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEPORT, 1)
+    listener.bind(('', 7400 + 250 * ros.domain))
+    listener.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP,
+                        struct.pack('4s4s', socket.inet_aton('239.255.0.1'), socket.inet_aton('0.0.0.0')))
+    listener.settimeout(0.2)
+    ours = ros.tool('pub', '/lo_only/probe', 'std_msgs/msg/String', json.dumps({'data': 'x'}),
+                    '--count', str(int(seconds * 10) + 10), '--rate', '10', '--wait-matched', '0', env=env)
+    packets = 0
+    end = time.monotonic() + seconds
+    try:
+        while time.monotonic() < end:
+            try:
+                data, _ = listener.recvfrom(65536)
+            except socket.timeout:
+                continue
+            packets += data[:4] == b'RTPS'
+    finally:
+        listener.close()
+        ours.kill()
+        ours.communicate()
+    return packets
+
+
+def test_ros_localhost_only_sends_no_multicast_discovery(ros):
+    assert rtps_multicast_packets(ros, localhost_only_env(ros), 4.0) == 0
+    # control: the same listener does see a subnet-wide participant's announcements
+    subnet = dict(ros.env, ROS_AUTOMATIC_DISCOVERY_RANGE='SUBNET')
+    assert rtps_multicast_packets(ros, subnet, 4.0) > 0, 'listener saw no multicast at all: test is blind'
