@@ -3,6 +3,8 @@
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
+#include "ros2vtk/wire/Participant.hpp"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
@@ -19,6 +21,7 @@
 #include <cmath>
 #include <cstring>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace
@@ -34,6 +37,7 @@ public:
   vtkNew<vtkROS2Scene> Scene;
   int EpollFd = -1;
   std::vector<int> Watched; // descriptors registered in EpollFd
+  std::vector<std::pair<int, std::vector<uint8_t>>> WatchedKeys; // (fd, participant GUID) of Watched
 
   vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
   vtkNew<vtkCallbackCommand> TimerCallback;
@@ -232,32 +236,38 @@ void vtkROS2Logic::SyncWakeUpSet()
       return;
     }
   }
-  std::vector<int> current;
+  // Each watched descriptor with the GUID of the participant that owns it: a destroyed
+  // participant's descriptor number can be reused by a new one, which comparing numbers alone
+  // would miss. Registrations change only when this list does (epoll_ctl is a syscall).
+  std::vector<std::pair<int, std::vector<uint8_t>>> current;
   for (vtkROS2NodeNode* node : internals.CreatedNodes())
   {
     const int fd = node->GetWakeUpFileDescriptor();
     if (fd >= 0)
     {
-      current.push_back(fd);
+      current.emplace_back(fd, node->GetParticipant()->gid());
     }
   }
-  // Re-register everything each time: a destroyed participant's descriptor number can be reused
-  // by a new one, which a set comparison would miss. A few syscalls per spin.
+  if (current == internals.WatchedKeys)
+  {
+    return;
+  }
   for (int fd : internals.Watched)
   {
     ::epoll_ctl(internals.EpollFd, EPOLL_CTL_DEL, fd, nullptr); // may already be gone: ignored
   }
   internals.Watched.clear();
-  for (int fd : current)
+  for (const auto& key : current)
   {
     epoll_event event{};
     event.events = EPOLLIN;
-    event.data.fd = fd;
-    if (::epoll_ctl(internals.EpollFd, EPOLL_CTL_ADD, fd, &event) == 0)
+    event.data.fd = key.first;
+    if (::epoll_ctl(internals.EpollFd, EPOLL_CTL_ADD, key.first, &event) == 0)
     {
-      internals.Watched.push_back(fd);
+      internals.Watched.push_back(key.first);
     }
   }
+  internals.WatchedKeys = std::move(current);
 }
 
 //------------------------------------------------------------------------------

@@ -29,6 +29,8 @@ void WakeUp::notify()
   // A full counter (EAGAIN) still leaves the fd readable, which is all we need.
   const ssize_t written = write(fd_, &one, sizeof(one));
   (void)written;
+  // After the write: a clear() that misses this flag leaves the fd readable for the next one.
+  pending_.store(true, std::memory_order_release);
   std::function<void()> callback;
   {
     std::lock_guard<std::mutex> lock(callback_mutex_);
@@ -42,6 +44,10 @@ void WakeUp::notify()
 
 void WakeUp::clear()
 {
+  if (!pending_.exchange(false, std::memory_order_acq_rel))
+  {
+    return;
+  }
   uint64_t value = 0;
   const ssize_t count = read(fd_, &value, sizeof(value));
   (void)count;

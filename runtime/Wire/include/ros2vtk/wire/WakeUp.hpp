@@ -2,6 +2,7 @@
 #ifndef ros2vtk_wire_WakeUp_hpp
 #define ros2vtk_wire_WakeUp_hpp
 
+#include <atomic>
 #include <functional>
 #include <mutex>
 
@@ -32,6 +33,9 @@ public:
 
 private:
   int fd_ = -1;
+  // Set after each write, so clear() reads the eventfd only when something was written: the
+  // spinner calls clear() on every spin, and a syscall per spin per node is most of an idle spin.
+  std::atomic<bool> pending_{ false };
   std::mutex callback_mutex_;
   std::function<void()> callback_;
 };
