@@ -19,4 +19,5 @@ echo "[test] building with $JOBS jobs"
 cmake --build "$BUILD" -j "$JOBS"
 echo "[test] running tests"
 cd "$BUILD"
-ctest --output-on-failure --timeout 600 "$@"
+# Default for tests without their own TIMEOUT (gtests have 120 s, interop and demo more).
+ctest --output-on-failure --timeout 300 "$@"
