@@ -152,7 +152,8 @@ def cmd_sub(args, logic, node) -> int:
     sub = node.CreateAndAddSubscriberNode(args.type, args.topic)
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
     run(logic, args.seconds, lambda: sub.GetNumberOfMessages() >= args.count)
-    value = sub.GetLastMessage()
+    run(logic, args.linger, lambda: False)  # anything beyond --count would show up here
+    value = None if args.type == 'Empty' else sub.GetLastMessage()  # Empty carries no value
     print(json.dumps({'count': sub.GetNumberOfMessages(), 'rejected': sub.GetNumberOfRejectedMessages(),
                       'rejection': sub.GetLastRejectionReason(),
                       'conversion_error': sub.GetLastConversionError() if hasattr(sub, 'GetLastConversionError') else '',
@@ -188,6 +189,49 @@ def vtk_sample(short: str):
         for v in (0.5, -1.25, 1e-9, 12345.678):
             a.InsertNextValue(v)
         return a
+    if short == 'IntArray':
+        a = vtk.vtkTypeInt64Array()
+        a.SetName('ids')
+        for v in (7, -9007199254740993, 0):
+            a.InsertNextValue(v)
+        return a
+    if short == 'DoubleTable':
+        t = vtk.vtkTable()
+        for name, col in (('col_0', [0.5, 2.0]), ('col_1', [-1.25, 1e-9])):
+            a = vtk.vtkDoubleArray()
+            a.SetName(name)
+            for v in col:
+                a.InsertNextValue(v)
+            t.AddColumn(a)
+        return t
+    if short == 'PointCloud2':
+        cloud = vtk.vtkPolyData()
+        p = vtk.vtkPoints()  # float points: FLOAT32 x/y/z on the wire
+        p.InsertNextPoint(500.0, 1500.0, -2000.0)
+        p.InsertNextPoint(250.0, 0.0, 4000.0)
+        cloud.SetPoints(p)
+        intensity = vtk.vtkFloatArray()
+        intensity.SetName('intensity')
+        for v in (0.5, 1.0):
+            intensity.InsertNextValue(v)
+        cloud.GetPointData().AddArray(intensity)
+        return cloud
+    if short == 'JointState':
+        t = vtk.vtkTable()
+        names = vtk.vtkStringArray()
+        names.SetName('name')
+        for v in ('shoulder', 'elbow'):
+            names.InsertNextValue(v)
+        t.AddColumn(names)
+        for name, col in (('position', [0.1, -0.5]), ('velocity', [0.0, 0.5])):
+            a = vtk.vtkDoubleArray()
+            a.SetName(name)
+            for v in col:
+                a.InsertNextValue(v)
+            t.AddColumn(a)
+        return t  # no effort column: an empty effort array
+    if short == 'Empty':
+        return None
     if short == 'IntTable':
         t = vtk.vtkTable()
         for c, col in enumerate(([1, 4], [-2, -5], [3, 6])):
@@ -301,6 +345,7 @@ def main() -> int:
     subscriber.add_argument('type')
     subscriber.add_argument('topic')
     subscriber.add_argument('--count', type=int, default=1)
+    subscriber.add_argument('--linger', type=float, default=0.0)
     publisher = sub.add_parser('pub')
     publisher.add_argument('type')
     publisher.add_argument('topic')

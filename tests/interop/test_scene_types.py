@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+import struct
 
 import pytest
 
@@ -54,20 +55,35 @@ INCOMING = [
     # ROS row 0 is the top row; VTK's y goes up, so VTK row 0 is ROS row 1.
     ('Image', 'sensor_msgs/msg/Image', {'dimensions': [3, 2, 1], 'components': 3,
                                         'scalars': [float(v) for v in IMAGE[9:18] + IMAGE[0:9]]}),
+    # dim[0] rows, dim[1] columns (labelled 'cols'): columns "cols_<j>", element [i][j] = data[3 i + j]
+    ('IntTable', 'std_msgs/msg/Int64MultiArray', {'cols_0': [1, 4], 'cols_1': [-2, -5], 'cols_2': [3, 6]}),
+    # unlabelled dim[1]: columns "<j>"; strides 4 and 2 over a 2 x 2 grid
+    ('DoubleTable', 'std_msgs/msg/Float64MultiArray', {'0': [0.5, 1e-9], '1': [-1.25, 12345.678]}),
+    ('Empty', 'std_msgs/msg/Empty', None),
 ]
+# messages sent instead of SAMPLES[ros_type]
+INCOMING_MESSAGES = {
+    'DoubleTable': {'layout': {'dim': [{'label': 'rows', 'size': 2, 'stride': 4},
+                                       {'label': '', 'size': 2, 'stride': 2}], 'data_offset': 0},
+                    'data': [0.5, -1.25, 1e-9, 12345.678]},
+}
+SENT = 40  # the peer waits for our subscription, then sends this many, reliably
 
 
 @pytest.mark.parametrize('short,ros_type,expected', INCOMING, ids=[c[0] for c in INCOMING])
 def test_rclpy_publisher_to_our_vtk_subscriber(ros, short, ros_type, expected):
     topic = '/scene_in/' + short.lower()
-    ours = ros.scene('--seconds', '20', 'sub', short, topic)
+    ours = ros.scene('--seconds', '20', 'sub', short, topic, '--count', str(SENT), '--linger', '1')
     ros.wait_ready(ours)
-    peer = ros.peer('pub', topic, ros_type, json.dumps(SAMPLES[ros_type]), '--count', '40', '--rate', '10')
+    message = INCOMING_MESSAGES.get(short, SAMPLES[ros_type])
+    peer = ros.peer('pub', topic, ros_type, json.dumps(message), '--count', str(SENT), '--rate', '20')
     code, out, err = ros.finish(ours)
     ros.finish(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
-    assert result['count'] >= 1 and result['rejected'] == 0, result
+    assert result['count'] == SENT and result['rejected'] == 0, result
+    if isinstance(expected, dict) and short != 'Image':  # a table: exactly these columns
+        assert sorted(result['value']) == sorted(expected), result['value']
     close(expected, result['value'])
 
 
@@ -106,6 +122,29 @@ OUTGOING = [
     ('Image', 'sensor_msgs/msg/Image',
      {'height': 2, 'width': 3, 'encoding': 'rgb8', 'step': 9,
       'data': [30, 31, 32, 40, 41, 42, 50, 51, 52, 0, 1, 2, 10, 11, 12, 20, 21, 22]}),
+    # one dim named after the array
+    ('IntArray', 'std_msgs/msg/Int64MultiArray',
+     {'layout': {'dim': [{'label': 'ids', 'size': 3, 'stride': 3}], 'data_offset': 0},
+      'data': [7, -9007199254740993, 0]}),
+    # row-major; dim[0] "rows"; columns "col_<j>" give dim[1] back its label "col"
+    ('DoubleTable', 'std_msgs/msg/Float64MultiArray',
+     {'layout': {'dim': [{'label': 'rows', 'size': 2, 'stride': 4}, {'label': 'col', 'size': 2, 'stride': 2}],
+                 'data_offset': 0},
+      'data': [0.5, -1.25, 2.0, 1e-9]}),
+    # float points -> FLOAT32 (datatype 7) x, y, z in metres, then the float "intensity" array
+    ('PointCloud2', 'sensor_msgs/msg/PointCloud2',
+     {'header': {'frame_id': 'ct_scanner'}, 'height': 1, 'width': 2, 'is_bigendian': False,
+      'fields': [{'name': 'x', 'offset': 0, 'datatype': 7, 'count': 1},
+                 {'name': 'y', 'offset': 4, 'datatype': 7, 'count': 1},
+                 {'name': 'z', 'offset': 8, 'datatype': 7, 'count': 1},
+                 {'name': 'intensity', 'offset': 12, 'datatype': 7, 'count': 1}],
+      'point_step': 16, 'row_step': 32, 'is_dense': True,
+      'data': list(struct.pack('<8f', 0.5, 1.5, -2.0, 0.5, 0.25, 0.0, 4.0, 1.0))}),
+    # never scaled; no effort column -> empty effort
+    ('JointState', 'sensor_msgs/msg/JointState',
+     {'header': {'frame_id': 'ct_scanner'}, 'name': ['shoulder', 'elbow'], 'position': [0.1, -0.5],
+      'velocity': [0.0, 0.5], 'effort': []}),
+    ('Empty', 'std_msgs/msg/Empty', {}),
 ]
 
 
