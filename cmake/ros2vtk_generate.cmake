@@ -199,6 +199,9 @@ function(ros2vtk_generate_messages target)
     "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
   target_link_libraries(${target} PUBLIC ros2vtk::Message ${_r2v_DEPENDENCIES})
   target_compile_features(${target} PUBLIC cxx_std_17)
+  # Linked into shared VTK modules (ros2vtk_generate_nodes), so position-independent whatever
+  # the calling project's CMAKE_POSITION_INDEPENDENT_CODE.
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   if(COMMAND _ros2vtk_target_warnings)
     _ros2vtk_target_warnings(${target})
   endif()

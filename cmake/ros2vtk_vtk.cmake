@@ -6,6 +6,7 @@
 # module of the project is built the same way.
 
 include_guard(GLOBAL)
+include(GNUInstallDirs)
 
 # Where wrapped Python modules land in the build tree: <build>/python/ros2vtk/, next to the
 # package's __init__.py (copied there by python/CMakeLists.txt). PYTHONPATH=<build>/python.
@@ -69,7 +70,16 @@ function(ros2vtk_add_vtk_module)
 
   list(GET _r2v_modules 0 _r2v_first)
   string(REPLACE "::" "_" _r2v_package "${_r2v_first}")
+  # The toolkit's own modules (built while _ROS2VTK_EXPORT_VTK_MODULES is set, see the top-level
+  # CMakeLists.txt) join an export set of their own, so find_package(ros2vtk) imports them with
+  # their VTK module properties (cmake/ros2vtk_install.cmake, ros2vtkConfig.cmake).
+  set(_r2v_export "")
+  if(_ROS2VTK_EXPORT_VTK_MODULES)
+    set(_r2v_export INSTALL_EXPORT "${_r2v_package}Targets")
+    set_property(GLOBAL APPEND PROPERTY ROS2VTK_EXPORTED_VTK_PACKAGES "${_r2v_package}")
+  endif()
   vtk_module_build(
+    ${_r2v_export}
     MODULES               ${_r2v_modules}
     PACKAGE               "${_r2v_package}"
     BUILD_WITH_KITS       OFF
