@@ -29,8 +29,8 @@ LATCHED = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=Relia
                      durability=DurabilityPolicy.TRANSIENT_LOCAL)
 
 
-def configurations(robot: URDF, count: int) -> list[np.ndarray]:
-    rng = np.random.default_rng(7)
+def configurations(robot: URDF, count: int, seed: int) -> list[np.ndarray]:
+    rng = np.random.default_rng(seed)
     lows, highs = [], []
     for name in robot.actuated_joint_names:
         limit = robot.joint_map[name].limit
@@ -94,6 +94,8 @@ def main() -> int:
     parser.add_argument('--configs', type=int, default=3)
     parser.add_argument('--hold', type=float, default=2.5)
     parser.add_argument('--rate', type=float, default=50.0)
+    parser.add_argument('--seed', type=int, default=7, help='of the random configurations')
+    parser.add_argument('--first-hold', type=float, default=0.0, help='seconds for the first configuration (0: --hold)')
     parser.add_argument('--wait', type=float, default=20.0, help='seconds to wait for a /tf subscriber')
     args = parser.parse_args()
 
@@ -115,13 +117,13 @@ def main() -> int:
         deadline = time.monotonic() + args.wait
         while dynamic.get_subscription_count() == 0 and time.monotonic() < deadline:
             rclpy.spin_once(node, timeout_sec=0.05)
-        for index, config in enumerate(configurations(robot, args.configs)):
+        for index, config in enumerate(configurations(robot, args.configs, args.seed)):
             robot.update_cfg(config)
             links = {link.name: robot.get_transform(link.name).tolist() for link in robot.robot.links}
             print(json.dumps({'config': index, 'joints': config.tolist(), 'links': links}), flush=True)
             static.publish(TFMessage(transforms=joint_transforms(robot, args.frame_prefix,
                                                                  node.get_clock().now().to_msg(), True)))
-            end = time.monotonic() + args.hold
+            end = time.monotonic() + (args.first_hold if index == 0 and args.first_hold > 0 else args.hold)
             while time.monotonic() < end:
                 dynamic.publish(TFMessage(transforms=joint_transforms(
                     robot, args.frame_prefix, node.get_clock().now().to_msg(), False)))

@@ -296,28 +296,41 @@ def cmd_robot(args, logic, node) -> int:
     for folder in args.mesh_path:
         robot.AddMeshSearchPath(folder)
     robot.SetMeshBaseFolder(args.mesh_base_folder)
+    others = {}
+    for spec in args.also:  # NAME=TOPIC=PREFIX: more robots in the same scene
+        name, topic, prefix = spec.split('=')
+        others[name] = node.CreateAndAddRobotNodeFromTopic(name, topic, '', prefix)
+        for folder in args.mesh_path:
+            others[name].AddMeshSearchPath(folder)
+        others[name].SetMeshBaseFolder(args.mesh_base_folder)
     loaded = []
     robot.AddObserver(ros2vtk.vtkROS2RobotNode.RobotLoadedEvent, lambda caller, event: loaded.append(1))
     print(json.dumps({'ready': True, 'state': robot.GetRobotState()}), flush=True)
-    run(logic, args.seconds, robot.IsLoaded)
+    run(logic, args.seconds, lambda: robot.IsLoaded() and all(o.IsLoaded() for o in others.values()))
     models = [robot.GetNthModelNode(i) for i in range(robot.GetNumberOfModelNodes())]
     print(json.dumps({'state': robot.GetRobotState(), 'loaded_events': len(loaded),
                       'links': robot.GetLinkNames().split(), 'models': len(models),
                       'placeholders': robot.GetNumberOfPlaceholders(), 'warnings': robot.GetWarnings(),
                       'load_seconds': robot.GetLastLoadDuration(),
-                      'model_links': [m.GetAttribute('ros2vtk.link') for m in models]}), flush=True)
+                      'model_links': [m.GetAttribute('ros2vtk.link') for m in models],
+                      'others': {n: o.GetRobotState() for n, o in others.items()}}), flush=True)
     matrix = vtk.vtkMatrix4x4()
+
+    def world(r):
+        links = {}
+        for link in r.GetLinkNames().split():
+            r.GetLinkTransformNode(link).GetMatrixTransformToWorld(matrix)
+            links[link] = matrix_rows(matrix)
+        return links
+
     end = time.monotonic() + args.follow
     next_snapshot = time.monotonic()
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.02)
         if time.monotonic() >= next_snapshot:
             next_snapshot += args.every
-            links = {}
-            for link in robot.GetLinkNames().split():
-                robot.GetLinkTransformNode(link).GetMatrixTransformToWorld(matrix)
-                links[link] = matrix_rows(matrix)
-            print(json.dumps({'tracked': robot.GetNumberOfLinksTracked(), 'links': links}), flush=True)
+            print(json.dumps({'tracked': robot.GetNumberOfLinksTracked(), 'links': world(robot),
+                              'others': {n: world(o) for n, o in others.items()}}), flush=True)
     return 0
 
 
@@ -357,6 +370,7 @@ def main() -> int:
     robot.add_argument('--tf-prefix', default='')
     robot.add_argument('--mesh-path', action='append', default=[])
     robot.add_argument('--mesh-base-folder', default='')
+    robot.add_argument('--also', action='append', default=[], help='NAME=TOPIC=PREFIX: another robot')
     robot.add_argument('--follow', type=float, default=8.0)
     robot.add_argument('--every', type=float, default=0.2)
     args = parser.parse_args()

@@ -118,3 +118,31 @@ def test_example_robot_data_ur5_with_collada_meshes(ros):
     for config in expected:
         best = min(matches(snapshot['links'], config['links']) for snapshot in snapshots)
         assert best < TOLERANCE_MM, f"configuration {config['config']} never matched (best {best})"
+
+
+def test_two_robots_at_once_each_in_its_namespace_follow_their_own_motion(ros):
+    hold = 2.5
+    # The first configuration is held longer: each peer's clock starts when our node listens to
+    # /tf, which the first robot to load already makes true for the other.
+    first = start_rsp(ros, ARM, '--configs', '2', '--hold', str(hold), '--first-hold', '6', '--namespace', '/PSM1',
+                      '--frame-prefix', 'PSM1/', '--seed', '7')
+    second = start_rsp(ros, ARM, '--configs', '2', '--hold', str(hold), '--first-hold', '6', '--namespace', '/PSM2',
+                       '--frame-prefix', 'PSM2/', '--seed', '11')
+    ours = start_scene_robot(ros, '--seconds', '30', 'robot', 'psm1', '--source', 'topic',
+                             '--topic', '/PSM1/robot_description', '--tf-prefix', 'PSM1/',
+                             '--also', 'psm2=/PSM2/robot_description=PSM2/', '--mesh-path', str(ARM_PACKAGE),
+                             '--mesh-base-folder', str(ARM.parent), '--follow', str(6 + hold + 1.0))
+    code, out, err = ros.finish(ours, timeout=6 + hold + 60)
+    results = [ros.finish(peer, timeout=30) for peer in (first, second)]
+    assert code == 0, err
+    lines = [json.loads(line) for line in out.splitlines()]
+    state, snapshots = lines[1], lines[2:]
+    assert state['state'] == 'loaded' and state['others'] == {'psm2': 'loaded'}, state
+    for (peer_code, peer_out, peer_err), pick in zip(results, (lambda s: s['links'],
+                                                                 lambda s: s['others']['psm2'])):
+        assert peer_code == 0, peer_err
+        expected = [json.loads(line) for line in peer_out.splitlines() if '"config"' in line]
+        assert len(expected) == 2
+        for config in expected:
+            trace = [round(matches(pick(snapshot), config['links']), 3) for snapshot in snapshots]
+            assert min(trace) < TOLERANCE_MM, f"configuration {config['config']} never matched: {trace}"
