@@ -22,16 +22,24 @@ def test_our_node_and_topics_appear_in_rclpy_graph(ros):
 
 
 def test_rclpy_node_appears_in_our_graph(ros):
+    # The peer publishes until killed and our tools look again until they see it: importing
+    # rclpy can take seconds on a loaded machine, so a fixed head start would make this flaky.
     peer = ros.peer('--node', 'rclpy_graph_peer', 'pub', '/graph/from_py', 'std_msgs/msg/Bool',
-                    json.dumps({'data': True}), '--count', '50', '--rate', '10', '--wait-matched', '0')
-    time.sleep(1.0)
-    nodes = ros.tool('nodes', '--wait', '3')
-    topics = ros.tool('list', '--wait', '3')
-    _, nodes_out, _ = ros.finish(nodes)
-    _, topics_out, _ = ros.finish(topics)
+                    json.dumps({'data': True}), '--count', '-1', '--rate', '10', '--wait-matched', '0')
+    deadline = time.monotonic() + 60.0
+    while True:
+        nodes = ros.tool('nodes', '--wait', '3')
+        topics = ros.tool('list', '--wait', '3')
+        _, nodes_out, _ = ros.finish(nodes)
+        _, topics_out, _ = ros.finish(topics)
+        seen = ('/rclpy_graph_peer' in nodes_out.split()
+                and '/graph/from_py [std_msgs/msg/Bool]' in topics_out.splitlines())
+        if seen or peer.poll() is not None or time.monotonic() > deadline:
+            break
+    peer.kill()
     ros.finish(peer)
-    assert '/rclpy_graph_peer' in nodes_out.split()
-    assert '/graph/from_py [std_msgs/msg/Bool]' in topics_out.splitlines()
+    assert '/rclpy_graph_peer' in nodes_out.split(), nodes_out
+    assert '/graph/from_py [std_msgs/msg/Bool]' in topics_out.splitlines(), topics_out
 
 
 def test_other_domain_sees_nothing(ros):
