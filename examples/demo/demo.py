@@ -125,6 +125,9 @@ class Viewer:
         self.renderer.ResetCameraClippingRange()
 
     def render(self) -> str | None:
+        # The robot moves: near/far planes computed once would clip links that swing towards or
+        # away from the camera (seen as a needle guide missing from a frame).
+        self.renderer.ResetCameraClippingRange()
         self.window.Render()
         if not self.offscreen_dir:
             return None
