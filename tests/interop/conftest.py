@@ -1,7 +1,7 @@
 """Fixtures for interop tests: real rclpy peers in their own processes, our tools in others.
 
-Every test gets its own ROS_DOMAIN_ID so concurrent peers never cross, and discovery stays on
-the loopback (ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST).
+Every test gets a ROS_DOMAIN_ID no test before it used recently, so lingering peers never cross,
+and discovery stays on the loopback (ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST).
 """
 from __future__ import annotations
 
@@ -19,7 +19,12 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
 VENV_PYTHON = Path(os.environ.get('ROS2VTK_VENV_PYTHON', REPO / '.venv' / 'bin' / 'python'))
-_domains = itertools.count(int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '100')))
+# One domain per test, reused in turn after 80 tests (the tests run one after another and each
+# kills its processes): ROS domain IDs stop at 232 (UDP ports), and test_other_domain_sees_nothing
+# goes 50 above its own: counting up without end fails ('port number is too high') as soon as
+# ~80 tests sort before that one (61 today) or the suite passes 132 tests.
+_DOMAIN_BASE = int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '100'))
+_domains = (_DOMAIN_BASE + n % 80 for n in itertools.count())
 TF2_MSGS_INSTALL = Path(os.environ.get('ROS2VTK_FIXTURES_BUILD_DIR', REPO / 'build-fixtures')) / 'tf2_msgs' / 'install'
 
 
