@@ -161,6 +161,24 @@ def cmd_sub(args, logic, node) -> int:
     return 0
 
 
+def vtk_array(array_class, values, name: str = ''):
+    """A VTK array of `values` (named when `name` is given)."""
+    array = array_class()
+    if name:
+        array.SetName(name)
+    for value in values:
+        array.InsertNextValue(value)
+    return array
+
+
+def vtk_table(columns):
+    """A vtkTable from (array class, name, values) columns, in order."""
+    table = vtk.vtkTable()
+    for array_class, name, values in columns:
+        table.AddColumn(vtk_array(array_class, values, name))
+    return table
+
+
 def vtk_sample(short: str):
     """What a user would publish for each mapped type (lengths in mm)."""
     def matrix(rows):
@@ -180,67 +198,31 @@ def vtk_sample(short: str):
             collection.AddItem(t)
         return collection
     if short == 'WrenchStamped':
-        a = vtk.vtkDoubleArray()
-        for v in (1.0, -2.0, 9.81, 0.1, 0.0, -0.05):
-            a.InsertNextValue(v)
-        return a
+        return vtk_array(vtk.vtkDoubleArray, (1.0, -2.0, 9.81, 0.1, 0.0, -0.05))
     if short == 'DoubleArray':
-        a = vtk.vtkDoubleArray()
-        for v in (0.5, -1.25, 1e-9, 12345.678):
-            a.InsertNextValue(v)
-        return a
+        return vtk_array(vtk.vtkDoubleArray, (0.5, -1.25, 1e-9, 12345.678))
     if short == 'IntArray':
-        a = vtk.vtkTypeInt64Array()
-        a.SetName('ids')
-        for v in (7, -9007199254740993, 0):
-            a.InsertNextValue(v)
-        return a
+        return vtk_array(vtk.vtkTypeInt64Array, (7, -9007199254740993, 0), 'ids')
     if short == 'DoubleTable':
-        t = vtk.vtkTable()
-        for name, col in (('col_0', [0.5, 2.0]), ('col_1', [-1.25, 1e-9])):
-            a = vtk.vtkDoubleArray()
-            a.SetName(name)
-            for v in col:
-                a.InsertNextValue(v)
-            t.AddColumn(a)
-        return t
+        return vtk_table([(vtk.vtkDoubleArray, 'col_0', [0.5, 2.0]),
+                          (vtk.vtkDoubleArray, 'col_1', [-1.25, 1e-9])])
     if short == 'PointCloud2':
         cloud = vtk.vtkPolyData()
         p = vtk.vtkPoints()  # float points: FLOAT32 x/y/z on the wire
         p.InsertNextPoint(500.0, 1500.0, -2000.0)
         p.InsertNextPoint(250.0, 0.0, 4000.0)
         cloud.SetPoints(p)
-        intensity = vtk.vtkFloatArray()
-        intensity.SetName('intensity')
-        for v in (0.5, 1.0):
-            intensity.InsertNextValue(v)
-        cloud.GetPointData().AddArray(intensity)
+        cloud.GetPointData().AddArray(vtk_array(vtk.vtkFloatArray, (0.5, 1.0), 'intensity'))
         return cloud
     if short == 'JointState':
-        t = vtk.vtkTable()
-        names = vtk.vtkStringArray()
-        names.SetName('name')
-        for v in ('shoulder', 'elbow'):
-            names.InsertNextValue(v)
-        t.AddColumn(names)
-        for name, col in (('position', [0.1, -0.5]), ('velocity', [0.0, 0.5])):
-            a = vtk.vtkDoubleArray()
-            a.SetName(name)
-            for v in col:
-                a.InsertNextValue(v)
-            t.AddColumn(a)
-        return t  # no effort column: an empty effort array
+        # no effort column: an empty effort array
+        return vtk_table([(vtk.vtkStringArray, 'name', ('shoulder', 'elbow')),
+                          (vtk.vtkDoubleArray, 'position', [0.1, -0.5]),
+                          (vtk.vtkDoubleArray, 'velocity', [0.0, 0.5])])
     if short == 'Empty':
         return None
     if short == 'IntTable':
-        t = vtk.vtkTable()
-        for c, col in enumerate(([1, 4], [-2, -5], [3, 6])):
-            a = vtk.vtkTypeInt64Array()
-            a.SetName(str(c))
-            for v in col:
-                a.InsertNextValue(v)
-            t.AddColumn(a)
-        return t
+        return vtk_table([(vtk.vtkTypeInt64Array, str(c), col) for c, col in enumerate(([1, 4], [-2, -5], [3, 6]))])
     if short == 'PointCloud':
         p = vtk.vtkPoints()
         p.InsertNextPoint(500.0, 1500.0, -2000.0)
