@@ -157,11 +157,6 @@ class Viewer:
 
 
 # ------------------------------------------------------------------------------ main
-def announced_loads(announced: set, ns: str) -> set:
-    """The loads of robot `ns` already announced (a new description reloads the robot)."""
-    return {load for name, load in announced if name == ns}
-
-
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--phantom', required=True, help='MetaImage (.mha) made by ros2vtk-make-phantom')
@@ -213,7 +208,7 @@ def main() -> int:
         placement.SetElement(1, 3, 700.0 * (index - (len(namespaces) - 1) / 2))
         placements[ns] = placement
         robots[ns] = robot
-    announced = set()
+    announced = {}  # namespace -> the load last announced (a new description reloads the robot)
     viewer = Viewer(scene, image, registration, args.offscreen or None)
     viewer.reset_camera()
     interactor = None
@@ -239,8 +234,8 @@ def main() -> int:
         spin_time += time.perf_counter() - t0
         spins_since += 1
         for ns, robot in robots.items():
-            if robot.IsLoaded() and robot.GetNumberOfLoads() not in announced_loads(announced, ns):
-                announced.add((ns, robot.GetNumberOfLoads()))
+            if robot.IsLoaded() and announced.get(ns) != robot.GetNumberOfLoads():
+                announced[ns] = robot.GetNumberOfLoads()
                 robot.GetBaseTransformNode().SetMatrixTransformToParent(placements[ns])
                 for warning in robot.GetWarnings().splitlines():
                     print(f'[demo] {ns}: {warning}', flush=True)
