@@ -317,11 +317,7 @@ bool vtkROS2RobotNode::AttachToParameter(vtkROS2NodeNode* rosNode, const std::st
   internals.Source = "parameter";
   internals.ParameterNodeName = parameters->GetMonitoredNodeName();
   internals.ParameterName = parameterName;
-  internals.SourceNode = parameters;
-  internals.SourceObserverTag = parameters->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
-  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
-  this->SetNodeReferenceID(DescriptionRole, parameters->GetID());
-  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
+  this->FollowSource(rosNode, parameters);
   return true;
 }
 
@@ -349,12 +345,19 @@ bool vtkROS2RobotNode::AttachToTopic(vtkROS2NodeNode* rosNode, const std::string
   }
   internals.Source = "topic";
   internals.Topic = subscriber->GetTopic();
-  internals.SourceNode = subscriber;
-  internals.SourceObserverTag = subscriber->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
-  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
-  this->SetNodeReferenceID(DescriptionRole, subscriber->GetID());
-  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
+  this->FollowSource(rosNode, subscriber);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* source)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.SourceNode = source;
+  internals.SourceObserverTag = source->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
+  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
+  this->SetNodeReferenceID(DescriptionRole, source->GetID());
+  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
 }
 
 //------------------------------------------------------------------------------

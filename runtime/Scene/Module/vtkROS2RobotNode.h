@@ -126,6 +126,8 @@ private:
   vtkROS2RobotNode(const vtkROS2RobotNode&) = delete;
   void operator=(const vtkROS2RobotNode&) = delete;
 
+  /// Observes the description source (parameter node or subscriber) and spins with `rosNode`.
+  void FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* source);
   /// Spin callback: loads a new description when the source brought one.
   int CheckForNewDescription();
   void Unload();
