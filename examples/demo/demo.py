@@ -102,6 +102,9 @@ class Viewer:
             if actor is None:
                 mapper = vtk.vtkPolyDataMapper()
                 mapper.SetInputData(model.GetPolyData())
+                # Per-vertex colours of a mesh (Collada, PLY) when the model asks for them.
+                mapper.SetScalarVisibility(model.GetScalarVisibility())
+                mapper.SetColorModeToDirectScalars()
                 actor = vtk.vtkActor()
                 actor.SetMapper(mapper)
                 actor.GetProperty().SetColor(*model.GetColor())

@@ -143,3 +143,88 @@ def test_names_are_unique_and_required(logic):
     assert node.CreateAndAddRobotNodeFromTopic('two', '/other', '', '') is None
     assert node.CreateAndAddRobotNode('', '/robot_state_publisher') is None
     assert node.CreateAndAddRobotNode('p', '') is None
+
+
+def test_a_reload_keeps_the_base_placement_and_the_link_nodes_of_links_still_there(logic, vtk):
+    node, robot = make_robot(logic)
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    base = robot.GetBaseTransformNode()
+    placement = vtk.vtkMatrix4x4()
+    placement.SetElement(0, 3, 250.0)
+    base.SetMatrixTransformToParent(placement)
+    tool = robot.GetLinkTransformNode('tool')
+    first_models = {robot.GetNthModelNode(i).GetID() for i in range(robot.GetNumberOfModelNodes())}
+    # Another description with the same links (a bigger sphere): same base, same link nodes, new models.
+    assert robot.LoadRobotDescription(TWO_LINKS.replace('radius="0.01"', 'radius="0.02"'), '')
+    assert robot.GetBaseTransformNode() is base
+    assert base.GetMatrixTransformToParent().GetElement(0, 3) == 250.0
+    assert robot.GetLinkTransformNode('tool') is tool
+    second_models = {robot.GetNthModelNode(i).GetID() for i in range(robot.GetNumberOfModelNodes())}
+    assert second_models and not second_models & first_models
+    assert all(logic.GetScene().GetNodeByID(i) is None for i in first_models)
+    # A robot without a 'tool' link: its lookup goes, the base stays.
+    robot.AddMeshSearchPath(str(ARM.parents[1]))
+    assert robot.LoadRobotDescription(ARM.read_text(), str(ARM.parent))
+    assert robot.GetBaseTransformNode() is base
+    assert node.GetTf2LookupNodeByParentChild('base', 'tool') is None
+    assert robot.GetLinkTransformNode('tool') is None
+
+
+def test_a_saved_scene_restores_the_robot_its_base_and_links_and_it_loads_again(logic, vtk, ros2vtk, tmp_path):
+    node, robot = make_robot(logic)
+    robot.SetTfPrefix('r1/')
+    robot.SetFixedFrame('world')
+    folder = tmp_path / 'mesh folder with spaces'
+    robot.AddMeshSearchPath(str(folder))
+    robot.SetMeshBaseFolder(str(tmp_path))
+    assert robot.LoadRobotDescription(TWO_LINKS, '')
+    placement = vtk.vtkMatrix4x4()
+    placement.SetElement(2, 3, -75.0)
+    robot.GetBaseTransformNode().SetMatrixTransformToParent(placement)
+    # A node of the user's hung under a link keeps its parent through save, restore and reload.
+    needle = ros2vtk.vtkROS2TransformNode()
+    logic.GetScene().AddNode(needle)
+    needle.SetParentTransformNodeID(robot.GetLinkTransformNode('tool').GetID())
+    ids = {link: robot.GetLinkTransformNode(link).GetID() for link in ('base', 'tool')}
+    base_id = robot.GetBaseTransformNode().GetID()
+
+    path = str(tmp_path / 'scene.xml')
+    assert logic.GetScene().WriteToXMLFile(path)
+    text = open(path, encoding='utf-8').read()
+    assert 'vtkROS2ModelNode' not in text  # geometry comes back with the description
+    assert 'mesh folder with spaces' in text
+
+    scene = logic.GetScene()
+    assert scene.ReadFromXMLFile(path)
+    node = logic.GetDefaultROS2Node()
+    restored = node.GetRobotNodeByName('two')
+    assert restored is not None and restored is not robot
+    assert (restored.GetDescriptionSource(), restored.GetDescriptionTopic()) == ('topic', '/two/robot_description')
+    assert (restored.GetTfPrefix(), restored.GetFixedFrame()) == ('r1/', 'world')
+    assert restored.GetMeshBaseFolder() == str(tmp_path)
+    assert not restored.IsLoaded() and restored.GetNumberOfModelNodes() == 0
+    assert restored.GetBaseTransformNode().GetID() == base_id
+    assert restored.GetBaseTransformNode().GetMatrixTransformToParent().GetElement(2, 3) == -75.0
+    assert restored.GetLinkNames() == 'base tool'
+    assert node.GetSubscriberNodeByTopic('/two/robot_description') is not None
+    nodes = scene.GetNumberOfNodes()
+
+    assert restored.LoadRobotDescription(TWO_LINKS, '')
+    assert {link: restored.GetLinkTransformNode(link).GetID() for link in ('base', 'tool')} == ids
+    assert restored.GetNumberOfModelNodes() == 3
+    assert scene.GetNumberOfNodes() == nodes + 3  # only the models are new
+    assert scene.GetNodeByID(needle.GetID()).GetParentTransformNodeID() == ids['tool']
+    assert restored.GetLinkTransformNode('tool').GetChildID() == 'r1/tool'
+    assert node.RemoveAndDeleteRobotNode('two')
+    assert scene.GetNodeByID(base_id) is None and scene.GetNodeByID(ids['tool']) is None
+
+
+def test_a_scene_file_with_a_robot_missing_its_source_is_refused(logic, ros2vtk):
+    broken = ('<ROS2Scene version="1"><vtkROS2RobotNode id="vtkROS2RobotNode1" name="r" robotName="r"/>'
+              '</ROS2Scene>')
+    scene = logic.GetScene()
+    scene.GlobalWarningDisplayOff()
+    try:
+        assert not scene.ReadFromXMLString(broken)
+    finally:
+        scene.GlobalWarningDisplayOn()

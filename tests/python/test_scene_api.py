@@ -170,3 +170,29 @@ def test_interactor_timer_spins_at_the_rate_and_detaches(logic):
     interactor.SetTimerEventId(timer_id)
     interactor.TimerEvent()
     assert logic.GetNumberOfSpins() == spins + 1
+
+
+def test_scene_file_restores_tf2_parameter_transform_and_model_nodes(logic, ros2vtk, tmp_path):
+    node = logic.GetDefaultROS2Node()
+    node.CreateAndAddTf2LookupNode('world', 'tool')
+    broadcaster = node.CreateAndAddTf2BroadcasterNode('world', 'marker')
+    broadcaster.StaticOn()
+    parameters = node.CreateAndAddParameterNode('/robot_state_publisher')
+    assert parameters.AddParameter('robot_description')
+    model = ros2vtk.vtkROS2ModelNode()
+    model.SetColor(0.1, 0.2, 0.3)
+    model.ScalarVisibilityOn()
+    logic.GetScene().AddNode(model)
+    path = str(tmp_path / 'scene.xml')
+    assert logic.GetScene().WriteToXMLFile(path)
+
+    assert logic.GetScene().ReadFromXMLFile(path)
+    node = logic.GetDefaultROS2Node()
+    lookup = node.GetTf2LookupNodeByParentChild('world', 'tool')
+    assert lookup is not None and lookup.GetLookupStatus() != 'ok'
+    restored = node.GetTf2BroadcasterNodeByParentChild('world', 'marker')
+    assert restored is not None and restored.GetROS2Node() is node and restored.GetStatic()
+    parameters = node.GetParameterNodeByNode('/robot_state_publisher')
+    assert parameters is not None and parameters.GetParameterNames() == 'robot_description'
+    model = logic.GetScene().GetNodeByID(model.GetID())
+    assert model.GetColor() == (0.1, 0.2, 0.3) and model.GetScalarVisibility()

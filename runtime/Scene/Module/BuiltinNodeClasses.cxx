@@ -1,8 +1,14 @@
 // The runtime's own scene node classes, registered when the registry is first used.
 #include "NodeClassRegistry.hpp"
+#include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2ParameterNode.h"
 #include "vtkROS2PublisherGenericNode.h"
+#include "vtkROS2RobotNode.h"
 #include "vtkROS2SubscriberGenericNode.h"
+#include "vtkROS2Tf2BroadcasterNode.h"
+#include "vtkROS2Tf2LookupNode.h"
+#include "vtkROS2TransformNode.h"
 
 namespace ros2vtk {
 namespace scene {
@@ -25,6 +31,13 @@ void register_builtin_node_classes(NodeClassRegistry& registry)
       &create_node<vtkROS2PublisherGenericNode> },
     { "", "vtkROS2SubscriberGenericNode", "", NodeDirection::Other,
       &create_node<vtkROS2SubscriberGenericNode> },
+    // Every other class a scene file may hold (vtkROS2Scene::ReadFromXML creates by class name).
+    { "", "vtkROS2ParameterNode", "", NodeDirection::Other, &create_node<vtkROS2ParameterNode> },
+    { "", "vtkROS2TransformNode", "", NodeDirection::Other, &create_node<vtkROS2TransformNode> },
+    { "", "vtkROS2Tf2LookupNode", "", NodeDirection::Other, &create_node<vtkROS2Tf2LookupNode> },
+    { "", "vtkROS2Tf2BroadcasterNode", "", NodeDirection::Other, &create_node<vtkROS2Tf2BroadcasterNode> },
+    { "", "vtkROS2ModelNode", "", NodeDirection::Other, &create_node<vtkROS2ModelNode> },
+    { "", "vtkROS2RobotNode", "", NodeDirection::Other, &create_node<vtkROS2RobotNode> },
   };
   for (const auto& info : builtins)
   {

@@ -102,6 +102,7 @@ void vtkROS2ModelNode::WriteXML(vtkXMLDataElement* element)
   element->SetVectorAttribute("color", 3, this->Color);
   element->SetDoubleAttribute("opacity", this->Opacity);
   element->SetIntAttribute("visibility", this->Visibility ? 1 : 0);
+  element->SetIntAttribute("scalarVisibility", this->ScalarVisibility ? 1 : 0);
   std::ostringstream values;
   values.precision(17);
   for (int k = 0; k < 16; ++k)
@@ -124,6 +125,11 @@ bool vtkROS2ModelNode::ReadXML(vtkXMLDataElement* element)
   if (element->GetScalarAttribute("visibility", visibility))
   {
     this->Visibility = visibility != 0;
+  }
+  int scalarVisibility = 0;
+  if (element->GetScalarAttribute("scalarVisibility", scalarVisibility))
+  {
+    this->ScalarVisibility = scalarVisibility != 0;
   }
   if (const char* text = element->GetAttribute("matrixModelToParent"))
   {
@@ -149,5 +155,6 @@ void vtkROS2ModelNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Color: " << this->Color[0] << " " << this->Color[1] << " " << this->Color[2] << "\n";
   os << indent << "Opacity: " << this->Opacity << "\n";
   os << indent << "Visibility: " << this->Visibility << "\n";
+  os << indent << "ScalarVisibility: " << this->ScalarVisibility << "\n";
   os << indent << "PolyData: " << this->PolyData << "\n";
 }

@@ -42,6 +42,11 @@ public:
   vtkSetMacro(Visibility, bool);
   vtkGetMacro(Visibility, bool);
   vtkBooleanMacro(Visibility, bool);
+  /// Colour by the polydata's active point scalars (per-vertex colours of a mesh) instead of
+  /// Color, as Slicer's model display node does. Off by default.
+  vtkSetMacro(ScalarVisibility, bool);
+  vtkGetMacro(ScalarVisibility, bool);
+  vtkBooleanMacro(ScalarVisibility, bool);
 
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
@@ -55,6 +60,7 @@ protected:
   double Color[3] = { 0.8, 0.8, 0.8 };
   double Opacity = 1.0;
   bool Visibility = true;
+  bool ScalarVisibility = false;
 
 private:
   vtkROS2ModelNode(const vtkROS2ModelNode&) = delete;

@@ -16,8 +16,11 @@
 #include "vtkObjectFactory.h"
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
+#include "vtkXMLDataElement.h"
 
+#include <algorithm>
 #include <chrono>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -25,6 +28,9 @@ namespace
 {
 const char* const ROS2NodeRole = "ros2Node";
 const char* const DescriptionRole = "robotDescription";
+const char* const BaseRole = "robotBase";
+const char* const LinkRole = "robotLink";
+const char* const LinkAttribute = "ros2vtk.link";
 constexpr double MillimetresPerMetre = 1000.0;
 
 // Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
@@ -76,10 +82,17 @@ public:
   int NumberOfLoads = 0;
   double LastLoadDuration = 0.0;
 
-  // What this robot put in the scene.
+  // What this robot put in the scene. The base and the link nodes it owns are saved with the
+  // scene and kept across reloads (a user's placement, and nodes hung under a link, stay); the
+  // models are rebuilt from the description each time.
   vtkWeakPointer<vtkROS2TransformNode> Base;
-  std::vector<std::pair<std::string, vtkWeakPointer<vtkROS2TransformNode>>> Links;
-  std::vector<vtkWeakPointer<vtkROS2SceneNode>> OwnedLinkNodes; // lookups created here, identity nodes
+  struct LinkNode
+  {
+    std::string Link;
+    vtkWeakPointer<vtkROS2TransformNode> Node;
+    bool Owned; // false: someone else's lookup of the same frames, shared and left in place
+  };
+  std::vector<LinkNode> Links;
   std::vector<vtkWeakPointer<vtkROS2ModelNode>> Models;
 
   std::string EffectiveFixedFrame() const
@@ -238,7 +251,7 @@ std::string vtkROS2RobotNode::GetLinkNames() const
   std::string names;
   for (const auto& link : this->Internals->Links)
   {
-    names += (names.empty() ? "" : " ") + link.first;
+    names += (names.empty() ? "" : " ") + link.Link;
   }
   return names;
 }
@@ -247,9 +260,9 @@ vtkROS2TransformNode* vtkROS2RobotNode::GetLinkTransformNode(const char* link)
 {
   for (const auto& entry : this->Internals->Links)
   {
-    if (link && entry.first == link)
+    if (link && entry.Link == link)
     {
-      return entry.second;
+      return entry.Node;
     }
   }
   return nullptr;
@@ -260,7 +273,7 @@ int vtkROS2RobotNode::GetNumberOfLinksTracked()
   int tracked = 0;
   for (const auto& entry : this->Internals->Links)
   {
-    vtkROS2TransformNode* node = entry.second;
+    vtkROS2TransformNode* node = entry.Node;
     auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
     if (node && (!lookup || std::string(lookup->GetLookupStatus()) == "ok"))
     {
@@ -437,7 +450,7 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
     this->Modified();
     return false;
   }
-  this->Unload();
+  this->RemoveModels();
   internals.Visuals = std::move(visuals);
   internals.LoadedDescription = description;
   internals.LoadedBaseFolder = options.base_folder;
@@ -446,20 +459,61 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
 
   vtkROS2Scene* scene = this->Scene;
   const std::string& name = internals.RobotName;
-  vtkNew<vtkROS2TransformNode> base;
-  base->SetName((name + ":base").c_str());
-  scene->AddNode(base);
-  internals.Base = base;
-  internals.OwnedLinkNodes.emplace_back(base.GetPointer());
+  if (!internals.Base)
+  {
+    vtkNew<vtkROS2TransformNode> base;
+    base->SetName((name + ":base").c_str());
+    scene->AddNode(base);
+    internals.Base = base;
+    this->SetNodeReferenceID(BaseRole, base->GetID());
+  }
+  vtkROS2TransformNode* base = internals.Base;
 
+  // Link nodes of the previous load (or of a restored scene) are kept for links that are still
+  // there with the same frames; the others go before any new lookup is made.
   const std::string fixedFrame = internals.EffectiveFixedFrame();
+  std::set<std::string> links;
+  for (const ros2vtk::robot::LinkVisuals& link : internals.Visuals.links)
+  {
+    links.insert(link.link);
+  }
+  std::vector<vtkInternals::LinkNode> previous;
+  previous.swap(internals.Links);
+  std::vector<vtkInternals::LinkNode> kept;
+  for (const vtkInternals::LinkNode& entry : previous)
+  {
+    if (!entry.Owned || !entry.Node)
+    {
+      continue;
+    }
+    const std::string frame = internals.TfPrefix + entry.Link;
+    auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(entry.Node);
+    const bool framesMatch = frame == fixedFrame
+      ? lookup == nullptr
+      : lookup && fixedFrame == lookup->GetParentID() && frame == lookup->GetChildID();
+    if (links.count(entry.Link) && framesMatch)
+    {
+      kept.push_back(entry);
+    }
+    else
+    {
+      this->RemoveLinkNode(entry.Node);
+    }
+  }
+
   vtkNew<vtkMatrix4x4> modelToLink;
   for (const ros2vtk::robot::LinkVisuals& link : internals.Visuals.links)
   {
     const std::string frame = internals.TfPrefix + link.link;
     vtkSmartPointer<vtkROS2TransformNode> linkNode;
     bool owned = true;
-    if (frame == fixedFrame)
+    auto reused = std::find_if(kept.begin(), kept.end(),
+      [&link](const vtkInternals::LinkNode& entry) { return entry.Link == link.link; });
+    if (reused != kept.end())
+    {
+      linkNode = reused->Node.GetPointer();
+    }
+    else if (frame == fixedFrame)
     {
       linkNode = vtkSmartPointer<vtkROS2TransformNode>::New(); // the fixed frame itself: identity
       scene->AddNode(linkNode);
@@ -476,17 +530,19 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
     {
       continue; // CreateAndAddTf2LookupNode said why
     }
-    if (owned)
+    if (owned && reused == kept.end())
     {
       linkNode->SetName((name + ":" + link.link).c_str());
+      linkNode->SetAttribute(LinkAttribute, link.link.c_str());
       linkNode->SetParentTransformNodeID(base->GetID());
-      internals.OwnedLinkNodes.emplace_back(linkNode.GetPointer());
+      this->AddNodeReferenceID(LinkRole, linkNode->GetID());
     }
-    internals.Links.emplace_back(link.link, linkNode.GetPointer());
+    internals.Links.push_back({ link.link, linkNode.GetPointer(), owned });
     for (size_t i = 0; i < link.visuals.size(); ++i)
     {
       const ros2vtk::robot::LinkVisual& visual = link.visuals[i];
       vtkNew<vtkROS2ModelNode> model;
+      model->SetSaveWithScene(false); // geometry comes from the description, not the scene file
       std::ostringstream modelName;
       modelName << name << ":" << link.link << ":visual" << i;
       model->SetName(modelName.str().c_str());
@@ -496,8 +552,11 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
       const auto color = visual.display_color();
       model->SetColor(color[0], color[1], color[2]);
       model->SetOpacity(color[3]);
+      // A mesh coloured per vertex (Collada, PLY, OBJ) shows its colours unless the URDF gives
+      // a material, as in RViz 2.
+      model->SetScalarVisibility(visual.has_vertex_colors && !visual.has_material_color);
       model->SetAttribute("ros2vtk.robot", name.c_str());
-      model->SetAttribute("ros2vtk.link", link.link.c_str());
+      model->SetAttribute(LinkAttribute, link.link.c_str());
       if (!visual.mesh_path.empty())
       {
         model->SetAttribute("ros2vtk.meshFile", visual.mesh_path.c_str());
@@ -523,34 +582,60 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2RobotNode::Unload()
+void vtkROS2RobotNode::RemoveModels()
 {
   vtkInternals& internals = *this->Internals;
-  vtkROS2Scene* scene = this->Scene;
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
   for (const auto& model : internals.Models)
   {
-    if (model && scene && model->GetScene() == scene)
+    if (model && this->Scene && model->GetScene() == this->Scene)
     {
-      scene->RemoveNode(model);
-    }
-  }
-  for (const auto& weak : internals.OwnedLinkNodes)
-  {
-    vtkROS2SceneNode* node = weak;
-    auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
-    if (lookup && rosNode && rosNode->GetTf2LookupNodeByParentChild(lookup->GetParentID(), lookup->GetChildID()) == lookup)
-    {
-      rosNode->RemoveAndDeleteTf2LookupNode(lookup->GetParentID(), lookup->GetChildID());
-    }
-    else if (node && scene && node->GetScene() == scene)
-    {
-      scene->RemoveNode(node);
+      this->Scene->RemoveNode(model);
     }
   }
   internals.Models.clear();
-  internals.OwnedLinkNodes.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::RemoveLinkNode(vtkROS2TransformNode* node)
+{
+  if (!node)
+  {
+    return;
+  }
+  this->RemoveNodeReferenceID(LinkRole, node->GetID());
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
+  if (lookup && rosNode && rosNode->GetTf2LookupNodeByParentChild(lookup->GetParentID(), lookup->GetChildID()) == lookup)
+  {
+    rosNode->RemoveAndDeleteTf2LookupNode(lookup->GetParentID(), lookup->GetChildID());
+  }
+  else if (this->Scene && node->GetScene() == this->Scene)
+  {
+    this->Scene->RemoveNode(node);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::Unload()
+{
+  vtkInternals& internals = *this->Internals;
+  this->RemoveModels();
+  for (const vtkInternals::LinkNode& entry : internals.Links)
+  {
+    if (entry.Owned)
+    {
+      this->RemoveLinkNode(entry.Node);
+    }
+  }
   internals.Links.clear();
+  if (vtkROS2TransformNode* base = internals.Base)
+  {
+    this->RemoveNodeReferenceIDs(BaseRole);
+    if (this->Scene && base->GetScene() == this->Scene)
+    {
+      this->Scene->RemoveNode(base);
+    }
+  }
   internals.Base = nullptr;
   internals.Loaded = false;
   internals.State = "waiting for robot_description";
@@ -592,6 +677,100 @@ void vtkROS2RobotNode::OnRemovedFromScene()
   this->Unload();
   this->ReleaseSource();
   this->Superclass::OnRemovedFromScene();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  const vtkInternals& internals = *this->Internals;
+  element->SetAttribute("robotName", internals.RobotName.c_str());
+  element->SetAttribute("descriptionSource", internals.Source.c_str());
+  element->SetAttribute("parameterNode", internals.ParameterNodeName.c_str());
+  element->SetAttribute("parameterName", internals.ParameterName.c_str());
+  element->SetAttribute("topic", internals.Topic.c_str());
+  element->SetIntAttribute("ownsSource", internals.OwnsSourceNode ? 1 : 0);
+  element->SetAttribute("fixedFrame", internals.FixedFrame.c_str());
+  element->SetAttribute("tfPrefix", internals.TfPrefix.c_str());
+  element->SetAttribute("meshBaseFolder", internals.MeshBaseFolder.c_str());
+  for (const std::string& folder : internals.SearchPaths)
+  {
+    vtkNew<vtkXMLDataElement> path; // one element each: folders may hold spaces
+    path->SetName("MeshSearchPath");
+    path->SetAttribute("folder", folder.c_str());
+    element->AddNestedElement(path);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  vtkInternals& internals = *this->Internals;
+  auto text = [element](const char* name) {
+    const char* value = element->GetAttribute(name);
+    return std::string(value ? value : "");
+  };
+  internals.RobotName = text("robotName");
+  internals.Source = text("descriptionSource");
+  internals.ParameterNodeName = text("parameterNode");
+  internals.ParameterName = text("parameterName");
+  internals.Topic = text("topic");
+  internals.FixedFrame = text("fixedFrame");
+  internals.TfPrefix = text("tfPrefix");
+  internals.MeshBaseFolder = text("meshBaseFolder");
+  int owns = 0;
+  element->GetScalarAttribute("ownsSource", owns);
+  internals.OwnsSourceNode = owns != 0;
+  if (internals.RobotName.empty() || (internals.Source != "parameter" && internals.Source != "topic"))
+  {
+    vtkErrorMacro("ReadXML: robot node '" << text("id") << "' needs a robotName and a descriptionSource "
+                                          << "(parameter or topic)");
+    return false;
+  }
+  internals.SearchPaths.clear();
+  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* child = element->GetNestedElement(i);
+    const char* folder = child->GetAttribute("folder");
+    if (child->GetName() && std::string(child->GetName()) == "MeshSearchPath" && folder && *folder)
+    {
+      internals.SearchPaths.emplace_back(folder);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::OnSceneRestored()
+{
+  this->Superclass::OnSceneRestored();
+  vtkInternals& internals = *this->Internals;
+  // The base and link nodes came back with the scene; the models come back with the description,
+  // which the source (the parameter fetched again, the transient-local topic) delivers anew.
+  internals.Base = vtkROS2TransformNode::SafeDownCast(this->GetNodeReference(BaseRole));
+  internals.Links.clear();
+  for (int i = 0; i < this->GetNumberOfNodeReferences(LinkRole); ++i)
+  {
+    auto* node = vtkROS2TransformNode::SafeDownCast(this->GetNthNodeReference(LinkRole, i));
+    const char* link = node ? node->GetAttribute(LinkAttribute) : nullptr;
+    if (link && *link)
+    {
+      internals.Links.push_back({ link, node, true });
+    }
+  }
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  vtkROS2SceneNode* source = this->GetNodeReference(DescriptionRole);
+  if (!rosNode || !rosNode->IsCreated() || !source)
+  {
+    vtkErrorMacro("robot '" << internals.RobotName << "': restored without its ROS node or description source; "
+                            << "it will not load");
+    return;
+  }
+  this->FollowSource(rosNode, source);
 }
 
 //------------------------------------------------------------------------------

@@ -116,6 +116,13 @@ public:
   bool AttachToTopic(vtkROS2NodeNode* rosNode, const std::string& topic);
 #endif
 
+  /// Saved: the source, frames and mesh folders; the base and link transform nodes are saved as
+  /// nodes of their own. The models are not: on restore the robot loads again when its source
+  /// delivers the description (robot_state_publisher's parameter or latched topic).
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
+  void OnSceneRestored() override;
+
 protected:
   vtkROS2RobotNode();
   ~vtkROS2RobotNode() override;
@@ -130,7 +137,11 @@ private:
   void FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* source);
   /// Spin callback: loads a new description when the source brought one.
   int CheckForNewDescription();
+  /// Removes everything this robot built (models, its own link nodes, the base).
   void Unload();
+  void RemoveModels();
+  /// Removes one of its link nodes (through the ROS node when it is a tf2 lookup).
+  void RemoveLinkNode(vtkROS2TransformNode* node);
   void ReleaseSource();
 
   class vtkInternals;

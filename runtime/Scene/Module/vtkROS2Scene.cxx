@@ -251,6 +251,10 @@ std::string vtkROS2Scene::WriteToXMLString()
   root->SetIntAttribute("version", SceneFormatVersion);
   for (const auto& node : this->Internals->Nodes)
   {
+    if (!node->GetSaveWithScene())
+    {
+      continue;
+    }
     vtkNew<vtkXMLDataElement> element;
     element->SetName(node->GetXMLTagName());
     node->WriteXML(element);

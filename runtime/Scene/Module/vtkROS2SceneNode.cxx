@@ -292,6 +292,11 @@ void vtkROS2SceneNode::WriteXML(vtkXMLDataElement* element)
   {
     for (const auto& id : reference.second)
     {
+      const vtkROS2SceneNode* referenced = this->Scene ? this->Scene->GetNodeByID(id.c_str()) : nullptr;
+      if (referenced && !referenced->GetSaveWithScene())
+      {
+        continue; // not in the file: the reference would dangle when restored
+      }
       vtkXMLDataElement* child = vtkXMLDataElement::New();
       child->SetName("Reference");
       child->SetAttribute("role", reference.first.c_str());

@@ -56,6 +56,12 @@ public:
   /// Space-separated roles that hold at least one reference, sorted.
   const char* GetNodeReferenceRoles();
 
+  /// Whether the node goes into scene files (MRML's SaveWithScene). Off for nodes that are
+  /// rebuilt from another node's state (a robot's links and models): references to such nodes
+  /// are left out of the file too. On by default.
+  void SetSaveWithScene(bool save) { this->SaveWithScene = save; }
+  bool GetSaveWithScene() const { return this->SaveWithScene; }
+
   /// Serializes the node's properties (ID, name, attributes, references, then the subclass's
   /// own) into `element`. Subclasses call Superclass::WriteXML first.
   virtual void WriteXML(vtkXMLDataElement* element);
@@ -86,6 +92,7 @@ protected:
   virtual void OnRemovedFromScene() {}
 
   vtkROS2Scene* Scene = nullptr;
+  bool SaveWithScene = true;
 
 private:
   vtkROS2SceneNode(const vtkROS2SceneNode&) = delete;
