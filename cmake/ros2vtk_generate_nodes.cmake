@@ -8,7 +8,8 @@ ros2vtk_generate_nodes.cmake — VTK publisher/subscriber node classes from mapp
     MESSAGES <target made by ros2vtk_generate_messages>
     MAPPINGS <rules.toml> ...
     [MODULE_NAME <namespace::Name>]   # default: ${PROJECT_NAME}::<target>
-    [PYTHON])
+    [PYTHON]
+    [NO_INSTALL])
 
 Generates, for every mapping rule of ``MAPPINGS`` (format: msg_specs/mappings/README.md), the
 wrapped classes ``vtkROS2Publisher<Short>Node`` / ``vtkROS2Subscriber<Short>Node``, the free
@@ -27,7 +28,11 @@ library target (an ALIAS when VTK names the real target after ``MODULE_NAME``).
   The VTK module name (``ros2vtk::Nodes`` for the shipped module).
 ``PYTHON``
   Also wrap the module for Python: ``<build>/python/ros2vtk/<target>`` next to the runtime's
-  modules; ``import ros2vtk`` imports it and thereby registers its classes.
+  modules; ``import ros2vtk`` imports it and thereby registers its classes (from a downstream
+  build tree too: put ``<build>/python`` on ``PYTHONPATH`` next to the install's ``python``).
+``NO_INSTALL``
+  Build the module without install rules (the VTK module functions always write them), for
+  modules only tests use.
 
 The library registers its classes in the scene's node-class registry when it loads, and
 exports ``extern "C" void ros2vtk_register_<target>_nodes()`` to do it explicitly. Rules are
@@ -40,11 +45,11 @@ validated at build time: an unknown ROS type, kind or field path stops the build
     SPECS <file.msg|folder> ...
     [MAPPINGS <rules.toml> ...]
     [DEPENDENCIES <ros2vtk_generate_messages target> ...]
-    [PYTHON])
+    [PYTHON] [NO_INSTALL])
 
 The downstream convenience: ``ros2vtk_generate_messages(<target>Messages SPECS ...
 DEPENDENCIES ...)`` and, when ``MAPPINGS`` are given, ``ros2vtk_generate_nodes(<target>
-MESSAGES <target>Messages MAPPINGS ... [PYTHON])``. Without ``MAPPINGS`` the messages target is
+MESSAGES <target>Messages MAPPINGS ... [PYTHON] [NO_INSTALL])``. Without ``MAPPINGS`` the messages target is
 named ``<target>`` itself (types without a rule are still usable through the generic nodes).
 #]==]
 
@@ -59,13 +64,13 @@ set(_ROS2VTK_NODES_VTK_COMPONENTS CommonCore CommonDataModel CommonMath CommonTr
 function(ros2vtk_generate_nodes target)
   set(_r2v_fn "ros2vtk_generate_nodes")
   set(_r2v_where "(cmake/ros2vtk_generate_nodes.cmake)")
-  cmake_parse_arguments(PARSE_ARGV 1 _r2v "PYTHON" "MESSAGES;MODULE_NAME" "MAPPINGS")
-  if(NOT target OR target MATCHES "^(MESSAGES|MAPPINGS|MODULE_NAME|PYTHON)$")
+  cmake_parse_arguments(PARSE_ARGV 1 _r2v "PYTHON;NO_INSTALL" "MESSAGES;MODULE_NAME" "MAPPINGS")
+  if(NOT target OR target MATCHES "^(MESSAGES|MAPPINGS|MODULE_NAME|PYTHON|NO_INSTALL)$")
     message(FATAL_ERROR "${_r2v_fn}(): the first argument must be the target name ${_r2v_where}")
   endif()
   if(_r2v_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${_r2v_fn}(${target}): unknown arguments '${_r2v_UNPARSED_ARGUMENTS}' "
-      "(expected MESSAGES, MAPPINGS, MODULE_NAME, PYTHON) ${_r2v_where}")
+      "(expected MESSAGES, MAPPINGS, MODULE_NAME, PYTHON, NO_INSTALL) ${_r2v_where}")
   endif()
   if(_r2v_KEYWORDS_MISSING_VALUES)
     message(FATAL_ERROR "${_r2v_fn}(${target}): ${_r2v_KEYWORDS_MISSING_VALUES} given without "
@@ -96,7 +101,7 @@ function(ros2vtk_generate_nodes target)
   foreach(_r2v_entry IN LISTS _r2v_MAPPINGS)
     if(_r2v_entry MATCHES "^[A-Z][A-Z_]+$" AND NOT EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/${_r2v_entry}")
       message(FATAL_ERROR "${_r2v_fn}(${target}): unknown keyword '${_r2v_entry}' (expected "
-        "MESSAGES, MAPPINGS, MODULE_NAME, PYTHON) ${_r2v_where}")
+        "MESSAGES, MAPPINGS, MODULE_NAME, PYTHON, NO_INSTALL) ${_r2v_where}")
     endif()
   endforeach()
 
@@ -242,7 +247,12 @@ vtk_module_compile_options(${_r2v_MODULE_NAME}
   else()
     set(_r2v_wrap OFF)
   endif()
-  ros2vtk_add_vtk_module(MODULE_FILE "${_r2v_module_dir}/vtk.module" WRAP_PYTHON ${_r2v_wrap})
+  set(_r2v_no_install "")
+  if(_r2v_NO_INSTALL)
+    set(_r2v_no_install NO_INSTALL)
+  endif()
+  ros2vtk_add_vtk_module(MODULE_FILE "${_r2v_module_dir}/vtk.module" WRAP_PYTHON ${_r2v_wrap}
+    ${_r2v_no_install})
 
   # `<target>` names the library whatever VTK called the real target.
   get_target_property(_r2v_real "${_r2v_MODULE_NAME}" ALIASED_TARGET)
@@ -256,18 +266,22 @@ vtk_module_compile_options(${_r2v_MODULE_NAME}
     ROS2VTK_MAPPINGS "${_r2v_mappings}"
     ROS2VTK_ARGS_FILE "${_r2v_args_file}"
     ROS2VTK_OUTPUT_DIR "${_r2v_out}")
+  if(COMMAND _ros2vtk_target_werror)
+    _ros2vtk_target_werror(${_r2v_real})
+  endif()
 endfunction()
 
 function(ros2vtk_generate target)
   set(_r2v_fn "ros2vtk_generate")
-  cmake_parse_arguments(PARSE_ARGV 1 _r2v "PYTHON" "" "SPECS;MAPPINGS;DEPENDENCIES")
-  if(NOT target OR target MATCHES "^(SPECS|MAPPINGS|DEPENDENCIES|PYTHON)$")
+  cmake_parse_arguments(PARSE_ARGV 1 _r2v "PYTHON;NO_INSTALL" "" "SPECS;MAPPINGS;DEPENDENCIES")
+  if(NOT target OR target MATCHES "^(SPECS|MAPPINGS|DEPENDENCIES|PYTHON|NO_INSTALL)$")
     message(FATAL_ERROR "${_r2v_fn}(): the first argument must be the target name "
       "(cmake/ros2vtk_generate_nodes.cmake)")
   endif()
   if(_r2v_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${_r2v_fn}(${target}): unknown arguments '${_r2v_UNPARSED_ARGUMENTS}' "
-      "(expected SPECS, MAPPINGS, DEPENDENCIES, PYTHON; cmake/ros2vtk_generate_nodes.cmake)")
+      "(expected SPECS, MAPPINGS, DEPENDENCIES, PYTHON, NO_INSTALL; "
+      "cmake/ros2vtk_generate_nodes.cmake)")
   endif()
   if(NOT _r2v_SPECS)
     message(FATAL_ERROR "${_r2v_fn}(${target}): SPECS is required "
@@ -282,10 +296,12 @@ function(ros2vtk_generate target)
     return()
   endif()
   ros2vtk_generate_messages(${target}Messages SPECS ${_r2v_SPECS} ${_r2v_dependencies})
-  set(_r2v_python "")
-  if(_r2v_PYTHON)
-    set(_r2v_python PYTHON)
-  endif()
+  set(_r2v_options "")
+  foreach(_r2v_option PYTHON NO_INSTALL)
+    if(_r2v_${_r2v_option})
+      list(APPEND _r2v_options ${_r2v_option})
+    endif()
+  endforeach()
   ros2vtk_generate_nodes(${target} MESSAGES ${target}Messages MAPPINGS ${_r2v_MAPPINGS}
-    ${_r2v_python})
+    ${_r2v_options})
 endfunction()

@@ -3,12 +3,17 @@
 #
 # Installed layout (<prefix>):
 #   lib/                          libros2vtkMessage.a, libros2vtkMessages.a, libros2vtkConvert.a,
+#                                 libros2vtkWire.a, libros2vtkTf2.a, libros2vtkTf2Ros.a,
+#                                 libros2vtkRobotModel.a, libros2vtkRobotLoader.a,
 #                                 libros2vtkScene.so, libros2vtkNodes.so
-#   include/                      ros2vtk/wire/*, ros2vtk/convert/*, the generated message
-#                                 headers (ros2vtk/<package>/msg/*.hpp) and, from VTK's module
-#                                 install, include/ros2vtk/ (the scene and node classes)
+#   include/                      ros2vtk/{wire,convert,tf2,tf2_ros,robot}/*, the generated
+#                                 message headers (ros2vtk/<package>/msg/*.hpp) and, from VTK's
+#                                 module install, include/ros2vtk/ (the scene and node classes)
+#   python/ros2vtk/               the Python package (PYTHONPATH=<prefix>/python) with the
+#                                 wrapped modules, when built with ROS2VTK_WRAP_PYTHON
 #   lib/cmake/ros2vtk/            ros2vtkConfig.cmake (+ version), the exported targets, the VTK
-#                                 module properties and the downstream functions
+#                                 module properties (Python ones in <package>/) and the
+#                                 downstream functions
 #                                 (ros2vtk_generate*.cmake, ros2vtk_vtk.cmake)
 #   share/ros2vtk/generator/      the ros2vtk_gen Python package (run with PYTHONPATH=this folder)
 #   share/ros2vtk/templates/      its Jinja2 templates
@@ -24,11 +29,13 @@ include(CMakePackageConfigHelpers)
 
 set(ROS2VTK_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/ros2vtk")
 set(ROS2VTK_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/ros2vtk")
+set(ROS2VTK_INSTALL_PYTHONDIR "python")  # as MODULE_DESTINATION in cmake/ros2vtk_vtk.cmake
 
 # The plain libraries: exported under their own names (the generator names register functions
 # after the real target, e.g. ros2vtk_register_ros2vtkMessages_types); ros2vtkConfig.cmake adds
-# the ros2vtk::Message / ros2vtk::Messages / ros2vtk::Convert aliases the build tree has.
-set(_ros2vtk_exported_libraries ros2vtkMessage ros2vtkMessages ros2vtkConvert)
+# the ros2vtk::<Name> aliases the build tree has.
+set(_ros2vtk_exported_libraries ros2vtkMessage ros2vtkMessages ros2vtkConvert ros2vtkWire
+  ros2vtkTf2 ros2vtkTf2Ros ros2vtkRobotModel ros2vtkRobotLoader)
 install(TARGETS ${_ros2vtk_exported_libraries}
   EXPORT ros2vtkTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
@@ -46,10 +53,23 @@ export(EXPORT ros2vtkTargets
 install(DIRECTORY
     "${PROJECT_SOURCE_DIR}/runtime/Message/include/"
     "${PROJECT_SOURCE_DIR}/runtime/Convert/include/"
+    "${PROJECT_SOURCE_DIR}/runtime/Wire/include/"
+    "${PROJECT_SOURCE_DIR}/runtime/Tf2/include/"
+    "${PROJECT_SOURCE_DIR}/runtime/Tf2Ros/include/"
+    "${PROJECT_SOURCE_DIR}/runtime/Robot/include/"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 get_target_property(_ros2vtk_messages_out ros2vtkMessages ROS2VTK_OUTPUT_DIR)
 install(DIRECTORY "${_ros2vtk_messages_out}/include/"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+
+# The Python package's own files, next to the wrapped modules VTK installs in python/ros2vtk/.
+if(ROS2VTK_WRAP_PYTHON)
+  install(FILES
+      "${PROJECT_SOURCE_DIR}/python/ros2vtk/__init__.py"
+      "${PROJECT_SOURCE_DIR}/python/ros2vtk/__main__.py"
+      "${PROJECT_SOURCE_DIR}/python/ros2vtk/guidance.py"
+    DESTINATION "${ROS2VTK_INSTALL_PYTHONDIR}/ros2vtk")
+endif()
 
 # The generator, its templates, the shipped specs (those of ros2vtk::Messages) and mappings.
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/generator/ros2vtk_gen"
@@ -81,11 +101,12 @@ install(FILES
 
 # ros2vtkConfig.cmake + version.
 get_property(ROS2VTK_EXPORTED_VTK_PACKAGES GLOBAL PROPERTY ROS2VTK_EXPORTED_VTK_PACKAGES)
+set(ROS2VTK_INSTALLED_WRAP_PYTHON "${ROS2VTK_WRAP_PYTHON}")
 configure_package_config_file(
   "${PROJECT_SOURCE_DIR}/cmake/ros2vtkConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/ros2vtkConfig.cmake"
   INSTALL_DESTINATION "${ROS2VTK_INSTALL_CMAKEDIR}"
-  PATH_VARS ROS2VTK_INSTALL_DATADIR)
+  PATH_VARS ROS2VTK_INSTALL_DATADIR ROS2VTK_INSTALL_PYTHONDIR)
 write_basic_package_version_file(
   "${PROJECT_BINARY_DIR}/ros2vtkConfigVersion.cmake"
   VERSION "${PROJECT_VERSION}"

@@ -1,17 +1,21 @@
 // The downstream program: build a needle_guide_msgs/msg/NeedleGuide, put it on the wire (CDR,
 // as ROS 2 does) and read it back, then convert its pose with the generated converter into a
-// vtkMatrix4x4 in millimetres and back.
+// vtkMatrix4x4 in millimetres and back. Then the installed runtime libraries: where the guide
+// is in the world (ros2vtk::Tf2) and its topic's DDS name (ros2vtk::Wire).
 #include "needle_guideConvert.hpp"  // generated: ros2vtk::nodes::ROS2ToVTK / VTKToROS2
 
 #include <ros2vtk/needle_guide_msgs/msg/needle_guide.hpp>  // generated message type + CDR
+#include <ros2vtk/tf2/BufferCore.hpp>
 #include <ros2vtk/wire/CdrReader.hpp>
 #include <ros2vtk/wire/CdrWriter.hpp>
+#include <ros2vtk/wire/Names.hpp>
 
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 
 #include <cstdint>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 extern "C" void ros2vtk_register_needle_guide_nodes();
@@ -57,5 +61,41 @@ int main()
   }
   ros2vtk_register_needle_guide_nodes();
   std::printf("NeedleGuide OK\n");
+
+  // tf2: world -> base 1 m along x, base -> guide the guide's pose; the guide in the world.
+  ros2vtk::tf2::BufferCore buffer;
+  ros2vtk::tf2::TransformStamped base;
+  base.frame_id = "world";
+  base.child_frame_id = "base";
+  base.transform.translation = Eigen::Vector3d(1.0, 0.0, 0.0);
+  ros2vtk::tf2::TransformStamped tool;
+  tool.frame_id = "base";
+  tool.child_frame_id = "guide";
+  tool.transform.translation = Eigen::Vector3d(guide.pose.position.x, guide.pose.position.y,
+                                               guide.pose.position.z);
+  std::string error;
+  if (!buffer.set_transform(base, "needle_guide_demo", true, &error) ||
+      !buffer.set_transform(tool, "needle_guide_demo", true, &error))
+  {
+    std::fprintf(stderr, "set_transform failed: %s\n", error.c_str());
+    return 1;
+  }
+  const ros2vtk::tf2::LookupResult in_world =
+    buffer.lookup_transform("world", "guide", ros2vtk::tf2::kLatestTime);
+  if (!in_world.ok)
+  {
+    std::fprintf(stderr, "lookup_transform failed: %s\n", in_world.message.c_str());
+    return 1;
+  }
+  const Eigen::Vector3d& t = in_world.transform.translation;
+  std::printf("tf2 world->guide %.3f %.3f %.3f\n", t.x(), t.y(), t.z());
+
+  std::string topic;
+  if (!ros2vtk::wire::expand_topic_name("needle_guide", "needle_guide_demo", "/", topic, &error))
+  {
+    std::fprintf(stderr, "expand_topic_name failed: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("dds topic %s\n", ros2vtk::wire::topic_to_dds(topic).c_str());
   return 0;
 }

@@ -8,18 +8,25 @@
     logic.Spin()
 
 Every VTK-wrapped extension module in this package (the runtime's ``ros2vtkScene`` and any
-generated node module built next to it) is imported here and its ``vtk*`` classes are
-re-exported, so ``ros2vtk.vtkROS2Logic`` and the generated ``ros2vtk.vtkROS2PublisherStringNode``
-are reached the same way. Importing a generated module also registers its node classes, which is
+generated node module built next to it, or in a downstream build's ``python/ros2vtk/`` found on
+``sys.path``) is imported here and its ``vtk*`` classes are re-exported, so
+``ros2vtk.vtkROS2Logic`` and the generated ``ros2vtk.vtkROS2PublisherStringNode`` are reached
+the same way. Importing a generated module also registers its node classes, which is
 what makes ``CreateAndAddPublisherNode('String', ...)`` find them.
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.machinery
+import os
 import pkgutil
 from types import ModuleType
 from typing import Dict, List
+
+# A downstream project's wrapped node module lands in <its build>/python/ros2vtk/ (no
+# __init__.py there): with that folder's parent on sys.path, it joins this package.
+__path__ = pkgutil.extend_path(__path__, __name__)
 
 # The runtime's module first: generated modules depend on it.
 _CORE_MODULE = 'ros2vtkScene'
@@ -27,8 +34,15 @@ _CORE_MODULE = 'ros2vtkScene'
 
 def _extension_module_names() -> List[str]:
     """Names of the compiled modules of this package, core first, the rest sorted."""
-    names = sorted(info.name for info in pkgutil.iter_modules(__path__)
-                   if info.name.startswith('ros2vtk') and not info.ispkg)
+    names = set()
+    for folder in __path__:
+        for entry in (os.listdir(folder) if os.path.isdir(folder) else []):
+            # Longest suffix first (.cpython-311-x86_64-linux-gnu.so before .so).
+            suffix = next((s for s in importlib.machinery.EXTENSION_SUFFIXES
+                           if entry.endswith(s)), None)
+            if suffix and '.' not in entry[:-len(suffix)]:
+                names.add(entry[:-len(suffix)])
+    names = sorted(names)
     if _CORE_MODULE in names:
         names.remove(_CORE_MODULE)
         names.insert(0, _CORE_MODULE)

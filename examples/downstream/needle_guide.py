@@ -1,0 +1,76 @@
+"""The downstream node classes from Python: this project's wrapped module (ros2vtk.needle_guide,
+built with NEEDLE_GUIDE_PYTHON=ON) joins the installed ros2vtk package, and a NeedleGuide
+publisher and subscriber, made by short name through the node-class registry, exchange one
+guide pose over ROS 2 (the same process, loopback).
+
+    PYTHONPATH=<build>/python:<ros2vtk prefix>/python /usr/bin/python3 needle_guide.py
+
+Prints "NeedleGuide Python OK" and exits 0; any failure exits non-zero with the reason.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+
+import ros2vtk
+from vtkmodules.vtkCommonMath import vtkMatrix4x4
+
+
+def spin_until(logic, done, seconds: float = 20.0) -> bool:
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        logic.Spin()
+        if done():
+            return True
+        time.sleep(0.005)
+    return done()
+
+
+def main() -> int:
+    if 'needle_guide' not in ros2vtk.extension_modules:
+        print(f'the needle_guide module was not imported: {sorted(ros2vtk.extension_modules)} '
+              f'from {list(ros2vtk.__path__)}', file=sys.stderr)
+        return 1
+    publisher_class = ros2vtk.vtkROS2PublisherNeedleGuideNode  # re-exported by the package
+
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('NeedleGuide', '/needle_guide')
+    sub = node.CreateAndAddSubscriberNode('NeedleGuide', '/needle_guide')
+    if not isinstance(pub, publisher_class) \
+            or type(sub).__name__ != 'vtkROS2SubscriberNeedleGuideNode':
+        print(f'registry gave {type(pub).__name__} / {type(sub).__name__}', file=sys.stderr)
+        return 1
+    print(f'classes {type(pub).__name__} {type(sub).__name__} topic {pub.GetTopic()}')
+
+    if not spin_until(logic, lambda: pub.GetNumberOfMatchedSubscriptions() > 0
+                      and sub.GetNumberOfMatchedPublications() > 0):
+        print('publisher and subscriber never matched', file=sys.stderr)
+        return 1
+    matrix = vtkMatrix4x4()
+    matrix.SetElement(0, 3, 100.0)  # mm: 0.1 m on the wire
+    matrix.SetElement(1, 3, -20.0)
+    matrix.SetElement(2, 3, 35.0)
+    if pub.Publish(matrix) != 1:
+        print('Publish failed', file=sys.stderr)
+        return 1
+    if not spin_until(logic, lambda: sub.GetNumberOfMessages() >= 1):
+        print('no NeedleGuide message arrived', file=sys.stderr)
+        return 1
+    received = sub.GetLastMessage()
+    translation = [received.GetElement(row, 3) for row in range(3)]
+    print('received_mm ' + ' '.join(f'{value:.1f}' for value in translation))
+    if any(abs(got - want) > 1e-9 for got, want in zip(translation, (100.0, -20.0, 35.0))):
+        print(f'wrong translation {translation}', file=sys.stderr)
+        return 1
+    if '0.1' not in sub.GetLastMessageYAML():  # metres on the wire
+        print(f'unexpected YAML:\n{sub.GetLastMessageYAML()}', file=sys.stderr)
+        return 1
+    logic.GetScene().Clear()
+    print('NeedleGuide Python OK')
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
