@@ -296,6 +296,10 @@ def cmd_robot(args, logic, node) -> int:
                       'load_seconds': robot.GetLastLoadDuration(),
                       'model_links': [m.GetAttribute('ros2vtk.link') for m in models],
                       'others': {n: o.GetRobotState() for n, o in others.items()}}), flush=True)
+    if args.base_y and robot.GetBaseTransformNode():  # placed by the user: kept across reloads and saved with the scene
+        placement = vtk.vtkMatrix4x4()
+        placement.SetElement(1, 3, args.base_y)
+        robot.GetBaseTransformNode().SetMatrixTransformToParent(placement)
     matrix = vtk.vtkMatrix4x4()
 
     def world(r):
@@ -305,13 +309,34 @@ def cmd_robot(args, logic, node) -> int:
             links[link] = matrix_rows(matrix)
         return links
 
-    end = time.monotonic() + args.follow
-    next_snapshot = time.monotonic()
+    # Follow until --loads descriptions were loaded, then --follow seconds more.
+    start = time.monotonic()
+    end = start + args.follow if robot.GetNumberOfLoads() >= args.loads else start + args.seconds + args.follow
+    next_snapshot = start
+    restored = False
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.02)
-        if time.monotonic() >= next_snapshot:
+        now = time.monotonic()
+        if args.restore_after and not restored and now - start >= args.restore_after:
+            # The user saves the scene and opens it again: the robot comes back from the file and
+            # loads again from its live source.
+            xml = logic.GetScene().WriteToXMLString()
+            if not logic.GetScene().ReadFromXMLString(xml):
+                print(json.dumps({'error': 'scene file not restored'}), flush=True)
+                return 1
+            node = logic.GetDefaultROS2Node()
+            robot = node.GetRobotNodeByName(args.name)
+            restored = True
+            print(json.dumps({'restored': True, 'state': robot.GetRobotState(),
+                              'models_in_file': xml.count('vtkROS2ModelNode')}), flush=True)
+        if robot.GetNumberOfLoads() >= args.loads and end > now + args.follow:
+            end = now + args.follow
+        if now >= next_snapshot:
             next_snapshot += args.every
             print(json.dumps({'tracked': robot.GetNumberOfLinksTracked(), 'links': world(robot),
+                              'loads': robot.GetNumberOfLoads(), 'restored': restored,
+                              'state': robot.GetRobotState(), 'models': robot.GetNumberOfModelNodes(),
+                              'placeholders': robot.GetNumberOfPlaceholders(),
                               'others': {n: world(o) for n, o in others.items()}}), flush=True)
     return 0
 
@@ -355,6 +380,10 @@ def main() -> int:
     robot.add_argument('--also', action='append', default=[], help='NAME=TOPIC=PREFIX: another robot')
     robot.add_argument('--follow', type=float, default=8.0)
     robot.add_argument('--every', type=float, default=0.2)
+    robot.add_argument('--loads', type=int, default=1, help='--follow counts from this many loads')
+    robot.add_argument('--restore-after', type=float, default=0.0,
+                       help='save and reopen the scene this many seconds into following')
+    robot.add_argument('--base-y', type=float, default=0.0, help='mm: place the robot with its base transform')
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()

@@ -147,3 +147,67 @@ def test_two_robots_at_once_each_in_its_namespace_follow_their_own_motion(ros):
         for config in expected:
             trace = [round(matches(pick(snapshot), config['links']), 3) for snapshot in snapshots]
             assert min(trace) < TOLERANCE_MM, f"configuration {config['config']} never matched: {trace}"
+
+
+def shifted(config_links: dict, y_mm: float) -> dict:
+    """yourdfpy's link poses (m) with the robot's base moved by y_mm along y."""
+    return {link: [row[:3] + [row[3] + (y_mm / 1000.0 if i == 1 else 0.0)] for i, row in enumerate(rows)]
+            for link, rows in config_links.items()}
+
+
+@pytest.mark.parametrize('source', ['parameter', 'topic'])
+def test_robot_state_publisher_restarted_with_another_urdf_reloads_the_robot(ros, source):
+    assert UR5.exists(), f'example-robot-data missing from the venv ({UR5}): run scripts/setup.sh'
+    base_y = 300.0  # the user's placement of the robot survives the reload
+    ours = start_scene_robot(ros, '--seconds', '40', 'robot', 'arm', '--source', source, '--loads', '2',
+                             '--follow', '9', '--base-y', str(base_y), '--mesh-path', str(ARM_PACKAGE),
+                             '--mesh-base-folder', str(ARM.parent), prefix=ROBOT_DATA)
+    first = start_rsp(ros, ARM, '--configs', '1', '--hold', '3')
+    first_code, first_out, first_err = ros.finish(first, timeout=40)
+    assert first_code == 0, first_err
+    # robot_state_publisher comes back, same node name and topic, with another robot.
+    second = start_rsp(ros, UR5, '--configs', '2', '--hold', '2.5', '--first-hold', '5')
+    code, out, err = ros.finish(ours, timeout=90)
+    second_code, second_out, second_err = ros.finish(second, timeout=30)
+    assert code == 0, err
+    assert second_code == 0, second_err
+    lines = [json.loads(line) for line in out.splitlines()]
+    snapshots = [line for line in lines if 'loads' in line]
+    arm = [json.loads(line) for line in first_out.splitlines() if '"config"' in line]
+    ur5 = [json.loads(line) for line in second_out.splitlines() if '"config"' in line]
+    ur5_links = json.loads(second_out.splitlines()[0])['links']
+    before = [s for s in snapshots if s['loads'] == 1]
+    after = [s for s in snapshots if s['loads'] == 2]
+    assert before and after, [s['loads'] for s in snapshots]
+    assert sorted(after[-1]['links']) == sorted(ur5_links)
+    total, _ = visual_count(UR5)
+    assert after[-1]['models'] == total and after[-1]['placeholders'] == 0
+    best = min(matches(s['links'], shifted(arm[0]['links'], base_y)) for s in before)
+    assert best < TOLERANCE_MM, f'the first robot never matched (best {best})'
+    for config in ur5:
+        best = min(matches(s['links'], shifted(config['links'], base_y)) for s in after)
+        assert best < TOLERANCE_MM, f"UR5 configuration {config['config']} never matched (best {best})"
+
+
+def test_a_saved_scene_reopened_brings_the_robot_back_from_its_robot_state_publisher(ros):
+    base_y = -200.0
+    rsp = start_rsp(ros, ARM, '--configs', '3', '--hold', '3', '--first-hold', '5')
+    ours = start_scene_robot(ros, '--seconds', '30', 'robot', 'arm', '--source', 'parameter', '--follow', '11',
+                             '--restore-after', '1.0', '--base-y', str(base_y), '--mesh-path', str(ARM_PACKAGE),
+                             '--mesh-base-folder', str(ARM.parent))
+    code, out, err = ros.finish(ours, timeout=60)
+    rsp_code, rsp_out, rsp_err = ros.finish(rsp, timeout=30)
+    assert code == 0, err
+    assert rsp_code == 0, rsp_err
+    lines = [json.loads(line) for line in out.splitlines()]
+    restored = [line for line in lines if 'restored' in line and 'links' not in line]
+    assert len(restored) == 1 and restored[0]['models_in_file'] == 0, restored
+    after = [line for line in lines if line.get('restored') is True and 'links' in line]
+    loaded = [s for s in after if s['state'] == 'loaded']
+    assert loaded, [s['state'] for s in after]
+    total, _ = visual_count(ARM)
+    assert loaded[-1]['models'] == total and loaded[-1]['loads'] == 1
+    expected = [json.loads(line) for line in rsp_out.splitlines() if '"config"' in line]
+    for config in expected[1:]:  # the configurations held after the scene was reopened
+        best = min(matches(s['links'], shifted(config['links'], base_y)) for s in loaded)
+        assert best < TOLERANCE_MM, f"configuration {config['config']} never matched after restore (best {best})"

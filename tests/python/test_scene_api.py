@@ -196,3 +196,8 @@ def test_scene_file_restores_tf2_parameter_transform_and_model_nodes(logic, ros2
     assert parameters is not None and parameters.GetParameterNames() == 'robot_description'
     model = logic.GetScene().GetNodeByID(model.GetID())
     assert model.GetColor() == (0.1, 0.2, 0.3) and model.GetScalarVisibility()
+    # The restored lookup listens to tf again (the wire side: tests/interop/test_scene_robot.py).
+    import vtk
+    tool = node.CreateAndAddTf2BroadcasterNode('world', 'tool')
+    assert tool.Broadcast(vtk.vtkMatrix4x4())
+    assert spin_until(logic, lambda: lookup.GetLookupStatus() == 'ok')

@@ -445,6 +445,11 @@ void vtkROS2NodeNode::OnSceneRestored()
   {
     this->Create(this->Internals->NodeName.c_str(), this->Internals->NodeNamespace.c_str());
   }
+  // Restored lookups need /tf and /tf_static, which CreateAndAddTf2LookupNode would subscribe.
+  if (this->IsCreated() && this->GetNumberOfNodeReferences(Tf2LookupRole) > 0)
+  {
+    this->GetTf2Buffer();
+  }
 }
 
 //------------------------------------------------------------------------------
