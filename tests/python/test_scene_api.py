@@ -201,3 +201,17 @@ def test_scene_file_restores_tf2_parameter_transform_and_model_nodes(logic, ros2
     tool = node.CreateAndAddTf2BroadcasterNode('world', 'tool')
     assert tool.Broadcast(vtk.vtkMatrix4x4())
     assert spin_until(logic, lambda: lookup.GetLookupStatus() == 'ok')
+
+
+def test_a_ros_node_added_after_spins_is_spun(logic, ros2vtk):
+    # The logic keeps its list of ROS nodes between spins; adding a node refreshes it. (Removing
+    # one while another lives is left out: Fast DDS 2.9 may crash deleting one of several
+    # participants of a process, eProsima/Fast-DDS#5034.)
+    logic.GetDefaultROS2Node()
+    logic.Spin()
+    second = ros2vtk.vtkROS2NodeNode()
+    logic.GetScene().AddNode(second)
+    assert second.Create('second_node', '')
+    sub = second.CreateAndAddSubscriberNode('std_msgs/msg/String', '/py_second')
+    pub = logic.GetDefaultROS2Node().CreateAndAddPublisherNode('String', '/py_second')
+    assert spin_until(logic, lambda: pub.Publish('hello') and sub.GetNumberOfMessages() > 0)

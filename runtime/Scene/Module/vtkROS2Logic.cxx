@@ -52,12 +52,29 @@ public:
     }
   }
 
-  std::vector<vtkROS2NodeNode*> CreatedNodes() const
+  // The scene's ROS nodes, found again only when nodes were added or removed: a spin must not
+  // walk every link and model node of every robot to find the one or two ROS nodes.
+  std::vector<vtkWeakPointer<vtkROS2NodeNode>> RosNodes;
+  bool RosNodesStale = true;
+  vtkNew<vtkCallbackCommand> SceneCallback;
+
+  std::vector<vtkROS2NodeNode*> CreatedNodes()
   {
-    std::vector<vtkROS2NodeNode*> nodes;
-    for (int i = 0; i < this->Scene->GetNumberOfNodes(); ++i)
+    if (this->RosNodesStale)
     {
-      auto* node = vtkROS2NodeNode::SafeDownCast(this->Scene->GetNthNode(i));
+      this->RosNodes.clear();
+      for (int i = 0; i < this->Scene->GetNumberOfNodes(); ++i)
+      {
+        if (auto* node = vtkROS2NodeNode::SafeDownCast(this->Scene->GetNthNode(i)))
+        {
+          this->RosNodes.emplace_back(node);
+        }
+      }
+      this->RosNodesStale = false;
+    }
+    std::vector<vtkROS2NodeNode*> nodes;
+    for (vtkROS2NodeNode* node : this->RosNodes)
+    {
       if (node && node->IsCreated())
       {
         nodes.push_back(node);
@@ -73,6 +90,12 @@ vtkStandardNewMacro(vtkROS2Logic);
 vtkROS2Logic::vtkROS2Logic()
   : Internals(new vtkInternals)
 {
+  this->Internals->SceneCallback->SetClientData(this->Internals.get());
+  this->Internals->SceneCallback->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
+    static_cast<vtkInternals*>(clientData)->RosNodesStale = true;
+  });
+  this->Internals->Scene->AddObserver(vtkROS2Scene::NodeAddedEvent, this->Internals->SceneCallback);
+  this->Internals->Scene->AddObserver(vtkROS2Scene::NodeRemovedEvent, this->Internals->SceneCallback);
   this->Internals->TimerCallback->SetClientData(this);
   this->Internals->TimerCallback->SetCallback(
     [](vtkObject*, unsigned long, void* clientData, void* callData) {

@@ -27,7 +27,7 @@ class vtkROS2Scene::vtkInternals
 {
 public:
   std::vector<vtkSmartPointer<vtkROS2SceneNode>> Nodes; // in the order they were added
-  std::map<std::string, vtkROS2SceneNode*> ByID;
+  std::map<std::string, vtkROS2SceneNode*, std::less<>> ByID; // less<>: find(const char*) copies nothing
   std::map<std::string, int> NextIndexByClass; // for `<ClassName><n>` IDs
 
   std::string UniqueID(const std::string& className)

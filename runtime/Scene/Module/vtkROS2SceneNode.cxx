@@ -16,7 +16,7 @@ public:
   std::string ID;
   std::string Name;
   std::map<std::string, std::string> Attributes;
-  std::map<std::string, std::vector<std::string>> References; // role -> IDs, in order
+  std::map<std::string, std::vector<std::string>, std::less<>> References; // role -> IDs, in order
   std::string Scratch; // storage for the space-separated lists returned as const char*
 };
 

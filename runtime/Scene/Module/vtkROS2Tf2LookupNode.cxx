@@ -87,7 +87,7 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
   this->LastStamp = static_cast<double>(result.stamp) * 1e-9;
   const Eigen::Isometry3d isometry = result.isometry();
   const double scale = this->ScaleLengths ? ros2vtk::convert::kMillimetresPerMetre : 1.0;
-  vtkNew<vtkMatrix4x4> matrix;
+  vtkMatrix4x4* matrix = this->LookupMatrix; // reused: one lookup per link at every spin
   for (int i = 0; i < 3; ++i)
   {
     for (int j = 0; j < 3; ++j)

@@ -8,6 +8,9 @@
 #include "ros2vtkSceneModule.h" // for export macro
 #include "vtkROS2TransformNode.h"
 
+#include "vtkMatrix4x4.h" // for the vtkNew member
+#include "vtkNew.h"       // for vtkNew
+
 #include <string> // for std::string
 
 class vtkROS2NodeNode;
@@ -68,6 +71,7 @@ protected:
   std::string LastError;
   double LastStamp = 0.0;
   long long LastStampNanoseconds = 0;
+  vtkNew<vtkMatrix4x4> LookupMatrix; // scratch for UpdateFromBuffer
 
 private:
   vtkROS2Tf2LookupNode(const vtkROS2Tf2LookupNode&) = delete;

@@ -17,12 +17,15 @@ namespace {
 
 /// tf2's validateFrameId for lookups: empty or '/'-prefixed ids are invalid arguments, unknown
 /// ids a lookup error. Returns kNoFrame and fills `result` on failure.
-FrameId validate_frame_id(const FrameTable& frames, const char* function_name,
+FrameId validate_frame_id(const FrameTable& frames, const char* function_name, const char* argument,
   const std::string& frame, LookupResult& result)
 {
+  // The "<function> argument <name>" wording is built only on failure: lookups run for every
+  // link at every spin.
+  auto where = [function_name, argument] { return std::string(function_name) + " argument " + argument; };
   if (frame.empty() || frame[0] == '/') {
     result.error = Tf2Error::InvalidArgument;
-    result.message = "Invalid argument \"" + frame + "\" passed to " + function_name +
+    result.message = "Invalid argument \"" + frame + "\" passed to " + where() +
       (frame.empty() ? " - in tf2 frame_ids cannot be empty"
                      : " - in tf2 frame_ids cannot start with a '/'");
     return kNoFrame;
@@ -30,7 +33,7 @@ FrameId validate_frame_id(const FrameTable& frames, const char* function_name,
   const FrameId id = frames.ids.find(frame);
   if (id == kNoFrame) {
     result.error = Tf2Error::Lookup;
-    result.message = "\"" + frame + "\" passed to " + function_name + " does not exist.";
+    result.message = "\"" + frame + "\" passed to " + where() + " does not exist.";
   }
   return id;
 }
@@ -77,7 +80,10 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
     }
     return false;
   }
-  frames_->authorities[child] = authority;
+  std::string& stored_authority = frames_->authorities[child];
+  if (stored_authority != authority) {
+    stored_authority = authority; // usually the same one: no copy per transform
+  }
   return true;
 }
 
@@ -98,14 +104,11 @@ LookupResult BufferCore::lookup_locked(const std::string& target_frame,
     return result;
   }
 
-  const std::string prefix(function_name);
-  const FrameId target = validate_frame_id(*frames_, (prefix + " argument target_frame").c_str(),
-    target_frame, result);
+  const FrameId target = validate_frame_id(*frames_, function_name, "target_frame", target_frame, result);
   if (target == kNoFrame) {
     return result;
   }
-  const FrameId source = validate_frame_id(*frames_, (prefix + " argument source_frame").c_str(),
-    source_frame, result);
+  const FrameId source = validate_frame_id(*frames_, function_name, "source_frame", source_frame, result);
   if (source == kNoFrame) {
     return result;
   }
@@ -137,12 +140,12 @@ LookupResult BufferCore::lookup_transform(const std::string& target_frame, TimeP
   result.source_frame = source_frame;
   // tf2 validates all three names before looking anything up.
   const std::pair<const char*, const std::string*> arguments[] = {
-    { "lookupTransform argument target_frame", &target_frame },
-    { "lookupTransform argument source_frame", &source_frame },
-    { "lookupTransform argument fixed_frame", &fixed_frame },
+    { "target_frame", &target_frame },
+    { "source_frame", &source_frame },
+    { "fixed_frame", &fixed_frame },
   };
-  for (const auto& [function_name, frame] : arguments) {
-    if (validate_frame_id(*frames_, function_name, *frame, result) == kNoFrame) {
+  for (const auto& [argument, frame] : arguments) {
+    if (validate_frame_id(*frames_, "lookupTransform", argument, *frame, result) == kNoFrame) {
       return result;
     }
   }

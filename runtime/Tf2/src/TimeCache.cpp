@@ -36,6 +36,11 @@ bool TimeCache::insert(const TransformRecord& record)
     span(records_.back().stamp, record.stamp) > static_cast<std::uint64_t>(cache_time_)) {
     return false; // older than (newest - cache_time)
   }
+  if (records_.empty() || record.stamp > records_.back().stamp) {
+    records_.push_back(record); // the usual case: newer than everything held
+    prune();
+    return true;
+  }
   // After every sample with a stamp <= the new one: equal stamps stay in arrival order.
   auto position = std::upper_bound(records_.begin(), records_.end(), record.stamp,
     [](TimePoint stamp, const TransformRecord& stored) { return stamp < stored.stamp; });

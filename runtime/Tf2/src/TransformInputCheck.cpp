@@ -42,21 +42,22 @@ CheckedTransform check_transform_input(const TransformStamped& input, const std:
   result.parent = strip_leading_slash(input.frame_id);
   result.child = strip_leading_slash(input.child_frame_id);
   result.transform = input.transform;
-  const std::string quoted_authority = "\"" + authority + "\"";
-  const std::string quoted_child = "\"" + result.child + "\"";
+  // Quoted names only for a message: every /tf transform passes here.
+  const auto quoted_authority = [&authority] { return "\"" + authority + "\""; };
+  const auto quoted_child = [&result] { return "\"" + result.child + "\""; };
 
   std::string& message = result.message;
   if (result.child == result.parent) {
-    add_line(message, "TF_SELF_TRANSFORM: Ignoring transform from authority " + quoted_authority +
-        " with frame_id and child_frame_id " + quoted_child + " because they are the same");
+    add_line(message, "TF_SELF_TRANSFORM: Ignoring transform from authority " + quoted_authority() +
+        " with frame_id and child_frame_id " + quoted_child() + " because they are the same");
   }
   if (result.child.empty()) {
     add_line(message, "TF_NO_CHILD_FRAME_ID: Ignoring transform from authority " +
-        quoted_authority + " because child_frame_id not set");
+        quoted_authority() + " because child_frame_id not set");
   }
   if (result.parent.empty()) {
-    add_line(message, "TF_NO_FRAME_ID: Ignoring transform with child_frame_id " + quoted_child +
-        " from authority " + quoted_authority + " because frame_id not set");
+    add_line(message, "TF_NO_FRAME_ID: Ignoring transform with child_frame_id " + quoted_child() +
+        " from authority " + quoted_authority() + " because frame_id not set");
   }
 
   const Eigen::Vector3d& t = input.transform.translation;
@@ -66,7 +67,7 @@ CheckedTransform check_transform_input(const TransformStamped& input, const std:
     // tf2 checks NaN only; an infinite value would poison every lookup through this frame just
     // the same, so it is refused under the same id.
     add_line(message, std::string("TF_NAN_INPUT: Ignoring transform for child_frame_id ") +
-        quoted_child + " from authority " + quoted_authority + " because of " +
+        quoted_child() + " from authority " + quoted_authority() + " because of " +
         (has_nan ? "a nan" : "an infinite") + " value in the transform " +
         format_numbers(input.transform, true));
   }
@@ -74,7 +75,7 @@ CheckedTransform check_transform_input(const TransformStamped& input, const std:
   const double squared_norm = q.squaredNorm();
   if (!(std::abs(squared_norm - 1.0) < kQuaternionNormTolerance)) {
     add_line(message, "TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id " +
-        quoted_child + " from authority " + quoted_authority +
+        quoted_child() + " from authority " + quoted_authority() +
         " because of an invalid quaternion in the transform " +
         format_numbers(input.transform, false));
   }

@@ -38,12 +38,14 @@ size_t TransformListener::drain(wire::Subscription& subscription, bool is_static
   std::vector<wire::MessagePtr> messages;
   subscription.take(messages);
   size_t inserted = 0;
+  // One transform and one reason for the whole batch: their strings keep their storage.
+  tf2::TransformStamped transform;
+  std::string reason;
   for (const auto& message : messages)
   {
     const auto* tf = static_cast<const tf2_msgs::msg::TFMessage*>(message.get());
     for (const auto& t : tf->transforms)
     {
-      tf2::TransformStamped transform;
       transform.frame_id = t.header.frame_id;
       transform.child_frame_id = t.child_frame_id;
       transform.stamp = tf2::time_from_sec_nanosec(t.header.stamp.sec, t.header.stamp.nanosec);
@@ -52,7 +54,6 @@ size_t TransformListener::drain(wire::Subscription& subscription, bool is_static
       // Eigen's constructor order is (w, x, y, z).
       transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w, t.transform.rotation.x,
                                                         t.transform.rotation.y, t.transform.rotation.z);
-      std::string reason;
       if (buffer_.set_transform(transform, "ros2vtk_tf_listener", is_static, &reason))
       {
         ++inserted;

@@ -132,9 +132,14 @@ size_t ParameterServer::process()
       ++answered;
     }
   }
+  std::vector<rcl::ParameterEvent> events = impl_->store.take_events();
+  if (events.empty())
+  {
+    return answered; // the usual spin: no clock read
+  }
   const auto now = std::chrono::system_clock::now().time_since_epoch();
   const auto nanoseconds = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count();
-  for (auto& event : impl_->store.take_events())
+  for (auto& event : events)
   {
     event.stamp.sec = static_cast<int32_t>(nanoseconds / 1000000000);
     event.stamp.nanosec = static_cast<uint32_t>(nanoseconds % 1000000000);
