@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace ros2vtk {
@@ -21,6 +19,20 @@ struct NewestLink
 };
 
 constexpr TimePoint kNoTimeYet = std::numeric_limits<TimePoint>::max();
+
+// Frames met on a walk. A vector, not a hash set: chains are a handful of frames long and a
+// lookup per link runs at every spin, so node allocations cost more than a linear search.
+using FramePath = std::vector<FrameId>;
+
+/// Adds `frame` to `path`; false when it was there already (the tree has a loop).
+bool visit(FramePath& path, FrameId frame)
+{
+  if (std::find(path.begin(), path.end(), frame) != path.end()) {
+    return false;
+  }
+  path.push_back(frame);
+  return true;
+}
 
 void take_min(TimePoint& common, TimePoint stamp)
 {
@@ -73,7 +85,7 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
 
   // Source towards its root, remembering each frame's newest link.
   std::vector<NewestLink> source_path;
-  std::unordered_set<FrameId> seen{ source };
+  FramePath seen{ source };
   TimePoint common = kNoTimeYet;
   for (FrameId frame = source;;) {
     const TimeCacheInterface* cache = frames_.cache(frame);
@@ -90,7 +102,7 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
       result.time = finish(common);
       return result;
     }
-    if (!seen.insert(parent).second) {
+    if (!visit(seen, parent)) {
       return loop_error();
     }
     frame = parent;
@@ -99,7 +111,7 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   // Target upwards until its parent lies on the source's path (or is the source).
   common = kNoTimeYet;
   FrameId common_parent = kNoFrame;
-  std::unordered_set<FrameId> seen_from_target{ target };
+  FramePath seen_from_target{ target };
   for (FrameId frame = target;;) {
     const TimeCacheInterface* cache = frames_.cache(frame);
     if (!cache) {
@@ -120,7 +132,7 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
       common_parent = parent;
       break;
     }
-    if (!seen_from_target.insert(parent).second) {
+    if (!visit(seen_from_target, parent)) {
       return loop_error();
     }
     frame = parent;
@@ -156,7 +168,7 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
 
   // Source towards its root: source_to[i] maps source into path[i].
   std::vector<Transform> source_to{ Transform::identity() };
-  std::unordered_map<FrameId, std::size_t> index_on_path{ { source, 0 } };
+  FramePath path{ source };
   SampleError source_stop; // why the source walk ended early, if it did
   for (FrameId frame = source; frame != target;) {
     const TimeCacheInterface* cache = frames_.cache(frame);
@@ -167,7 +179,7 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
     if (!cache->sample(result.time, link, &source_stop)) {
       break; // the target may still reach this frame from below
     }
-    if (!index_on_path.emplace(link.parent, source_to.size()).second) {
+    if (!visit(path, link.parent)) {
       return loop_error();
     }
     source_to.push_back(link.transform * source_to.back());
@@ -176,11 +188,11 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
 
   // Target upwards until it meets the source's path; target_to maps target into `frame`.
   Transform target_to = Transform::identity();
-  std::unordered_set<FrameId> seen_from_target{ target };
+  FramePath seen_from_target{ target };
   for (FrameId frame = target;;) {
-    auto met = index_on_path.find(frame);
-    if (met != index_on_path.end()) {
-      result.transform = target_to.inverse() * source_to[met->second];
+    auto met = std::find(path.begin(), path.end(), frame);
+    if (met != path.end()) {
+      result.transform = target_to.inverse() * source_to[static_cast<std::size_t>(met - path.begin())];
       return result;
     }
     const TimeCacheInterface* cache = frames_.cache(frame);
@@ -194,7 +206,7 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
       result.message = target_stop.message + direction(source, target);
       return result;
     }
-    if (!seen_from_target.insert(link.parent).second) {
+    if (!visit(seen_from_target, link.parent)) {
       return loop_error();
     }
     target_to = link.transform * target_to;
