@@ -1,10 +1,13 @@
 // The downstream program: build a needle_guide_msgs/msg/NeedleGuide, put it on the wire (CDR,
 // as ROS 2 does) and read it back, then convert its pose with the generated converter into a
 // vtkMatrix4x4 in millimetres and back. Then the installed runtime libraries: where the guide
-// is in the world (ros2vtk::Tf2) and its topic's DDS name (ros2vtk::Wire).
+// is in the world (ros2vtk::Tf2), its topic's DDS name (ros2vtk::Wire), and a small guide holder
+// robot: forward kinematics (ros2vtk::RobotModel) and its visuals (ros2vtk::RobotLoader).
 #include "needle_guideConvert.hpp"  // generated: ros2vtk::nodes::ROS2ToVTK / VTKToROS2
 
 #include <ros2vtk/needle_guide_msgs/msg/needle_guide.hpp>  // generated message type + CDR
+#include <ros2vtk/robot/KinematicTree.hpp>
+#include <ros2vtk/robot/RobotLoader.hpp>
 #include <ros2vtk/tf2/BufferCore.hpp>
 #include <ros2vtk/wire/CdrReader.hpp>
 #include <ros2vtk/wire/CdrWriter.hpp>
@@ -97,5 +100,29 @@ int main()
     return 1;
   }
   std::printf("dds topic %s\n", ros2vtk::wire::topic_to_dds(topic).c_str());
+
+  // A guide holder: a base box and a 45 mm prismatic insertion stage.
+  const std::string holder = R"(<robot name="holder">
+    <link name="base"><visual><geometry><box size="0.1 0.1 0.02"/></geometry></visual></link>
+    <link name="stage"><visual><geometry><cylinder radius="0.005" length="0.05"/></geometry></visual></link>
+    <joint name="insert" type="prismatic"><parent link="base"/><child link="stage"/>
+      <origin xyz="0 0 0.01"/><axis xyz="0 0 1"/><limit lower="0" upper="0.1" effort="1" velocity="1"/>
+    </joint></robot>)";
+  const auto tree = ros2vtk::robot::KinematicTree::from_urdf(holder, &error);
+  if (!tree)
+  {
+    std::fprintf(stderr, "KinematicTree: %s\n", error.c_str());
+    return 1;
+  }
+  const auto poses = tree->link_poses({ { "insert", decoded.depth } });
+  std::printf("holder stage z %.3f\n", poses.at("stage").translation().z());
+  ros2vtk::robot::RobotLoader loader;
+  ros2vtk::robot::RobotVisuals visuals;
+  if (!loader.load_xml(holder, ros2vtk::robot::RobotLoadOptions(), &visuals, &error))
+  {
+    std::fprintf(stderr, "RobotLoader: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("holder visuals %zu\n", visuals.visual_count());
   return 0;
 }

@@ -73,7 +73,9 @@ expect_output(program
   "translation_mm 100.0 -20.0 35.0 depth_m 0.045"
   "NeedleGuide OK"
   "tf2 world->guide 1.100 -0.020 0.035"   # ros2vtk::Tf2
-  "dds topic rt/needle_guide")           # ros2vtk::Wire
+  "dds topic rt/needle_guide"            # ros2vtk::Wire
+  "holder stage z 0.055"                 # ros2vtk::RobotModel: 0.01 m origin + 0.045 m depth
+  "holder visuals 2")                    # ros2vtk::RobotLoader
 
 # 4. The wrapped module from Python (Debian's python3-vtk9): the installed package plus this
 #    build's python/ros2vtk/, a NeedleGuide publisher and subscriber by short name.
