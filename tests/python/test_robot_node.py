@@ -228,3 +228,40 @@ def test_a_scene_file_with_a_robot_missing_its_source_is_refused(logic, ros2vtk)
         assert not scene.ReadFromXMLString(broken)
     finally:
         scene.GlobalWarningDisplayOn()
+
+
+COLOURED_PLY = """ply
+format ascii 1.0
+element vertex 3
+property float x
+property float y
+property float z
+property uchar red
+property uchar green
+property uchar blue
+element face 1
+property list uchar int vertex_indices
+end_header
+0 0 0 255 0 0
+0.1 0 0 0 255 0
+0 0.1 0 0 0 255
+3 0 1 2
+"""
+
+
+def test_per_vertex_mesh_colours_are_shown_unless_the_urdf_gives_a_material(logic, tmp_path):
+    (tmp_path / 'tri.ply').write_text(COLOURED_PLY)
+    urdf = """<robot name="c">
+      <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>
+      <link name="base">
+        <visual><geometry><mesh filename="tri.ply"/></geometry></visual>
+        <visual><geometry><mesh filename="tri.ply"/></geometry><material name="grey"/></visual>
+      </link></robot>"""
+    node, robot = make_robot(logic, name='c')
+    assert robot.LoadRobotDescription(urdf, str(tmp_path)), robot.GetLastError()
+    plain, painted = robot.GetNthModelNode(0), robot.GetNthModelNode(1)
+    assert plain.GetScalarVisibility() and not painted.GetScalarVisibility()
+    scalars = plain.GetPolyData().GetPointData().GetScalars()
+    assert scalars is not None and scalars.GetNumberOfComponents() == 4
+    assert [tuple(scalars.GetTuple(i))[:3] for i in range(3)] == [(255, 0, 0), (0, 255, 0), (0, 0, 255)]
+    assert painted.GetColor() == (0.5, 0.5, 0.5)
