@@ -64,11 +64,8 @@ install(DIRECTORY "${_ros2vtk_messages_out}/include/"
 
 # The Python package's own files, next to the wrapped modules VTK installs in python/ros2vtk/.
 if(ROS2VTK_WRAP_PYTHON)
-  install(FILES
-      "${PROJECT_SOURCE_DIR}/python/ros2vtk/__init__.py"
-      "${PROJECT_SOURCE_DIR}/python/ros2vtk/__main__.py"
-      "${PROJECT_SOURCE_DIR}/python/ros2vtk/guidance.py"
-    DESTINATION "${ROS2VTK_INSTALL_PYTHONDIR}/ros2vtk")
+  get_property(_ros2vtk_python_files GLOBAL PROPERTY ROS2VTK_PYTHON_PACKAGE_FILES)  # python/CMakeLists.txt
+  install(FILES ${_ros2vtk_python_files} DESTINATION "${ROS2VTK_INSTALL_PYTHONDIR}/ros2vtk")
 endif()
 
 # The generator, its templates, the shipped specs (those of ros2vtk::Messages) and mappings.

@@ -11,20 +11,10 @@ Prints "NeedleGuide Python OK" and exits 0; any failure exits non-zero with the 
 from __future__ import annotations
 
 import sys
-import time
 
 import ros2vtk
+from ros2vtk import spin_until
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
-
-
-def spin_until(logic, done, seconds: float = 20.0) -> bool:
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        logic.Spin()
-        if done():
-            return True
-        time.sleep(0.005)
-    return done()
 
 
 def main() -> int:

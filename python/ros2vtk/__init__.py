@@ -5,7 +5,7 @@
     node = logic.GetDefaultROS2Node()
     pub = node.CreateAndAddPublisherNode('String', '/pub')
     pub.Publish('Hello world.')
-    logic.Spin()
+    logic.Spin()                      # or: ros2vtk.spin_until(logic, lambda: ..., seconds=5)
 
 Every VTK-wrapped extension module in this package (the runtime's ``ros2vtkScene`` and any
 generated node module built next to it, or in a downstream build's ``python/ros2vtk/`` found on
@@ -68,3 +68,7 @@ for _module in extension_modules.values():
             globals()[_name] = getattr(_module, _name)
             __all__.append(_name)
 del _module, _name
+
+from .spinning import spin_for, spin_until  # noqa: E402 (after the classes they spin)
+
+__all__ += ['spin_for', 'spin_until']

@@ -19,9 +19,7 @@ import ros2vtk
 
 
 def _spin(logic, seconds: float, until=lambda: False) -> None:
-    end = time.monotonic() + seconds
-    while time.monotonic() < end and not until():
-        logic.SpinOnWakeUp(0.05)
+    ros2vtk.spin_until(logic, until, seconds)
 
 
 def _describe(value) -> str:

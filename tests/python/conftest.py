@@ -5,7 +5,6 @@ the loopback (see CMakeLists.txt here)."""
 
 from __future__ import annotations
 
-import time
 from typing import Callable, Iterator
 
 import pytest
@@ -25,11 +24,6 @@ def logic(ros2vtk) -> Iterator[object]:
 
 
 def spin_until(logic, done: Callable[[], bool], seconds: float = 10.0) -> bool:
-    """Spins `logic` until `done()` or the timeout; returns done()."""
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        logic.Spin()
-        if done():
-            return True
-        time.sleep(0.005)
-    return done()
+    """Spins `logic` until `done()` or the timeout; returns done() (the package's helper)."""
+    from ros2vtk import spin_until as package_spin_until
+    return package_spin_until(logic, done, seconds)

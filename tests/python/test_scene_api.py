@@ -215,3 +215,16 @@ def test_a_ros_node_added_after_spins_is_spun(logic, ros2vtk):
     sub = second.CreateAndAddSubscriberNode('std_msgs/msg/String', '/py_second')
     pub = logic.GetDefaultROS2Node().CreateAndAddPublisherNode('String', '/py_second')
     assert spin_until(logic, lambda: pub.Publish('hello') and sub.GetNumberOfMessages() > 0)
+
+
+def test_spin_until_stops_at_the_condition_or_the_timeout(logic, ros2vtk):
+    logic.GetDefaultROS2Node()
+    before = logic.GetNumberOfSpins()
+    assert ros2vtk.spin_until(logic, lambda: True, seconds=30.0) is True
+    assert logic.GetNumberOfSpins() == before + 1  # the condition held: one spin, no waiting
+    calls = []
+    assert ros2vtk.spin_until(logic, lambda: calls.append(1) and False, seconds=0.2, step=0.02) is False
+    assert len(calls) >= 2  # spun until the timeout, checking each time
+    sub = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('String', '/py_spin_until')
+    pub = logic.GetDefaultROS2Node().CreateAndAddPublisherNode('String', '/py_spin_until')
+    assert ros2vtk.spin_until(logic, lambda: pub.Publish('x') and sub.GetNumberOfMessages() > 0, seconds=10.0)
