@@ -21,7 +21,7 @@ def spin_until(logic, done: Callable[[], bool], seconds: float = 10.0, step: flo
         if done():
             return True
         if time.monotonic() >= end:
-            return done()
+            return bool(done())
 
 
 def spin_for(logic, seconds: float, step: float = 0.05) -> None:
