@@ -69,6 +69,6 @@ for _module in extension_modules.values():
             __all__.append(_name)
 del _module, _name
 
-from .spinning import spin_for, spin_until  # noqa: E402 (after the classes they spin)
+from .spinning import spin_until  # noqa: E402 (after the classes it spins)
 
-__all__ += ['spin_for', 'spin_until']
+__all__ += ['spin_until']

@@ -5,6 +5,8 @@ a fixed delay to every message.
 
     from ros2vtk import spin_until
     assert spin_until(logic, lambda: robot.IsLoaded(), seconds=10)
+
+(For a fixed time, vtkROS2Logic.SpinFor(seconds) spins at the logic's rate.)
 """
 from __future__ import annotations
 
@@ -23,7 +25,3 @@ def spin_until(logic, done: Callable[[], bool], seconds: float = 10.0, step: flo
         if time.monotonic() >= end:
             return bool(done())
 
-
-def spin_for(logic, seconds: float, step: float = 0.05) -> None:
-    """Spins `logic` for `seconds` (e.g. to let late messages in before a final check)."""
-    spin_until(logic, lambda: False, seconds, step)

@@ -6,7 +6,7 @@ script, printing what it observed as one JSON object per line.
     scene_runner.py broadcast PARENT CHILD [--static] [--seconds S]
     scene_runner.py params NODE NAME... [--seconds S]        parameter node -> values and events
     scene_runner.py serve [--seconds S]                      own parameters for rclpy clients
-    scene_runner.py robot NAME [--source parameter|topic]    robot node -> link matrices (mm)
+    scene_runner.py robot NAME [--source parameter|topic|file]  robot node -> link matrices (mm)
 """
 from __future__ import annotations
 
@@ -273,6 +273,8 @@ def cmd_robot(args, logic, node) -> int:
     loaded, then a snapshot of every link's world matrix (mm) every --every seconds."""
     if args.source == 'parameter':
         robot = node.CreateAndAddRobotNode(args.name, args.rsp_node, 'robot_description', '', args.tf_prefix)
+    elif args.source == 'file':
+        robot = node.CreateAndAddRobotNodeFromFile(args.name, args.urdf, '', args.tf_prefix)
     else:
         robot = node.CreateAndAddRobotNodeFromTopic(args.name, args.topic, '', args.tf_prefix)
     for folder in args.mesh_path:
@@ -371,7 +373,8 @@ def main() -> int:
     publisher.add_argument('topic')
     robot = sub.add_parser('robot')
     robot.add_argument('name')
-    robot.add_argument('--source', choices=('parameter', 'topic'), default='parameter')
+    robot.add_argument('--source', choices=('parameter', 'topic', 'file'), default='parameter')
+    robot.add_argument('--urdf', default='', help='the file of --source file')
     robot.add_argument('--rsp-node', default='/robot_state_publisher')
     robot.add_argument('--topic', default='/robot_description')
     robot.add_argument('--tf-prefix', default='')

@@ -62,7 +62,7 @@ def run_robot(ros, urdf: Path, source: str, *, configs: int = 3, namespace: str 
     rsp_node = f'{namespace}/robot_state_publisher' if namespace else '/robot_state_publisher'
     args = ['--seconds', '30', 'robot', 'arm', '--source', source, '--rsp-node', rsp_node,
             '--topic', f'{namespace}/robot_description', '--tf-prefix', prefix,
-            '--follow', str(configs * hold + 1.0)]  # after the load
+            '--follow', str(configs * hold + 1.0), '--urdf', str(urdf)]  # after the load
     for folder in mesh_paths:
         args += ['--mesh-path', str(folder)]
     args += ['--mesh-base-folder', str(urdf.parent)]
@@ -80,7 +80,7 @@ def run_robot(ros, urdf: Path, source: str, *, configs: int = 3, namespace: str 
     return ready, lines[1], lines[2:], expected
 
 
-@pytest.mark.parametrize('source', ['parameter', 'topic'])
+@pytest.mark.parametrize('source', ['parameter', 'topic', 'file'])
 def test_arm_appears_and_follows_every_configuration(ros, source):
     ready, state, snapshots, expected = run_robot(ros, ARM, source, mesh_paths=[ARM_PACKAGE])
     assert state['state'] == 'loaded', state

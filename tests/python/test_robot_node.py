@@ -265,3 +265,63 @@ def test_per_vertex_mesh_colours_are_shown_unless_the_urdf_gives_a_material(logi
     assert scalars is not None and scalars.GetNumberOfComponents() == 4
     assert [tuple(scalars.GetTuple(i))[:3] for i in range(3)] == [(255, 0, 0), (0, 255, 0), (0, 0, 255)]
     assert painted.GetColor() == (0.5, 0.5, 0.5)
+
+
+def test_a_robot_from_a_urdf_file_resolves_its_own_package_and_reloads_on_request(logic, tmp_path):
+    node = logic.GetDefaultROS2Node()
+    # The shipped arm names its meshes package://ros2vtk_surgical_arm/...: the package.xml above
+    # the file makes them resolve with no search path and no AMENT_PREFIX_PATH.
+    arm = node.CreateAndAddRobotNodeFromFile('arm', str(ARM))
+    assert arm is not None and arm.GetDescriptionSource() == 'file'
+    assert arm.GetDescriptionFile() == str(ARM)
+    assert spin_until(logic, arm.IsLoaded)
+    assert arm.GetNumberOfLinks() == 8 and arm.GetNumberOfPlaceholders() == 0, arm.GetWarnings()
+
+    path = tmp_path / 'two.urdf'
+    path.write_text(TWO_LINKS.replace('missing/tool.stl', 'tool.stl'))
+    two = node.CreateAndAddRobotNodeFromFile('two', str(path))
+    assert spin_until(logic, two.IsLoaded)
+    assert two.GetNumberOfPlaceholders() == 1  # tool.stl, relative to the file, is not there yet
+    (tmp_path / 'tool.stl').write_bytes((ARM.parents[1] / 'meshes' / 'base.stl').read_bytes())
+    logic.Spin()
+    assert two.GetNumberOfLoads() == 1  # the file did not change: no reload by itself
+    two.Reload()
+    assert spin_until(logic, lambda: two.GetNumberOfLoads() == 2)
+    assert two.GetNumberOfPlaceholders() == 0, two.GetWarnings()
+
+
+def test_a_missing_or_unreadable_urdf_file_is_refused_or_reported(logic, tmp_path):
+    node = logic.GetDefaultROS2Node()
+    node.GlobalWarningDisplayOff()
+    try:
+        assert node.CreateAndAddRobotNodeFromFile('none', str(tmp_path / 'absent.urdf')) is None
+        assert node.GetRobotNodeByName('none') is None
+        path = tmp_path / 'gone.urdf'
+        path.write_text(TWO_LINKS)
+        robot = node.CreateAndAddRobotNodeFromFile('gone', str(path))
+        path.unlink()  # removed before the spin that reads it
+        robot.GlobalWarningDisplayOff()
+        logic.Spin()
+        assert robot.GetRobotState().startswith('failed: cannot read the URDF file')
+        assert not robot.IsLoaded()
+    finally:
+        node.GlobalWarningDisplayOn()
+
+
+def test_a_file_robot_comes_back_with_the_scene_file(logic, tmp_path):
+    node = logic.GetDefaultROS2Node()
+    robot = node.CreateAndAddRobotNodeFromFile('arm', str(ARM), '', 'left/')
+    assert spin_until(logic, robot.IsLoaded)
+    scene_file = str(tmp_path / 'scene.xml')
+    assert logic.GetScene().WriteToXMLFile(scene_file)
+    assert logic.GetScene().ReadFromXMLFile(scene_file)
+    restored = logic.GetDefaultROS2Node().GetRobotNodeByName('arm')
+    assert restored.GetDescriptionSource() == 'file' and restored.GetTfPrefix() == 'left/'
+    assert spin_until(logic, restored.IsLoaded)
+    assert restored.GetNumberOfPlaceholders() == 0 and restored.GetNumberOfModelNodes() == robot_models(ARM)
+    assert restored.GetLinkTransformNode('upper_arm_link').GetChildID() == 'left/upper_arm_link'
+
+
+def robot_models(urdf: Path) -> int:
+    import xml.etree.ElementTree as ElementTree
+    return len(ElementTree.parse(urdf).getroot().findall('link/visual'))

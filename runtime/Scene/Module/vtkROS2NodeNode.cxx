@@ -933,6 +933,25 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* ro
 }
 
 //------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* robotName, const char* urdfFile,
+  const char* fixedFrame, const char* tfPrefix)
+{
+  if (!urdfFile || !*urdfFile)
+  {
+    vtkErrorMacro("CreateAndAddRobotNodeFromFile: a URDF file is required");
+    return nullptr;
+  }
+  vtkROS2RobotNode* robot =
+    this->AddRobotNode("CreateAndAddRobotNodeFromFile", robotName, fixedFrame, tfPrefix);
+  if (robot && !robot->AttachToFile(this, urdfFile))
+  {
+    this->RemoveAndDeleteRobotNode(robotName);
+    return nullptr;
+  }
+  return robot;
+}
+
+//------------------------------------------------------------------------------
 vtkROS2RobotNode* vtkROS2NodeNode::GetRobotNodeByName(const char* robotName)
 {
   for (const auto& node : Referenced<vtkROS2RobotNode>(this, RobotRole))

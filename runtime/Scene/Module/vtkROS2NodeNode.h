@@ -120,13 +120,17 @@ public:
 
   ///@{
   /// Robots (SlicerROS2's robot node). The description is the `parameterName` parameter of the
-  /// remote `parameterNodeName` (a robot_state_publisher), or a std_msgs/String topic (transient
-  /// local, like RViz 2's RobotModel). Links are looked up from `fixedFrame` (empty: the root
+  /// remote `parameterNodeName` (a robot_state_publisher), a std_msgs/String topic (transient
+  /// local, like RViz 2's RobotModel) or a file. Links are looked up from `fixedFrame` (empty: the root
   /// link) with `tfPrefix` prepended to link names. The robot appears on the spin that brings its
   /// description. Names are unique per ROS node; nullptr / false (vtkErrorMacro) otherwise.
   vtkROS2RobotNode* CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
     const char* parameterName = "robot_description", const char* fixedFrame = "", const char* tfPrefix = "");
   vtkROS2RobotNode* CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic = "/robot_description",
+    const char* fixedFrame = "", const char* tfPrefix = "");
+  /// RViz 2's third source: a URDF file on this machine (re-read with vtkROS2RobotNode::Reload).
+  /// `package://` URIs of the package holding the file resolve without any set-up.
+  vtkROS2RobotNode* CreateAndAddRobotNodeFromFile(const char* robotName, const char* urdfFile,
     const char* fixedFrame = "", const char* tfPrefix = "");
   vtkROS2RobotNode* GetRobotNodeByName(const char* robotName);
   /// Removes the robot and every node it created (links, models, and its description source

@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -54,10 +56,13 @@ class vtkROS2RobotNode::vtkInternals
 {
 public:
   std::string RobotName;
-  std::string Source; // "parameter" | "topic" | "" (direct loads only)
+  std::string Source; // "parameter" | "topic" | "file" | "" (direct loads only)
   std::string ParameterNodeName;
   std::string ParameterName;
   std::string Topic;
+  std::string DescriptionFile;
+  std::string FilePackageFolder; // the package holding DescriptionFile, searched for package://
+  bool ForceReload = false;
   std::string FixedFrame;
   std::string TfPrefix;
   std::vector<std::string> SearchPaths;
@@ -146,6 +151,18 @@ const char* vtkROS2RobotNode::GetParameterName() const
 const char* vtkROS2RobotNode::GetDescriptionTopic() const
 {
   return this->Internals->Topic.c_str();
+}
+
+const char* vtkROS2RobotNode::GetDescriptionFile() const
+{
+  return this->Internals->DescriptionFile.c_str();
+}
+
+void vtkROS2RobotNode::Reload()
+{
+  this->Internals->ForceReload = true;
+  this->Internals->SourceChanged = true;
+  this->Internals->Loader.reset(); // meshes are read again too
 }
 
 //------------------------------------------------------------------------------
@@ -374,6 +391,77 @@ void vtkROS2RobotNode::FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* 
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2RobotNode::AttachToFile(vtkROS2NodeNode* rosNode, const std::string& urdfFile)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path path = fs::absolute(fs::path(urdfFile), error).lexically_normal();
+  if (error || !fs::is_regular_file(path, error))
+  {
+    vtkErrorMacro("CreateAndAddRobotNodeFromFile: no URDF file '" << urdfFile << "'");
+    return false;
+  }
+  this->Internals->Source = "file";
+  this->Internals->DescriptionFile = path.string();
+  this->FollowFile(rosNode);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2RobotNode::FollowFile(vtkROS2NodeNode* rosNode)
+{
+  namespace fs = std::filesystem;
+  vtkInternals& internals = *this->Internals;
+  // package://<its own package>/... is the usual way a URDF names its meshes: the package that
+  // holds the file (a package.xml up to three folders above it) is searched first, so a robot
+  // loads from its source folder without AMENT_PREFIX_PATH set-up.
+  internals.FilePackageFolder.clear();
+  fs::path folder = fs::path(internals.DescriptionFile).parent_path();
+  for (int level = 0; level < 3 && !folder.empty(); ++level, folder = folder.parent_path())
+  {
+    std::error_code error;
+    if (fs::is_regular_file(folder / "package.xml", error))
+    {
+      internals.FilePackageFolder = folder.string();
+      break;
+    }
+    if (folder == folder.root_path())
+    {
+      break;
+    }
+  }
+  if (internals.Loader && !internals.FilePackageFolder.empty())
+  {
+    internals.Loader->resolver().add_search_path(internals.FilePackageFolder);
+  }
+  internals.SourceChanged = true;
+  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
+  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::ReadDescriptionFile(std::string& description)
+{
+  vtkInternals& internals = *this->Internals;
+  std::ifstream file(internals.DescriptionFile, std::ios::binary);
+  std::ostringstream text;
+  if (file && (text << file.rdbuf()))
+  {
+    description = text.str();
+    return true;
+  }
+  const std::string error = "cannot read the URDF file '" + internals.DescriptionFile + "'";
+  if (internals.LastError != error)
+  {
+    vtkErrorMacro("robot '" << internals.RobotName << "': " << error);
+  }
+  internals.LastError = error;
+  internals.State = "failed: " + error;
+  this->Modified();
+  return false;
+}
+
+//------------------------------------------------------------------------------
 int vtkROS2RobotNode::CheckForNewDescription()
 {
   vtkInternals& internals = *this->Internals;
@@ -385,13 +473,27 @@ int vtkROS2RobotNode::CheckForNewDescription()
     this->LoadRobotDescription(description.c_str(), internals.LoadedBaseFolder.c_str());
     return 1;
   }
-  if (!internals.SourceChanged || !internals.SourceNode)
+  if (!internals.SourceChanged || (!internals.SourceNode && internals.Source != "file"))
   {
     return 0;
   }
   internals.SourceChanged = false;
+  const bool force = internals.ForceReload;
+  internals.ForceReload = false;
   std::string description;
-  if (auto* parameters = vtkROS2ParameterNode::SafeDownCast(internals.SourceNode))
+  std::string baseFolder = internals.MeshBaseFolder;
+  if (internals.Source == "file")
+  {
+    if (!this->ReadDescriptionFile(description))
+    {
+      return 1;
+    }
+    if (baseFolder.empty())
+    {
+      baseFolder = std::filesystem::path(internals.DescriptionFile).parent_path().string();
+    }
+  }
+  else if (auto* parameters = vtkROS2ParameterNode::SafeDownCast(internals.SourceNode))
   {
     if (!parameters->IsParameterSet(internals.ParameterName.c_str(), /*noWarning=*/true) ||
       parameters->GetParameterType(internals.ParameterName.c_str()) != "string")
@@ -407,12 +509,13 @@ int vtkROS2RobotNode::CheckForNewDescription()
       return 0;
     }
   }
-  if (description.empty() || (internals.Loaded && description == internals.LoadedDescription) ||
-    description == internals.LastFailedDescription)
+  const bool unchanged = (internals.Loaded && description == internals.LoadedDescription) ||
+    description == internals.LastFailedDescription;
+  if (description.empty() || (unchanged && !force))
   {
     return 0;
   }
-  this->LoadRobotDescription(description.c_str(), internals.MeshBaseFolder.c_str());
+  this->LoadRobotDescription(description.c_str(), baseFolder.c_str());
   return 1;
 }
 
@@ -433,6 +536,10 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
     for (const std::string& folder : internals.SearchPaths)
     {
       internals.Loader->resolver().add_search_path(folder);
+    }
+    if (!internals.FilePackageFolder.empty())
+    {
+      internals.Loader->resolver().add_search_path(internals.FilePackageFolder);
     }
   }
   ros2vtk::robot::RobotLoadOptions options;
@@ -689,6 +796,7 @@ void vtkROS2RobotNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("parameterNode", internals.ParameterNodeName.c_str());
   element->SetAttribute("parameterName", internals.ParameterName.c_str());
   element->SetAttribute("topic", internals.Topic.c_str());
+  element->SetAttribute("descriptionFile", internals.DescriptionFile.c_str());
   element->SetIntAttribute("ownsSource", internals.OwnsSourceNode ? 1 : 0);
   element->SetAttribute("fixedFrame", internals.FixedFrame.c_str());
   element->SetAttribute("tfPrefix", internals.TfPrefix.c_str());
@@ -719,16 +827,19 @@ bool vtkROS2RobotNode::ReadXML(vtkXMLDataElement* element)
   internals.ParameterNodeName = text("parameterNode");
   internals.ParameterName = text("parameterName");
   internals.Topic = text("topic");
+  internals.DescriptionFile = text("descriptionFile");
   internals.FixedFrame = text("fixedFrame");
   internals.TfPrefix = text("tfPrefix");
   internals.MeshBaseFolder = text("meshBaseFolder");
   int owns = 0;
   element->GetScalarAttribute("ownsSource", owns);
   internals.OwnsSourceNode = owns != 0;
-  if (internals.RobotName.empty() || (internals.Source != "parameter" && internals.Source != "topic"))
+  const bool known = internals.Source == "parameter" || internals.Source == "topic" ||
+    (internals.Source == "file" && !internals.DescriptionFile.empty());
+  if (internals.RobotName.empty() || !known)
   {
     vtkErrorMacro("ReadXML: robot node '" << text("id") << "' needs a robotName and a descriptionSource "
-                                          << "(parameter or topic)");
+                                          << "(parameter, topic, or file with a descriptionFile)");
     return false;
   }
   internals.SearchPaths.clear();
@@ -764,13 +875,21 @@ void vtkROS2RobotNode::OnSceneRestored()
   }
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
   vtkROS2SceneNode* source = this->GetNodeReference(DescriptionRole);
-  if (!rosNode || !rosNode->IsCreated() || !source)
+  const bool fromFile = internals.Source == "file";
+  if (!rosNode || !rosNode->IsCreated() || (!source && !fromFile))
   {
     vtkErrorMacro("robot '" << internals.RobotName << "': restored without its ROS node or description source; "
                             << "it will not load");
     return;
   }
-  this->FollowSource(rosNode, source);
+  if (fromFile)
+  {
+    this->FollowFile(rosNode);
+  }
+  else
+  {
+    this->FollowSource(rosNode, source);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -787,6 +906,10 @@ void vtkROS2RobotNode::PrintSelf(ostream& os, vtkIndent indent)
   else if (internals.Source == "topic")
   {
     os << indent << "Topic: " << internals.Topic << "\n";
+  }
+  else if (internals.Source == "file")
+  {
+    os << indent << "File: " << internals.DescriptionFile << "\n";
   }
   os << indent << "FixedFrame: " << internals.FixedFrame << "\n";
   os << indent << "TfPrefix: " << internals.TfPrefix << "\n";

@@ -3,9 +3,11 @@
 //
 //   robot = rosNode->CreateAndAddRobotNode("PSM1", "/PSM1/robot_state_publisher", "robot_description");
 //   robot = rosNode->CreateAndAddRobotNodeFromTopic("arm", "/robot_description"); // RViz 2's way
+//   robot = rosNode->CreateAndAddRobotNodeFromFile("arm", "/path/to/arm.urdf");   // and RViz 2's other
 //
-// The description comes from a parameter of a robot_state_publisher (through a parameter node)
-// or from its transient-local robot_description topic (through a subscriber node). When it
+// The description comes from a parameter of a robot_state_publisher (through a parameter node),
+// from its transient-local robot_description topic (through a subscriber node) or from a file
+// (read on the next spin, and again on Reload()). When it
 // arrives (on a spin of the ROS node), the robot node builds, in the scene:
 //   * a base transform node "<robot>:base" (identity; edit it to place the whole robot),
 //   * one transform node per link under it: a tf2 lookup node (fixed frame <- prefix + link),
@@ -48,13 +50,18 @@ public:
   /// The name given at creation ("PSM1"); also the prefix of the names of the nodes it builds.
   void SetRobotName(const char* robotName);
   const char* GetRobotName() const;
-  /// "parameter" (SlicerROS2's way) or "topic" (RViz 2's way).
+  /// "parameter" (SlicerROS2's way), "topic" or "file" (RViz 2's ways).
   const char* GetDescriptionSource() const;
   /// The parameter source: remote node and parameter ("/robot_state_publisher", "robot_description").
   const char* GetParameterNodeName() const;
   const char* GetParameterName() const;
   /// The topic source ("/PSM1/robot_description").
   const char* GetDescriptionTopic() const;
+  /// The file source (absolute path).
+  const char* GetDescriptionFile() const;
+  /// Builds the robot again on the next spin even if the description did not change (the file
+  /// is read again, meshes too: e.g. after editing them).
+  void Reload();
 
   /// The frame links are looked up from. Empty (default): the root link, with the tf prefix.
   /// Changing it after a load rebuilds the lookups on the next spin.
@@ -114,6 +121,8 @@ public:
   bool AttachToParameter(vtkROS2NodeNode* rosNode, const std::string& remoteNode, const std::string& parameterName);
   /// Used by vtkROS2NodeNode: takes the description from a std_msgs/String `topic`.
   bool AttachToTopic(vtkROS2NodeNode* rosNode, const std::string& topic);
+  /// Used by vtkROS2NodeNode: takes the description from a URDF file.
+  bool AttachToFile(vtkROS2NodeNode* rosNode, const std::string& urdfFile);
 #endif
 
   /// Saved: the source, frames and mesh folders; the base and link transform nodes are saved as
@@ -135,6 +144,10 @@ private:
 
   /// Observes the description source (parameter node or subscriber) and spins with `rosNode`.
   void FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* source);
+  /// Spins with `rosNode`, reading the description file on the next spin.
+  void FollowFile(vtkROS2NodeNode* rosNode);
+  /// The file source's text; false (state "failed") when it cannot be read.
+  bool ReadDescriptionFile(std::string& description);
   /// Spin callback: loads a new description when the source brought one.
   int CheckForNewDescription();
   /// Removes everything this robot built (models, its own link nodes, the base).
