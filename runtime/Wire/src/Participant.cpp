@@ -15,6 +15,10 @@
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <cstdlib>
 #include <cstring>
 
@@ -25,6 +29,55 @@ namespace dds = eprosima::fastdds::dds;
 namespace rtps = eprosima::fastrtps::rtps;
 
 namespace {
+
+// RTPS well-known ports (spec 9.6.1.1, Fast DDS defaults): PB + DG * domain + offset + PG * id.
+constexpr uint32_t kPortBase = 7400;
+constexpr uint32_t kDomainGain = 250;
+constexpr uint32_t kMetatrafficUnicastOffset = 10;
+constexpr uint32_t kParticipantGain = 2;
+constexpr int32_t kMaxParticipantId = 119; // (DG - offset) / PG - 1: ids above reach the next domain
+// LOCALHOST discovery sends to the ports of these participant ids (as rmw_fastrtps does).
+constexpr uint32_t kLocalhostPeers = 32;
+
+uint32_t metatraffic_unicast_port(uint32_t domain_id, int32_t participant_id)
+{
+  return kPortBase + kDomainGain * domain_id + kMetatrafficUnicastOffset +
+    kParticipantGain * static_cast<uint32_t>(participant_id);
+}
+
+bool udp_port_is_free(uint32_t port)
+{
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  if (fd < 0)
+  {
+    return true; // cannot tell: let Fast DDS try
+  }
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  const bool free = ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
+  ::close(fd);
+  return free;
+}
+
+// Fast DDS 2.9 numbers the participants of a process from a counter that never goes back, and a
+// participant listens on the port of its number. Once a process had created 32 participants (a
+// scene file reopened 32 times), its new ones listened outside the ports LOCALHOST discovery
+// probes: two of them could no longer find each other, nor a peer numbered above 31 find them.
+// Fast DDS cannot be asked for the lowest free number, so it is found here: the lowest id whose
+// metatraffic port no participant (of any process) holds. -1 (Fast DDS's choice) when none is.
+int32_t lowest_free_participant_id(uint32_t domain_id)
+{
+  for (int32_t id = 0; id <= kMaxParticipantId; ++id)
+  {
+    if (udp_port_is_free(metatraffic_unicast_port(domain_id, id)))
+    {
+      return id;
+    }
+  }
+  return -1;
+}
 
 bool set_error(std::string* error, const std::string& message)
 {
@@ -168,19 +221,21 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     qos.wire_protocol().builtin.metatrafficUnicastLocatorList.push_back(unicast);
     if (options.range == DiscoveryRange::Localhost)
     {
-      // The well-known metatraffic unicast ports of participants 0..31 on this domain
-      // (RTPS: 7400 + 250 * domain + 10 + 2 * participant id), as rmw's LOCALHOST mode does.
-      for (uint32_t participant_id = 0; participant_id < 32; ++participant_id)
+      // The well-known metatraffic unicast ports of participants 0..31 on this domain, as
+      // rmw's LOCALHOST mode does.
+      for (uint32_t participant_id = 0; participant_id < kLocalhostPeers; ++participant_id)
       {
         rtps::Locator_t peer;
         peer.kind = LOCATOR_KIND_UDPv4;
         eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, 127, 0, 0, 1);
-        peer.port = 7400 + 250 * static_cast<uint32_t>(options.domain_id) + 10 + 2 * participant_id;
+        peer.port = metatraffic_unicast_port(static_cast<uint32_t>(options.domain_id),
+                                             static_cast<int32_t>(participant_id));
         qos.wire_protocol().builtin.initialPeersList.push_back(peer);
       }
     }
   }
   qos.transport().user_transports.push_back(udp);
+  qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id));
 
   const dds::StatusMask mask = dds::StatusMask::none();
   participant = dds::DomainParticipantFactory::get_instance()->create_participant(
