@@ -347,6 +347,8 @@ def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument('--node-name', default='slicer')
     parser.add_argument('--seconds', type=float, default=15.0)
+    parser.add_argument('--reopen', type=int, default=0,
+                        help='save and reopen the scene this many times first (a new participant each time)')
     sub = parser.add_subparsers(dest='command', required=True)
     lookup = sub.add_parser('lookup')
     lookup.add_argument('parent')
@@ -390,6 +392,11 @@ def main() -> int:
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
+    for _ in range(args.reopen):
+        if not logic.GetScene().ReadFromXMLString(logic.GetScene().WriteToXMLString()):
+            print(json.dumps({'error': 'scene not reopened'}), flush=True)
+            return 1
+        node = logic.GetDefaultROS2Node()
     return {'lookup': cmd_lookup, 'broadcast': cmd_broadcast, 'params': cmd_params,
             'serve': cmd_serve, 'sub': cmd_sub, 'pub': cmd_pub, 'robot': cmd_robot}[args.command](args, logic, node)
 

@@ -55,3 +55,28 @@ def test_nan_pose_is_refused_with_a_reason(ros):
     result = json.loads(out.splitlines()[-1])
     assert result['count'] >= 1 and result['value'] is None
     assert result['conversion_error'], result
+
+
+HIGH_PARTICIPANT_ID = """<?xml version="1.0" encoding="UTF-8" ?>
+<dds xmlns="http://www.eprosima.com"><profiles>
+  <participant profile_name="high_id" is_default_profile="true"><rtps><participantID>60</participantID></rtps></participant>
+</profiles></dds>
+"""
+
+
+def test_after_forty_reopened_scenes_a_peer_numbered_above_31_still_finds_our_node(ros, tmp_path):
+    # Each reopened scene makes a new participant. Fast DDS 2.9 numbered ours on from 40, so it
+    # listened outside the ports 0..31 that LOCALHOST discovery probes; a peer numbered above 31
+    # too (here rclpy, set to 60 by a Fast DDS profile, as on a host running many nodes) and ours
+    # never found each other. Ours now takes the lowest free number.
+    profile = tmp_path / 'high_id.xml'
+    profile.write_text(HIGH_PARTICIPANT_ID)
+    ours = ros.scene('--reopen', '40', '--seconds', '20', 'sub', 'String', '/reopened')
+    ros.wait_ready(ours)
+    talker = ros.peer('pub', '/reopened', 'std_msgs/msg/String', json.dumps({'data': 'found you'}),
+                      '--count', '40', '--rate', '10',
+                      env=dict(ros.env, FASTDDS_DEFAULT_PROFILES_FILE=str(profile)))
+    code, out, err = ros.finish(ours)
+    ros.finish(talker)
+    assert code == 0, err
+    assert json.loads(out.splitlines()[-1])['value'] == 'found you'
