@@ -871,7 +871,7 @@ std::string vtkROS2NodeNode::GetTopicNamesAndTypes()
 // robots
 //------------------------------------------------------------------------------
 vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
-                                               const char* tfPrefix)
+  const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach)
 {
   if (!this->CheckReadyFor(what))
   {
@@ -893,6 +893,11 @@ vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* ro
   robot->SetTfPrefix(tfPrefix);
   this->Scene->AddNode(robot);
   this->AddNodeReferenceID(RobotRole, robot->GetID());
+  if (!attach(robot))
+  {
+    this->RemoveAndDeleteRobotNode(robotName);
+    return nullptr;
+  }
   return robot;
 }
 
@@ -908,13 +913,8 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName, 
                   "(e.g. /robot_state_publisher)");
     return nullptr;
   }
-  vtkROS2RobotNode* robot = this->AddRobotNode("CreateAndAddRobotNode", robotName, fixedFrame, tfPrefix);
-  if (robot && !robot->AttachToParameter(this, remote, parameter))
-  {
-    this->RemoveAndDeleteRobotNode(robotName);
-    return nullptr;
-  }
-  return robot;
+  return this->AddRobotNode("CreateAndAddRobotNode", robotName, fixedFrame, tfPrefix,
+    [&](vtkROS2RobotNode* robot) { return robot->AttachToParameter(this, remote, parameter); });
 }
 
 //------------------------------------------------------------------------------
@@ -922,14 +922,8 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* ro
   const char* fixedFrame, const char* tfPrefix)
 {
   const std::string name = topic && *topic ? topic : "/robot_description";
-  vtkROS2RobotNode* robot =
-    this->AddRobotNode("CreateAndAddRobotNodeFromTopic", robotName, fixedFrame, tfPrefix);
-  if (robot && !robot->AttachToTopic(this, name))
-  {
-    this->RemoveAndDeleteRobotNode(robotName);
-    return nullptr;
-  }
-  return robot;
+  return this->AddRobotNode("CreateAndAddRobotNodeFromTopic", robotName, fixedFrame, tfPrefix,
+    [&](vtkROS2RobotNode* robot) { return robot->AttachToTopic(this, name); });
 }
 
 //------------------------------------------------------------------------------
@@ -941,14 +935,8 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* rob
     vtkErrorMacro("CreateAndAddRobotNodeFromFile: a URDF file is required");
     return nullptr;
   }
-  vtkROS2RobotNode* robot =
-    this->AddRobotNode("CreateAndAddRobotNodeFromFile", robotName, fixedFrame, tfPrefix);
-  if (robot && !robot->AttachToFile(this, urdfFile))
-  {
-    this->RemoveAndDeleteRobotNode(robotName);
-    return nullptr;
-  }
-  return robot;
+  return this->AddRobotNode("CreateAndAddRobotNodeFromFile", robotName, fixedFrame, tfPrefix,
+    [&](vtkROS2RobotNode* robot) { return robot->AttachToFile(this, urdfFile); });
 }
 
 //------------------------------------------------------------------------------

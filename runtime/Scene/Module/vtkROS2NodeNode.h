@@ -193,8 +193,12 @@ private:
   template <typename NodeType>
   NodeType* FindByFrames(const char* role, const char* parentFrame, const char* childFrame);
   bool CheckReadyFor(const char* what);
+#ifndef __VTK_WRAP__
+  /// Adds a robot node and attaches it to its description source with `attach`; removes it again
+  /// (nullptr) when that fails.
   vtkROS2RobotNode* AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
-    const char* tfPrefix);
+    const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach);
+#endif
   int SpinParametersAndTf2();
 
   class vtkInternals;
