@@ -13,7 +13,10 @@
 vtkStandardNewMacro(vtkROS2Tf2LookupNode);
 
 //------------------------------------------------------------------------------
-vtkROS2Tf2LookupNode::vtkROS2Tf2LookupNode() = default;
+vtkROS2Tf2LookupNode::vtkROS2Tf2LookupNode()
+  : LastResult(new ros2vtk::tf2::LookupResult())
+{
+}
 vtkROS2Tf2LookupNode::~vtkROS2Tf2LookupNode() = default;
 
 //------------------------------------------------------------------------------
@@ -65,8 +68,8 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
   {
     return false;
   }
-  const ros2vtk::tf2::LookupResult result =
-    buffer.lookup_transform(this->ParentFrame, this->ChildFrame, ros2vtk::tf2::kLatestTime);
+  ros2vtk::tf2::LookupResult& result = *this->LastResult; // reused: see BufferCore
+  buffer.lookup_transform(this->ParentFrame, this->ChildFrame, ros2vtk::tf2::kLatestTime, result);
   if (!result.ok)
   {
     // Reported once per failure episode (SlicerROS2 logs it at every spin, 50 times a second).

@@ -11,12 +11,14 @@
 #include "vtkMatrix4x4.h" // for the vtkNew member
 #include "vtkNew.h"       // for vtkNew
 
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
 class vtkROS2NodeNode;
 namespace ros2vtk {
 namespace tf2 {
 class BufferCore;
+struct LookupResult;
 }
 }
 
@@ -72,6 +74,9 @@ protected:
   double LastStamp = 0.0;
   long long LastStampNanoseconds = 0;
   vtkNew<vtkMatrix4x4> LookupMatrix; // scratch for UpdateFromBuffer
+#ifndef __VTK_WRAP__
+  std::unique_ptr<ros2vtk::tf2::LookupResult> LastResult; // reused by UpdateFromBuffer
+#endif
 
 private:
   vtkROS2Tf2LookupNode(const vtkROS2Tf2LookupNode&) = delete;

@@ -91,8 +91,21 @@ LookupResult BufferCore::lookup_locked(const std::string& target_frame,
   const std::string& source_frame, TimePoint time, const char* function_name) const
 {
   LookupResult result;
+  lookup_locked(target_frame, source_frame, time, function_name, result);
+  return result;
+}
+
+void BufferCore::lookup_locked(const std::string& target_frame, const std::string& source_frame,
+  TimePoint time, const char* function_name, LookupResult& result) const
+{
+  // Assigned field by field: the strings of a reused result keep their storage.
+  result.ok = false;
+  result.error = Tf2Error::NoError;
+  result.message.clear();
   result.target_frame = target_frame;
   result.source_frame = source_frame;
+  result.stamp = 0;
+  result.transform = Transform();
   if (target_frame == source_frame) {
     // tf2 answers this before validating, so it works even for frames never seen.
     result.ok = true;
@@ -101,16 +114,16 @@ LookupResult BufferCore::lookup_locked(const std::string& target_frame,
       const TimeCacheInterface* cache = frames_->cache(frames_->ids.find(target_frame));
       result.stamp = cache ? cache->newest_stamp() : kLatestTime;
     }
-    return result;
+    return;
   }
 
   const FrameId target = validate_frame_id(*frames_, function_name, "target_frame", target_frame, result);
   if (target == kNoFrame) {
-    return result;
+    return;
   }
   const FrameId source = validate_frame_id(*frames_, function_name, "source_frame", source_frame, result);
   if (source == kNoFrame) {
-    return result;
+    return;
   }
 
   WalkResult walk = TreeWalker(*frames_).transform_between(target, source, time);
@@ -121,7 +134,6 @@ LookupResult BufferCore::lookup_locked(const std::string& target_frame,
   if (result.ok) {
     result.transform = walk.transform;
   }
-  return result;
 }
 
 LookupResult BufferCore::lookup_transform(const std::string& target_frame,
@@ -129,6 +141,13 @@ LookupResult BufferCore::lookup_transform(const std::string& target_frame,
 {
   std::lock_guard<std::mutex> lock(mutex_);
   return lookup_locked(target_frame, source_frame, time, "lookupTransform");
+}
+
+void BufferCore::lookup_transform(const std::string& target_frame, const std::string& source_frame,
+  TimePoint time, LookupResult& result) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  lookup_locked(target_frame, source_frame, time, "lookupTransform", result);
 }
 
 LookupResult BufferCore::lookup_transform(const std::string& target_frame, TimePoint target_time,

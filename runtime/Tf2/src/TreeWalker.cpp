@@ -21,7 +21,8 @@ struct NewestLink
 constexpr TimePoint kNoTimeYet = std::numeric_limits<TimePoint>::max();
 
 // Frames met on a walk. A vector, not a hash set: chains are a handful of frames long and a
-// lookup per link runs at every spin, so node allocations cost more than a linear search.
+// lookup per link runs at every spin, so node allocations cost more than a linear search. The
+// walks keep their vectors per thread (cleared, not freed) for the same reason.
 using FramePath = std::vector<FrameId>;
 
 /// Adds `frame` to `path`; false when it was there already (the tree has a loop).
@@ -84,8 +85,10 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   }
 
   // Source towards its root, remembering each frame's newest link.
-  std::vector<NewestLink> source_path;
-  FramePath seen{ source };
+  thread_local std::vector<NewestLink> source_path;
+  thread_local FramePath seen;
+  source_path.clear();
+  seen.assign(1, source);
   TimePoint common = kNoTimeYet;
   for (FrameId frame = source;;) {
     const TimeCacheInterface* cache = frames_.cache(frame);
@@ -111,7 +114,8 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   // Target upwards until its parent lies on the source's path (or is the source).
   common = kNoTimeYet;
   FrameId common_parent = kNoFrame;
-  FramePath seen_from_target{ target };
+  thread_local FramePath seen_from_target;
+  seen_from_target.assign(1, target);
   for (FrameId frame = target;;) {
     const TimeCacheInterface* cache = frames_.cache(frame);
     if (!cache) {
@@ -167,8 +171,10 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
   }
 
   // Source towards its root: source_to[i] maps source into path[i].
-  std::vector<Transform> source_to{ Transform::identity() };
-  FramePath path{ source };
+  thread_local std::vector<Transform> source_to;
+  thread_local FramePath path;
+  source_to.assign(1, Transform::identity());
+  path.assign(1, source);
   SampleError source_stop; // why the source walk ended early, if it did
   for (FrameId frame = source; frame != target;) {
     const TimeCacheInterface* cache = frames_.cache(frame);
@@ -188,7 +194,8 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
 
   // Target upwards until it meets the source's path; target_to maps target into `frame`.
   Transform target_to = Transform::identity();
-  FramePath seen_from_target{ target };
+  thread_local FramePath seen_from_target;
+  seen_from_target.assign(1, target);
   for (FrameId frame = target;;) {
     auto met = std::find(path.begin(), path.end(), frame);
     if (met != path.end()) {

@@ -47,6 +47,10 @@ public:
   /// specific extrapolation codes (see LookupResult::message for tf2's text).
   LookupResult lookup_transform(const std::string& target_frame, const std::string& source_frame,
     TimePoint time) const;
+  /// The same into `result`, for callers that look the same frames up at every spin: a reused
+  /// result keeps its strings' storage, so the lookup allocates nothing for them.
+  void lookup_transform(const std::string& target_frame, const std::string& source_frame,
+    TimePoint time, LookupResult& result) const;
 
   /// Time-travel form: source at `source_time` and target at `target_time`, linked through a
   /// `fixed_frame` that does not move between the two times. Stamp of the result: target_time
@@ -88,6 +92,8 @@ public:
 private:
   LookupResult lookup_locked(const std::string& target_frame, const std::string& source_frame,
     TimePoint time, const char* function_name) const;
+  void lookup_locked(const std::string& target_frame, const std::string& source_frame,
+    TimePoint time, const char* function_name, LookupResult& result) const;
 
   Duration cache_time_;
   mutable std::mutex mutex_;
