@@ -325,3 +325,18 @@ def test_a_file_robot_comes_back_with_the_scene_file(logic, tmp_path):
 def robot_models(urdf: Path) -> int:
     import xml.etree.ElementTree as ElementTree
     return len(ElementTree.parse(urdf).getroot().findall('link/visual'))
+
+
+def test_a_urdf_file_over_the_size_limit_is_refused_without_reading_it(logic, tmp_path):
+    node = logic.GetDefaultROS2Node()
+    huge = tmp_path / 'huge.urdf'
+    with open(huge, 'wb') as f:
+        f.truncate(300 * 1024 * 1024)  # sparse: 300 MB on paper, nothing on disk
+    robot = node.CreateAndAddRobotNodeFromFile('huge', str(huge))
+    robot.GlobalWarningDisplayOff()
+    try:
+        logic.Spin()
+    finally:
+        robot.GlobalWarningDisplayOn()
+    assert 'over the limit' in robot.GetRobotState(), robot.GetRobotState()
+    assert not robot.IsLoaded()

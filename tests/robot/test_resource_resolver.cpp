@@ -72,6 +72,27 @@ TEST_F(ResolverTest, FindsHyphenatedPackageThroughAmentPrefix)
   EXPECT_EQ(found.path, mesh.string());
 }
 
+TEST_F(ResolverTest, AddsThePackageHoldingAUrdfFile)
+{
+  make_package("src/tool_description", "tool_description");
+  const fs::path mesh = write("src/tool_description/meshes/jaw.stl");
+  const fs::path urdf = write("src/tool_description/urdf/xacro/tool.urdf", "<robot name=\"t\"/>");
+  ResourceResolver resolver;
+  EXPECT_EQ(resolver.add_package_of(urdf.string()), (root_ / "src/tool_description").string());
+  const auto found = resolver.resolve("package://tool_description/meshes/jaw.stl", "");
+  ASSERT_TRUE(found.ok) << found.error;
+  EXPECT_EQ(found.path, mesh.string());
+}
+
+TEST_F(ResolverTest, AddsNoPackageWhenNoneHoldsTheFileWithinThreeFolders)
+{
+  make_package("deep", "deep");
+  const fs::path urdf = write("deep/a/b/c/robot.urdf", "<robot name=\"r\"/>");
+  ResourceResolver resolver;
+  EXPECT_EQ(resolver.add_package_of(urdf.string()), "");
+  EXPECT_EQ(resolver.find_package("deep"), "");
+}
+
 TEST_F(ResolverTest, ReadsAmentPrefixPathFromTheEnvironment)
 {
   make_package("install_a/share/other_pkg", "other_pkg");

@@ -147,6 +147,22 @@ void ResourceResolver::add_search_path(const std::string& folder)
     search_paths_.push_back(folder);
 }
 
+std::string ResourceResolver::add_package_of(const std::string& file)
+{
+  fs::path folder = fs::path(file).parent_path();
+  for (int level = 0; level < 3 && !folder.empty(); ++level, folder = folder.parent_path())
+  {
+    if (is_file(folder / "package.xml"))
+    {
+      add_search_path(folder.string());
+      return folder.string();
+    }
+    if (folder == folder.root_path())
+      break;
+  }
+  return "";
+}
+
 void ResourceResolver::add_allowed_root(const std::string& folder)
 {
   if (!folder.empty())

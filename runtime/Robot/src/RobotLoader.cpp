@@ -380,15 +380,14 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
   return true;
 }
 
-bool RobotLoader::load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
-                            RobotLoadOptions options)
+bool RobotLoader::read_urdf_file(const std::string& urdf_path, std::string* text, std::string* error) const
 {
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(urdf_path, ec);
   if (ec || !std::filesystem::is_regular_file(urdf_path, ec))
   {
     if (error)
-      *error = "cannot read URDF file " + in_quotes(urdf_path) + ": no such file";
+      *error = "cannot read the URDF file " + in_quotes(urdf_path) + ": no such file";
     return false;
   }
   if (bytes > resolver_.max_file_bytes())
@@ -399,18 +398,29 @@ bool RobotLoader::load_file(const std::string& urdf_path, RobotVisuals* robot, s
     return false;
   }
   std::ifstream in(urdf_path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
+  std::stringstream contents;
+  contents << in.rdbuf();
   if (!in && !in.eof())
   {
     if (error)
-      *error = "cannot read URDF file " + in_quotes(urdf_path);
+      *error = "cannot read the URDF file " + in_quotes(urdf_path);
     return false;
   }
+  *text = contents.str();
+  return true;
+}
+
+bool RobotLoader::load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
+                            RobotLoadOptions options)
+{
+  std::string text;
+  if (!read_urdf_file(urdf_path, &text, error))
+    return false;
+  std::error_code ec;
   if (options.base_folder.empty())
     options.base_folder = std::filesystem::absolute(urdf_path, ec).parent_path().string();
   std::string why;
-  if (!load_xml(text.str(), options, robot, &why))
+  if (!load_xml(text, options, robot, &why))
   {
     if (error)
       *error = "URDF file " + in_quotes(urdf_path) + ": " + why;

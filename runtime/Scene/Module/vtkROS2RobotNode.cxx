@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -61,7 +60,6 @@ public:
   std::string ParameterName;
   std::string Topic;
   std::string DescriptionFile;
-  std::string FilePackageFolder; // the package holding DescriptionFile, searched for package://
   bool ForceReload = false;
   std::string FixedFrame;
   std::string TfPrefix;
@@ -99,6 +97,25 @@ public:
   };
   std::vector<LinkNode> Links;
   std::vector<vtkWeakPointer<vtkROS2ModelNode>> Models;
+
+  /// The loader, made on first use with the mesh search paths (and, for the file source, the
+  /// package holding the file).
+  ros2vtk::robot::RobotLoader& LoaderForLoads()
+  {
+    if (!this->Loader)
+    {
+      this->Loader.reset(new ros2vtk::robot::RobotLoader());
+      for (const std::string& folder : this->SearchPaths)
+      {
+        this->Loader->resolver().add_search_path(folder);
+      }
+      if (this->Source == "file")
+      {
+        this->Loader->resolver().add_package_of(this->DescriptionFile);
+      }
+    }
+    return *this->Loader;
+  }
 
   std::string EffectiveFixedFrame() const
   {
@@ -410,30 +427,8 @@ bool vtkROS2RobotNode::AttachToFile(vtkROS2NodeNode* rosNode, const std::string&
 //------------------------------------------------------------------------------
 void vtkROS2RobotNode::FollowFile(vtkROS2NodeNode* rosNode)
 {
-  namespace fs = std::filesystem;
   vtkInternals& internals = *this->Internals;
-  // package://<its own package>/... is the usual way a URDF names its meshes: the package that
-  // holds the file (a package.xml up to three folders above it) is searched first, so a robot
-  // loads from its source folder without AMENT_PREFIX_PATH set-up.
-  internals.FilePackageFolder.clear();
-  fs::path folder = fs::path(internals.DescriptionFile).parent_path();
-  for (int level = 0; level < 3 && !folder.empty(); ++level, folder = folder.parent_path())
-  {
-    std::error_code error;
-    if (fs::is_regular_file(folder / "package.xml", error))
-    {
-      internals.FilePackageFolder = folder.string();
-      break;
-    }
-    if (folder == folder.root_path())
-    {
-      break;
-    }
-  }
-  if (internals.Loader && !internals.FilePackageFolder.empty())
-  {
-    internals.Loader->resolver().add_search_path(internals.FilePackageFolder);
-  }
+  internals.Loader.reset(); // made again with the package holding the file (package:// URIs)
   internals.SourceChanged = true;
   this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
   rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
@@ -443,14 +438,11 @@ void vtkROS2RobotNode::FollowFile(vtkROS2NodeNode* rosNode)
 bool vtkROS2RobotNode::ReadDescriptionFile(std::string& description)
 {
   vtkInternals& internals = *this->Internals;
-  std::ifstream file(internals.DescriptionFile, std::ios::binary);
-  std::ostringstream text;
-  if (file && (text << file.rdbuf()))
+  std::string error;
+  if (internals.LoaderForLoads().read_urdf_file(internals.DescriptionFile, &description, &error))
   {
-    description = text.str();
     return true;
   }
-  const std::string error = "cannot read the URDF file '" + internals.DescriptionFile + "'";
   if (internals.LastError != error)
   {
     vtkErrorMacro("robot '" << internals.RobotName << "': " << error);
@@ -530,24 +522,12 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
     return false;
   }
   const auto start = std::chrono::steady_clock::now();
-  if (!internals.Loader)
-  {
-    internals.Loader.reset(new ros2vtk::robot::RobotLoader());
-    for (const std::string& folder : internals.SearchPaths)
-    {
-      internals.Loader->resolver().add_search_path(folder);
-    }
-    if (!internals.FilePackageFolder.empty())
-    {
-      internals.Loader->resolver().add_search_path(internals.FilePackageFolder);
-    }
-  }
   ros2vtk::robot::RobotLoadOptions options;
   options.base_folder = baseFolder ? baseFolder : "";
   ros2vtk::robot::RobotVisuals visuals;
   std::string error;
   const std::string description = urdfXml ? urdfXml : "";
-  if (!internals.Loader->load_xml(description, options, &visuals, &error))
+  if (!internals.LoaderForLoads().load_xml(description, options, &visuals, &error))
   {
     // The robot already shown (if any) stays; the bad description is not parsed again.
     internals.LastFailedDescription = description;

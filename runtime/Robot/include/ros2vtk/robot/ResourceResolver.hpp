@@ -47,6 +47,11 @@ public:
   /// A folder the user adds; searched first. It may be a package, a folder holding packages
   /// (searched a few levels deep) or an install prefix (`<folder>/share/<pkg>`).
   void add_search_path(const std::string& folder);
+  /// Adds, as a search path, the package holding `file` (a URDF read from a package's source or
+  /// share folder): the first folder with a package.xml, up to three folders above the file. A
+  /// URDF names its own meshes `package://<its package>/...`, so they then resolve with no
+  /// AMENT_PREFIX_PATH set-up. Returns the package folder, or "" when none was found.
+  std::string add_package_of(const std::string& file);
 
   /// When on, a resolved file must lie inside one of the allowed roots after normalisation
   /// (`..` and symlinks resolved), and a `package://` file inside its package. The roots are

@@ -115,6 +115,9 @@ public:
   /// load is a warning on its link and a placeholder.
   bool load_xml(const std::string& urdf_xml, const RobotLoadOptions& options, RobotVisuals* robot,
                 std::string* error);
+  /// The text of a URDF file; false (and why) when it is missing, unreadable or larger than the
+  /// resolver's file size limit.
+  bool read_urdf_file(const std::string& urdf_path, std::string* text, std::string* error) const;
   /// Reads the URDF file, then load_xml() with relative paths taken from its folder.
   bool load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
                  RobotLoadOptions options = RobotLoadOptions());
