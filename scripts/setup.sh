@@ -32,6 +32,8 @@ DEBIAN_PACKAGES=(
   libtinyxml2-dev
   libconsole-bridge-dev
   python3-yaml
+  iproute2
+  nftables
 )
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
