@@ -91,6 +91,18 @@ class Lab:
             subprocess.run(['ip', 'netns', 'exec', ns, 'nft', '-f', '-'], input=rules, text=True,
                            check=True, capture_output=True)
 
+    def block_multicast(self) -> None:
+        """A network that drops multicast (hospital and Wi-Fi networks): nothing to 224.0.0.0/4
+        leaves or enters either end of the link."""
+        for ns, dev in ((self.robot_ns, self.robot_if), (self.imaging_ns, self.imaging_if)):
+            rules = (f'table ip r2v_nomulticast {{\n'
+                     f'  chain out {{ type filter hook output priority 0; policy accept;\n'
+                     f'    oifname "{dev}" ip daddr 224.0.0.0/4 drop\n  }}\n'
+                     f'  chain in {{ type filter hook input priority 0; policy accept;\n'
+                     f'    iifname "{dev}" ip daddr 224.0.0.0/4 drop\n  }}\n}}\n')
+            subprocess.run(['ip', 'netns', 'exec', ns, 'nft', '-f', '-'], input=rules, text=True,
+                           check=True, capture_output=True)
+
     def close(self) -> None:
         self.robot.close()
         self.imaging.close()

@@ -9,6 +9,8 @@ import time
 
 import pytest
 
+from conftest import IMAGING_ADDRESS, ROBOT_ADDRESS
+
 SENT = 20
 
 
@@ -176,3 +178,23 @@ def test_random_packet_loss_degrades_keep_last_and_best_effort_streams_gracefull
     baseline, _ = stream_through_loss(lab, qos, 100, ours=False)
     print(f'5 % loss, {qos} at 100 Hz: ours {arrived}, rclpy {baseline} of {total} arrived')
     assert total // 2 < arrived <= total
+
+
+@pytest.mark.parametrize('static_peers', [False, True], ids=['no_static_peers', 'ROS_STATIC_PEERS'])
+def test_without_multicast_static_peers_find_the_other_host(lab, static_peers):
+    """Multicast dropped on the link: SUBNET discovery alone finds nobody (the control); with
+    ROS_STATIC_PEERS naming the other host on both sides (ROS 2 Jazzy and later), rclpy and our
+    node discover each other by unicast and the data flows."""
+    lab.block_multicast()
+    if static_peers:
+        lab.robot.env['ROS_STATIC_PEERS'] = IMAGING_ADDRESS
+        lab.imaging.env['ROS_STATIC_PEERS'] = ROBOT_ADDRESS
+    ours = lab.imaging.scene('--seconds', '15' if static_peers else '8', 'sub', 'String', '/needle', '--count', '5')
+    lab.imaging.wait_ready(ours)
+    peer = lab.robot.peer('pub', '/needle', 'std_msgs/msg/String', json.dumps({'data': 'target'}),
+                          '--count', '5', '--rate', '10', '--wait', '12' if static_peers else '6')
+    code, out, err = lab.imaging.finish(ours, timeout=40)
+    lab.robot.finish(peer, timeout=30)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == (5 if static_peers else 0), result
