@@ -1,0 +1,45 @@
+"""Hostile but well-formed input from a real rclpy peer (issue 11): each message below once
+crashed, hung or silently misled our side. Each test asserts that the process survives, that the
+error names what arrived, and that valid messages sent afterwards still arrive."""
+from __future__ import annotations
+
+import json
+
+
+def bad_then_good(ros, short: str, topic: str, ros_type: str, bad: dict, good: dict, seconds: str = '20'):
+    """Our subscriber gets `bad` (5 times), then `good`; returns our last JSON line."""
+    ours = ros.scene('--seconds', seconds, 'sub', short, topic, '--count', '1000000')
+    ros.wait_ready(ours)
+    hostile = ros.peer('pub', topic, ros_type, json.dumps(bad), '--count', '5', '--rate', '10')
+    assert ros.finish(hostile)[0] == 0
+    valid = ros.peer('pub', topic, ros_type, json.dumps(good), '--count', '40', '--rate', '10')
+    code, out, err = ros.finish(ours, timeout=float(seconds) + 20)
+    ros.finish(valid)
+    assert code == 0, err
+    return json.loads(out.splitlines()[-1]), err
+
+
+def test_multi_array_of_rows_without_columns_is_refused_and_later_arrays_arrive(ros):
+    # 11.1: 2^27 rows x 0 columns in a 60-byte message allocated 1 GiB; 2^32-1 rows aborted the
+    # process (bad_alloc).
+    bad = {'layout': {'dim': [{'label': 'rows', 'size': 4294967295, 'stride': 0},
+                              {'label': 'cols', 'size': 0, 'stride': 0}], 'data_offset': 0}, 'data': []}
+    good = {'layout': {'dim': [{'label': 'x', 'size': 3, 'stride': 3}], 'data_offset': 0},
+            'data': [0.5, -1.25, 2.0]}
+    result, _ = bad_then_good(ros, 'DoubleArray', '/hostile/array', 'std_msgs/msg/Float64MultiArray', bad, good)
+    assert result['value'] == [0.5, -1.25, 2.0], result
+    assert result['count'] >= 6, result  # the 5 refused ones were counted too
+
+
+def test_multi_array_error_names_the_layout(ros):
+    bad = {'layout': {'dim': [{'label': 'rows', 'size': 134217728, 'stride': 0},
+                              {'label': 'cols', 'size': 0, 'stride': 0}], 'data_offset': 0}, 'data': []}
+    ours = ros.scene('--seconds', '15', 'sub', 'IntTable', '/hostile/table')
+    ros.wait_ready(ours)
+    hostile = ros.peer('pub', '/hostile/table', 'std_msgs/msg/Int64MultiArray', json.dumps(bad), '--count', '30')
+    code, out, err = ros.finish(ours)
+    ros.finish(hostile)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['value'] is None or result['value'] == {}, result
+    assert 'multi_array_to_table: layout has 134217728 rows of 0 columns' in result['conversion_error'], result
