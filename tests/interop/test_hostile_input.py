@@ -43,3 +43,37 @@ def test_multi_array_error_names_the_layout(ros):
     result = json.loads(out.splitlines()[-1])
     assert result['value'] is None or result['value'] == {}, result
     assert 'multi_array_to_table: layout has 134217728 rows of 0 columns' in result['conversion_error'], result
+
+
+def test_invalid_utf8_arrives_as_str_with_replacement_characters(ros):
+    # 11.9: bytes rclpy cannot send from a str, so raw CDR: length 4, 'a' 0xff 'b' NUL. Our
+    # policy is rclpy's own (decode with "replace"): Python gets a str, never bytes.
+    ours = ros.scene('--seconds', '15', 'sub', 'String', '/hostile/utf8')
+    ros.wait_ready(ours)
+    peer = ros.peer('pub_raw', '/hostile/utf8', 'std_msgs/msg/String', '000100000400000061ff6200', '--count', '30')
+    code, out, err = ros.finish(ours)
+    ros.finish(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['value'] == 'a\ufffdb', result
+    assert result['rejected'] == 0, result
+
+
+def test_pose_that_overflows_in_millimetres_is_refused_and_later_poses_arrive(ros):
+    # 11.9: 1e306 m is finite; in mm it was an infinite matrix.
+    header = {'stamp': {'sec': 1, 'nanosec': 0}, 'frame_id': 'world'}
+    bad = {'header': header, 'pose': {'position': {'x': 1e306, 'y': 0.0, 'z': 0.0},
+                                      'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
+    good = {'header': header, 'pose': {'position': {'x': 0.25, 'y': 0.0, 'z': 0.0},
+                                       'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
+    ours = ros.scene('--seconds', '15', 'sub', 'PoseStamped', '/hostile/pose', '--count', '1000000')
+    ros.wait_ready(ours)
+    hostile = ros.peer('pub', '/hostile/pose', 'geometry_msgs/msg/PoseStamped', json.dumps(bad), '--count', '30')
+    code, out, err = ros.finish(ours)
+    ros.finish(hostile)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['value'] is None, result
+    assert 'translation (1e+306, 0, 0) is not finite once scaled by 1000' in result['conversion_error'], result
+    result, _ = bad_then_good(ros, 'PoseStamped', '/hostile/pose2', 'geometry_msgs/msg/PoseStamped', bad, good)
+    assert result['value'][0][3] == 250.0, result

@@ -8,6 +8,7 @@
 // line width). tests/fixtures/yaml_scalars.json holds PyYAML's own output for tricky values.
 // Reading uses yaml-cpp (Debian's libyaml-cpp-dev).
 #include "ros2vtk/wire/MessageYaml.hpp"
+#include "ros2vtk/wire/Utf8.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
@@ -803,7 +804,8 @@ private:
   {
     if (error.empty())
     {
-      error = (path.empty() ? std::string("<message>") : path) + ": " + what;
+      // `what` may quote the user's text; capped at a character boundary (issue 11.9).
+      error = clip_for_message((path.empty() ? std::string("<message>") : path) + ": " + what, 1000);
     }
     return false;
   }
