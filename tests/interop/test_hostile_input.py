@@ -4,6 +4,7 @@ error names what arrived, and that valid messages sent afterwards still arrive."
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 
 def bad_then_good(ros, short: str, topic: str, ros_type: str, bad: dict, good: dict, seconds: str = '20'):
@@ -77,3 +78,35 @@ def test_pose_that_overflows_in_millimetres_is_refused_and_later_poses_arrive(ro
     assert 'translation (1e+306, 0, 0) is not finite once scaled by 1000' in result['conversion_error'], result
     result, _ = bad_then_good(ros, 'PoseStamped', '/hostile/pose2', 'geometry_msgs/msg/PoseStamped', bad, good)
     assert result['value'][0][3] == 250.0, result
+
+
+def test_description_from_the_network_cannot_make_us_read_meshes_outside_the_roots(ros, tmp_path):
+    # 11.10: a robot_description from an rclpy peer names real STL files outside every root
+    # (through `..` in a package URI, and by file://); they stay unread placeholders with a
+    # warning, while the mesh inside the package loads.
+    stl = (Path(__file__).resolve().parents[2] / 'examples' / 'robots' / 'surgical_arm' / 'meshes' / 'base.stl').read_bytes()
+    (tmp_path / 'ws' / 'pkg' / 'meshes').mkdir(parents=True)
+    (tmp_path / 'ws' / 'pkg' / 'package.xml').write_text('<package format="3"><name>pkg</name></package>')
+    (tmp_path / 'ws' / 'pkg' / 'meshes' / 'ok.stl').write_bytes(stl)
+    (tmp_path / 'outside').mkdir()
+    (tmp_path / 'outside' / 'x.stl').write_bytes(stl)
+    urdf = f"""<robot name="sneaky">
+  <link name="base"><visual><geometry><mesh filename="package://pkg/meshes/ok.stl"/></geometry></visual></link>
+  <link name="dotdot"><visual><geometry><mesh filename="package://pkg/../../outside/x.stl"/></geometry></visual></link>
+  <link name="file"><visual><geometry><mesh filename="file://{tmp_path}/outside/x.stl"/></geometry></visual></link>
+  <joint name="a" type="fixed"><parent link="base"/><child link="dotdot"/></joint>
+  <joint name="b" type="fixed"><parent link="base"/><child link="file"/></joint>
+</robot>"""
+    peer = ros.peer('pub', '/robot_description', 'std_msgs/msg/String', json.dumps({'data': urdf}),
+                    '--qos', 'latched', '--count', '1', '--linger', '20')
+    ours = ros.scene('--seconds', '15', 'robot', 'sneaky', '--source', 'topic',
+                     '--mesh-path', str(tmp_path / 'ws'), '--follow', '0.5')
+    code, out, err = ros.finish(ours, timeout=40)
+    ros.finish(peer)
+    assert code == 0, err
+    loaded = json.loads(out.splitlines()[1])
+    assert loaded['state'] == 'loaded', loaded
+    assert loaded['models'] == 3 and loaded['placeholders'] == 2, loaded
+    warnings = loaded['warnings']
+    assert "link 'dotdot'" in warnings and 'outside its package folder' in warnings, warnings
+    assert "link 'file'" in warnings and 'outside the allowed roots' in warnings, warnings

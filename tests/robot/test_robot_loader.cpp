@@ -169,7 +169,9 @@ TEST(RobotLoader, FileUrisAbsolutePathsAndMirroringScale)
                           "<link name='b'><visual><geometry><mesh filename='" + meshes +
                           "/wrist.stl' scale='-1 1 1'/></geometry></visual></link>"
                           "<joint name='j' type='fixed'><parent link='a'/><child link='b'/></joint></robot>";
-  RobotLoader loader{ResourceResolver()};
+  ResourceResolver resolver;
+  resolver.add_allowed_root(meshes); // meshes outside every root are refused by default
+  RobotLoader loader{resolver};
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;

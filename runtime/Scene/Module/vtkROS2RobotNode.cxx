@@ -64,6 +64,7 @@ public:
   std::string FixedFrame;
   std::string TfPrefix;
   std::vector<std::string> SearchPaths;
+  bool RestrictMeshesToRoots = true;
   std::string MeshBaseFolder;
 
   // The description source node, and whether this robot created it (then it removes it).
@@ -105,6 +106,7 @@ public:
     if (!this->Loader)
     {
       this->Loader.reset(new ros2vtk::robot::RobotLoader());
+      this->Loader->resolver().set_restrict_to_roots(this->RestrictMeshesToRoots);
       for (const std::string& folder : this->SearchPaths)
       {
         this->Loader->resolver().add_search_path(folder);
@@ -227,6 +229,21 @@ void vtkROS2RobotNode::AddMeshSearchPath(const char* folder)
   {
     this->Internals->Loader->resolver().add_search_path(folder);
   }
+}
+
+void vtkROS2RobotNode::SetRestrictMeshesToRoots(bool on)
+{
+  this->Internals->RestrictMeshesToRoots = on;
+  if (this->Internals->Loader)
+  {
+    this->Internals->Loader->resolver().set_restrict_to_roots(on);
+  }
+  this->Modified();
+}
+
+bool vtkROS2RobotNode::GetRestrictMeshesToRoots() const
+{
+  return this->Internals->RestrictMeshesToRoots;
 }
 
 void vtkROS2RobotNode::SetMeshBaseFolder(const char* folder)
