@@ -748,6 +748,7 @@ class YamlReader
 public:
   explicit YamlReader(const std::string& source)
     : source_(source)
+    , budget_(4 * source.size() + 64)
   {
   }
 
@@ -756,6 +757,10 @@ public:
   bool read_message(const MessageTypeSupport& type, const YAML::Node& node, void* message,
                     const std::string& path)
   {
+    if (!spend(path))
+    {
+      return false;
+    }
     if (node.IsNull())
     {
       return true; // `{}`-like: every field keeps its default
@@ -788,6 +793,22 @@ public:
 
 private:
   const std::string& source_;
+  // Values (and string bytes) read so far, against a budget proportional to the text: without
+  // aliases every value takes at least one byte of text, with them (`*a` repeated, nested) a
+  // 1 kB document could expand to billions of values or gigabytes of strings (issue 11.5).
+  size_t visited_ = 0;
+  size_t budget_;
+
+  bool spend(const std::string& path, size_t units = 1)
+  {
+    visited_ += units;
+    if (visited_ <= budget_)
+    {
+      return true;
+    }
+    return fail(path, "the YAML expands to more than " + std::to_string(budget_) +
+                  " values for its " + std::to_string(source_.size()) + " bytes (aliases?)");
+  }
 
   /// The scalar's text, with yaml-cpp's blank single-quoted scalars repaired.
   std::string scalar(const YAML::Node& node) const
@@ -864,6 +885,10 @@ private:
     for (size_t i = 0; i < count; ++i)
     {
       const std::string item_path = path + "[" + std::to_string(i) + "]";
+      if (!spend(item_path))
+      {
+        return false;
+      }
       if (field.type == FieldType::Bool)
       {
         bool flag = false;
@@ -1060,7 +1085,12 @@ private:
       return fail(path, std::string("expected a ") + type_name(field.type) + ", got " +
                     describe(node));
     }
-    const std::string text = scalar(node);
+    std::string text = scalar(node);
+    if (!spend(path, text.size()))
+    {
+      return false;
+    }
+    repair_utf8(text); // the project's invalid-UTF-8 policy (Utf8.hpp)
     if (field.type == FieldType::String)
     {
       if (field.string_bound != 0 && text.size() > field.string_bound)
