@@ -110,3 +110,23 @@ def test_description_from_the_network_cannot_make_us_read_meshes_outside_the_roo
     warnings = loaded['warnings']
     assert "link 'dotdot'" in warnings and 'outside its package folder' in warnings, warnings
     assert "link 'file'" in warnings and 'outside the allowed roots' in warnings, warnings
+
+
+def test_empty_robot_description_says_what_arrived_and_a_later_one_loads(ros):
+    # 11.8: an empty robot_description gave no error; the robot waited forever.
+    empty = ros.peer('pub', '/robot_description', 'std_msgs/msg/String', json.dumps({'data': ''}),
+                     '--qos', 'latched', '--count', '1', '--linger', '4')
+    ours = ros.scene('--seconds', '8', 'robot', 'r', '--source', 'topic', '--follow', '1', '--every', '0.5')
+    assert json.loads(ours.stdout.readline())['ready']
+    first = json.loads(ours.stdout.readline())
+    ros.finish(empty)
+    assert first['state'] == "failed: the robot description from the topic '/robot_description' is empty (0 bytes)", first
+    urdf = '<robot name="r"><link name="base"/><link name="tip"/>' \
+           '<joint name="j" type="fixed"><parent link="base"/><child link="tip"/></joint></robot>'
+    valid = ros.peer('pub', '/robot_description', 'std_msgs/msg/String', json.dumps({'data': urdf}),
+                     '--qos', 'latched', '--count', '1', '--linger', '10')
+    code, out, err = ros.finish(ours, timeout=40)
+    ros.finish(valid)
+    assert code == 0, err
+    last = json.loads(out.splitlines()[-1])
+    assert last['state'] == 'loaded' and last['loads'] == 1, last
