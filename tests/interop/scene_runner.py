@@ -150,6 +150,9 @@ def to_plain(value):
 
 def cmd_sub(args, logic, node) -> int:
     sub = node.CreateAndAddSubscriberNode(args.type, args.topic)
+    if args.qos and not sub.SetQoSProfile(args.qos):
+        print(json.dumps({'error': f'QoS profile {args.qos} refused'}), flush=True)
+        return 1
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
     run(logic, args.seconds, lambda: sub.GetNumberOfMessages() >= args.count)
     run(logic, args.linger, lambda: False)  # anything beyond --count would show up here
@@ -370,6 +373,7 @@ def main() -> int:
     subscriber.add_argument('topic')
     subscriber.add_argument('--count', type=int, default=1)
     subscriber.add_argument('--linger', type=float, default=0.0)
+    subscriber.add_argument('--qos', default='', help='a QoS profile name (default: the default profile)')
     publisher = sub.add_parser('pub')
     publisher.add_argument('type')
     publisher.add_argument('topic')

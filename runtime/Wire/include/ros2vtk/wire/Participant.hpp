@@ -28,7 +28,11 @@ struct ParticipantOptions
 {
   int domain_id = 0;
   DiscoveryRange range = DiscoveryRange::Subnet;
-  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_LOCALHOST_ONLY.
+  /// Hosts to discover by unicast besides the range (ROS_STATIC_PEERS, as ROS 2 Jazzy and later:
+  /// IPv4 addresses or host names), for networks that drop multicast.
+  std::vector<std::string> static_peers;
+  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY and ROS_STATIC_PEERS
+  /// (';'-separated; rmw's limit of 32 peers).
   static ParticipantOptions from_environment();
 };
 
