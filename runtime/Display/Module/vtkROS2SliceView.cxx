@@ -30,6 +30,7 @@
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <string>
@@ -43,14 +44,16 @@ struct Orientation
   const char* name;
   double normal[3];
   double viewUp[3];
+  double cameraSide; // +1: the camera is on the +normal side of the plane, -1: the other
 };
 
-// Slicer's conventions: axial seen from above with y (anterior) up, sagittal from +x, coronal
-// from -y... kept simple here: the camera sits on the +normal side.
+// Slicer's slice orientations (vtkMRMLSliceNode::SetOrientationTo...), world = RAS: axial has
+// patient right (+x) on the screen's left and anterior up (seen from the feet); sagittal has
+// anterior on the left, superior up; coronal has patient right on the left, superior up.
 const Orientation kOrientations[] = {
-  { "axial", { 0, 0, 1 }, { 0, 1, 0 } },
-  { "sagittal", { 1, 0, 0 }, { 0, 0, 1 } },
-  { "coronal", { 0, 1, 0 }, { 0, 0, 1 } },
+  { "axial", { 0, 0, 1 }, { 0, 1, 0 }, -1.0 },
+  { "sagittal", { 1, 0, 0 }, { 0, 0, 1 }, -1.0 },
+  { "coronal", { 0, 1, 0 }, { 0, 0, 1 }, 1.0 },
 };
 
 // Intersection lines sit this far (mm) in front of the slice so they are drawn over it.
@@ -314,13 +317,13 @@ void vtkROS2SliceView::UpdateCamera()
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
   camera->SetFocalPoint(internals.Center);
-  const double distance = 10.0 * halfHeight + 1000.0;
+  const double distance = orientation.cameraSide * (10.0 * halfHeight + 1000.0);
   camera->SetPosition(internals.Center[0] + distance * orientation.normal[0],
     internals.Center[1] + distance * orientation.normal[1], internals.Center[2] + distance * orientation.normal[2]);
   camera->SetViewUp(const_cast<double*>(orientation.viewUp));
   camera->SetParallelScale(halfHeight);
   renderer->ResetCameraClippingRange();
-  camera->SetClippingRange(1.0, 2.0 * distance);
+  camera->SetClippingRange(1.0, 2.0 * std::abs(distance));
 }
 
 //------------------------------------------------------------------------------
@@ -388,8 +391,8 @@ bool vtkROS2SliceView::UpdateIntersections()
       const double* color = model->GetColor();
       cut->Actor->GetProperty()->SetColor(color[0], color[1], color[2]);
       cut->Actor->SetVisibility(model->GetVisibility());
-      cut->Actor->SetPosition(kLineOffset * orientation.normal[0], kLineOffset * orientation.normal[1],
-        kLineOffset * orientation.normal[2]);
+      const double offset = kLineOffset * orientation.cameraSide;
+      cut->Actor->SetPosition(offset * orientation.normal[0], offset * orientation.normal[1], offset * orientation.normal[2]);
     }
   }
   for (auto it = internals.Cuts.begin(); it != internals.Cuts.end();)

@@ -41,7 +41,9 @@ public:
   void SetScene(vtkROS2Scene* scene);
   vtkROS2Scene* GetScene() const;
 
-  /// "axial" (normal +z), "sagittal" (+x) or "coronal" (+y). False (vtkErrorMacro) otherwise.
+  /// "axial" (normal +z), "sagittal" (+x) or "coronal" (+y), laid out on the screen as in
+  /// Slicer (world = RAS: axial and coronal show patient right on the left). False
+  /// (vtkErrorMacro) otherwise.
   bool SetOrientation(const char* orientation);
   const char* GetOrientation() const;
   /// The volume shown (referenced), in world coordinates.
