@@ -451,3 +451,15 @@ def test_slice_view_draws_the_intersection_of_a_model(ros2vtk, logic, vtk):
     slices.Update()
     assert slices.GetNumberOfIntersectedModels() == 0
     assert not slices.SetOrientation('oblique')
+
+
+def test_model_representation_is_saved_with_the_scene(ros2vtk, logic):
+    model = ros2vtk.vtkROS2ModelNode()
+    model.SetRepresentation(ros2vtk.vtkROS2ModelNode.Points)
+    logic.GetScene().AddNode(model)
+    xml = logic.GetScene().WriteToXMLString()
+    assert 'representation="0"' in xml
+    restored = ros2vtk.vtkROS2Scene()
+    assert restored.ReadFromXMLString(xml)
+    assert restored.GetNthNodeByClass(0, 'vtkROS2ModelNode').GetRepresentation() == 0
+    assert not restored.ReadFromXMLString(xml.replace('representation="0"', 'representation="7"'))
