@@ -332,6 +332,19 @@ def test_image_slice_shows_the_published_pixels(ros2vtk, logic, vtk, peers):
         col, row = (int(round(v)) for v in view.display_point(x, 23.5, 0))
         assert list(rgb[row, col]) == [value] * 3, (x, rgb[row, col])
 
+    # The same subscriber as the volume of a slice view (axial, through the image's plane).
+    slice_view = View(vtk, size=(200, 200))
+    slices = ros2vtk.vtkROS2SliceView()
+    slices.SetRenderer(slice_view.renderer)
+    slices.SetVolumeNode(subscriber)
+    slices.SetWindowLevel(255, 127.5)
+    slices.SetSliceCenter(31.5, 23.5, 0)
+    assert slices.Update() is True
+    rgb = slice_view.pixels('image_slice_view')
+    for x, value in ((12, 40), (52, 220)):
+        col, row = (int(round(v)) for v in slice_view.display_point(x, 23.5, 0))
+        assert list(rgb[row, col]) == [value] * 3, (x, rgb[row, col])
+
 
 def test_point_cloud_shows_its_points(ros2vtk, logic, vtk, peers):
     view = View(vtk)
