@@ -476,3 +476,56 @@ def test_model_representation_is_saved_with_the_scene(ros2vtk, logic):
     assert restored.ReadFromXMLString(xml)
     assert restored.GetNthNodeByClass(0, 'vtkROS2ModelNode').GetRepresentation() == 0
     assert not restored.ReadFromXMLString(xml.replace('representation="0"', 'representation="7"'))
+
+
+def test_volume_node_drawn_as_a_volume_when_3d_and_a_slice_when_2d(ros2vtk, logic, vtk):
+    view = View(vtk)
+    view.top_down(half_height=80)
+    dm = make_display(ros2vtk, logic, view)
+    # A 3D phantom: a bright ball (r 30 mm) in a dark 101 mm cube centred on the origin.
+    ball = vtk.vtkImageData()
+    ball.SetDimensions(51, 51, 51)
+    ball.SetSpacing(2, 2, 2)
+    ball.SetOrigin(-50, -50, -50)
+    ball.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    from vtk.util.numpy_support import vtk_to_numpy
+    z, y, x = np.mgrid[-50:51:2, -50:51:2, -50:51:2]
+    vtk_to_numpy(ball.GetPointData().GetScalars())[:] = np.where(x * x + y * y + z * z < 900, 255, 0).ravel()
+    holder = ros2vtk.vtkROS2TransformNode()
+    logic.GetScene().AddNode(holder)
+    volume = ros2vtk.vtkROS2VolumeNode()
+    volume.SetImageData(ball)
+    volume.SetWindow(255)
+    volume.SetLevel(127.5)
+    logic.GetScene().AddNode(volume)
+    volume.SetParentTransformNodeID(holder.GetID())
+    assert dm.Update()
+    prop = dm.GetPropForNode(volume)
+    slice_actor, volume_actor = prop.GetParts().GetItemAsObject(0), prop.GetParts().GetItemAsObject(1)
+    assert volume_actor.GetVisibility() and not slice_actor.GetVisibility()
+    rgb = view.pixels('volume_3d')
+    bright = rgb.sum(axis=2) > 150
+    inside = view.display_point(0, 0, 0)
+    assert bright[int(inside[1]), int(inside[0])]
+    assert not bright[int(view.display_point(45, 45, 0)[1]), int(view.display_point(45, 45, 0)[0])]
+    # The parent transform moves it.
+    m = vtk.vtkMatrix4x4()
+    m.SetElement(0, 3, 40.0)
+    holder.SetMatrixTransformToParent(m)
+    assert dm.Update()
+    assert volume_actor.GetUserMatrix().GetElement(0, 3) == 40.0
+    rgb = view.pixels('volume_3d_moved')
+    bright = rgb.sum(axis=2) > 150
+    cols = np.nonzero(bright)[1]
+    assert abs(cols.mean() - view.display_point(40, 0, 0)[0]) < 4
+    # A 2D image in a volume node is a slice.
+    flat = vtk.vtkImageData()
+    flat.SetDimensions(20, 10, 1)
+    flat.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    vtk_to_numpy(flat.GetPointData().GetScalars())[:] = 200
+    volume.SetImageData(flat)
+    assert dm.Update()
+    assert slice_actor.GetVisibility() and not volume_actor.GetVisibility()
+    volume.VisibilityOff()
+    dm.Update()
+    assert not slice_actor.GetVisibility() and not volume_actor.GetVisibility()

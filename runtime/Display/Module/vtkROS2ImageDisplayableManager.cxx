@@ -4,6 +4,7 @@
 
 #include "SubscriberData.hpp"
 #include "vtkROS2SceneNode.h"
+#include "vtkROS2VolumeNode.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkImageActor.h"
@@ -49,7 +50,7 @@ bool AttributeNumber(vtkROS2SceneNode* node, const char* name, double& value)
 //------------------------------------------------------------------------------
 bool vtkROS2ImageDisplayableManager::CanDisplay(vtkROS2SceneNode* node)
 {
-  return ros2vtk::display::IsSubscriberOf(node, "vtkImageData");
+  return ros2vtk::display::IsSubscriberOf(node, "vtkImageData") || vtkROS2VolumeNode::SafeDownCast(node);
 }
 
 //------------------------------------------------------------------------------
@@ -97,8 +98,10 @@ void vtkROS2ImageDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtkProp*
   vtkImageActor* slice = GetImageActor(prop);
   vtkVolume* volume = GetVolume(prop);
   auto* image = vtkImageData::SafeDownCast(slice->GetMapper()->GetInput());
-  auto* message = vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node));
-  if (!message || !message->GetPointData()->GetScalars())
+  auto* volumeNode = vtkROS2VolumeNode::SafeDownCast(node);
+  auto* message = volumeNode ? volumeNode->GetImageData()
+                             : vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node));
+  if (!message || !message->GetPointData()->GetScalars() || (volumeNode && !volumeNode->GetVisibility()))
   {
     slice->VisibilityOff();
     volume->VisibilityOff();
@@ -119,6 +122,11 @@ void vtkROS2ImageDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtkProp*
   }
   double window = range[1] > range[0] ? range[1] - range[0] : 1.0;
   double level = 0.5 * (range[0] + range[1]);
+  if (volumeNode && volumeNode->GetWindow() > 0)
+  {
+    window = volumeNode->GetWindow();
+    level = volumeNode->GetLevel();
+  }
   AttributeNumber(node, "ros2vtk.display.window", window);
   AttributeNumber(node, "ros2vtk.display.level", level);
   slice->GetProperty()->SetColorWindow(window);

@@ -1,5 +1,6 @@
 // ros2vtk — draws image subscribers (any subscriber node whose messages convert to
-// vtkImageData, e.g. sensor_msgs/Image) at their pose: a 2D image as a slice (vtkImageActor)
+// vtkImageData, e.g. sensor_msgs/Image) and volume nodes (vtkROS2VolumeNode: a CT phantom, with
+// its own window/level) at their pose: a 2D image as a slice (vtkImageActor)
 // with window/level, a 3D one as a volume (vtkVolume, smart mapper). The pose is the node's
 // "transform" reference (a tf lookup or registration), identity without one. Window and level
 // come from the node's attributes "ros2vtk.display.window" / "ros2vtk.display.level" (saved

@@ -7,6 +7,7 @@
 #include "SubscriberData.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2Scene.h"
+#include "vtkROS2VolumeNode.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -191,9 +192,9 @@ void vtkROS2SliceView::SetImageData(vtkImageData* image)
 //------------------------------------------------------------------------------
 void vtkROS2SliceView::SetVolumeNode(vtkROS2SceneNode* node)
 {
-  if (node && !ros2vtk::display::IsSubscriberOf(node, "vtkImageData"))
+  if (node && !ros2vtk::display::IsSubscriberOf(node, "vtkImageData") && !vtkROS2VolumeNode::SafeDownCast(node))
   {
-    vtkErrorMacro("SetVolumeNode: " << node->GetClassName() << " does not receive vtkImageData");
+    vtkErrorMacro("SetVolumeNode: " << node->GetClassName() << " is neither a volume node nor receives vtkImageData");
     return;
   }
   this->Internals->VolumeNode = node;
@@ -250,7 +251,9 @@ bool vtkROS2SliceView::Update()
     if (node->GetMTime() != internals.VolumeNodeTime)
     {
       internals.VolumeNodeTime = node->GetMTime();
-      if (auto* image = vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node)))
+      auto* volumeNode = vtkROS2VolumeNode::SafeDownCast(node);
+      if (auto* image = volumeNode ? volumeNode->GetImageData()
+                                   : vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node)))
       {
         internals.NodeImage->ShallowCopy(image);
         internals.NodeImage->Modified();

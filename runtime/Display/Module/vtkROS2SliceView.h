@@ -49,8 +49,10 @@ public:
   /// The volume shown (referenced), in world coordinates.
   void SetImageData(vtkImageData* image);
   vtkImageData* GetImageData() const;
-  /// Or a subscriber node whose messages convert to vtkImageData: its newest image, refreshed
-  /// on each Update that follows a spin with a new message. Null: back to SetImageData's.
+  /// Or a vtkROS2VolumeNode, or a subscriber node whose messages convert to vtkImageData (its
+  /// newest image, refreshed on each Update that follows a spin with a new message). Null: back
+  /// to SetImageData's. The image is taken in world coordinates (the node's transform is not
+  /// applied to the slice).
   void SetVolumeNode(vtkROS2SceneNode* node);
   vtkROS2SceneNode* GetVolumeNode() const;
 
