@@ -529,3 +529,43 @@ def test_volume_node_drawn_as_a_volume_when_3d_and_a_slice_when_2d(ros2vtk, logi
     volume.VisibilityOff()
     dm.Update()
     assert not slice_actor.GetVisibility() and not volume_actor.GetVisibility()
+
+
+def test_slice_view_reslices_a_volume_node_where_its_transform_puts_it(ros2vtk, logic, vtk):
+    from vtk.util.numpy_support import vtk_to_numpy
+    ball = vtk.vtkImageData()
+    ball.SetDimensions(51, 51, 51)
+    ball.SetSpacing(2, 2, 2)
+    ball.SetOrigin(-50, -50, -50)
+    ball.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    z, y, x = np.mgrid[-50:51:2, -50:51:2, -50:51:2]
+    vtk_to_numpy(ball.GetPointData().GetScalars())[:] = np.where(x * x + y * y + z * z < 900, 200, 20).ravel()
+    registration = ros2vtk.vtkROS2TransformNode()
+    logic.GetScene().AddNode(registration)
+    volume = ros2vtk.vtkROS2VolumeNode()
+    volume.SetImageData(ball)
+    logic.GetScene().AddNode(volume)
+    volume.SetParentTransformNodeID(registration.GetID())
+    view = View(vtk, size=(200, 200))
+    slices = ros2vtk.vtkROS2SliceView()
+    slices.SetRenderer(view.renderer)
+    slices.SetVolumeNode(volume)
+    slices.SetWindowLevel(255, 127.5)
+    slices.SetFieldOfView(100)
+    slices.SetSliceCenter(0, 0, 0)
+    slices.Update()
+
+    def value_at(rgb, x, y):
+        col, row = (int(round(v)) for v in view.display_point(x, y, 0))
+        return int(rgb[row, col, 0])
+    rgb = view.pixels('slice_volume_node')
+    assert value_at(rgb, 0, 0) == 200 and value_at(rgb, 40, 0) == 20
+    m = vtk.vtkMatrix4x4()
+    m.SetElement(0, 3, 40.0)  # the registration moves the phantom 40 mm along x
+    registration.SetMatrixTransformToParent(m)
+    assert slices.Update() is True
+    rgb = view.pixels('slice_volume_node_registered')
+    assert value_at(rgb, 40, 0) == 200 and value_at(rgb, 0, 0) == 20
+    assert value_at(rgb, -30, 0) == 0  # beyond the moved phantom: nothing
+    slices.SetVolumeNode(logic.GetDefaultROS2Node())  # not an image: refused
+    assert slices.GetVolumeNode() == volume

@@ -7,6 +7,7 @@
 #include "SubscriberData.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2Scene.h"
+#include "vtkROS2TransformNode.h"
 #include "vtkROS2VolumeNode.h"
 
 #include "vtkActor.h"
@@ -259,6 +260,31 @@ bool vtkROS2SliceView::Update()
         internals.NodeImage->Modified();
         internals.ViewChanged = true;
       }
+    }
+  }
+  // A volume node under a transform is resliced where it sits (vtkImageResliceMapper takes the
+  // prop's matrix into account); an image or a subscriber is taken in world coordinates.
+  {
+    vtkNew<vtkMatrix4x4> imageToWorld;
+    if (auto* volumeNode = vtkROS2VolumeNode::SafeDownCast(internals.VolumeNode))
+    {
+      if (vtkROS2TransformNode* parent = volumeNode->GetParentTransformNode())
+      {
+        parent->GetMatrixTransformToWorld(imageToWorld);
+      }
+    }
+    vtkMatrix4x4* current = internals.Slice->GetUserMatrix();
+    bool differs = current == nullptr;
+    for (int k = 0; k < 16 && !differs; ++k)
+    {
+      differs = current->GetElement(k / 4, k % 4) != imageToWorld->GetElement(k / 4, k % 4);
+    }
+    if (differs)
+    {
+      vtkNew<vtkMatrix4x4> copy;
+      copy->DeepCopy(imageToWorld);
+      internals.Slice->SetUserMatrix(copy);
+      internals.ViewChanged = true;
     }
   }
   if (internals.ViewChanged)

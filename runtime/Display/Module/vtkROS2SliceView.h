@@ -8,7 +8,8 @@
 //   view.SetOrientation('axial'); view.SetSliceCenter(x, y, z)    # mm, world
 //   after each Spin: if view.Update(): renderWindow.Render()
 //
-// The volume is taken in world coordinates (its origin and spacing); the view's camera looks
+// An image is taken in world coordinates (its origin and spacing), a volume node under its
+// transform (a registration); the view's camera looks
 // along the slice normal with a parallel projection. Runs on the spinning thread, like the
 // display manager.
 #ifndef vtkROS2SliceView_h
@@ -51,8 +52,8 @@ public:
   vtkImageData* GetImageData() const;
   /// Or a vtkROS2VolumeNode, or a subscriber node whose messages convert to vtkImageData (its
   /// newest image, refreshed on each Update that follows a spin with a new message). Null: back
-  /// to SetImageData's. The image is taken in world coordinates (the node's transform is not
-  /// applied to the slice).
+  /// to SetImageData's. A volume node is resliced where its parent transform puts it (a
+  /// registration); other images are taken in world coordinates.
   void SetVolumeNode(vtkROS2SceneNode* node);
   vtkROS2SceneNode* GetVolumeNode() const;
 
