@@ -17,6 +17,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPropCollection.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
@@ -210,4 +211,29 @@ TEST(DisplayManager, ANewNodeKindIsOneClassAndOneRegistration)
   note->SetName("changed");
   dm->Update();
   EXPECT_STREQ(text->GetInput(), "changed");
+}
+
+TEST(DisplayManager, SceneDeletedFirstLeavesNothingBehind)
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkROS2DisplayManager> dm;
+  vtkActor* actor = nullptr;
+  {
+    vtkNew<vtkROS2Scene> scene;
+    vtkNew<vtkROS2ModelNode> model;
+    auto triangle = Triangle();
+    model->SetPolyData(triangle);
+    scene->AddNode(model);
+    dm->SetScene(scene);
+    dm->SetRenderer(renderer);
+    dm->Update();
+    actor = dm->GetActorForNode(model);
+    ASSERT_NE(actor, nullptr);
+    EXPECT_EQ(renderer->GetViewProps()->GetNumberOfItems(), 1);
+  } // the scene goes first: its nodes are removed with events, the props with them
+  EXPECT_EQ(dm->GetScene(), nullptr);
+  EXPECT_EQ(dm->GetNumberOfDisplayedNodes(), 0);
+  EXPECT_EQ(renderer->GetViewProps()->GetNumberOfItems(), 0);
+  EXPECT_TRUE(dm->Update()); // the removal is reported once
+  EXPECT_FALSE(dm->Update());
 }

@@ -147,6 +147,10 @@ void vtkROS2DisplayManager::SetScene(vtkROS2Scene* scene)
       scene->AddObserver(vtkROS2Scene::NodeAddedEvent, this, &vtkROS2DisplayManager::OnSceneEvent));
     internals.SceneObservers.push_back(
       scene->AddObserver(vtkROS2Scene::NodeRemovedEvent, this, &vtkROS2DisplayManager::OnSceneEvent));
+    // A scene deleted first removes its observers before it clears its nodes (vtkObject does),
+    // so NodeRemovedEvent never comes: let go of every node while they still exist.
+    internals.SceneObservers.push_back(
+      scene->AddObserver(vtkCommand::DeleteEvent, this, &vtkROS2DisplayManager::OnSceneEvent));
     for (int i = 0; i < scene->GetNumberOfNodes(); ++i)
     {
       this->ObserveNode(scene->GetNthNode(i));
@@ -238,6 +242,14 @@ void vtkROS2DisplayManager::OnSceneEvent(vtkObject*, unsigned long event, void* 
   {
     // Now, not on the next Update: the scene is about to release the node.
     this->ForgetNode(node);
+  }
+  else if (event == vtkCommand::DeleteEvent)
+  {
+    while (!this->Internals->NodeObservers.empty())
+    {
+      this->ForgetNode(this->Internals->NodeObservers.begin()->first);
+    }
+    this->Internals->SceneObservers.clear(); // vtkObject removes them itself
   }
 }
 
