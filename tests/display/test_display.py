@@ -242,6 +242,7 @@ def test_transform_axes_with_frame_name(ros2vtk, logic, vtk):
     assert green[1] < origin[1] - 20 and abs(green[0] - origin[0]) < 10
     parts = prop.GetParts()
     assert parts.GetItemAsObject(1).GetInput() == 'probe'
+    assert dm.GetNodeForProp(parts.GetItemAsObject(0)) == transform  # a picked part -> its node
 
 
 def test_placeholder_is_drawn_as_a_wireframe_in_the_placeholder_colour(ros2vtk, logic, vtk):

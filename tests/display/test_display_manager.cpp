@@ -97,6 +97,9 @@ TEST(DisplayManager, ModelsAddedModifiedRemovedOnUpdate)
   EXPECT_EQ(dm->GetNumberOfDisplayedNodes(), 2); // the model and its transform's (hidden) axes
   EXPECT_FALSE(dm->GetPropForNode(transform)->GetVisibility());
   EXPECT_EQ(actor->GetMapper()->GetInput(), triangle.GetPointer());
+  EXPECT_EQ(dm->GetNodeForProp(actor), model.GetPointer()); // picking
+  vtkNew<vtkActor> stranger;
+  EXPECT_EQ(dm->GetNodeForProp(stranger), nullptr);
 
   vtkNew<vtkMatrix4x4> matrix;
   matrix->SetElement(1, 3, 25.0);

@@ -415,6 +415,19 @@ vtkProp* vtkROS2DisplayManager::GetPropForNode(vtkROS2SceneNode* node) const
 }
 
 //------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2DisplayManager::GetNodeForProp(vtkProp* prop) const
+{
+  for (const auto& manager : this->Internals->Managers)
+  {
+    if (vtkROS2SceneNode* node = manager->GetNodeForProp(prop))
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
 vtkActor* vtkROS2DisplayManager::GetActorForNode(vtkROS2SceneNode* node) const
 {
   return vtkActor::SafeDownCast(this->GetPropForNode(node));

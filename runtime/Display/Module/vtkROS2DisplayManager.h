@@ -78,6 +78,8 @@ public:
   vtkProp* GetPropForNode(vtkROS2SceneNode* node) const;
   /// The prop as a vtkActor (models, point clouds, pose arrays), or nullptr.
   vtkActor* GetActorForNode(vtkROS2SceneNode* node) const;
+  /// The node a picked prop draws (the prop or a part of it), or nullptr: click-to-select.
+  vtkROS2SceneNode* GetNodeForProp(vtkProp* prop) const;
   /// The displayable manager that draws `node`, or nullptr.
   vtkROS2DisplayableManager* GetDisplayableManagerForNode(vtkROS2SceneNode* node) const;
 

@@ -7,6 +7,8 @@
 
 #include "vtkMatrix4x4.h"
 #include "vtkProp.h"
+#include "vtkPropAssembly.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
@@ -156,6 +158,30 @@ vtkProp* vtkROS2DisplayableManager::GetPropForNode(vtkROS2SceneNode* node) const
 {
   auto it = this->Internals->Props.find(node);
   return it == this->Internals->Props.end() ? nullptr : it->second.GetPointer();
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2DisplayableManager::GetNodeForProp(vtkProp* prop) const
+{
+  if (!prop)
+  {
+    return nullptr;
+  }
+  for (const auto& entry : this->Internals->Props)
+  {
+    if (entry.second == prop)
+    {
+      return entry.first;
+    }
+    if (auto* assembly = vtkPropAssembly::SafeDownCast(entry.second))
+    {
+      if (assembly->GetParts()->IsItemPresent(prop))
+      {
+        return entry.first;
+      }
+    }
+  }
+  return nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -55,6 +55,8 @@ public:
   int GetNumberOfNodes() const;
   /// The prop drawing `node` (a vtkActor, vtkImageActor, vtkVolume or vtkPropAssembly), or nullptr.
   vtkProp* GetPropForNode(vtkROS2SceneNode* node) const;
+  /// The node a prop (or a part of an assembly prop) draws, or nullptr: for picking.
+  vtkROS2SceneNode* GetNodeForProp(vtkProp* prop) const;
 
   /// Node -> world of a node that hangs under a transform node through the "transform"
   /// reference (identity when it has none). Used by the subclasses.
