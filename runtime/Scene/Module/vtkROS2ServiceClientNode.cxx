@@ -4,6 +4,7 @@
 
 #include "MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"
@@ -408,7 +409,20 @@ std::string vtkROS2ServiceClientNode::Call(const char* requestYAML, double timeo
     // Short waits while no server is there (matching raises no wake-up), else until data.
     pollfd wait{ fd, POLLIN, 0 };
     ::poll(&wait, 1, 10);
-    rosNode->Spin();
+    // Every ROS node of the scene: a server on another node of this process must answer too.
+    vtkROS2Scene* scene = this->GetScene();
+    const int count = scene ? scene->GetNumberOfNodesByClass("vtkROS2NodeNode") : 0;
+    for (int i = 0; i < count; ++i)
+    {
+      if (auto* node = vtkROS2NodeNode::SafeDownCast(scene->GetNthNodeByClass(i, "vtkROS2NodeNode")))
+      {
+        node->Spin();
+      }
+    }
+    if (!scene)
+    {
+      rosNode->Spin();
+    }
   }
   internals.InCall = false;
   if (internals.LastResponseRequestId == id)

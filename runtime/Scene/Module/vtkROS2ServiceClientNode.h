@@ -76,8 +76,8 @@ public:
   /// SetRequestYAML then SendAsyncRequest (-1 on invalid YAML).
   vtkTypeInt64 SendAsyncRequestYAML(const char* yaml);
 
-  /// For scripts: sends `requestYAML` and spins the ROS node (everything on it keeps working)
-  /// until the response or `timeoutSeconds` (<= 0: GetTimeout()). Returns the response YAML, or
+  /// For scripts: sends `requestYAML` and spins every ROS node of the scene (everything on
+  /// them keeps working, a server of this process answers too) until the response or `timeoutSeconds` (<= 0: GetTimeout()). Returns the response YAML, or
   /// "" with GetLastError saying why (timeout, no server, invalid YAML).
   std::string Call(const char* requestYAML, double timeoutSeconds = -1.0);
 
