@@ -221,3 +221,32 @@ TEST_F(ServiceTest, BadUseGivesClearErrors)
   EXPECT_FALSE(client->IsServiceReady());
   EXPECT_TRUE(this->Node->RemoveAndDeleteServiceClientNode("/x"));
 }
+
+TEST_F(ServiceTest, SavedSceneRestoresClientAndServer)
+{
+  auto* server = this->AddSetBoolServer("/saved");
+  ASSERT_NE(server, nullptr);
+  server->SetResponseTimeout(2.5);
+  auto* client = this->Node->CreateAndAddServiceClientNode("std_srvs/srv/SetBool", "/saved");
+  ASSERT_NE(client, nullptr);
+  client->SetTimeout(3.0);
+  vtkROS2Scene* scene = this->Logic->GetScene();
+  const std::string xml = scene->WriteToXMLString();
+  this->Other = nullptr;
+  ASSERT_TRUE(scene->ReadFromXMLString(xml.c_str())) << this->Output->Errors;
+
+  auto* restoredServer = vtkROS2ServiceServerNode::SafeDownCast(scene->GetNthNodeByClass(0, "vtkROS2ServiceServerNode"));
+  auto* restoredClient = vtkROS2ServiceClientNode::SafeDownCast(scene->GetNthNodeByClass(0, "vtkROS2ServiceClientNode"));
+  ASSERT_NE(restoredServer, nullptr) << xml;
+  ASSERT_NE(restoredClient, nullptr) << xml;
+  EXPECT_STREQ(restoredClient->GetServiceType(), "std_srvs/srv/SetBool");
+  EXPECT_EQ(restoredClient->GetTimeout(), 3.0);
+  EXPECT_EQ(restoredServer->GetResponseTimeout(), 2.5);
+  ASSERT_NE(restoredClient->GetROS2Node(), nullptr);
+  EXPECT_NE(restoredClient->GetROS2Node()->GetServiceClientNodeByService("/saved"), nullptr)
+    << "the ROS node references its restored client";
+  // Observers are code, not scene content: attach the answer again.
+  restoredServer->AddObserver(vtkROS2ServiceServerNode::RequestReceivedEvent, this->Answer);
+  EXPECT_EQ(restoredClient->Call("{data: true}", 5.0), "success: true\nmessage: set true\n")
+    << restoredClient->GetLastError();
+}
