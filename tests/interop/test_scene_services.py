@@ -188,3 +188,15 @@ def test_unanswered_request_times_out_on_our_server(ros, default):
         assert result['received'] == 1 and result['first'] == {'success': False, 'message': ''}, result
     else:
         assert result['received'] == 0 and result['failed'] == 1, result
+
+
+def test_empty_service_both_ways(ros):
+    """std_srvs/Empty: a request and a response without fields (one dummy byte on the wire)."""
+    result, served = run_pair(ros, (rclpy_peer, 'server', 'std_srvs/srv/Empty', '/reset', '--count', '1'),
+                              (ours, 'call', 'std_srvs/srv/Empty', '/reset', '{}'))
+    assert result['ok'] == 1 and result['first'] == {}, result
+    assert served['served'] == 1
+    result, served = run_pair(ros, (ours, 'serve', 'std_srvs/srv/Empty', '/reset', '--count', '1'),
+                              (rclpy_peer, 'client', 'std_srvs/srv/Empty', '/reset', '{}'))
+    assert result['received'] == 1 and result['first'] == {}, result
+    assert served['responses'] == 1 and served['unanswered'] == 0
