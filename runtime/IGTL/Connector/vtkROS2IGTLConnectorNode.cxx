@@ -12,6 +12,7 @@
 #include "vtkROS2PublisherPoseStampedNode.h"
 #include "vtkROS2PublisherStringNode.h"
 #include "vtkROS2PublisherTransformStampedNode.h"
+#include "vtkROS2RobotNode.h"
 #include "vtkROS2Scene.h"
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2SubscriberPointCloud2Node.h"
@@ -151,7 +152,7 @@ public:
   std::set<std::string> Mirrored;
   vtkNew<vtkMatrix4x4> WorldToSlicer;
   vtkNew<vtkMatrix4x4> SlicerToWorld;
-  std::map<std::string, SentModel> SentModels;       // by device name
+  std::map<std::string, SentModel> SentModels;       // by model node ID
   std::map<std::string, vtkTypeInt64> SentMessages;  // subscriber node ID → count sent
   std::map<std::string, Route> Routes;               // by device name
   std::map<std::string, std::string> ReceivedNodes;  // device (type-qualified) → node ID
@@ -167,6 +168,7 @@ public:
   vtkROS2TransformNode* ReceivedTransformNode(vtkROS2IGTLConnectorNode* self, const std::string& device);
   void Publish(vtkROS2IGTLConnectorNode* self, const std::string& device, vtkObject* value,
     const std::string* text);
+  static bool IsRobotDescription(vtkROS2Scene* scene, vtkROS2SubscriberNode* subscriber);
   bool ImagePose(vtkROS2IGTLConnectorNode* self, const std::string& frameID, vtkMatrix4x4* pose);
 
   void AddLog(const std::string& line)
@@ -466,14 +468,40 @@ int vtkROS2IGTLConnectorNode::Update()
 //------------------------------------------------------------------------------
 std::string vtkROS2IGTLConnectorNode::vtkInternals::Device(const char* name)
 {
-  std::string device = name ? name : "";
-  if (device.size() > 20)
+  const std::string full = name ? name : "";
+  std::string device = vtkROS2IGTLConnectorNode::MakeDeviceName(full);
+  if (device != full && this->Warned.insert(full).second)
   {
-    if (this->Warned.insert(device).second)
-    {
-      this->AddLog("device name '" + device + "' is cut to 20 bytes: '" + device.substr(0, 20) + "'");
-    }
-    device.resize(20);
+    this->AddLog("node '" + full + "' is device '" + device + "' (OpenIGTLink names have 20 bytes)");
+  }
+  return device;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2IGTLConnectorNode::MakeDeviceName(const std::string& nodeName)
+{
+  if (nodeName.size() <= 20)
+  {
+    return nodeName;
+  }
+  // Robot nodes are named "<robot>:<link>[:visualN]": the robot prefix goes first.
+  const std::size_t colon = nodeName.find(':');
+  if (colon != std::string::npos && nodeName.size() - colon - 1 <= 20 && colon + 1 < nodeName.size())
+  {
+    return nodeName.substr(colon + 1);
+  }
+  // Still too long: 16 bytes, '~' and 3 hex digits of an FNV-1a hash of the whole name.
+  std::uint32_t hash = 2166136261u;
+  for (unsigned char c : nodeName)
+  {
+    hash = (hash ^ c) * 16777619u;
+  }
+  static const char* hex = "0123456789abcdef";
+  std::string device = nodeName.substr(colon != std::string::npos && colon + 1 < nodeName.size() ? colon + 1 : 0, 16);
+  device += '~';
+  for (int shift = 8; shift >= 0; shift -= 4)
+  {
+    device += hex[(hash >> shift) & 0xf];
   }
   return device;
 }
@@ -482,6 +510,22 @@ std::string vtkROS2IGTLConnectorNode::vtkInternals::Device(const char* name)
 void vtkROS2IGTLConnectorNode::vtkInternals::Send(const igtl::Frame& frame, bool retain)
 {
   this->Endpoint.send(frame.type + ":" + frame.device, igtl::encode_frame(frame), retain);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2IGTLConnectorNode::vtkInternals::IsRobotDescription(
+  vtkROS2Scene* scene, vtkROS2SubscriberNode* subscriber)
+{
+  for (int i = 0; i < scene->GetNumberOfNodes(); ++i)
+  {
+    auto* robot = vtkROS2RobotNode::SafeDownCast(scene->GetNthNode(i));
+    if (robot && robot->GetDescriptionTopic() &&
+      std::string(robot->GetDescriptionTopic()) == subscriber->GetTopic())
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -546,13 +590,13 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
         slicer->DeepCopy(model->GetMatrixModelToParent());
       }
       SentModel state{ poly->GetMTime(), to_array(slicer) };
-      auto sent = this->SentModels.find(device);
+      auto sent = this->SentModels.find(model->GetID());
       if (sent != this->SentModels.end() && sent->second.polyTime == state.polyTime &&
         sent->second.matrix == state.matrix)
       {
         continue; // large items only on change
       }
-      this->SentModels[device] = state;
+      this->SentModels[model->GetID()] = state;
       igtl::Mesh mesh;
       mesh.points.reserve(3 * static_cast<std::size_t>(poly->GetNumberOfPoints()));
       for (vtkIdType p = 0; p < poly->GetNumberOfPoints(); ++p)
@@ -592,6 +636,10 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
     }
     else if (auto* subscriber = vtkROS2SubscriberNode::SafeDownCast(node))
     {
+      if (this->IsRobotDescription(scene, subscriber))
+      {
+        continue; // a robot's description reaches Slicer as its models
+      }
       const vtkTypeInt64 count = subscriber->GetNumberOfMessages();
       vtkTypeInt64& sentCount = this->SentMessages[subscriber->GetID()];
       if (count == 0 || count == sentCount)

@@ -96,6 +96,11 @@ public:
   bool MapDeviceToTf(const char* device, const char* parentFrame, const char* childFrame);
   bool MapDeviceToTopic(const char* device, const char* topic, const char* type);
 
+  /// The device name a node is sent under: its name when it fits OpenIGTLink's 20 bytes, else
+  /// without the robot prefix ("arm:needle_guide_link" -> "needle_guide_link"), else 16 bytes +
+  /// '~' + 3 hex digits of a hash of the whole name.
+  static std::string MakeDeviceName(const std::string& nodeName);
+
   /// What came in by device (nullptr / "" before the first).
   vtkImageData* GetReceivedImage(const char* device);
   std::string GetReceivedString(const char* device);

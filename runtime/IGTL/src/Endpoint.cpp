@@ -313,20 +313,18 @@ bool Endpoint::read(Peer& peer, std::vector<Received>& received, std::string& er
   for (int round = 0; round < 64; ++round) // bounded per poll: one flooding peer cannot starve the rest
   {
     const ssize_t n = recv(peer.fd, buffer, sizeof(buffer), MSG_DONTWAIT);
-    if (n == 0)
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR))
     {
-      error = peer.reader.buffered() ? "disconnected in the middle of a message (" +
-          std::to_string(peer.reader.buffered()) + " bytes of it read)"
-                                     : "disconnected";
-      return false;
+      break;
     }
-    if (n < 0)
+    if (n <= 0)
     {
-      if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)
+      error = n == 0 ? "disconnected" : std::string("connection lost (") + std::strerror(errno) + ")";
+      if (peer.reader.buffered() > 0)
       {
-        break;
+        error += " in the middle of a message (" + std::to_string(peer.reader.buffered()) +
+          " bytes of it read)";
       }
-      error = std::string("receive failed: ") + std::strerror(errno);
       return false;
     }
     peer.reader.feed(buffer, static_cast<std::size_t>(n));
