@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+import signal
 import struct
 import time
 from pathlib import Path
@@ -25,6 +26,13 @@ QUARTER_TURN_Z = [0, 0, math.sqrt(0.5), math.sqrt(0.5)]
 def wait_ready(process) -> None:
     line = process.stdout.readline()
     assert line and json.loads(line).get('ready') is True, line + process.stderr.read()
+
+
+def stop(ros, process, timeout: float = 30.0):
+    """Ctrl-C to our process (it prints its summary and exits 0), then its output."""
+    if process.poll() is None:
+        process.send_signal(signal.SIGINT)
+    return ros.finish(process, timeout=timeout)
 
 
 def wait_transform(client, device: str, seconds: float, predicate=lambda m: True):
@@ -51,8 +59,7 @@ def test_rclpy_tf_arrives_in_pyigtl_as_transform_in_millimetres(ros):
         message = wait_transform(client, 'needle', 15, lambda m: abs(m[0, 3] - 100.0) < 1e-3)
     finally:
         client.stop()
-    ros.finish(ours)
-    ros.finish(peer)
+    stop(ros, ours)
     assert message is not None, 'no TRANSFORM "needle" arrived'
     assert message.device_name == 'needle'
     m = message.matrix
@@ -80,8 +87,7 @@ def test_robot_links_arrive_as_transforms_and_visuals_once_as_polydata_with_thei
     messages += raw.read(3.0)
     still = raw.read(4.0)
     raw.close()
-    ros.finish(ours)
-    ros.finish(rsp)
+    stop(ros, ours)
     resent = [d for t, d, _, _ in still if t == 'POLYDATA']
     assert not resent, f'visuals resent while the robot stood still: {resent}'
     assert any(t == 'TRANSFORM' for t, _, _, _ in still), 'transforms stopped'
@@ -119,8 +125,7 @@ def test_link_local_models_carry_their_link_as_metadata(ros):
     while time.monotonic() < end and not any(d == 'needle_tip:visual0' for _, d, _, _ in messages):
         messages += raw.read(0.5)
     raw.close()
-    ros.finish(ours)
-    ros.finish(rsp)
+    stop(ros, ours)
     tip = [(v, body) for t, d, v, body in messages if t == 'POLYDATA' and d == 'needle_tip:visual0']
     assert tip, 'no POLYDATA for the tip visual'
     version, body = tip[0]
@@ -154,9 +159,7 @@ def test_rclpy_image_arrives_as_image_with_its_pixels_and_pose(ros):
                     break
     finally:
         client.stop()
-    ros.finish(ours)
-    ros.finish(pub)
-    ros.finish(tf)
+    stop(ros, ours)
     assert message is not None, 'no IMAGE "camera_image" arrived'
     data = np.asarray(message.image)
     assert data.shape in ((1, 3, 4), (3, 4)), data.shape
@@ -211,7 +214,7 @@ def test_pyigtl_transform_and_points_come_out_on_ros_in_metres(ros):
     cloud = json.loads(out.splitlines()[-1])
     got = [[p['x'], p['y'], p['z']] for p in cloud['points']]
     assert np.allclose(got, [[0.001, 0.002, 0.003], [-0.004, 0.005, 0.6]], atol=1e-7), got
-    code, out, err = ros.finish(ours)
+    code, out, err = stop(ros, ours)
     summary = json.loads(out.splitlines()[-1])
     assert summary['received_nodes'].get('Target') == 'vtkROS2TransformNode', summary
 
@@ -246,8 +249,7 @@ def test_bad_input_is_survived_explained_and_other_clients_keep_being_served(ros
     finally:
         client.stop()
     good.close()
-    code, out, err = ros.finish(ours, timeout=40)
-    ros.finish(peer)
+    code, out, err = stop(ros, ours, timeout=40)
     assert code == 0, err
     events = '\n'.join(json.loads(l).get('event', '') for l in out.splitlines() if l.startswith('{'))
     assert 'header version 7' in events
@@ -269,6 +271,5 @@ def test_client_mode_reaches_a_pyigtl_server(ros):
         message = wait_transform(server, 'needle', 12, lambda m: abs(m[1, 3] - 250.0) < 1e-3)
     finally:
         server.stop()
-    ros.finish(ours)
-    ros.finish(peer)
+    stop(ros, ours)
     assert message is not None and np.allclose(message.matrix[:3, 3], [0.0, 250.0, 0.0], atol=1e-3)
