@@ -34,6 +34,7 @@ DEBIAN_PACKAGES=(
   python3-yaml
   iproute2
   nftables
+  libopenigtlink-dev
 )
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -100,6 +101,18 @@ install_wheels() {  # install_wheels VENV REQUIREMENTS CHECK_IMPORTS
   echo "$wanted" > "$stamp"
 }
 
+install_test_requirements() {
+  # Test-only peers that are not ROS (pyigtl: the 3D Slicer stand-in of tests/interop/test_igtl.py).
+  local list="$ROOT/scripts/requirements-test.txt"
+  if "$VENV/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$list" \
+      --dry-run 2>/dev/null | grep -q "Would install"; then
+    log "test peers: pip install -r $(basename "$list")"
+    "$VENV/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$list"
+  else
+    log "test peers: $(basename "$list") already installed"
+  fi
+}
+
 log "ros2vtk set-up in $ROOT"
 install_debian_packages
 make_venv "$VENV"
@@ -108,4 +121,5 @@ install_wheels "$VENV" "$ROOT/scripts/requirements-ros.txt" \
 make_venv "$JAZZY_VENV"
 install_wheels "$JAZZY_VENV" "$ROOT/scripts/requirements-jazzy.txt" \
   'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+install_test_requirements
 log "done: venv python is $VENV/bin/python (Jazzy peers: $JAZZY_VENV/bin/python)"

@@ -5,6 +5,7 @@
     python -m ros2vtk types                     node classes by short name, both directions
     python -m ros2vtk echo TOPIC TYPE [-n N]    messages as YAML, plus the VTK value they become
     python -m ros2vtk params NODE NAME...       parameters of another node
+    python -m ros2vtk igtl [...]                serve the scene to 3D Slicer (OpenIGTLink; see igtl -h)
 
 TYPE is a short name (PoseStamped, Image, ...) or a ROS type (geometry_msgs/msg/Point).
 ROS_DOMAIN_ID and ROS_AUTOMATIC_DISCOVERY_RANGE apply as in ROS 2.
@@ -60,6 +61,9 @@ def main(argv=None) -> int:
     params = sub.add_parser('params')
     params.add_argument('node')
     params.add_argument('names', nargs='+')
+    from ros2vtk import igtl_cli
+    igtl_cli.add_arguments(sub.add_parser('igtl', description=igtl_cli.__doc__,
+                                          formatter_class=argparse.RawDescriptionHelpFormatter))
     args = parser.parse_args(argv)
 
     logic = ros2vtk.vtkROS2Logic()
@@ -89,6 +93,8 @@ def main(argv=None) -> int:
         if printed < args.count:
             print(f'timeout: {printed} of {args.count} messages on {args.topic}', file=sys.stderr)
             return 3
+    elif args.command == 'igtl':
+        return igtl_cli.run(args, logic, node)
     elif args.command == 'params':
         parameters = node.CreateAndAddParameterNode(args.node)
         for name in args.names:
