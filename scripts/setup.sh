@@ -31,11 +31,15 @@ DEBIAN_PACKAGES=(
   libtinyxml2-dev
   libconsole-bridge-dev
   python3-yaml
+  python3-numpy
+  chromium
+  chromium-driver
 )
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="${ROS2VTK_VENV:-$ROOT/.venv}"
 REQUIREMENTS="$ROOT/scripts/requirements-ros.txt"
+APP_REQUIREMENTS="$ROOT/scripts/requirements-app.txt"
 STAMP="$VENV/.ros2vtk-requirements.sha256"
 
 log() { echo "[setup] $*"; }
@@ -81,20 +85,46 @@ install_wheels() {
   # The stamp holds a hash of the requirement list (and of the venv's python), so pip runs
   # again exactly when the pinned set changes.
   local wanted
-  wanted="$( (cat "$REQUIREMENTS"; readlink -f "$VENV/bin/python") | sha256sum | cut -d' ' -f1)"
+  wanted="$( (cat "$REQUIREMENTS" "$APP_REQUIREMENTS"; readlink -f "$VENV/bin/python") | sha256sum | cut -d' ' -f1)"
   if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$wanted" ]; then
     log "ROS 2 wheels: pinned set already installed ($(basename "$REQUIREMENTS"))"
     return
   fi
   log "ROS 2 wheels: pip install -r $(basename "$REQUIREMENTS") (this takes a few minutes the first time)"
   "$VENV/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$REQUIREMENTS"
+  log "app packages: pip install -r $(basename "$APP_REQUIREMENTS") (trame, trame-vuetify, trame-rca, Pillow, selenium)"
+  "$VENV/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$APP_REQUIREMENTS"
   log "ROS 2 wheels: checking that rclpy imports"
   "$VENV/bin/python" -c 'import rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+  "$VENV/bin/python" -c 'import trame, trame_vuetify, trame_rca, PIL, selenium'
   echo "$wanted" > "$STAMP"
+}
+
+install_command() {
+  # `ros2vtk` on PATH once the venv is active (or as .venv/bin/ros2vtk). The package lives in the
+  # build tree (<repo>/build/python, next to its VTK-wrapped modules): the launcher finds the
+  # checkout from its own path (<repo>/.venv/bin/ros2vtk), or ROS2VTK_BUILD_DIR, and sets PYTHONPATH.
+  local launcher="$VENV/bin/ros2vtk"
+  cat > "$launcher.tmp" <<'LAUNCHER'
+#!/usr/bin/env bash
+# ros2vtk command line (written by scripts/setup.sh): runs the package built in <repo>/build.
+BIN="$(cd "$(dirname "$0")" && pwd)"
+BUILD="${ROS2VTK_BUILD_DIR:-$(dirname "$(dirname "$BIN")")/build}"
+if [ ! -d "$BUILD/python/ros2vtk" ]; then
+  echo "ros2vtk: no build in $BUILD (run scripts/demo.sh, or set ROS2VTK_BUILD_DIR)" >&2
+  exit 2
+fi
+export PYTHONPATH="$BUILD/python${PYTHONPATH:+:$PYTHONPATH}"
+exec "$BIN/python" -m ros2vtk "$@"
+LAUNCHER
+  chmod +x "$launcher.tmp"
+  mv "$launcher.tmp" "$launcher"
+  log "command: $launcher (ros2vtk app|demo|nodes|topics|types|echo|pub|params)"
 }
 
 log "ros2vtk set-up in $ROOT"
 install_debian_packages
 make_venv
 install_wheels
+install_command
 log "done: venv python is $VENV/bin/python"
