@@ -75,6 +75,7 @@ class App:
         self.framed = 0
         self.next_frame = self.next_refresh = self.frame_again_at = 0.0
         self.errors = []
+        self.spin_callbacks = []
         self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
         self._init_state(title)
         self._bind_controllers()
@@ -341,10 +342,16 @@ class App:
                     self.state.errors = list(self.errors)
             await asyncio.sleep(period)
 
+    def add_spin_callback(self, callback) -> None:
+        """`callback()` runs after each spin of the app's loop (a script's per-spin work)."""
+        self.spin_callbacks.append(callback)
+
     def _spin_once_and_show(self):
         """One spin, the display layer updated, a frame every FRAME_SECONDS, the panels every
         REFRESH_SECONDS."""
         self.logic.Spin()
+        for callback in self.spin_callbacks:
+            callback()
         self.display.Update()
         now = time.monotonic()
         if now >= self.next_frame:
@@ -383,9 +390,10 @@ class App:
 
 
 def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
-          open_browser: bool = False, title: str = 'ros2vtk') -> None:
-    """Serves the app on `logic` until interrupted (blocking). Binds the loopback unless
-    `allow_remote` is set; another host is then reachable by anyone on the network."""
+          open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None) -> None:
+    """Serves the app on `logic` until interrupted, or for `duration` seconds (blocking). Binds
+    the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
+    network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks)."""
     from .view import ensure_x_display
     if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
         raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
@@ -393,6 +401,11 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
         print(f'[app] WARNING: serving on {host}: anyone who reaches this port controls the ROS node', flush=True)
     xvfb = ensure_x_display()
     app = App(logic, title=title)
+    if on_app is not None:
+        on_app(app)
+    if duration:
+        app.ctrl.on_server_ready.add(lambda **_: asyncio.get_event_loop().call_later(
+            duration, lambda: asyncio.ensure_future(app.server.stop())))
     app.ctrl.on_server_ready.add(lambda **_: print(f'[app] ros2vtk app at http://{host}:{app.server.port}/',
                                                    flush=True))
     saved_argv = sys.argv

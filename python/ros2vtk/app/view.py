@@ -177,6 +177,8 @@ def frame_camera(renderer) -> None:
     camera = renderer.GetActiveCamera()
     camera.SetViewUp(0, 0, 1)
     camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(1, -1.1, 0.6)
+    camera.SetPosition(1, -1.1, 0.55)
+    camera.SetViewAngle(30.0)
     renderer.ResetCamera()
+    camera.Zoom(0.8)  # a margin for the robot's motion
     renderer.ResetCameraClippingRange()
