@@ -252,6 +252,11 @@ bool expand_topic_name(const std::string& name, const std::string& node_name,
   }
   if (!validate_fully_qualified(result, false, "topic name", topic_name_max_length, error))
   {
+    if (error && result != name)
+    {
+      *error += " (expanded from '" + name + "' by node '" + node_name + "' in namespace '" + ns +
+                "')";
+    }
     return false;
   }
   expanded = result;
