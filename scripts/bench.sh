@@ -12,12 +12,14 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${ROS2VTK_BUILD_DIR:-$ROOT/build}"
 JOBS="${ROS2VTK_JOBS:-2}"
+VENV="${ROS2VTK_VENV:-$ROOT/.venv}"  # as scripts/setup.sh
+export ROS2VTK_VENV="$VENV"
 
 if [ "${ROS2VTK_BENCH_NO_BUILD:-0}" != "1" ]; then
   "$ROOT/scripts/setup.sh"
   echo "[bench] configuring $BUILD"
   cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DPython3_EXECUTABLE=/usr/bin/python3 -DROS2VTK_VENV_PYTHON="$ROOT/.venv/bin/python"
+    -DPython3_EXECUTABLE=/usr/bin/python3 -DROS2VTK_VENV_PYTHON="$VENV/bin/python"
   # Everything: the round trip's echo side is examples/round_trip/round_trip.py on the Python
   # wrapping, so the wrapped modules are needed besides the bench programs.
   echo "[bench] building with $JOBS jobs"
@@ -27,4 +29,4 @@ fi
 # Every DDS process of the suite stays on the loopback; the driver gives each its own domain.
 export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST
 export ROS2VTK_BUILD_DIR="$BUILD"
-exec "$ROOT/.venv/bin/python" "$ROOT/tests/benchmarks/run_benchmarks.py" --build "$BUILD" "$@"
+exec "$VENV/bin/python" "$ROOT/tests/benchmarks/run_benchmarks.py" --build "$BUILD" "$@"

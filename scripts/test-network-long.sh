@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The two-host network tests (tests/network) including the 2-minute link cut that CI leaves out
+# The two-host network tests (tests/network) including what CI leaves out: the 2-minute link cut and
+# the packet-loss comparisons with an rclpy subscriber
 # (~6 min). Needs root for the network namespaces. Usage: scripts/test-network-long.sh [pytest args]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

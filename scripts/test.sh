@@ -5,6 +5,8 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${ROS2VTK_BUILD_DIR:-$ROOT/build}"
 JOBS="${ROS2VTK_JOBS:-2}"
+VENV="${ROS2VTK_VENV:-$ROOT/.venv}"  # as scripts/setup.sh
+export ROS2VTK_VENV="$VENV"
 
 "$ROOT/scripts/setup.sh"
 
@@ -14,7 +16,7 @@ export ROS_DOMAIN_ID="${ROS_DOMAIN_ID:-42}"
 
 echo "[test] configuring $BUILD"
 cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DPython3_EXECUTABLE=/usr/bin/python3 -DROS2VTK_VENV_PYTHON="$ROOT/.venv/bin/python"
+  -DPython3_EXECUTABLE=/usr/bin/python3 -DROS2VTK_VENV_PYTHON="$VENV/bin/python"
 echo "[test] building with $JOBS jobs"
 cmake --build "$BUILD" -j "$JOBS"
 echo "[test] running tests"

@@ -391,13 +391,40 @@ def write_if_changed(path: str, text: str) -> bool:
     return True
 
 
+# The folders of the output folder the generator owns: files there that it no longer lists
+# (a removed spec or rule) are deleted, so the build tree, its install and generated/ hold only
+# what the specs make. Other folders (CMake writes module/ next to them) are left alone.
+OWNED_FOLDERS = ("include", "src", "vtk")
+
+
+def prune_stale(output_dir: str, keep: Sequence[str]) -> List[str]:
+    """Deletes files under the owned folders of `output_dir` that are not in `keep` (relative
+    paths), then the folders left empty. Returns the deleted paths (relative)."""
+    kept = {path.replace(os.sep, "/") for path in keep}
+    removed: List[str] = []
+    for folder in OWNED_FOLDERS:
+        top = os.path.join(output_dir, folder)
+        for root, dirs, files in os.walk(top, topdown=False):
+            for name in files:
+                full = os.path.join(root, name)
+                relative = os.path.relpath(full, output_dir).replace(os.sep, "/")
+                if relative not in kept:
+                    os.remove(full)
+                    removed.append(relative)
+            if root != top and not os.listdir(root):
+                os.rmdir(root)
+    return sorted(removed)
+
+
 def generate(config: Config) -> List[str]:
-    """Renders everything, then writes: nothing is written when any spec is bad."""
+    """Renders everything, then writes: nothing is written when any spec is bad. Files an
+    earlier run wrote for specs that are gone are deleted (prune_stale)."""
     rendered = render(config)
     written = []
     for path, text in rendered:
         if write_if_changed(os.path.join(config.output_dir, path), text):
             written.append(path)
+    prune_stale(config.output_dir, [path for path, _ in rendered])
     return written
 
 

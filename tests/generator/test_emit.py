@@ -65,6 +65,22 @@ def test_unchanged_files_are_not_rewritten(tmp_path):
     assert os.stat(header).st_mtime == 1
 
 
+def test_outputs_of_removed_specs_are_deleted(tmp_path):
+    """Removing a spec removes its files (the build tree, install and generated/ stay clean);
+    files outside the generator's folders are left alone."""
+    from ros2vtk_gen.emit import expand_spec_paths
+    full = fixture_config(str(tmp_path))
+    generate(full)
+    (tmp_path / "module").mkdir()
+    (tmp_path / "module" / "vtk.module").write_text("written by CMake")
+    kept = tuple(p for p in full.specs if not p.endswith("Strings.msg"))
+    assert len(kept) == len(full.specs) - 1
+    smaller = Config(full.family, full.target, full.output_dir, kept, full.dependencies)
+    generate(smaller)
+    assert sorted(tree(str(tmp_path))) == sorted(list_outputs(smaller) + ["module/vtk.module"])
+    assert not (tmp_path / "include/ros2vtk/ros2vtk_test_msgs/msg/strings.hpp").exists()
+
+
 def test_banner_names_template_and_spec(tmp_path):
     rendered = dict(render(fixture_config(str(tmp_path))))
     text = rendered["src/ros2vtk_test_msgs/msg/inner__cdr.cpp"]

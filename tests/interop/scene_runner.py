@@ -350,6 +350,7 @@ def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument('--node-name', default='slicer')
     parser.add_argument('--seconds', type=float, default=15.0)
+    parser.add_argument('--log-level', type=int, default=0, help='SetLogLevel of the node (/rosout)')
     parser.add_argument('--reopen', type=int, default=0,
                         help='save and reopen the scene this many times first (a new participant each time)')
     sub = parser.add_subparsers(dest='command', required=True)
@@ -396,6 +397,9 @@ def main() -> int:
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
+    if args.log_level and not node.SetLogLevel(args.log_level):
+        print(json.dumps({'error': f'log level {args.log_level} refused'}), flush=True)
+        return 1
     for _ in range(args.reopen):
         if not logic.GetScene().ReadFromXMLString(logic.GetScene().WriteToXMLString()):
             print(json.dumps({'error': 'scene not reopened'}), flush=True)

@@ -164,7 +164,10 @@ TEST(RclpyFixtures, CoverEveryShippedType)
   EXPECT_GE(fixture_indices().size(), 100u);
   for (const std::string& name : ros2vtk::wire::registered_message_types())
   {
-    EXPECT_TRUE(covered.count(name)) << name << " is shipped but has no rclpy fixture";
+    EXPECT_TRUE(covered.count(name))
+        << name << " is shipped but has no rclpy fixture: add its package to PACKAGES in "
+        << "tests/fixtures/make_cdr_fixtures.py (a package without a wheel: scripts/"
+        << "make-rclpy-type.sh, see docs/extending.md) and run that script";
   }
 }
 

@@ -100,7 +100,8 @@ def test_robot_from_robot_state_publisher_on_the_robot_host_follows_tf_on_the_im
 
 # The long outage costs over two minutes; CI runs the 5 s and 30 s cuts (the second is beyond
 # Fast DDS's 20 s lease, so both sides drop and must rediscover each other) and
-# scripts/test-network-long.sh runs all three.
+# scripts/test-network-long.sh (ROS2VTK_LONG_NETWORK_TESTS=1) runs all three, and the loss
+# comparisons with rclpy below.
 OUTAGES = [5, 30] + ([120] if os.environ.get('ROS2VTK_LONG_NETWORK_TESTS') == '1' else [])
 
 
@@ -167,6 +168,8 @@ def test_random_packet_loss_reliable_keep_all_loses_nothing(lab):
     assert arrived == total
 
 
+@pytest.mark.skipif(os.environ.get('ROS2VTK_LONG_NETWORK_TESTS') != '1',
+                    reason='2 min of streams beside an rclpy baseline: run by scripts/test-network-long.sh, not CI')
 @pytest.mark.parametrize('qos', ['default', 'sensor_data'])
 def test_random_packet_loss_degrades_keep_last_and_best_effort_streams_gracefully(lab, qos):
     """With ROS's default keep-last-10 history (or best effort), 5 % loss at 100 Hz costs samples

@@ -434,7 +434,19 @@ std::unique_ptr<Participant> Participant::create(const std::string& node_name,
   {
     return nullptr;
   }
-  return std::unique_ptr<Participant>(new Participant(std::move(impl)));
+  std::unique_ptr<Participant> participant(new Participant(std::move(impl)));
+  std::string rosout_error;
+  participant->rosout_ = Rosout::create(*participant, &rosout_error);
+  if (!participant->rosout_)
+  {
+    std::fprintf(stderr, "[ros2vtk] node '%s' has no /rosout: %s\n", node_name.c_str(), rosout_error.c_str());
+  }
+  return participant;
+}
+
+Rosout* Participant::rosout() const
+{
+  return rosout_.get();
 }
 
 Participant::Participant(std::unique_ptr<Impl> impl)

@@ -4,6 +4,7 @@
 #define ros2vtk_wire_Participant_hpp
 
 #include "ros2vtk/wire/QoS.hpp"
+#include "ros2vtk/wire/Rosout.hpp"
 #include "ros2vtk/wire/WakeUp.hpp"
 
 #include <memory>
@@ -94,12 +95,16 @@ public:
   /// 16-byte DDS GUID of the participant (the rmw gid).
   std::vector<uint8_t> gid() const;
 
+  /// This node's /rosout (nullptr when DDS refused the publisher: the node works without it).
+  Rosout* rosout() const;
+
   class Impl;
   Impl& impl() { return *impl_; }
 
 private:
   explicit Participant(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Rosout> rosout_; // after impl_: destroyed first, before the DDS entities
 };
 
 } // namespace wire
