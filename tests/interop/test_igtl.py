@@ -165,11 +165,13 @@ def test_rclpy_image_arrives_as_image_with_its_pixels_and_pose(ros):
     assert data.shape in ((1, 3, 4), (3, 4)), data.shape
     rows = data.reshape(3, 4)
     ros_rows = np.array(pixels).reshape(3, 4)
-    # Same pixels, row order as our image keeps it (VTK's first row may be ROS's last).
-    assert np.array_equal(rows, ros_rows) or np.array_equal(rows, ros_rows[::-1]), rows
+    # VTK images start at the bottom row (runtime/Convert/README.md: ROS row 0 = top), and the j axis
+    # points up (+A in Slicer), so the picture stands upright: the first row sent is ROS's last.
+    assert np.array_equal(rows, ros_rows[::-1]), rows
     m = message.ijk_to_world_matrix
     spacing = np.linalg.norm(m[:3, :3], axis=0)
     assert np.all(spacing > 0)
+    assert np.allclose(m[:3, 0] / spacing[0], [1, 0, 0]) and np.allclose(m[:3, 1] / spacing[1], [0, 1, 0]), m
     # pyigtl gives the first voxel's position (corner): the camera frame at (100, 0, 50) mm plus
     # the image's own origin, which for a ROS image is 0 within a pixel.
     assert np.allclose(m[:3, 3], [100.0, 0.0, 50.0], atol=float(max(spacing)) * 3 + 1e-6), m

@@ -187,6 +187,8 @@ vtkStandardNewMacro(vtkROS2IGTLConnectorNode);
 vtkROS2IGTLConnectorNode::vtkROS2IGTLConnectorNode()
   : Internals(new vtkInternals)
 {
+  // Not in saved scenes yet: a restored connector would need its sockets and routes back.
+  this->SetSaveWithScene(false);
 }
 
 //------------------------------------------------------------------------------
