@@ -72,16 +72,17 @@ def test_robot_links_arrive_as_transforms_and_visuals_once_as_polydata_with_thei
     env = dict(ros.env)
     for key, value in tf2_msgs_env().items():
         env[key] = ':'.join(filter(None, [value, env.get(key)]))
-    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '25'], env)
+    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '60'], env)
     assert json.loads(rsp.stdout.readline())['ready']
-    expected = json.loads(rsp.stdout.readline())['links']  # yourdfpy's forward kinematics (m)
-    ours = start_ours(ros, port, '--robot', '--seconds', '22')
+    ours = start_ours(ros, port, '--robot', '--seconds', '50')
     wait_ready(ours)
+    # Printed once our robot's lookups listen to /tf: yourdfpy's forward kinematics (m).
+    expected = json.loads(rsp.stdout.readline())['links']
     raw = RawClient(port)
     # Until the robot is loaded and its links placed by tf (each visual is resent as its link
     # moves into place), then 4 s of a robot standing still: nothing may be resent then.
     messages = []
-    end = time.monotonic() + 15
+    end = time.monotonic() + 30  # robot load under a loaded machine
     while time.monotonic() < end and not any(t == 'POLYDATA' and d == 'needle_tip:visual0' for t, d, _, _ in messages):
         messages += raw.read(0.5)
     messages += raw.read(3.0)
@@ -116,18 +117,23 @@ def test_link_local_models_carry_their_link_as_metadata(ros):
     env = dict(ros.env)
     for key, value in tf2_msgs_env().items():
         env[key] = ':'.join(filter(None, [value, env.get(key)]))
-    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '20'], env)
-    ours = start_ours(ros, port, '--robot', '--link-local', '--seconds', '15')
+    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '60'], env)
+    ours = start_ours(ros, port, '--robot', '--link-local', '--seconds', '50')
     wait_ready(ours)
     raw = RawClient(port)
     messages = []
-    end = time.monotonic() + 12
+    end = time.monotonic() + 30  # robot load under a loaded machine
     while time.monotonic() < end and not any(d == 'needle_tip:visual0' for _, d, _, _ in messages):
         messages += raw.read(0.5)
     raw.close()
+    # A client that connects later (Slicer reconnecting) gets the meshes again, sent once above.
+    again = RawClient(port)
+    later = again.read(3.0)
+    again.close()
     stop(ros, ours)
     tip = [(v, body) for t, d, v, body in messages if t == 'POLYDATA' and d == 'needle_tip:visual0']
     assert tip, 'no POLYDATA for the tip visual'
+    assert [d for t, d, _, _ in later if t == 'POLYDATA'].count('needle_tip:visual0') == 1, later
     version, body = tip[0]
     assert version == 2
     assert v2_metadata(body)['ros.parent'] == 'robot:needle_tip'
