@@ -266,6 +266,8 @@ def test_bad_input_is_survived_explained_and_other_clients_keep_being_served(ros
     assert 'body of 10 bytes, expected 48' in events + err
     assert 'header v2 sections' in events
     assert 'in the middle of a message (70 bytes of it read)' in events, events
+    summary = json.loads(out.splitlines()[-1])
+    assert summary['bad'] == 5, summary  # all but the cut message (a lost connection, not a message)
 
 
 def test_client_mode_reaches_a_pyigtl_server(ros):

@@ -160,6 +160,7 @@ public:
   std::map<std::string, vtkSmartPointer<vtkImageData>> ReceivedImages;
   std::map<std::string, std::string> ReceivedStrings;
   std::set<std::string> Warned;
+  vtkTypeInt64 BadContent = 0; // well-framed messages whose body does not fit their type
 
   int HandleFrame(vtkROS2IGTLConnectorNode* self, const igtl::Frame& frame);
   void SendScene(vtkROS2IGTLConnectorNode* self);
@@ -273,9 +274,9 @@ void vtkROS2IGTLConnectorNode::Stop()
   if (in.Endpoint.is_started())
   {
     in.Endpoint.stop();
-    for (const std::string& line : in.Endpoint.take_events())
+    for (const igtl::Endpoint::Event& event : in.Endpoint.take_events())
     {
-      in.AddLog(line);
+      in.AddLog(event.text);
     }
   }
   in.State = "off";
@@ -304,7 +305,8 @@ vtkTypeInt64 vtkROS2IGTLConnectorNode::GetNumberOfMessagesSent() const
 
 vtkTypeInt64 vtkROS2IGTLConnectorNode::GetNumberOfBadMessages() const
 {
-  return static_cast<vtkTypeInt64>(this->Internals->Endpoint.bad_messages());
+  return static_cast<vtkTypeInt64>(this->Internals->Endpoint.bad_messages()) +
+    this->Internals->BadContent;
 }
 
 vtkTypeInt64 vtkROS2IGTLConnectorNode::GetNumberOfDroppedMessages() const
@@ -439,17 +441,13 @@ int vtkROS2IGTLConnectorNode::Update()
   {
     handled += in.HandleFrame(this, item.frame);
   }
-  for (const std::string& line : in.Endpoint.take_events())
+  for (const igtl::Endpoint::Event& event : in.Endpoint.take_events())
   {
-    in.AddLog(line);
-    if (line.find(" closed: ") != std::string::npos || line.find(": ") != std::string::npos)
+    in.AddLog(event.text);
+    if (event.problem)
     {
-      if (line.find("closed: disconnected") == std::string::npos &&
-        line.find("closed: stopped") == std::string::npos && line.find("peer ") == 0)
-      {
-        in.LastError = line;
-        vtkWarningMacro("OpenIGTLink " << line);
-      }
+      in.LastError = event.text;
+      vtkWarningMacro("OpenIGTLink " << event.text);
     }
   }
   if (in.Endpoint.peer_count() > 0)
@@ -983,6 +981,7 @@ int vtkROS2IGTLConnectorNode::vtkInternals::HandleFrame(
   {
     this->LastError = error;
     this->AddLog(error);
+    ++this->BadContent;
     vtkWarningWithObjectMacro(self, "OpenIGTLink: " << error);
     return 0;
   }
