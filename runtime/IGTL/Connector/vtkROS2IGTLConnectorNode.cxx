@@ -5,6 +5,7 @@
 #include "ros2vtk/igtl/Codec.hpp"
 #include "ros2vtk/igtl/Endpoint.hpp"
 
+#include "NodeClassRegistry.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2PublisherImageNode.h"
@@ -183,6 +184,17 @@ public:
 };
 
 vtkStandardNewMacro(vtkROS2IGTLConnectorNode);
+
+namespace {
+// The scene creates nodes by class name (vtkROS2Scene::CreateNodeByClass): one registry line.
+const bool ConnectorRegistered = [] {
+  std::string error;
+  return ros2vtk::scene::NodeClassRegistry::instance().add(
+    { "", "vtkROS2IGTLConnectorNode", "", ros2vtk::scene::NodeDirection::Other,
+      []() -> vtkROS2SceneNode* { return vtkROS2IGTLConnectorNode::New(); } },
+    &error);
+}();
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkROS2IGTLConnectorNode::vtkROS2IGTLConnectorNode()
