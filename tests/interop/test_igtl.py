@@ -283,3 +283,27 @@ def test_client_mode_reaches_a_pyigtl_server(ros):
         server.stop()
     stop(ros, ours)
     assert message is not None and np.allclose(message.matrix[:3, 3], [0.0, 250.0, 0.0], atol=1e-3)
+
+
+def test_position_message_comes_out_as_pose_stamped_in_metres(ros):
+    """POSITION (position.md: 3 float32 mm + quaternion x, y, z, w), framed by the test's own
+    encoder since pyigtl's PositionMessage does not follow the spec layout."""
+    port = free_port()
+    echo = ros.peer('echo', '/slicer/probe', 'geometry_msgs/msg/PoseStamped', '--count', '1', '--timeout', '25')
+    wait_ready(echo)
+    ours = start_ours(ros, port, '--map', 'Probe=topic:/slicer/probe:PoseStamped', '--seconds', '20')
+    wait_ready(ours)
+    raw = RawClient(port)
+    body = struct.pack('>7f', 5.0, -6.0, 70.0, *QUARTER_TURN_Z)
+    end = time.monotonic() + 15
+    while time.monotonic() < end and echo.poll() is None:
+        raw.sock.sendall(frame('POSITION', 'Probe', body))
+        raw.read(0.2)
+    raw.close()
+    code, out, err = ros.finish(echo)
+    stop(ros, ours)
+    assert code == 0, err
+    pose = json.loads(out.splitlines()[-1])['pose']
+    assert np.allclose([pose['position'][k] for k in 'xyz'], [0.005, -0.006, 0.07], atol=1e-7), pose
+    q = pose['orientation']
+    assert np.allclose([q['x'], q['y'], q['z'], q['w']], QUARTER_TURN_Z, atol=1e-6), q
