@@ -307,3 +307,34 @@ def test_position_message_comes_out_as_pose_stamped_in_metres(ros):
     assert np.allclose([pose['position'][k] for k in 'xyz'], [0.005, -0.006, 0.07], atol=1e-7), pose
     q = pose['orientation']
     assert np.allclose([q['x'], q['y'], q['z'], q['w']], QUARTER_TURN_Z, atol=1e-6), q
+
+
+def test_pyigtl_string_and_image_come_out_on_ros_topics(ros):
+    port = free_port()
+    text_echo = ros.peer('echo', '/slicer/note', 'std_msgs/msg/String', '--count', '1', '--timeout', '25')
+    wait_ready(text_echo)
+    image_echo = ros.peer('echo', '/slicer/scan', 'sensor_msgs/msg/Image', '--count', '1', '--timeout', '25')
+    wait_ready(image_echo)
+    ours = start_ours(ros, port, '--map', 'Note=topic:/slicer/note:String',
+                      '--map', 'Scan=topic:/slicer/scan:Image', '--seconds', '20')
+    wait_ready(ours)
+    pixels = np.arange(12, dtype=np.uint8).reshape(1, 3, 4) * 7  # (k, j, i): 4 wide, 3 high
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    try:
+        end = time.monotonic() + 15
+        while time.monotonic() < end and (text_echo.poll() is None or image_echo.poll() is None):
+            client.send_message(pyigtl.StringMessage('needle inserted', device_name='Note'), wait=True)
+            client.send_message(pyigtl.ImageMessage(pixels, device_name='Scan'), wait=True)
+            time.sleep(0.2)
+    finally:
+        client.stop()
+    code, out, err = ros.finish(text_echo)
+    assert code == 0, err
+    assert json.loads(out.splitlines()[-1])['data'] == 'needle inserted'
+    code, out, err = ros.finish(image_echo)
+    assert code == 0, err
+    image = json.loads(out.splitlines()[-1])
+    assert (image['width'], image['height'], image['encoding']) == (4, 3, 'mono8'), image
+    # OpenIGTLink's j runs up like VTK's; ROS row 0 is the top: rows come out reversed.
+    assert np.array_equal(np.array(image['data'], dtype=np.uint8).reshape(3, 4), pixels[0][::-1]), image['data']
+    stop(ros, ours)
