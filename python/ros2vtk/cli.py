@@ -8,6 +8,7 @@
     ros2vtk echo TOPIC TYPE [-n N]                 messages as YAML, plus the VTK value they become
     ros2vtk pub TOPIC TYPE YAML [-r HZ] [-t TIMES]  publish YAML (`ros2 topic pub` syntax)
     ros2vtk params NODE NAME...                    parameters of another node
+    ros2vtk igtl [...]                             serve the scene to 3D Slicer (OpenIGTLink; igtl -h)
 
 TYPE is a short name (PoseStamped, Image, ...) or a ROS type (geometry_msgs/msg/Point); `pub` takes
 a ROS type. ROS_DOMAIN_ID and ROS_AUTOMATIC_DISCOVERY_RANGE apply as in ROS 2.
@@ -80,6 +81,10 @@ def _parser() -> argparse.ArgumentParser:
     params = sub.add_parser('params', help="another node's parameters")
     params.add_argument('node')
     params.add_argument('names', nargs='+')
+    from ros2vtk import igtl_cli
+    igtl_cli.add_arguments(sub.add_parser('igtl', help='serve the scene to 3D Slicer over OpenIGTLink',
+                                          description=igtl_cli.__doc__,
+                                          formatter_class=argparse.RawDescriptionHelpFormatter))
     return parser
 
 
@@ -181,6 +186,9 @@ def main(argv=None) -> int:
         if printed < args.count:
             print(f'timeout: {printed} of {args.count} messages on {args.topic}', file=sys.stderr)
             return 3
+    elif args.command == 'igtl':
+        from ros2vtk import igtl_cli
+        return igtl_cli.run(args, logic, node)
     elif args.command == 'params':
         parameters = node.CreateAndAddParameterNode(args.node)
         for name in args.names:
