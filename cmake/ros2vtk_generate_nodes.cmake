@@ -234,6 +234,11 @@ vtk_module_add_module(${_r2v_MODULE_NAME}
   NOWRAP_HEADERS
     ${_r2v_plain_headers_text})
 vtk_module_depend(${_r2v_MODULE_NAME} ${target}_generate)
+# The wrap hierarchy reads the generated headers; Makefile generators know the rule that makes
+# them only in the directory of ${target}_generate, so order it after that target too.
+if(TARGET ${target}-hierarchy)
+  add_dependencies(${target}-hierarchy ${target}_generate)
+endif()
 vtk_module_include(${_r2v_MODULE_NAME} PUBLIC
   \"$<BUILD_INTERFACE:${_r2v_out}/include>\"
   \"$<BUILD_INTERFACE:${_r2v_out}/vtk>\")
