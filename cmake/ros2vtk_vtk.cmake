@@ -26,7 +26,7 @@ builds one Python extension module per VTK module into <build>/python/<package>/
 
 Why the explicit settings:
 - Debian's VTK 9.1 exports absolute install destinations, which vtk_module_build rejects, so
-  every destination is given here, relative (found by a probe project, see shared/STYLE.md §9).
+  every destination is given here, relative (found by a probe project: vtk_module_build with default destinations fails on this VTK).
 - Modules are always shared: the node-class registry and the message-type registry are process
   singletons that the Scene module and the generated module must share.
 - vtk_module_build refuses two calls with the same PACKAGE, so each module file gets its own.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the benchmark suite (issue 6; DESIGN.md, Performance): set-up (idempotent), configure,
+# Runs the benchmark suite (targets and results: docs/benchmarks.md): set-up (idempotent), configure,
 # build, then tests/benchmarks/run_benchmarks.py, which runs every measurement beside its baseline
 # (rclpy relay, bare Fast DDS echo, rclpy subscriber) in this same invocation and writes
 # build/bench/results.json and docs/benchmarks.md. A few minutes on a 2-core machine.

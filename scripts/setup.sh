@@ -2,7 +2,8 @@
 # Fresh-machine set-up for ros2vtk, safe to run again (every step is skipped when already done):
 #   1. Debian packages (apt-get update runs only when something is missing),
 #   2. a venv at <repo>/.venv (with Debian's site-packages visible, for vtk, yaml and pytest),
-#   3. the pinned ROS 2 Kilted wheels of scripts/requirements-ros.txt into it.
+#   3. the pinned ROS 2 Kilted wheels of scripts/requirements-ros.txt into it,
+#   4. a second venv at <repo>/.venv-jazzy with the ROS 2 Jazzy wheels (scripts/requirements-jazzy.txt).
 # Runs as root (no sudo); as another user it uses sudo for apt-get only.
 set -euo pipefail
 
@@ -31,12 +32,15 @@ DEBIAN_PACKAGES=(
   libtinyxml2-dev
   libconsole-bridge-dev
   python3-yaml
+  iproute2
+  nftables
 )
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="${ROS2VTK_VENV:-$ROOT/.venv}"
-REQUIREMENTS="$ROOT/scripts/requirements-ros.txt"
-STAMP="$VENV/.ros2vtk-requirements.sha256"
+# The ROS 2 Jazzy peers (the LTS most labs run) live in a venv of their own: their wheels pin other
+# versions of the same ROS packages than Kilted's.
+JAZZY_VENV="${ROS2VTK_JAZZY_VENV:-$ROOT/.venv-jazzy}"
 
 log() { echo "[setup] $*"; }
 
@@ -68,33 +72,40 @@ install_debian_packages() {
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-make_venv() {
-  if [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c 'import sys; sys.exit(0)' 2>/dev/null; then
-    log "venv: $VENV exists"
+make_venv() {  # make_venv DIR
+  local venv="$1"
+  if [ -x "$venv/bin/python" ] && "$venv/bin/python" -c 'import sys; sys.exit(0)' 2>/dev/null; then
+    log "venv: $venv exists"
     return
   fi
-  log "venv: creating $VENV (/usr/bin/python3 -m venv --system-site-packages)"
-  /usr/bin/python3 -m venv --system-site-packages "$VENV"
+  log "venv: creating $venv (/usr/bin/python3 -m venv --system-site-packages)"
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
 }
 
-install_wheels() {
+install_wheels() {  # install_wheels VENV REQUIREMENTS CHECK_IMPORTS
   # The stamp holds a hash of the requirement list (and of the venv's python), so pip runs
   # again exactly when the pinned set changes.
+  local venv="$1" requirements="$2" imports="$3"
+  local stamp="$venv/.ros2vtk-$(basename "$requirements" .txt).sha256"
   local wanted
-  wanted="$( (cat "$REQUIREMENTS"; readlink -f "$VENV/bin/python") | sha256sum | cut -d' ' -f1)"
-  if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$wanted" ]; then
-    log "ROS 2 wheels: pinned set already installed ($(basename "$REQUIREMENTS"))"
+  wanted="$( (cat "$requirements"; readlink -f "$venv/bin/python") | sha256sum | cut -d' ' -f1)"
+  if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$wanted" ]; then
+    log "wheels: pinned set of $(basename "$requirements") already installed in $venv"
     return
   fi
-  log "ROS 2 wheels: pip install -r $(basename "$REQUIREMENTS") (this takes a few minutes the first time)"
-  "$VENV/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$REQUIREMENTS"
-  log "ROS 2 wheels: checking that rclpy imports"
-  "$VENV/bin/python" -c 'import rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
-  echo "$wanted" > "$STAMP"
+  log "wheels: pip install -r $(basename "$requirements") into $venv (a few minutes the first time)"
+  "$venv/bin/python" -m pip install --disable-pip-version-check --no-input -q -r "$requirements"
+  log "wheels: checking that $imports import"
+  "$venv/bin/python" -c "import $imports"
+  echo "$wanted" > "$stamp"
 }
 
 log "ros2vtk set-up in $ROOT"
 install_debian_packages
-make_venv
-install_wheels
-log "done: venv python is $VENV/bin/python"
+make_venv "$VENV"
+install_wheels "$VENV" "$ROOT/scripts/requirements-ros.txt" \
+  'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+make_venv "$JAZZY_VENV"
+install_wheels "$JAZZY_VENV" "$ROOT/scripts/requirements-jazzy.txt" \
+  'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+log "done: venv python is $VENV/bin/python (Jazzy peers: $JAZZY_VENV/bin/python)"

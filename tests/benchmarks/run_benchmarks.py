@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The benchmark suite of issue 6 (DESIGN.md, Performance): runs every measurement with its
+"""The benchmark suite (targets in markdown() below, results in docs/benchmarks.md): runs every measurement with its
 baseline in the same invocation, writes build/bench/results.json and docs/benchmarks.md.
 
     run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator]
@@ -571,7 +571,7 @@ def markdown(results: dict) -> str:
         out.append('')
 
     if targets:
-        out += ['## Targets (DESIGN.md, Performance)', '', '| target | measured | verdict |', '| --- | --- | --- |']
+        out += ['## Targets', '', '| target | measured | verdict |', '| --- | --- | --- |']
         out += [f'| {t} | {v} | {ok} |' for t, v, ok in targets]
         out.append('')
     out += ['## Reading these numbers', '',

@@ -1,5 +1,5 @@
 // Prints how long the hot conversions take on this machine (median of many runs). Not a test:
-// timings depend on the machine; DESIGN.md wants benchmarks reported, not asserted.
+// timings depend on the machine; benchmarks are reported (docs/benchmarks.md), never asserted.
 #include "ros2vtk/convert/Image.hpp"
 #include "ros2vtk/convert/PointCloud2.hpp"
 

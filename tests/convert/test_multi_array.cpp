@@ -152,6 +152,39 @@ TEST(MultiArray, BadLayoutsAreRejectedAndTableUntouched)
   EXPECT_EQ(table->GetValue(0, 0).ToTypeInt64(), 5);
 }
 
+// Issue 11.1: a 60-byte message with a 2^27 x 0 layout allocated 1 GiB (the bounds check was
+// skipped for an empty dimension) and a bigger one aborted the process.
+TEST(MultiArray, RowsOfZeroColumnsAreRefusedWithoutAllocating)
+{
+  const MultiArrayLayout layout = two_d("rows", 134217728u, 0, "cols", 0, 0);
+  const std::string expected = "134217728 rows of 0 columns";
+  std::string error;
+  vtkNew<vtkDoubleArray> doubles;
+  doubles->InsertNextValue(1.5);
+  EXPECT_FALSE(multi_array_to_array(layout, std::vector<double>{}, doubles, &error));
+  EXPECT_NE(error.find("multi_array_to_array: layout has " + expected), std::string::npos) << error;
+  EXPECT_EQ(doubles->GetNumberOfTuples(), 1); // untouched on failure
+  error.clear();
+  vtkNew<vtkTypeInt64Array> ints;
+  EXPECT_FALSE(multi_array_to_array(two_d("rows", 4294967295u, 0, "cols", 0, 7),
+    std::vector<int64_t>{ 1, 2 }, ints, &error));
+  EXPECT_NE(error.find("4294967295 rows of 0 columns"), std::string::npos) << error;
+  error.clear();
+  vtkNew<vtkTable> table;
+  EXPECT_FALSE(multi_array_to_table(layout, std::vector<int64_t>{}, table, &error));
+  EXPECT_NE(error.find("multi_array_to_table: layout has " + expected), std::string::npos) << error;
+  // Huge empty arrays: 0 rows of 4e9 components is capped like table columns.
+  error.clear();
+  EXPECT_FALSE(multi_array_to_array(two_d("rows", 0, 0, "cols", 4000000000u, 4000000000u),
+    std::vector<double>{}, doubles, &error));
+  EXPECT_NE(error.find("at most 65536"), std::string::npos) << error;
+  // 0 x N stays a valid empty matrix.
+  ASSERT_TRUE(multi_array_to_array(two_d("rows", 0, 0, "cols", 3, 3), std::vector<double>{}, doubles, &error))
+    << error;
+  EXPECT_EQ(doubles->GetNumberOfTuples(), 0);
+  EXPECT_EQ(doubles->GetNumberOfComponents(), 3);
+}
+
 TEST(MultiArray, EmptyTableKeepsItsColumns)
 {
   vtkNew<vtkTable> table;

@@ -359,3 +359,29 @@ TEST(PointCloud2, BadLayoutsAreRejected)
 
   EXPECT_EQ(poly->GetNumberOfPoints(), 0); // never touched
 }
+
+// Issue 11.9: a float64 x of 1e306 m is finite on the wire and infinite in millimetres.
+TEST(PointCloud2, Float64CoordinatesThatOverflowOnceScaledAreRefused)
+{
+  PointCloud2Layout layout;
+  layout.height = 1;
+  layout.width = 2;
+  layout.fields = { { "x", 0, point_field::kFloat64, 1 }, { "y", 8, point_field::kFloat64, 1 },
+    { "z", 16, point_field::kFloat64, 1 } };
+  layout.point_step = 24;
+  layout.row_step = 48;
+  std::vector<uint8_t> data(48, 0);
+  put<double>(data, 24 + 8, 1e306);
+  vtkNew<vtkPolyData> cloud;
+  std::string error;
+  for (auto policy : { NonFinitePoints::Keep, NonFinitePoints::Drop, NonFinitePoints::Reject })
+  {
+    error.clear();
+    EXPECT_FALSE(point_cloud2_to_poly_data(layout, data, kMillimetresPerMetre, policy, cloud, &error));
+    EXPECT_NE(error.find("point at byte 24: y = 1e+306 is not finite once scaled by 1000"), std::string::npos)
+      << error;
+  }
+  EXPECT_EQ(cloud->GetNumberOfPoints(), 0);
+  ASSERT_TRUE(point_cloud2_to_poly_data(layout, data, kNoLengthScaling, NonFinitePoints::Keep, cloud, &error));
+  EXPECT_EQ(cloud->GetPoint(1)[1], 1e306);
+}

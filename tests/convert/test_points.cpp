@@ -95,3 +95,24 @@ TEST(Points, BadInput)
   EXPECT_FALSE(points_to_xyz(nullptr, 1000.0, &out, &error));
   EXPECT_NE(error.find("null"), std::string::npos) << error;
 }
+
+// Issue 11.9: finite in metres, not finite in millimetres: an error under every policy (the
+// policy is about the sender's own NaN points).
+TEST(Points, CoordinatesThatOverflowOnceScaledAreRefused)
+{
+  vtkNew<vtkPoints> points;
+  std::string error;
+  for (auto policy : { NonFinitePoints::Keep, NonFinitePoints::Drop, NonFinitePoints::Reject })
+  {
+    error.clear();
+    EXPECT_FALSE(xyz_to_points(std::vector<float>{ 0, 0, 0, 1, 1e37f, 1 }, kMillimetresPerMetre, policy,
+      points, &error));
+    EXPECT_NE(error.find("point 1: coordinate 1e+37 is not finite once scaled by 1000"), std::string::npos)
+      << error;
+    error.clear();
+    EXPECT_FALSE(xyz_to_points(std::vector<double>{ 1e306, 0, 0 }, kMillimetresPerMetre, policy, points, &error));
+    EXPECT_NE(error.find("point 0: coordinate 1e+306"), std::string::npos) << error;
+  }
+  EXPECT_TRUE(xyz_to_points(std::vector<float>{ 1e37f, 0, 0 }, kNoLengthScaling, NonFinitePoints::Keep, points,
+    &error));
+}

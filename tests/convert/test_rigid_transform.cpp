@@ -297,3 +297,15 @@ TEST(RigidTransform, CollectionErrorsNameTheItemAndLeaveOutputAlone)
   EXPECT_NE(error.find("item 1 is not a vtkTransform"), std::string::npos) << error;
   EXPECT_EQ(out.size(), 5u);
 }
+
+// Issue 11.9: 1e306 m is finite, 1e309 mm is not; the matrix must not hold infinity.
+TEST(RigidTransform, TranslationThatOverflowsOnceScaledIsRefused)
+{
+  vtkNew<vtkMatrix4x4> matrix;
+  std::string error;
+  EXPECT_FALSE(pose_to_matrix(make_pose(1e306, 0, 0, 0, 0, 0, 1), kMillimetresPerMetre, matrix, &error));
+  EXPECT_NE(error.find("pose_to_matrix: translation (1e+306, 0, 0) is not finite once scaled by 1000"),
+    std::string::npos) << error;
+  EXPECT_EQ(matrix->GetElement(0, 3), 0.0); // untouched
+  EXPECT_TRUE(pose_to_matrix(make_pose(1e306, 0, 0, 0, 0, 0, 1), kNoLengthScaling, matrix, &error));
+}

@@ -1,6 +1,6 @@
 // Compiled fixture specs (msg_specs/fixtures/ros2vtk_test_msgs) and shipped types: round trips
 // through the type-support tables, and byte layouts worked out by hand from the CDR rules of
-// shared/ROS2_WIRE_NOTES.md §7 (or copied from its §7.10 dumps made with Fast CDR), never from
+// docs/wire-notes.md §7 (or copied from its §7.10 dumps made with Fast CDR), never from
 // our own serializer.
 #include "ros2vtk/geometry_msgs/msg/transform_stamped.hpp"
 #include "ros2vtk/rmw_dds_common/msg/participant_entities_info.hpp"

@@ -1,4 +1,4 @@
-"""RIHS01 type hashes against the values tabled in shared/ROS2_WIRE_NOTES.md §2.6 (computed
+"""RIHS01 type hashes against the values tabled in docs/wire-notes.md §2.6 (computed
 there independently and partly cross-checked against third-party code)."""
 import os
 

@@ -150,6 +150,9 @@ def to_plain(value):
 
 def cmd_sub(args, logic, node) -> int:
     sub = node.CreateAndAddSubscriberNode(args.type, args.topic)
+    if args.qos and not sub.SetQoSProfile(args.qos):
+        print(json.dumps({'error': f'QoS profile {args.qos} refused'}), flush=True)
+        return 1
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
     run(logic, args.seconds, lambda: sub.GetNumberOfMessages() >= args.count)
     run(logic, args.linger, lambda: False)  # anything beyond --count would show up here
@@ -347,6 +350,7 @@ def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument('--node-name', default='slicer')
     parser.add_argument('--seconds', type=float, default=15.0)
+    parser.add_argument('--log-level', type=int, default=0, help='SetLogLevel of the node (/rosout)')
     parser.add_argument('--reopen', type=int, default=0,
                         help='save and reopen the scene this many times first (a new participant each time)')
     sub = parser.add_subparsers(dest='command', required=True)
@@ -370,6 +374,7 @@ def main() -> int:
     subscriber.add_argument('topic')
     subscriber.add_argument('--count', type=int, default=1)
     subscriber.add_argument('--linger', type=float, default=0.0)
+    subscriber.add_argument('--qos', default='', help='a QoS profile name (default: the default profile)')
     publisher = sub.add_parser('pub')
     publisher.add_argument('type')
     publisher.add_argument('topic')
@@ -392,6 +397,9 @@ def main() -> int:
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
+    if args.log_level and not node.SetLogLevel(args.log_level):
+        print(json.dumps({'error': f'log level {args.log_level} refused'}), flush=True)
+        return 1
     for _ in range(args.reopen):
         if not logic.GetScene().ReadFromXMLString(logic.GetScene().WriteToXMLString()):
             print(json.dumps({'error': 'scene not reopened'}), flush=True)

@@ -55,9 +55,10 @@ def matches(snapshot: dict, expected: dict, prefix_len: int = 0) -> float:
 
 
 def run_robot(ros, urdf: Path, source: str, *, configs: int = 3, namespace: str = '', prefix: str = '',
-              mesh_paths: list[Path] = (), ament_prefix: Path | None = None):
+              mesh_paths: list[Path] = (), ament_prefix: Path | None = None, rsp_host=None):
+    """rsp_host: where robot_state_publisher runs (another host of tests/network), else beside us."""
     hold = 2.5
-    rsp = start_rsp(ros, urdf, '--configs', str(configs), '--hold', str(hold), '--namespace', namespace,
+    rsp = start_rsp(rsp_host or ros, urdf, '--configs', str(configs), '--hold', str(hold), '--namespace', namespace,
                     '--frame-prefix', prefix)
     rsp_node = f'{namespace}/robot_state_publisher' if namespace else '/robot_state_publisher'
     args = ['--seconds', '30', 'robot', 'arm', '--source', source, '--rsp-node', rsp_node,

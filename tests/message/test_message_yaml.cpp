@@ -334,3 +334,45 @@ TEST(MessageYaml, NonFiniteFloats)
 }
 
 } // namespace
+
+// Issue 11.5: input-controlled depth and expansion. yaml-cpp bounds its own recursion (a depth
+// guard); the reader bounds what aliases can expand to.
+TEST(MessageYaml, DeeplyNestedYamlIsAnErrorNotACrash)
+{
+  Sample read = filled_sample();
+  std::string error;
+  for (const std::string open : { "[", "{a: ", "- " })
+  {
+    std::string yaml = "inners: ";
+    for (int i = 0; i < 100000; ++i)
+      yaml += open;
+    error.clear();
+    EXPECT_FALSE(wire::from_yaml(sample_type(), yaml, &read, &error)) << open;
+    EXPECT_FALSE(error.empty());
+  }
+  EXPECT_EQ(read.text, "a: b"); // untouched
+}
+
+TEST(MessageYaml, AliasesCannotExpandBeyondTheText)
+{
+  std::string yaml = "inners: [{s: &t " + std::string(1000, 'x') + "}";
+  for (int i = 0; i < 2000; ++i)
+    yaml += ", {s: *t}";
+  yaml += "]\n";
+  Sample read;
+  std::string error;
+  EXPECT_FALSE(wire::from_yaml(sample_type(), yaml, &read, &error));
+  EXPECT_NE(error.find("(aliases?)"), std::string::npos) << error;
+  // A few aliases are fine.
+  ASSERT_TRUE(wire::from_yaml(sample_type(), "inners: [{s: &t abc}, {s: *t}]\n", &read, &error)) << error;
+  ASSERT_EQ(read.inners.size(), 2u);
+  EXPECT_EQ(read.inners[1].s, "abc");
+}
+
+TEST(MessageYaml, InvalidUtf8InStringsIsReplaced)
+{
+  Sample read;
+  std::string error;
+  ASSERT_TRUE(wire::from_yaml(sample_type(), "text: \"a\xff" "b\"\n", &read, &error)) << error;
+  EXPECT_EQ(read.text, "a\xEF\xBF\xBD" "b");
+}

@@ -3,6 +3,8 @@
 #ifndef ros2vtk_tests_robot_test_support_hpp
 #define ros2vtk_tests_robot_test_support_hpp
 
+#include "chain_urdf.hpp"
+
 #include <vtkPolyData.h>
 
 #include <array>

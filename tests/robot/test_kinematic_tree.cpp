@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "chain_urdf.hpp"
+
 #include <cmath>
 
 using ros2vtk::robot::KinematicTree;
@@ -86,4 +88,21 @@ TEST(KinematicTree, RejectsBrokenUrdfWithAMessage)
                                         "<child link='b'/></joint></robot>", &error));
   EXPECT_NE(error.find("URDF failed to parse"), std::string::npos);
   EXPECT_FALSE(KinematicTree::from_urdf("<robot", &error));
+}
+
+// Issue 11.2: the joint walk recursed once per link; a 10 000-link chain from the network
+// overflowed the stack.
+TEST(KinematicTree, ChainOfTenThousandLinksIsWalkedParentFirst)
+{
+  const int links = 10000;
+  std::string error;
+  auto tree = KinematicTree::from_urdf(ros2vtk_test::chain_urdf(links), &error);
+  ASSERT_TRUE(tree) << error;
+  const auto names = tree->link_names();
+  ASSERT_EQ(names.size(), static_cast<size_t>(links));
+  EXPECT_EQ(names.front(), "link_9999");
+  EXPECT_EQ(names.back(), "link_0");
+  const auto poses = tree->link_poses({});
+  ASSERT_EQ(poses.size(), static_cast<size_t>(links));
+  EXPECT_NEAR(poses.at("link_0").translation().z(), 9.999, 1e-9); // 9999 joints of 1 mm
 }

@@ -166,6 +166,7 @@ TEST_F(ResolverTest, FileUrisAndAbsolutePaths)
 {
   const fs::path mesh = write("with space/mesh.stl");
   ResourceResolver resolver;
+  resolver.add_allowed_root(root_.string());
   auto found = resolver.resolve("file://" + (root_ / "with%20space/mesh.stl").string(), "");
   ASSERT_TRUE(found.ok) << found.error;
   EXPECT_EQ(found.path, mesh.string());
@@ -184,6 +185,9 @@ TEST(ResourceResolver, RelativePathsWithParentFolderFromTheBaseFolder)
 {
   ResourceResolver resolver;
   const std::string base = ros2vtk_test::robots_dir() + "/surgical_arm/urdf";
+  // ../meshes leaves the URDF's folder: allowed once the robot's folder is a root.
+  EXPECT_FALSE(resolver.resolve("../meshes/forearm.stl", base).ok);
+  resolver.add_allowed_root(ros2vtk_test::robots_dir() + "/surgical_arm");
   const auto found = resolver.resolve("../meshes/forearm.stl", base);
   ASSERT_TRUE(found.ok) << found.error;
   EXPECT_EQ(found.path, canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes/forearm.stl"));
@@ -231,7 +235,9 @@ TEST_F(ResolverTest, RootCheckRefusesPathsEscapingTheRoots)
   resolver.add_search_path((root_ / "robots").string());
   const std::string base = (root_ / "robots/arm/urdf").string();
 
-  // Off (the default): the escaping paths resolve.
+  // Switched off (the explicit opt-out): the escaping paths resolve.
+  EXPECT_TRUE(resolver.restrict_to_roots()) << "on by default";
+  resolver.set_restrict_to_roots(false);
   EXPECT_TRUE(resolver.resolve("../../../secret.stl", base).ok);
   EXPECT_TRUE(resolver.resolve("package://arm/../../secret.stl", "").ok);
 
@@ -274,12 +280,43 @@ TEST_F(ResolverTest, RefusesFilesOverTheSizeLimit)
   const fs::path big = write("big.stl", std::string(4096, 'x'));
   const fs::path small = write("small.stl", std::string(100, 'x'));
   ResourceResolver resolver;
+  resolver.add_allowed_root(root_.string());
   resolver.set_max_file_bytes(1000);
   auto found = resolver.resolve(big.string(), "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("4096 bytes"), std::string::npos) << found.error;
   EXPECT_NE(found.error.find("limit of 1000 bytes"), std::string::npos) << found.error;
   EXPECT_TRUE(resolver.resolve(small.string(), "").ok);
+}
+
+// Issue 11.10: with no set-up at all (a description from the network, no URDF file), nothing
+// outside the package roots is read: not through `..` in a package URI, not by file:// or an
+// absolute path; the URDF file's folder (the base folder) is a root.
+TEST_F(ResolverTest, ByDefaultMeshesOutsideThePackageRootsAreRefused)
+{
+  make_package("ws/pkg", "pkg");
+  write("ws/pkg/meshes/ok.stl");
+  const fs::path outside = write("outside/x.stl");
+  const fs::path beside_urdf = write("robot_files/mesh.stl");
+  ResourceResolver resolver;
+  resolver.add_search_path((root_ / "ws").string());
+  EXPECT_TRUE(resolver.resolve("package://pkg/meshes/ok.stl", "").ok);
+  auto found = resolver.resolve("package://pkg/../../outside/x.stl", "");
+  ASSERT_FALSE(found.ok);
+  EXPECT_NE(found.error.find("outside its package folder"), std::string::npos) << found.error;
+  for (const std::string uri : {"file://" + outside.string(), outside.string(), std::string("file:///etc/hostname")})
+  {
+    found = resolver.resolve(uri, "");
+    ASSERT_FALSE(found.ok) << uri;
+    EXPECT_TRUE(found.error.find("outside the allowed roots") != std::string::npos ||
+                found.error.find("no such file") != std::string::npos) << found.error;
+  }
+  EXPECT_TRUE(resolver.resolve("mesh.stl", (root_ / "robot_files").string()).ok);
+  EXPECT_TRUE(resolver.resolve(beside_urdf.string(), (root_ / "robot_files").string()).ok);
+  EXPECT_FALSE(resolver.resolve("../outside/x.stl", (root_ / "robot_files").string()).ok);
+  resolver.set_restrict_to_roots(false); // the explicit opt-out
+  EXPECT_TRUE(resolver.resolve("package://pkg/../../outside/x.stl", "").ok);
+  EXPECT_TRUE(resolver.resolve("file://" + outside.string(), "").ok);
 }
 
 } // namespace

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <random>
 
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 using namespace ros2vtk::robot;
 
@@ -167,7 +169,9 @@ TEST(RobotLoader, FileUrisAbsolutePathsAndMirroringScale)
                           "<link name='b'><visual><geometry><mesh filename='" + meshes +
                           "/wrist.stl' scale='-1 1 1'/></geometry></visual></link>"
                           "<joint name='j' type='fixed'><parent link='a'/><child link='b'/></joint></robot>";
-  RobotLoader loader{ResourceResolver()};
+  ResourceResolver resolver;
+  resolver.add_allowed_root(meshes); // meshes outside every root are refused by default
+  RobotLoader loader{resolver};
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
@@ -366,6 +370,25 @@ TEST(RobotLoader, VisualsDroppedByUrdfdomAreReportedNotLostSilently)
   ASSERT_FALSE(robot.urdf_warnings.empty());
   EXPECT_NE(robot.urdf_warnings[0].find("[0.1 0.1]"), std::string::npos) << robot.urdf_warnings[0];
   EXPECT_EQ(robot.warnings().size(), robot.urdf_warnings.size() + 1);
+}
+
+// Issue 11.2: the link walk recursed once per link; ~7000 links overflowed the stack.
+TEST(RobotLoader, ChainOfTenThousandLinksFromAFileLoadsRootFirst)
+{
+  const int links = 10000;
+  const fs::path file = fs::temp_directory_path() / ("ros2vtk_chain_" + std::to_string(::getpid()) + ".urdf");
+  std::ofstream(file) << ros2vtk_test::chain_urdf(links);
+  RobotLoader loader{ResourceResolver()};
+  RobotVisuals robot;
+  std::string error;
+  const bool loaded = loader.load_file(file.string(), &robot, &error);
+  fs::remove(file);
+  ASSERT_TRUE(loaded) << error;
+  ASSERT_EQ(robot.links.size(), static_cast<size_t>(links));
+  EXPECT_EQ(robot.root_link, "link_9999");
+  EXPECT_EQ(robot.links.front().link, "link_9999");
+  EXPECT_EQ(robot.links[1].link, "link_9998");
+  EXPECT_EQ(robot.links.back().link, "link_0");
 }
 
 TEST(RobotLoader, EmptyUrdfTextIsAnError)

@@ -239,3 +239,44 @@ TEST(SceneFile, RejectsBadDocumentsWithoutCrashing)
   EXPECT_FALSE(scene->WriteToXMLFile("/nonexistent/dir/scene.xml"));
   scene->GlobalWarningDisplayOn();
 }
+
+// Issue 11.6: a failing read left the scene cleared (or half-read). Reading is atomic now: after
+// each failing read the scene is exactly as before, and no node was removed or added.
+TEST(SceneFile, FailingReadsLeaveTheSceneUnchanged)
+{
+  vtkNew<vtkROS2Scene> scene;
+  auto a = AddNodeNode(scene, "kept a");
+  auto b = AddNodeNode(scene, "kept b");
+  a->SetAttribute("note", "still here");
+  a->SetNodeReferenceID("peer", b->GetID());
+  const std::string before = scene->WriteToXMLString();
+  const std::string valid = "<vtkROS2NodeNode id=\"n1\" name=\"new\"/>";
+  std::string deep = "<ROS2Scene version=\"1\">";
+  for (int i = 0; i < 150000; ++i)
+    deep += "<x>";
+  const std::vector<std::string> failing = {
+    "<ROS2Scene version=\"1\">" + valid + "<vtkNoSuchNode id=\"x1\"/></ROS2Scene>",
+    "<ROS2Scene version=\"1\">" + valid + "<vtkROS2NodeNode name=\"no id\"/></ROS2Scene>",
+    "<ROS2Scene version=\"1\">" + valid + "<vtkROS2NodeNode id=\"n1\"/></ROS2Scene>",
+    "<ROS2Scene version=\"1\">" + valid +
+      "<vtkROS2NodeNode id=\"n2\"><Attribute value=\"no name\"/></vtkROS2NodeNode></ROS2Scene>",
+    "<ROS2Scene version=\"1\">" + valid, // truncated file
+    "<ROS2Scene version=\"2\">" + valid + "</ROS2Scene>",
+    deep,
+  };
+  EventLog log(scene);
+  scene->GlobalWarningDisplayOff();
+  for (size_t i = 0; i < failing.size(); ++i)
+  {
+    EXPECT_FALSE(scene->ReadFromXMLString(failing[i].c_str())) << i;
+    EXPECT_EQ(scene->WriteToXMLString(), before) << "after failing read " << i;
+  }
+  scene->GlobalWarningDisplayOn();
+  EXPECT_TRUE(log.events.empty()) << log.events.size() << " nodes were added or removed";
+  EXPECT_EQ(scene->GetNodeByID(a->GetID()), a.GetPointer());
+  EXPECT_EQ(a->GetNodeReference("peer"), b.GetPointer());
+  // A valid read still replaces everything.
+  ASSERT_TRUE(scene->ReadFromXMLString(("<ROS2Scene version=\"1\">" + valid + "</ROS2Scene>").c_str()));
+  ASSERT_EQ(scene->GetNumberOfNodes(), 1);
+  EXPECT_STREQ(scene->GetNthNode(0)->GetName(), "new");
+}

@@ -271,3 +271,25 @@ TEST(BufferLookup, CanTransformAgreesWithLookup)
                    "is in the buffer, when looking up transform from frame [hand] to frame "
                    "[sensor]");
 }
+
+// Issue 11.5: frame chains come from the network. Like tf2 (MAX_GRAPH_DEPTH = 1000), a walk
+// longer than 1000 frames is reported as a loop instead of costing depth^2 steps per lookup.
+TEST(BufferLookup, ChainsDeeperThanTf2AllowsAreReportedAsALoop)
+{
+  BufferCore buffer;
+  const int frames = 1500;
+  for (int i = 1; i < frames; ++i) {
+    ASSERT_TRUE(buffer.set_transform(
+      make_stamped("f" + std::to_string(i - 1), "f" + std::to_string(i), sec(1), { 0.001, 0, 0 }), "x"));
+  }
+  const LookupResult within = buffer.lookup_transform("f0", "f1000", sec(1));
+  ASSERT_TRUE(within.ok) << within.message.substr(0, 200);
+  EXPECT_NEAR(within.transform.translation.x(), 1.0, 1e-9);
+  for (TimePoint t : { kLatestTime, sec(1) }) {
+    const LookupResult deep = buffer.lookup_transform("f0", "f1499", t);
+    EXPECT_FALSE(deep.ok);
+    EXPECT_EQ(deep.error, Tf2Error::Lookup);
+    EXPECT_EQ(deep.message.rfind("The tf tree is invalid because it contains a loop.\n", 0), 0u)
+      << deep.message.substr(0, 200);
+  }
+}

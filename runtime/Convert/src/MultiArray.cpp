@@ -81,6 +81,21 @@ bool resolve_grid(const MultiArrayLayout& layout, size_t data_size, const char* 
         "layout has " + std::to_string(layout.dim.size()) +
           " dimensions; only 0, 1 or 2 map to VTK arrays and tables");
   }
+  // Bounded before anything is allocated from these numbers: the sizes come off the wire.
+  if (g.cols > kMaxTableColumns)
+  {
+    return fail(error, where,
+      "layout asks for " + std::to_string(g.cols) + " columns; at most " +
+        std::to_string(kMaxTableColumns) + " are taken");
+  }
+  if (g.cols == 0 && g.rows > 0)
+  {
+    // VTK holds no row without values (a data array has at least one component, a table's
+    // rows are its columns' values): N x 0 would become N allocated values from no data.
+    return fail(error, where,
+      "layout has " + std::to_string(g.rows) + " rows of 0 columns (dim[1] size 0); a VTK " +
+        "array or table cannot hold rows without values (send 0 rows for an empty matrix)");
+  }
   if (g.rows > 0 && g.cols > 0)
   {
     const uint64_t last = g.offset + (g.rows - 1) * g.row_stride + (g.cols - 1);
@@ -195,12 +210,6 @@ bool grid_to_table(const MultiArrayLayout& layout, const std::vector<T>& data, v
   {
     return false;
   }
-  if (g.cols > kMaxTableColumns)
-  {
-    return fail(error, where,
-      "layout asks for " + std::to_string(g.cols) + " columns; a table takes at most " +
-        std::to_string(kMaxTableColumns));
-  }
   std::vector<vtkSmartPointer<typename ArrayFor<T>::type>> columns;
   columns.reserve(g.cols);
   for (uint64_t j = 0; j < g.cols; ++j)
@@ -299,10 +308,6 @@ bool grid_to_array(const MultiArrayLayout& layout, const std::vector<T>& data,
   if (!resolve_grid(layout, data.size(), where, &g, error))
   {
     return false;
-  }
-  if (g.cols > static_cast<uint64_t>(std::numeric_limits<int>::max()))
-  {
-    return fail(error, where, "too many columns for VTK components");
   }
   array->SetNumberOfComponents(static_cast<int>(g.cols));
   array->SetNumberOfTuples(static_cast<vtkIdType>(g.rows));

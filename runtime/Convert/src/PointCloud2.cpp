@@ -93,7 +93,7 @@ void extract_coordinate(const uint8_t* data, const std::vector<size_t>& points, 
   for (size_t i = 0; i < points.size(); ++i)
   {
     const Src value = detail::load_value<Src>(data + points[i] + offset, swap);
-    dst[3 * i + axis] = static_cast<Dst>(static_cast<double>(value) * scale);
+    dst[3 * i + axis] = detail::narrow_coordinate<Dst>(static_cast<double>(value) * scale);
   }
 }
 
@@ -259,6 +259,8 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
   }
   const bool swap = layout.is_bigendian != detail::host_is_big_endian();
 
+  const bool float_points = xyz[0]->datatype == point_field::kFloat32 &&
+    xyz[1]->datatype == point_field::kFloat32 && xyz[2]->datatype == point_field::kFloat32;
   // Byte offset of every point that is kept: the one per-cloud allocation all fields reuse.
   std::vector<size_t> points;
   points.reserve(static_cast<size_t>(total));
@@ -295,8 +297,6 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
   const vtkIdType count = static_cast<vtkIdType>(points.size());
 
   auto vtk_points = vtkSmartPointer<vtkPoints>::New();
-  const bool float_points = xyz[0]->datatype == point_field::kFloat32 &&
-    xyz[1]->datatype == point_field::kFloat32 && xyz[2]->datatype == point_field::kFloat32;
   vtk_points->SetDataType(float_points ? VTK_FLOAT : VTK_DOUBLE);
   vtk_points->SetNumberOfPoints(count);
   void* coordinates = vtk_points->GetData()->GetVoidPointer(0);
@@ -311,6 +311,30 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
     {
       extract_coordinate_any(xyz[axis]->datatype, data, points, xyz[axis]->offset, swap,
         length_scale, axis, static_cast<double*>(coordinates));
+    }
+  }
+
+  // The policy above is about the sender's NaN points; a finite coordinate that overflows once
+  // scaled (1e306 m as float64, 1e37 m as float32 into mm) is an error whatever the policy
+  // (issue 11.9). Only a non-finite output can be one, so the source is read again only there.
+  if (length_scale > 1.0)
+  {
+    const auto* out_float = static_cast<const float*>(coordinates);
+    const auto* out_double = static_cast<const double*>(coordinates);
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const double out = float_points ? out_float[3 * i + axis] : out_double[3 * i + axis];
+        const double in = load[axis](data + points[i] + xyz[axis]->offset, swap);
+        if (!std::isfinite(out) && std::isfinite(in))
+        {
+          return fail(error, where,
+            "point at byte " + std::to_string(points[i]) + ": " + xyz[axis]->name + " = " +
+              detail::number_text(in) + " is not finite once scaled by " + detail::number_text(length_scale) +
+              (float_points ? " into float32" : ""));
+        }
+      }
     }
   }
 

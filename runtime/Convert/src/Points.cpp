@@ -34,6 +34,13 @@ bool finite_triple(const T* p)
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
+/// A finite coordinate that is not finite once scaled into T (1e37 m is a float, 1e40 mm is not).
+template <typename T>
+bool overflows(T value, double scale)
+{
+  return std::isfinite(value) && !detail::finite_in<T>(value * scale);
+}
+
 template <typename T>
 bool to_points(const T* xyz, size_t count, double length_scale, NonFinitePoints policy,
   vtkPoints* points, std::string* error)
@@ -50,6 +57,17 @@ bool to_points(const T* xyz, size_t count, double length_scale, NonFinitePoints 
   if (count > 0 && !xyz)
   {
     return fail(error, where, "xyz pointer is null");
+  }
+  // The policy is about the sender's NaN points; a finite coordinate that overflows once scaled
+  // is an error whatever the policy (issue 11.9).
+  for (size_t i = 0; i < 3 * count; ++i)
+  {
+    if (overflows(xyz[i], length_scale))
+    {
+      return fail(error, where,
+        "point " + std::to_string(i / 3) + ": coordinate " + detail::number_text(xyz[i]) +
+          " is not finite once scaled by " + detail::number_text(length_scale));
+    }
   }
   size_t kept = count;
   if (policy != NonFinitePoints::Keep)
@@ -77,9 +95,9 @@ bool to_points(const T* xyz, size_t count, double length_scale, NonFinitePoints 
     {
       continue;
     }
-    out[0] = static_cast<T>(p[0] * length_scale);
-    out[1] = static_cast<T>(p[1] * length_scale);
-    out[2] = static_cast<T>(p[2] * length_scale);
+    out[0] = detail::narrow_coordinate<T>(p[0] * length_scale);
+    out[1] = detail::narrow_coordinate<T>(p[1] * length_scale);
+    out[2] = detail::narrow_coordinate<T>(p[2] * length_scale);
     out += 3;
   }
   points->Modified();

@@ -11,6 +11,7 @@
 #include <vtkTransform.h>
 #include <vtkTransformCollection.h>
 
+#include <array>
 #include <cmath>
 
 namespace ros2vtk {
@@ -78,11 +79,22 @@ bool pose_to_matrix(const RigidPose& pose, double length_scale, vtkMatrix4x4* ma
   {
     return fail(error, where, "output matrix is null");
   }
-  Eigen::Quaterniond rotation;
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   if (!detail::check_length_scale(length_scale, where, error) ||
     !checked_rotation(pose, where, &rotation, error))
   {
     return false;
+  }
+  // Finite in metres is not enough: 1e306 m is infinite in millimetres (issue 11.9).
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (!std::isfinite(pose.translation[static_cast<size_t>(axis)] * length_scale))
+    {
+      return fail(error, where,
+        "translation (" + number_text(pose.translation[0]) + ", " + number_text(pose.translation[1]) +
+          ", " + number_text(pose.translation[2]) + ") is not finite once scaled by " +
+          number_text(length_scale));
+    }
   }
   fill_matrix(pose, rotation, length_scale, matrix);
   return true;
@@ -143,7 +155,13 @@ bool matrix_to_pose(vtkMatrix4x4* matrix, double length_scale, RigidPose* pose,
   {
     q.coeffs() *= -1.0;
   }
-  pose->translation = { { m[3] / length_scale, m[7] / length_scale, m[11] / length_scale } };
+  const std::array<double, 3> translation = { { m[3] / length_scale, m[7] / length_scale,
+    m[11] / length_scale } };
+  if (!detail::all_finite(translation.data(), 3))
+  {
+    return fail(error, where, "translation is not finite once scaled by 1/" + number_text(length_scale));
+  }
+  pose->translation = translation;
   pose->rotation = { { q.x(), q.y(), q.z(), q.w() } };
   return true;
 }

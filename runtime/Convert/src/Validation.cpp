@@ -10,7 +10,21 @@ bool fail(std::string* error, const char* where, const std::string& what)
 {
   if (error)
   {
-    *error = std::string(where) + ": " + what;
+    // Reasons quote received text (labels, encodings, field names): capped, so a 1 MB label
+    // cannot make a 1 MB error, and cut at a UTF-8 character boundary (issue 11.9).
+    constexpr size_t kMaxReasonBytes = 1000;
+    if (what.size() <= kMaxReasonBytes)
+    {
+      *error = std::string(where) + ": " + what;
+      return false;
+    }
+    size_t cut = kMaxReasonBytes;
+    while (cut > 0 && (static_cast<unsigned char>(what[cut]) & 0xC0) == 0x80)
+    {
+      --cut;
+    }
+    *error = std::string(where) + ": " + what.substr(0, cut) + "... (" + std::to_string(what.size()) +
+      " bytes)";
   }
   return false;
 }

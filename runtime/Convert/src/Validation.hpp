@@ -3,6 +3,7 @@
 #define ros2vtk_convert_Validation_hpp
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace ros2vtk {
@@ -26,6 +27,24 @@ inline bool all_finite(const double* values, int count)
     }
   }
   return true;
+}
+
+/// True when `value` is finite and fits T (a float holds 1e37 m, not 1e40 mm).
+template <typename T>
+bool finite_in(double value)
+{
+  return std::isfinite(value) && std::fabs(value) <= static_cast<double>(std::numeric_limits<T>::max());
+}
+
+/// `value` as T, out-of-range values as +-infinity (a plain cast of 1e40 to float is undefined).
+template <typename T>
+T narrow_coordinate(double value)
+{
+  if (std::isfinite(value) && std::fabs(value) > static_cast<double>(std::numeric_limits<T>::max()))
+  {
+    return value > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+  }
+  return static_cast<T>(value);
 }
 
 /// "1.5" style text for messages (shortest form that round-trips is not needed here).

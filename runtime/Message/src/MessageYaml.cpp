@@ -8,6 +8,7 @@
 // line width). tests/fixtures/yaml_scalars.json holds PyYAML's own output for tricky values.
 // Reading uses yaml-cpp (Debian's libyaml-cpp-dev).
 #include "ros2vtk/wire/MessageYaml.hpp"
+#include "ros2vtk/wire/Utf8.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
@@ -747,6 +748,7 @@ class YamlReader
 public:
   explicit YamlReader(const std::string& source)
     : source_(source)
+    , budget_(4 * source.size() + 64)
   {
   }
 
@@ -755,6 +757,10 @@ public:
   bool read_message(const MessageTypeSupport& type, const YAML::Node& node, void* message,
                     const std::string& path)
   {
+    if (!spend(path))
+    {
+      return false;
+    }
     if (node.IsNull())
     {
       return true; // `{}`-like: every field keeps its default
@@ -787,6 +793,22 @@ public:
 
 private:
   const std::string& source_;
+  // Values (and string bytes) read so far, against a budget proportional to the text: without
+  // aliases every value takes at least one byte of text, with them (`*a` repeated, nested) a
+  // 1 kB document could expand to billions of values or gigabytes of strings (issue 11.5).
+  size_t visited_ = 0;
+  size_t budget_;
+
+  bool spend(const std::string& path, size_t units = 1)
+  {
+    visited_ += units;
+    if (visited_ <= budget_)
+    {
+      return true;
+    }
+    return fail(path, "the YAML expands to more than " + std::to_string(budget_) +
+                  " values for its " + std::to_string(source_.size()) + " bytes (aliases?)");
+  }
 
   /// The scalar's text, with yaml-cpp's blank single-quoted scalars repaired.
   std::string scalar(const YAML::Node& node) const
@@ -803,7 +825,8 @@ private:
   {
     if (error.empty())
     {
-      error = (path.empty() ? std::string("<message>") : path) + ": " + what;
+      // `what` may quote the user's text; capped at a character boundary (issue 11.9).
+      error = clip_for_message((path.empty() ? std::string("<message>") : path) + ": " + what, 1000);
     }
     return false;
   }
@@ -862,6 +885,10 @@ private:
     for (size_t i = 0; i < count; ++i)
     {
       const std::string item_path = path + "[" + std::to_string(i) + "]";
+      if (!spend(item_path))
+      {
+        return false;
+      }
       if (field.type == FieldType::Bool)
       {
         bool flag = false;
@@ -1058,7 +1085,12 @@ private:
       return fail(path, std::string("expected a ") + type_name(field.type) + ", got " +
                     describe(node));
     }
-    const std::string text = scalar(node);
+    std::string text = scalar(node);
+    if (!spend(path, text.size()))
+    {
+      return false;
+    }
+    repair_utf8(text); // the project's invalid-UTF-8 policy (Utf8.hpp)
     if (field.type == FieldType::String)
     {
       if (field.string_bound != 0 && text.size() > field.string_bound)

@@ -3,7 +3,7 @@
 
 #include <urdf_parser/urdf_parser.h>
 
-#include <functional>
+#include <vector>
 
 namespace ros2vtk {
 namespace robot {
@@ -59,43 +59,59 @@ std::unique_ptr<KinematicTree> KinematicTree::from_urdf(const std::string& urdf_
   auto tree = std::unique_ptr<KinematicTree>(new KinematicTree());
   tree->robot_name_ = model->getName();
   tree->root_link_ = model->getRoot() ? model->getRoot()->name : std::string();
-  // Depth-first from the root, so parents come before children (URDF order is arbitrary).
-  std::function<void(const urdf::LinkConstSharedPtr&)> visit = [&](const urdf::LinkConstSharedPtr& link) {
-    tree->links_.push_back(link->name);
-    for (const auto& joint : link->child_joints)
-    {
-      JointInfo info;
-      info.name = joint->name;
-      info.type = to_type(joint->type);
-      info.parent_link = joint->parent_link_name;
-      info.child_link = joint->child_link_name;
-      info.origin = to_isometry(joint->parent_to_joint_origin_transform);
-      info.axis = Eigen::Vector3d(joint->axis.x, joint->axis.y, joint->axis.z);
-      if (info.axis.norm() > 0)
-        info.axis.normalize();
-      if (joint->limits && (info.type == JointInfo::Type::Revolute || info.type == JointInfo::Type::Prismatic))
-      {
-        info.has_limits = true;
-        info.lower = joint->limits->lower;
-        info.upper = joint->limits->upper;
-      }
-      if (joint->mimic)
-      {
-        info.mimic_joint = joint->mimic->joint_name;
-        info.mimic_multiplier = joint->mimic->multiplier;
-        info.mimic_offset = joint->mimic->offset;
-      }
-      tree->joint_index_[info.name] = tree->joints_.size();
-      tree->joints_.push_back(info);
-      for (const auto& child : link->child_links)
-      {
-        if (child->name == joint->child_link_name)
-          visit(child);
-      }
-    }
+  // Depth-first from the root, so parents come before children (URDF order is arbitrary). An
+  // explicit stack (link, next child joint), not recursion: descriptions come from the network
+  // and a chain of 10 000+ links overflowed the stack (issue 11.2).
+  struct Pending
+  {
+    urdf::LinkConstSharedPtr link;
+    size_t next_joint;
   };
+  std::vector<Pending> pending;
   if (model->getRoot())
-    visit(model->getRoot());
+  {
+    tree->links_.push_back(model->getRoot()->name);
+    pending.push_back({ model->getRoot(), 0 });
+  }
+  while (!pending.empty())
+  {
+    Pending& top = pending.back();
+    if (top.next_joint == top.link->child_joints.size())
+    {
+      pending.pop_back();
+      continue;
+    }
+    const urdf::JointConstSharedPtr joint = top.link->child_joints[top.next_joint++];
+    JointInfo info;
+    info.name = joint->name;
+    info.type = to_type(joint->type);
+    info.parent_link = joint->parent_link_name;
+    info.child_link = joint->child_link_name;
+    info.origin = to_isometry(joint->parent_to_joint_origin_transform);
+    info.axis = Eigen::Vector3d(joint->axis.x, joint->axis.y, joint->axis.z);
+    if (info.axis.norm() > 0)
+      info.axis.normalize();
+    if (joint->limits && (info.type == JointInfo::Type::Revolute || info.type == JointInfo::Type::Prismatic))
+    {
+      info.has_limits = true;
+      info.lower = joint->limits->lower;
+      info.upper = joint->limits->upper;
+    }
+    if (joint->mimic)
+    {
+      info.mimic_joint = joint->mimic->joint_name;
+      info.mimic_multiplier = joint->mimic->multiplier;
+      info.mimic_offset = joint->mimic->offset;
+    }
+    tree->joint_index_[info.name] = tree->joints_.size();
+    tree->joints_.push_back(info);
+    urdf::LinkConstSharedPtr child = model->getLink(joint->child_link_name);
+    if (child)
+    {
+      tree->links_.push_back(child->name);
+      pending.push_back({ std::move(child), 0 }); // `top` is not used after this
+    }
+  }
   return tree;
 }
 

@@ -270,10 +270,13 @@ std::string ResourceResolver::find_package(const std::string& name, std::vector<
   return {};
 }
 
-std::vector<std::string> ResourceResolver::allowed_roots() const
+std::vector<std::string> ResourceResolver::allowed_roots(const std::string& base_folder) const
 {
   std::vector<std::string> roots = search_paths_;
-  roots.insert(roots.end(), ament_prefixes_.begin(), ament_prefixes_.end());
+  if (!base_folder.empty())
+    roots.push_back(base_folder);
+  for (const auto& prefix : ament_prefixes_) // packages live in <prefix>/share, not all of /usr
+    roots.push_back((fs::path(prefix) / "share").string());
   roots.insert(roots.end(), ros_package_path_.begin(), ros_package_path_.end());
   roots.insert(roots.end(), extra_roots_.begin(), extra_roots_.end());
   return roots;
@@ -354,12 +357,13 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
     if (!package_folder.empty() && !is_inside(resolved, fs::path(package_folder)))
       return fail(in_quotes(resolved.string()) + " lies outside its package folder " + in_quotes(package_folder) +
                   " (root check is on)");
-    const auto roots = allowed_roots();
+    const auto roots = allowed_roots(base_folder);
     const bool inside = std::any_of(roots.begin(), roots.end(),
                                     [&](const std::string& root) { return is_inside(resolved, normalised(root)); });
     if (!inside)
       return fail(in_quotes(resolved.string()) + " lies outside the allowed roots (" +
-                  (roots.empty() ? std::string("none are set") : join(roots, ", ")) + "; root check is on)");
+                  (roots.empty() ? std::string("none are set") : join(roots, ", ")) +
+                  "; root check is on: add the folder as a mesh search path, or switch the check off)");
   }
 
   const std::uintmax_t bytes = fs::file_size(resolved, ec);

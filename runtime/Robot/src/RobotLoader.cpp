@@ -19,7 +19,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <set>
 #include <sstream>
 
@@ -272,10 +271,16 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
   robot->root_link = root->name;
 
   // Depth-first from the root, parents before children (urdfdom keeps links in a name-sorted map).
+  // An explicit stack, not recursion: a description from the network may be a chain of 10 000+
+  // links (issue 11.2: ~7000 overflowed the stack).
   std::set<std::string> visited;
-  std::function<void(const urdf::LinkConstSharedPtr&)> visit = [&](const urdf::LinkConstSharedPtr& link) {
+  std::vector<urdf::LinkConstSharedPtr> pending{root};
+  while (!pending.empty())
+  {
+    const urdf::LinkConstSharedPtr link = std::move(pending.back());
+    pending.pop_back();
     if (!link || !visited.insert(link->name).second)
-      return;
+      continue;
     LinkVisuals entry;
     entry.link = link->name;
     // urdfdom drops visuals it cannot parse; then the document's visuals no longer line up with
@@ -373,10 +378,10 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
       entry.visuals.push_back(std::move(visual));
     }
     robot->links.push_back(std::move(entry));
-    for (const auto& child : link->child_links)
-      visit(child);
-  };
-  visit(root);
+    // Reversed, so the first child is visited first (the order the recursive walk had).
+    for (auto child = link->child_links.rbegin(); child != link->child_links.rend(); ++child)
+      pending.push_back(*child);
+  }
   return true;
 }
 

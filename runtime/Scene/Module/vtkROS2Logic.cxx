@@ -1,6 +1,7 @@
 #include "vtkROS2Logic.h"
 
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2OutputWindow.h"
 #include "vtkROS2Scene.h"
 
 #include "ros2vtk/wire/Participant.hpp"
@@ -90,6 +91,8 @@ vtkStandardNewMacro(vtkROS2Logic);
 vtkROS2Logic::vtkROS2Logic()
   : Internals(new vtkInternals)
 {
+  // Warnings and errors of the scene's nodes go to /rosout too (and still to the console).
+  vtkROS2OutputWindow::Install();
   this->Internals->SceneCallback->SetClientData(this->Internals.get());
   this->Internals->SceneCallback->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
     static_cast<vtkInternals*>(clientData)->RosNodesStale = true;

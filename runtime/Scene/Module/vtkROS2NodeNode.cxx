@@ -79,6 +79,29 @@ vtkROS2NodeNode::~vtkROS2NodeNode()
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2NodeNode::SetLogLevel(int severity)
+{
+  ros2vtk::wire::Rosout* rosout =
+    this->Internals->Participant ? this->Internals->Participant->rosout() : nullptr;
+  if (!rosout || severity < 10 || severity > 50 || severity % 10 != 0)
+  {
+    vtkErrorMacro("SetLogLevel: " << (rosout ? "severity must be 10, 20, 30, 40 or 50"
+                                             : "the ROS node is not created or has no /rosout"));
+    return false;
+  }
+  rosout->set_level(static_cast<ros2vtk::wire::LogSeverity>(severity));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetLogLevel()
+{
+  ros2vtk::wire::Rosout* rosout =
+    this->Internals->Participant ? this->Internals->Participant->rosout() : nullptr;
+  return rosout ? static_cast<int>(rosout->level()) : 0;
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2NodeNode::Create(const char* nodeName, const char* nodeNamespace)
 {
   if (this->Internals->Participant)

@@ -156,6 +156,14 @@ public:
   std::string PrintOwnParameter(const char* name);
   ///@}
 
+  ///@{
+  /// Severity from which this node's warnings and errors are published on /rosout, with
+  /// rcl_interfaces/msg/Log's values (10 debug, 20 info (rcl's default), 30 warn, 40 error,
+  /// 50 fatal). False (vtkErrorMacro) before Create or for another value.
+  bool SetLogLevel(int severity);
+  int GetLogLevel();
+  ///@}
+
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
   /// Re-creates the ROS node saved in the scene file.

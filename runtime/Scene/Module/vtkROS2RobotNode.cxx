@@ -64,6 +64,7 @@ public:
   std::string FixedFrame;
   std::string TfPrefix;
   std::vector<std::string> SearchPaths;
+  bool RestrictMeshesToRoots = true;
   std::string MeshBaseFolder;
 
   // The description source node, and whether this robot created it (then it removes it).
@@ -76,6 +77,17 @@ public:
   std::string LoadedDescription; // the URDF text of the current robot
   std::string LoadedBaseFolder;
   std::string LastFailedDescription; // refused once: not parsed again on every spin
+  bool HasFailedDescription = false;  // LastFailedDescription is meaningful ("" can fail too)
+
+  /// Where the description comes from, for messages ("topic '/robot_description'").
+  std::string SourceText() const
+  {
+    if (this->Source == "parameter")
+      return "parameter '" + this->ParameterName + "' of '" + this->ParameterNodeName + "'";
+    if (this->Source == "topic")
+      return "topic '" + this->Topic + "'";
+    return "file '" + this->DescriptionFile + "'";
+  }
   ros2vtk::robot::RobotVisuals Visuals;
   std::unique_ptr<ros2vtk::robot::RobotLoader> Loader;
   bool Loaded = false;
@@ -105,6 +117,7 @@ public:
     if (!this->Loader)
     {
       this->Loader.reset(new ros2vtk::robot::RobotLoader());
+      this->Loader->resolver().set_restrict_to_roots(this->RestrictMeshesToRoots);
       for (const std::string& folder : this->SearchPaths)
       {
         this->Loader->resolver().add_search_path(folder);
@@ -227,6 +240,21 @@ void vtkROS2RobotNode::AddMeshSearchPath(const char* folder)
   {
     this->Internals->Loader->resolver().add_search_path(folder);
   }
+}
+
+void vtkROS2RobotNode::SetRestrictMeshesToRoots(bool on)
+{
+  this->Internals->RestrictMeshesToRoots = on;
+  if (this->Internals->Loader)
+  {
+    this->Internals->Loader->resolver().set_restrict_to_roots(on);
+  }
+  this->Modified();
+}
+
+bool vtkROS2RobotNode::GetRestrictMeshesToRoots() const
+{
+  return this->Internals->RestrictMeshesToRoots;
 }
 
 void vtkROS2RobotNode::SetMeshBaseFolder(const char* folder)
@@ -487,9 +515,22 @@ int vtkROS2RobotNode::CheckForNewDescription()
   }
   else if (auto* parameters = vtkROS2ParameterNode::SafeDownCast(internals.SourceNode))
   {
-    if (!parameters->IsParameterSet(internals.ParameterName.c_str(), /*noWarning=*/true) ||
-      parameters->GetParameterType(internals.ParameterName.c_str()) != "string")
+    if (!parameters->IsParameterSet(internals.ParameterName.c_str(), /*noWarning=*/true))
     {
+      return 0;
+    }
+    const std::string type = parameters->GetParameterType(internals.ParameterName.c_str());
+    if (type != "string")
+    {
+      // Say what arrived (issue 11.8) instead of waiting for a string forever; once per value.
+      const std::string what = "the " + internals.SourceText() + " is a " + type + ", not a URDF string";
+      if (internals.LastError != what)
+      {
+        internals.LastError = what;
+        internals.State = "failed: " + what;
+        vtkErrorMacro("robot '" << internals.RobotName << "': " << what);
+        this->Modified();
+      }
       return 0;
     }
     description = parameters->GetParameterAsString(internals.ParameterName.c_str());
@@ -502,10 +543,23 @@ int vtkROS2RobotNode::CheckForNewDescription()
     }
   }
   const bool unchanged = (internals.Loaded && description == internals.LoadedDescription) ||
-    description == internals.LastFailedDescription;
-  if (description.empty() || (unchanged && !force))
+    (internals.HasFailedDescription && description == internals.LastFailedDescription);
+  if (unchanged && !force)
   {
     return 0;
+  }
+  if (description.find_first_not_of(" \t\r\n") == std::string::npos)
+  {
+    // An empty description is an error that says what arrived (issue 11.8: the robot waited
+    // forever); a robot already shown stays.
+    internals.LastFailedDescription = description;
+    internals.HasFailedDescription = true;
+    internals.LastError = "the robot description from the " + internals.SourceText() + " is empty (" +
+      std::to_string(description.size()) + " bytes" + (description.empty() ? "" : ", all white space") + ")";
+    internals.State = "failed: " + internals.LastError;
+    vtkErrorMacro("robot '" << internals.RobotName << "': " << internals.LastError);
+    this->Modified();
+    return 1;
   }
   this->LoadRobotDescription(description.c_str(), baseFolder.c_str());
   return 1;
@@ -531,6 +585,7 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
   {
     // The robot already shown (if any) stays; the bad description is not parsed again.
     internals.LastFailedDescription = description;
+    internals.HasFailedDescription = true;
     internals.LastError = error;
     internals.State = "failed: " + error;
     vtkErrorMacro("robot '" << internals.RobotName << "': robot_description refused: " << error);
@@ -542,6 +597,7 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
   internals.LoadedDescription = description;
   internals.LoadedBaseFolder = options.base_folder;
   internals.LastFailedDescription.clear();
+  internals.HasFailedDescription = false;
   internals.LastError.clear();
 
   vtkROS2Scene* scene = this->Scene;

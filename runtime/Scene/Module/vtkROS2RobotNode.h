@@ -79,6 +79,11 @@ public:
   /// Empty (default): the current folder. Applies to the next load.
   void SetMeshBaseFolder(const char* folder);
   const char* GetMeshBaseFolder() const;
+  /// On (default): meshes are read only inside package roots, the URDF file's folder (or the
+  /// mesh base folder) and the mesh search paths, after `..` and symlinks are resolved, so a
+  /// description from the network cannot make us read other files. Off is the explicit opt-out.
+  void SetRestrictMeshesToRoots(bool on);
+  bool GetRestrictMeshesToRoots() const;
 
   /// "waiting for robot_description", "loaded" or "failed: <why>".
   const char* GetRobotState() const;

@@ -1,6 +1,7 @@
 #include "vtkROS2Scene.h"
 
 #include "NodeClassRegistry.hpp"
+#include "SceneXmlReader.hpp"
 #include "vtkROS2SceneNode.h"
 
 #include "vtkCollection.h"
@@ -293,43 +294,41 @@ bool vtkROS2Scene::ReadFromXMLFile(const char* fileName)
     vtkErrorMacro("ReadFromXMLFile: no file name");
     return false;
   }
-  std::ifstream file(fileName);
-  if (!file)
+  std::string text;
+  std::string error;
+  if (!ros2vtk::scene::ReadSceneXmlFile(fileName, &text, &error))
   {
-    vtkErrorMacro("ReadFromXMLFile: cannot open '" << fileName << "'");
+    vtkErrorMacro("ReadFromXMLFile: " << error);
     return false;
   }
-  vtkXMLDataElement* root = vtkXMLUtilities::ReadElementFromStream(file);
+  vtkSmartPointer<vtkXMLDataElement> root = ros2vtk::scene::ReadSceneXml(text, &error);
   if (!root)
   {
-    vtkErrorMacro("ReadFromXMLFile: '" << fileName << "' is not an XML file");
+    vtkErrorMacro("ReadFromXMLFile: '" << fileName << "': " << error);
     return false;
   }
-  const bool ok = this->ReadFromXMLElement(root);
-  root->Delete();
-  return ok;
+  return this->ReadFromXMLElement(root);
 }
 
 //------------------------------------------------------------------------------
 bool vtkROS2Scene::ReadFromXMLString(const char* xml)
 {
-  vtkXMLDataElement* root = xml ? vtkXMLUtilities::ReadElementFromString(xml) : nullptr;
+  std::string error = "no text";
+  vtkSmartPointer<vtkXMLDataElement> root = xml ? ros2vtk::scene::ReadSceneXml(xml, &error) : nullptr;
   if (!root)
   {
-    vtkErrorMacro("ReadFromXMLString: not an XML document");
+    vtkErrorMacro("ReadFromXMLString: " << error);
     return false;
   }
-  const bool ok = this->ReadFromXMLElement(root);
-  root->Delete();
-  return ok;
+  return this->ReadFromXMLElement(root);
 }
 
 //------------------------------------------------------------------------------
 bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
 {
-  if (!root->GetName() || std::string(root->GetName()) != SceneTag)
+  if (!root || !root->GetName() || std::string(root->GetName()) != SceneTag)
   {
-    vtkErrorMacro("ReadFromXML: root element is <" << (root->GetName() ? root->GetName() : "")
+    vtkErrorMacro("ReadFromXML: root element is <" << (root && root->GetName() ? root->GetName() : "")
                                                     << ">, expected <" << SceneTag << ">");
     return false;
   }
@@ -340,8 +339,10 @@ bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
                                                                                << ")");
     return false;
   }
-  this->Clear();
-  std::vector<vtkROS2SceneNode*> restored;
+  // Atomic (issue 11.6): every node is created and read first; the current scene is replaced
+  // only when all of them are valid, and is left exactly as it was otherwise.
+  std::vector<std::pair<vtkSmartPointer<vtkROS2SceneNode>, std::string>> incoming;
+  std::map<std::string, int> seen;
   for (int i = 0; i < root->GetNumberOfNestedElements(); ++i)
   {
     vtkXMLDataElement* element = root->GetNestedElement(i);
@@ -350,22 +351,34 @@ bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
     if (!id || !*id)
     {
       vtkErrorMacro("ReadFromXML: element " << i << " <" << (className ? className : "")
-                                            << "> has no id");
+                                            << "> has no id; the scene was not changed");
+      return false;
+    }
+    if (!seen.emplace(id, i).second)
+    {
+      vtkErrorMacro("ReadFromXML: elements " << seen[id] << " and " << i << " share the id '" << id
+                                             << "'; the scene was not changed");
       return false;
     }
     vtkSmartPointer<vtkROS2SceneNode> node;
     node.TakeReference(this->CreateNodeByClass(className));
     if (!node)
     {
-      vtkErrorMacro("ReadFromXML: cannot create node '" << id << "'");
+      vtkErrorMacro("ReadFromXML: cannot create node '" << id << "'; the scene was not changed");
       return false;
     }
     if (!node->ReadXML(element))
     {
-      vtkErrorMacro("ReadFromXML: invalid properties for node '" << id << "'");
+      vtkErrorMacro("ReadFromXML: invalid properties for node '" << id << "'; the scene was not changed");
       return false;
     }
-    if (!this->AddNodeWithID(node, id))
+    incoming.emplace_back(node, id);
+  }
+  this->Clear();
+  std::vector<vtkROS2SceneNode*> restored;
+  for (const auto& [node, id] : incoming)
+  {
+    if (!this->AddNodeWithID(node, id)) // cannot fail: ids were checked above
     {
       return false;
     }

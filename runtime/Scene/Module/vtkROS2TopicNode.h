@@ -62,7 +62,7 @@ public:
   /// "reliable, volatile, keep_last(10)".
   std::string GetQoSDescription() const;
 
-  /// Units policy (DESIGN.md): ROS lengths are metres, VTK lengths millimetres; when on (the
+  /// Units policy (msg_specs/mappings/README.md): ROS lengths are metres, VTK lengths millimetres; when on (the
   /// default) subclasses scale lengths x1000 into VTK and /1000 out of it.
   vtkSetMacro(ScaleLengths, bool);
   vtkGetMacro(ScaleLengths, bool);

@@ -20,7 +20,9 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <set>
 
 namespace ros2vtk {
 namespace wire {
@@ -36,13 +38,27 @@ constexpr uint32_t kDomainGain = 250;
 constexpr uint32_t kMetatrafficUnicastOffset = 10;
 constexpr uint32_t kParticipantGain = 2;
 constexpr int32_t kMaxParticipantId = 119; // (DG - offset) / PG - 1: ids above reach the next domain
-// LOCALHOST discovery sends to the ports of these participant ids (as rmw_fastrtps does).
+// LOCALHOST discovery sends to the ports of these participant ids (as rmw_fastrtps does); so do
+// static peers.
 constexpr uint32_t kLocalhostPeers = 32;
+constexpr size_t kMaxStaticPeers = 32; // rmw's RMW_DISCOVERY_OPTIONS_STATIC_PEERS_MAX_LENGTH
 
 uint32_t metatraffic_unicast_port(uint32_t domain_id, int32_t participant_id)
 {
   return kPortBase + kDomainGain * domain_id + kMetatrafficUnicastOffset +
     kParticipantGain * static_cast<uint32_t>(participant_id);
+}
+
+// An IPv4 address as given, or the first one a host name resolves to ("" when none).
+std::string ipv4_of(const std::string& host)
+{
+  using eprosima::fastrtps::rtps::IPLocator;
+  if (IPLocator::isIPv4(host))
+  {
+    return host;
+  }
+  const std::set<std::string> addresses = IPLocator::resolveNameDNS(host).first;
+  return addresses.empty() ? std::string() : *addresses.begin();
 }
 
 bool udp_port_is_free(uint32_t port)
@@ -176,6 +192,20 @@ ParticipantOptions ParticipantOptions::from_environment()
   {
     options.range = DiscoveryRange::Localhost;
   }
+  if (const char* peers = std::getenv("ROS_STATIC_PEERS"))
+  {
+    std::string list(peers);
+    for (size_t start = 0; start <= list.size() && options.static_peers.size() < kMaxStaticPeers;)
+    {
+      size_t end = list.find(';', start);
+      end = end == std::string::npos ? list.size() : end;
+      if (end > start)
+      {
+        options.static_peers.push_back(list.substr(start, end - start));
+      }
+      start = end + 1;
+    }
+  }
   return options;
 }
 
@@ -233,6 +263,36 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
         qos.wire_protocol().builtin.initialPeersList.push_back(peer);
       }
     }
+  }
+  // Static peers: their well-known metatraffic ports get our announcements by unicast, so two
+  // hosts find each other where multicast is dropped (as rmw_fastrtps does with ROS_STATIC_PEERS).
+  for (const std::string& host : options.static_peers)
+  {
+    const std::string address = ipv4_of(host);
+    if (address.empty())
+    {
+      std::fprintf(stderr, "[ros2vtk] ROS_STATIC_PEERS: cannot resolve '%s'; ignored\n", host.c_str());
+      continue;
+    }
+    for (uint32_t participant_id = 0; participant_id < kLocalhostPeers; ++participant_id)
+    {
+      rtps::Locator_t peer;
+      peer.kind = LOCATOR_KIND_UDPv4;
+      eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, address);
+      peer.port = metatraffic_unicast_port(static_cast<uint32_t>(options.domain_id),
+                                           static_cast<int32_t>(participant_id));
+      qos.wire_protocol().builtin.initialPeersList.push_back(peer);
+    }
+  }
+  if (!options.static_peers.empty() && options.range == DiscoveryRange::Subnet)
+  {
+    // Initial peers replace Fast DDS's default one (the SPDP multicast group): keep announcing
+    // there too, so SUBNET discovery still finds the hosts that are not listed.
+    rtps::Locator_t multicast;
+    multicast.kind = LOCATOR_KIND_UDPv4;
+    eprosima::fastrtps::rtps::IPLocator::setIPv4(multicast, 239, 255, 0, 1);
+    multicast.port = kPortBase + kDomainGain * static_cast<uint32_t>(options.domain_id);
+    qos.wire_protocol().builtin.initialPeersList.push_back(multicast);
   }
   qos.transport().user_transports.push_back(udp);
   qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id));
@@ -374,7 +434,19 @@ std::unique_ptr<Participant> Participant::create(const std::string& node_name,
   {
     return nullptr;
   }
-  return std::unique_ptr<Participant>(new Participant(std::move(impl)));
+  std::unique_ptr<Participant> participant(new Participant(std::move(impl)));
+  std::string rosout_error;
+  participant->rosout_ = Rosout::create(*participant, &rosout_error);
+  if (!participant->rosout_)
+  {
+    std::fprintf(stderr, "[ros2vtk] node '%s' has no /rosout: %s\n", node_name.c_str(), rosout_error.c_str());
+  }
+  return participant;
+}
+
+Rosout* Participant::rosout() const
+{
+  return rosout_.get();
 }
 
 Participant::Participant(std::unique_ptr<Impl> impl)

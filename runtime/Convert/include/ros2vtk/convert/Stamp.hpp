@@ -1,7 +1,8 @@
 // ros2vtk — header stamps for publishers.
 //
-// DESIGN.md: broadcast transforms (and anything else we publish with a header) carry the current
-// time, not zero. builtin_interfaces/Time is int32 sec + uint32 nanosec since the Unix epoch.
+// Broadcast transforms (and anything else we publish with a header) carry the current time, not
+// zero (tf2 treats a zero stamp as "latest"). builtin_interfaces/Time is int32 sec + uint32 nanosec
+// since the Unix epoch.
 #ifndef ros2vtk_convert_Stamp_hpp
 #define ros2vtk_convert_Stamp_hpp
 

@@ -14,6 +14,8 @@
 #include <string>
 #include <type_traits>
 
+#include "ros2vtk/wire/Utf8.hpp"
+
 namespace ros2vtk {
 namespace wire {
 
@@ -112,8 +114,12 @@ public:
     }
     value.assign(chars, count);
     position_ += length;
+    invalid_utf8_ += repair_utf8(value); // U+FFFD, as rclpy decodes (see Utf8.hpp)
     return true;
   }
+
+  /// Invalid UTF-8 sequences replaced by U+FFFD in the strings read so far.
+  size_t invalid_utf8_replaced() const { return invalid_utf8_; }
 
   /// wstring: uint32 count, then one uint32 per UTF-16 unit.
   bool read_wstring(std::u16string& value, uint32_t bound = 0)
@@ -264,6 +270,7 @@ private:
   size_t position_ = 0;
   bool swap_ = false;
   std::string error_;
+  size_t invalid_utf8_ = 0;
 };
 
 } // namespace wire

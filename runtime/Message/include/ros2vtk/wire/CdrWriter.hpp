@@ -5,7 +5,7 @@
 // 4-byte encapsulation header, 8-byte alignment for 64-bit types, strings with their NUL) and
 // that can write straight into a Fast DDS payload without exceptions. Fast CDR 1.0 signals
 // overflow by throwing, which we must never let cross into VTK's wrapping. The rules are in
-// shared/ROS2_WIRE_NOTES.md §7 and proven byte-exact against rclpy fixtures in tests/golden.
+// docs/wire-notes.md §7 and proven byte-exact against rclpy fixtures in tests/golden.
 #ifndef ros2vtk_wire_CdrWriter_hpp
 #define ros2vtk_wire_CdrWriter_hpp
 

@@ -53,10 +53,13 @@ public:
   /// AMENT_PREFIX_PATH set-up. Returns the package folder, or "" when none was found.
   std::string add_package_of(const std::string& file);
 
-  /// When on, a resolved file must lie inside one of the allowed roots after normalisation
-  /// (`..` and symlinks resolved), and a `package://` file inside its package. The roots are
-  /// every search folder above plus those added with add_allowed_root(). Off by default, as in
-  /// RViz.
+  /// When on (the default), a resolved file must lie inside one of the allowed roots after
+  /// normalisation (`..` and symlinks resolved), and a `package://` file inside its package. The
+  /// roots are the search folders, `<prefix>/share` of each ament prefix, the ROS_PACKAGE_PATH
+  /// folders, the base folder of the resolve() call (the URDF file's folder) and those added with
+  /// add_allowed_root(). A description received from the network must not make us read any file
+  /// with a mesh extension (issue 11.10: `package://pkg/../../outside/x.stl`, `file:///...`);
+  /// RViz has no such check. set_restrict_to_roots(false) is the explicit opt-out.
   void set_restrict_to_roots(bool on) { restrict_to_roots_ = on; }
   bool restrict_to_roots() const { return restrict_to_roots_; }
   void add_allowed_root(const std::string& folder);
@@ -78,13 +81,13 @@ public:
 private:
   std::string find_in_search_folder(const std::string& folder, const std::string& name) const;
   const std::map<std::string, std::string>& packages_under(const std::string& folder) const;
-  std::vector<std::string> allowed_roots() const;
+  std::vector<std::string> allowed_roots(const std::string& base_folder) const;
 
   std::vector<std::string> ament_prefixes_;
   std::vector<std::string> ros_package_path_;
   std::vector<std::string> search_paths_;
   std::vector<std::string> extra_roots_;
-  bool restrict_to_roots_ = false;
+  bool restrict_to_roots_ = true;
   std::uint64_t max_file_bytes_ = kDefaultMaxFileBytes;
   /// search folder -> (package name -> package folder), filled on first use.
   mutable std::map<std::string, std::map<std::string, std::string>> scanned_;

@@ -1,5 +1,5 @@
 // ros2vtk — ROS 2 name rules: validation and expansion as rcl does them, and the DDS mangling
-// rmw_fastrtps applies (shared/ROS2_WIRE_NOTES.md §1).
+// rmw_fastrtps applies (docs/wire-notes.md §1).
 #ifndef ros2vtk_wire_Names_hpp
 #define ros2vtk_wire_Names_hpp
 

@@ -4,6 +4,7 @@
 #define ros2vtk_wire_Participant_hpp
 
 #include "ros2vtk/wire/QoS.hpp"
+#include "ros2vtk/wire/Rosout.hpp"
 #include "ros2vtk/wire/WakeUp.hpp"
 
 #include <memory>
@@ -28,7 +29,11 @@ struct ParticipantOptions
 {
   int domain_id = 0;
   DiscoveryRange range = DiscoveryRange::Subnet;
-  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_LOCALHOST_ONLY.
+  /// Hosts to discover by unicast besides the range (ROS_STATIC_PEERS, as ROS 2 Jazzy and later:
+  /// IPv4 addresses or host names), for networks that drop multicast.
+  std::vector<std::string> static_peers;
+  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY and ROS_STATIC_PEERS
+  /// (';'-separated; rmw's limit of 32 peers).
   static ParticipantOptions from_environment();
 };
 
@@ -90,12 +95,16 @@ public:
   /// 16-byte DDS GUID of the participant (the rmw gid).
   std::vector<uint8_t> gid() const;
 
+  /// This node's /rosout (nullptr when DDS refused the publisher: the node works without it).
+  Rosout* rosout() const;
+
   class Impl;
   Impl& impl() { return *impl_; }
 
 private:
   explicit Participant(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Rosout> rosout_; // after impl_: destroyed first, before the DDS entities
 };
 
 } // namespace wire

@@ -8,7 +8,7 @@
 namespace ros2vtk {
 namespace wire {
 
-/// The QoS policies ROS 2 exposes for topics and services (shared/ROS2_WIRE_NOTES.md §2.1).
+/// The QoS policies ROS 2 exposes for topics and services (docs/wire-notes.md §2.1).
 struct QoS
 {
   enum class History : uint8_t { KeepLast, KeepAll };

@@ -1,0 +1,203 @@
+"""The robot's computer and the imaging workstation as two network namespaces (see conftest.py):
+ROS 2's default discovery (SUBNET, multicast) across a real interface, both ways, with rclpy on
+the robot side and our VTK-wrapped API on the imaging side."""
+from __future__ import annotations
+
+import json
+import os
+import time
+
+import pytest
+
+from conftest import IMAGING_ADDRESS, ROBOT_ADDRESS
+
+SENT = 20
+
+
+def test_rclpy_pose_on_the_robot_host_reaches_our_subscriber_on_the_imaging_host(lab):
+    ours = lab.imaging.scene('--seconds', '25', 'sub', 'PoseStamped', '/needle', '--count', str(SENT), '--linger', '1')
+    lab.imaging.wait_ready(ours)
+    pose = {'header': {'frame_id': 'world'}, 'pose': {'position': {'x': 0.1, 'y': -0.2, 'z': 0.3},
+                                                       'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
+    peer = lab.robot.peer('pub', '/needle', 'geometry_msgs/msg/PoseStamped', json.dumps(pose),
+                          '--count', str(SENT), '--rate', '20', '--wait', '15')
+    code, out, err = lab.imaging.finish(ours, timeout=40)
+    lab.robot.finish(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == SENT and result['rejected'] == 0, result
+    assert [round(result['value'][i][3], 9) for i in range(3)] == [100.0, -200.0, 300.0]  # mm
+
+
+def test_our_publisher_on_the_imaging_host_reaches_rclpy_on_the_robot_host(lab):
+    echo = lab.robot.peer('echo', '/target', 'std_msgs/msg/String', '--count', '3', '--timeout', '30')
+    lab.robot.wait_ready(echo)
+    ours = lab.imaging.scene('--seconds', '20', 'pub', 'String', '/target')
+    code, out, err = lab.robot.finish(echo, timeout=40)
+    lab.imaging.finish(ours)
+    assert code == 0, err
+    assert json.loads(out.splitlines()[-1])['data']
+
+
+def test_our_localhost_node_is_invisible_to_a_subnet_peer_on_the_other_host(lab):
+    """Our node in LOCALHOST mode beside an rclpy node on the other host that discovers by
+    multicast (SUBNET): the peer sees neither our node nor our topic, and we get none of its data."""
+    lab.imaging.env['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
+    ours = lab.imaging.scene('--seconds', '12', 'sub', 'String', '/needle',
+                             '--count', '1')
+    lab.imaging.wait_ready(ours)
+    peer = lab.robot.peer('pub', '/needle', 'std_msgs/msg/String', json.dumps({'data': 'x'}),
+                          '--count', '100', '--rate', '20', '--wait', '0')
+    graph = lab.robot.peer('graph', '--wait', '6', '--expect-node', 'slicer')
+    code, out, err = lab.robot.finish(graph, timeout=30)
+    assert code == 0, err
+    seen = json.loads(out.splitlines()[-1])
+    assert ['slicer', '/'] not in seen['nodes'], seen['nodes']
+    assert not any(sub[0] == 'slicer' for sub in seen['subscribers'].get('/needle', [])), seen
+    code, out, err = lab.imaging.finish(ours, timeout=30)
+    lab.robot.finish(peer)
+    assert code == 0, err
+    assert json.loads(out.splitlines()[-1])['count'] == 0, 'LOCALHOST discovery crossed to the other host'
+
+
+def test_a_subnet_peer_on_another_domain_sees_nothing_of_ours(lab):
+    lab.robot.env['ROS_DOMAIN_ID'] = str(lab.imaging.domain + 100)
+    ours = lab.imaging.scene('--seconds', '10', 'pub', 'String', '/chatter')
+    lab.imaging.wait_ready(ours)
+    graph = lab.robot.peer('graph', '--wait', '5', '--expect-node', 'slicer')
+    code, out, err = lab.robot.finish(graph, timeout=30)
+    lab.imaging.finish(ours)
+    assert code == 0, err
+    seen = json.loads(out.splitlines()[-1])
+    assert ['slicer', '/'] not in seen['nodes'] and '/chatter' not in seen['topics'], seen
+
+
+def test_the_same_graph_query_across_the_link_finds_our_node(lab):
+    """The control of the two tests above: same domain, SUBNET on both sides."""
+    ours = lab.imaging.scene('--seconds', '15', 'pub', 'String', '/chatter')
+    lab.imaging.wait_ready(ours)
+    graph = lab.robot.peer('graph', '--wait', '10', '--expect-node', 'slicer')
+    code, out, err = lab.robot.finish(graph, timeout=30)
+    lab.imaging.finish(ours)
+    assert code == 0, err
+    seen = json.loads(out.splitlines()[-1])
+    assert ['slicer', '/'] in seen['nodes'], seen['nodes']
+    assert seen['topics'].get('/chatter') == ['std_msgs/msg/String'], seen['topics']
+
+
+def test_robot_from_robot_state_publisher_on_the_robot_host_follows_tf_on_the_imaging_host(lab):
+    """The paper's set-up split over two computers: robot_state_publisher (rclpy) and its tf on the
+    robot's host, our robot node on the imaging host; every link matches yourdfpy to 1e-6 m."""
+    from test_scene_robot import ARM, ARM_PACKAGE, TOLERANCE_MM, matches, run_robot
+    ready, state, snapshots, expected = run_robot(lab.imaging, ARM, 'parameter', configs=2,
+                                                  mesh_paths=[ARM_PACKAGE], rsp_host=lab.robot)
+    assert state['state'] == 'loaded', state
+    assert sorted(state['links']) == sorted(ready['links'])
+    for config in expected:
+        best = min(matches(snapshot['links'], config['links']) for snapshot in snapshots)
+        assert best < TOLERANCE_MM, f"configuration {config['config']} never matched (best {best})"
+
+
+# The long outage costs over two minutes; CI runs the 5 s and 30 s cuts (the second is beyond
+# Fast DDS's 20 s lease, so both sides drop and must rediscover each other) and
+# scripts/test-network-long.sh (ROS2VTK_LONG_NETWORK_TESTS=1) runs all three, and the loss
+# comparisons with rclpy below.
+OUTAGES = [5, 30] + ([120] if os.environ.get('ROS2VTK_LONG_NETWORK_TESTS') == '1' else [])
+
+
+@pytest.mark.parametrize('outage', OUTAGES)
+def test_a_cut_link_heals_and_the_stream_resumes_without_restarting_either_side(lab, outage):
+    rate, before, after = 10, 4.0, 8.0
+    total = int(rate * (before + outage + after))
+    ours = lab.imaging.scene('--seconds', str(before + outage + after + 20), 'sub', 'String', '/stream',
+                             '--count', str(total))
+    lab.imaging.wait_ready(ours)
+    peer = lab.robot.peer('pub', '/stream', 'std_msgs/msg/String', json.dumps({'data': ''}), '--count', str(total),
+                          '--rate', str(rate), '--wait', '15', '--sequence-field', 'data', '--linger', '10')
+    time.sleep(2.0 + before)  # discovery, then the stream runs for `before` seconds
+    lab.cut()
+    time.sleep(outage)
+    lab.heal()
+    code, out, err = lab.imaging.finish(ours, timeout=before + outage + after + 60)
+    peer_code, _, peer_err = lab.robot.finish(peer, timeout=60)
+    assert code == 0, err
+    assert peer_code == 0, peer_err
+    result = json.loads(out.splitlines()[-1])
+    # The last message, sent after the link healed, arrived: the subscription resumed by itself.
+    assert result['value'] == str(total - 1), result
+    # Lost: what was sent during the outage, and after a cut beyond the lease also what was sent
+    # until the two sides rediscovered each other (a new match of a volatile reader gets no
+    # history, as with rclpy). Measured: a 5 s cut lost 41 of 170 (the history of 10 came through),
+    # a 30 s cut 306 of 420 (rediscovery took ~0.6 s). Allow 5 s for rediscovery.
+    lost = total - result['count']
+    print(f'link cut for {outage} s: {result["count"]} of {total} arrived, the last one included')
+    assert lost <= int(rate * (outage + 5)), result
+    assert result['rejected'] == 0, result
+
+
+def stream_through_loss(lab, qos: str, rate: int, ours: bool) -> tuple[int, int]:
+    """An rclpy publisher on the robot host sends `rate`·4 numbered strings to our subscriber (or,
+    as the baseline, an rclpy one) on the imaging host; returns (arrived, sent)."""
+    total = rate * 4
+    if ours:
+        receiver = lab.imaging.scene('--seconds', '40', 'sub', 'String', '/stream', '--count', str(total),
+                                     '--linger', '2', '--qos', qos)
+    else:
+        receiver = lab.imaging.peer('echo', '/stream', 'std_msgs/msg/String', '--count', str(total),
+                                    '--timeout', '25', '--qos', qos)
+    lab.imaging.wait_ready(receiver)
+    peer = lab.robot.peer('pub', '/stream', 'std_msgs/msg/String', json.dumps({'data': ''}), '--count', str(total),
+                          '--rate', str(rate), '--wait', '20', '--sequence-field', 'data', '--linger', '5',
+                          '--qos', qos)
+    code, out, err = lab.imaging.finish(receiver, timeout=60)
+    lab.robot.finish(peer, timeout=40)
+    if ours:
+        assert code == 0, err
+        result = json.loads(out.splitlines()[-1])
+        assert result['rejected'] == 0, result
+        return result['count'], total
+    return len(out.splitlines()), total  # one line per message (no ready line on stdout left)
+
+
+def test_random_packet_loss_reliable_keep_all_loses_nothing(lab):
+    """5 % of the packets dropped each way (nftables): a reliable keep-all stream at 100 Hz (above
+    the paper's 50 Hz) arrives whole: retransmission repairs every loss."""
+    lab.drop(5)
+    arrived, total = stream_through_loss(lab, 'keep_all', 100, ours=True)
+    print(f'5 % loss, reliable keep_all at 100 Hz: {arrived} of {total} arrived')
+    assert arrived == total
+
+
+@pytest.mark.skipif(os.environ.get('ROS2VTK_LONG_NETWORK_TESTS') != '1',
+                    reason='2 min of streams beside an rclpy baseline: run by scripts/test-network-long.sh, not CI')
+@pytest.mark.parametrize('qos', ['default', 'sensor_data'])
+def test_random_packet_loss_degrades_keep_last_and_best_effort_streams_gracefully(lab, qos):
+    """With ROS's default keep-last-10 history (or best effort), 5 % loss at 100 Hz costs samples
+    that a retransmission no longer finds in the writer's history; rclpy's own subscriber loses
+    them too. Ours keeps receiving; both counts are printed (measured over 6 s at 100 Hz: default ours
+    589 vs rclpy 505 of 600, best effort 451 vs 440; another run 402 vs 499: runs spread widely)."""
+    lab.drop(5)
+    arrived, total = stream_through_loss(lab, qos, 100, ours=True)
+    baseline, _ = stream_through_loss(lab, qos, 100, ours=False)
+    print(f'5 % loss, {qos} at 100 Hz: ours {arrived}, rclpy {baseline} of {total} arrived')
+    assert total // 2 < arrived <= total
+
+
+@pytest.mark.parametrize('static_peers', [False, True], ids=['no_static_peers', 'ROS_STATIC_PEERS'])
+def test_without_multicast_static_peers_find_the_other_host(lab, static_peers):
+    """Multicast dropped on the link: SUBNET discovery alone finds nobody (the control); with
+    ROS_STATIC_PEERS naming the other host on both sides (ROS 2 Jazzy and later), rclpy and our
+    node discover each other by unicast and the data flows."""
+    lab.block_multicast()
+    if static_peers:
+        lab.robot.env['ROS_STATIC_PEERS'] = IMAGING_ADDRESS
+        lab.imaging.env['ROS_STATIC_PEERS'] = ROBOT_ADDRESS
+    ours = lab.imaging.scene('--seconds', '15' if static_peers else '8', 'sub', 'String', '/needle', '--count', '5')
+    lab.imaging.wait_ready(ours)
+    peer = lab.robot.peer('pub', '/needle', 'std_msgs/msg/String', json.dumps({'data': 'target'}),
+                          '--count', '5', '--rate', '10', '--wait', '12' if static_peers else '6')
+    code, out, err = lab.imaging.finish(ours, timeout=40)
+    lab.robot.finish(peer, timeout=30)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == (5 if static_peers else 0), result
