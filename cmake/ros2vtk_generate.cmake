@@ -30,7 +30,8 @@ PUBLIC include directory.
   ``ros2vtkMessages`` for ``std_msgs/Header``). They are linked PUBLIC and their register
   function is called by this target's.
 
-The library exports ``extern "C" void ros2vtk_register_<target>_types()``; every type also
+The library exports ``extern "C" void ros2vtk_register_<target>_types()`` (declared in the
+generated header ``ros2vtk/<target>Register.hpp``); every type also
 registers itself when the library loads, but a static library's objects may be dropped by the
 linker unless something references them — calling that function forces it.
 

@@ -35,7 +35,8 @@ library target (an ALIAS when VTK names the real target after ``MODULE_NAME``).
   modules only tests use.
 
 The library registers its classes in the scene's node-class registry when it loads, and
-exports ``extern "C" void ros2vtk_register_<target>_nodes()`` to do it explicitly. Rules are
+exports ``extern "C" void ros2vtk_register_<target>_nodes()`` (header ``<target>Register.hpp``)
+to do it explicitly. Rules are
 validated at build time: an unknown ROS type, kind or field path stops the build with
 ``<file>:<line>: message``.
 

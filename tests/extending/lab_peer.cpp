@@ -24,7 +24,7 @@
 #include <string>
 #include <thread>
 
-extern "C" void ros2vtk_register_ros2vtkLabTest_nodes();
+#include "ros2vtkLabTestRegister.hpp" // ros2vtk_register_ros2vtkLabTest_nodes()
 
 namespace
 {

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-extern "C" void ros2vtk_register_ros2vtkTestNodes_nodes();
+#include "ros2vtkTestNodesRegister.hpp" // ros2vtk_register_ros2vtkTestNodes_nodes()
 
 TEST(DownstreamNodes, ScaledValueBothWays)
 {
