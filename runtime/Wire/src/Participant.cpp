@@ -2,6 +2,7 @@
 // rmw_fastrtps configures its participants (WIRE_NOTES §2, §3).
 #include "ParticipantImpl.hpp"
 
+#include "LoopbackTransport.hpp"
 #include "PublisherImpl.hpp"
 #include "ShippedTypes.hpp"
 #include "SubscriptionImpl.hpp"
@@ -61,7 +62,7 @@ std::string ipv4_of(const std::string& host)
   return addresses.empty() ? std::string() : *addresses.begin();
 }
 
-bool udp_port_is_free(uint32_t port)
+bool udp_port_is_free(uint32_t port, bool loopback_only)
 {
   const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
   if (fd < 0)
@@ -70,7 +71,8 @@ bool udp_port_is_free(uint32_t port)
   }
   sockaddr_in address{};
   address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  // A loopback-only participant probes on 127.0.0.1: it never binds elsewhere, even briefly.
+  address.sin_addr.s_addr = htonl(loopback_only ? INADDR_LOOPBACK : INADDR_ANY);
   address.sin_port = htons(static_cast<uint16_t>(port));
   const bool free = ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
   ::close(fd);
@@ -83,11 +85,11 @@ bool udp_port_is_free(uint32_t port)
 // probes: two of them could no longer find each other, nor a peer numbered above 31 find them.
 // Fast DDS cannot be asked for the lowest free number, so it is found here: the lowest id whose
 // metatraffic port no participant (of any process) holds. -1 (Fast DDS's choice) when none is.
-int32_t lowest_free_participant_id(uint32_t domain_id)
+int32_t lowest_free_participant_id(uint32_t domain_id, bool loopback_only)
 {
   for (int32_t id = 0; id <= kMaxParticipantId; ++id)
   {
-    if (udp_port_is_free(metatraffic_unicast_port(domain_id, id)))
+    if (udp_port_is_free(metatraffic_unicast_port(domain_id, id), loopback_only))
     {
       return id;
     }
@@ -146,6 +148,22 @@ dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash)
     writer_qos.user_data().data_vec(user_data_of("typehash=" + type_hash + ";", false));
   }
   return writer_qos;
+}
+
+std::string qos_policy_name(uint32_t policy_id)
+{
+  switch (policy_id)
+  {
+    case dds::DURABILITY_QOS_POLICY_ID: return "DURABILITY";
+    case dds::DEADLINE_QOS_POLICY_ID: return "DEADLINE";
+    case dds::LIVELINESS_QOS_POLICY_ID: return "LIVELINESS";
+    case dds::RELIABILITY_QOS_POLICY_ID: return "RELIABILITY";
+    case dds::OWNERSHIP_QOS_POLICY_ID: return "OWNERSHIP";
+    case dds::DESTINATIONORDER_QOS_POLICY_ID: return "DESTINATION_ORDER";
+    case dds::DATAREPRESENTATION_QOS_POLICY_ID: return "DATA_REPRESENTATION";
+    case dds::TYPECONSISTENCYENFORCEMENT_QOS_POLICY_ID: return "TYPE_CONSISTENCY";
+    default: return "policy " + std::to_string(policy_id);
+  }
 }
 
 dds::DataReaderQos make_reader_qos(const QoS& qos, const std::string& type_hash)
@@ -241,9 +259,6 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   qos.transport().use_builtin_transports = false;
   if (options.range != DiscoveryRange::Subnet)
   {
-    // No interface whitelist: with a loopback-only whitelist Fast DDS 2.9 cannot use the
-    // locators a Fast DDS 3 peer announces (its interface addresses) and never matches it.
-    // Staying on this host comes from unicast-only discovery with loopback initial peers.
     udp->maxInitialPeersRange = 32;
     // A unicast metatraffic locator (port chosen by Fast DDS) stops the default multicast one.
     rtps::Locator_t unicast;
@@ -294,8 +309,21 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     multicast.port = kPortBase + kDomainGain * static_cast<uint32_t>(options.domain_id);
     qos.wire_protocol().builtin.initialPeersList.push_back(multicast);
   }
-  qos.transport().user_transports.push_back(udp);
-  qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id));
+  const bool loopback_only =
+    (options.range == DiscoveryRange::Localhost || options.range == DiscoveryRange::Off) &&
+    options.static_peers.empty();
+  if (loopback_only)
+  {
+    // Sockets bound to 127.0.0.1 only and only loopback locators announced; peers' same-host
+    // locators are reached through 127.0.0.1 (LoopbackTransport.hpp). Static peers name other
+    // hosts on purpose, so they keep the plain transport.
+    qos.transport().user_transports.push_back(std::make_shared<LoopbackTransportDescriptor>(udp));
+  }
+  else
+  {
+    qos.transport().user_transports.push_back(udp);
+  }
+  qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
 
   const dds::StatusMask mask = dds::StatusMask::none();
   participant = dds::DomainParticipantFactory::get_instance()->create_participant(
