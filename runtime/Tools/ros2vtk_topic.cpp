@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-extern "C" void ros2vtk_register_ros2vtkMessages_types();
+#include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
 namespace {
 
