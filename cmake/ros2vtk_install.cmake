@@ -65,7 +65,11 @@ install(DIRECTORY "${_ros2vtk_messages_out}/include/"
 # The Python package's own files, next to the wrapped modules VTK installs in python/ros2vtk/.
 if(ROS2VTK_WRAP_PYTHON)
   get_property(_ros2vtk_python_files GLOBAL PROPERTY ROS2VTK_PYTHON_PACKAGE_FILES)  # python/CMakeLists.txt
-  install(FILES ${_ros2vtk_python_files} DESTINATION "${ROS2VTK_INSTALL_PYTHONDIR}/ros2vtk")
+  foreach(_file IN LISTS _ros2vtk_python_files)  # keep subpackages (ros2vtk/app/) in their folder
+    file(RELATIVE_PATH _relative "${PROJECT_SOURCE_DIR}/python/ros2vtk" "${_file}")
+    get_filename_component(_subfolder "${_relative}" DIRECTORY)
+    install(FILES "${_file}" DESTINATION "${ROS2VTK_INSTALL_PYTHONDIR}/ros2vtk/${_subfolder}")
+  endforeach()
 endif()
 
 # The generator, its templates, the shipped specs (those of ros2vtk::Messages) and mappings.

@@ -1,19 +1,24 @@
 #!/usr/bin/env bash
 # The ros2vtk demo: a live robot beside a CT phantom, with no ROS installed.
 # Sets up (idempotent), builds, writes the phantom, starts the simulated robot(s) in their own
-# process(es) on the loopback, then the viewer (examples/demo/demo.py) with our default ROS node.
-# Usage: scripts/demo.sh [--robots N] [--spin timer|event] [--offscreen DIR] [--duration S] [--urdf FILE]
-# Without a display it renders offscreen (under Xvfb) and writes PNG frames to build/demo-frames.
+# process(es) on the loopback, then examples/demo/demo.py with our default ROS node: in the web app
+# (prints its URL, http://127.0.0.1:8080/, until Ctrl-C), or with --window in a VTK window.
+# Usage: scripts/demo.sh [--window] [--port N] [--robots N] [--spin timer|event] [--offscreen DIR]
+#                        [--duration S] [--urdf FILE]
+# --window without a display renders under Xvfb and writes PNG frames to build/demo-frames for 20 s
+# (--duration S to change) and prints a summary.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${ROS2VTK_BUILD_DIR:-$ROOT/build}"
 URDF="$ROOT/examples/robots/surgical_arm/urdf/surgical_arm.urdf"
 ROBOTS=1
+WINDOW=0
 ARGS=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --urdf) URDF="$(readlink -f "$2")"; ARGS+=("$1" "$URDF"); shift 2 ;;
     --robots) ROBOTS="$2"; ARGS+=("$1" "$2"); shift 2 ;;
+    --window|--offscreen) WINDOW=1; ARGS+=("$1"); shift ;;
     *) ARGS+=("$1"); shift ;;
   esac
 done
@@ -41,17 +46,18 @@ else
   done
 fi
 
-VIEWER=(/usr/bin/python3 "$ROOT/examples/demo/demo.py" --phantom "$PHANTOM")
+# The venv's python: the app's packages (trame) live there; it sees Debian's VTK too.
+VIEWER=("$ROOT/.venv/bin/python" "$ROOT/examples/demo/demo.py" --phantom "$PHANTOM")
 # example-robot-data's robots (pip, in the venv): their package:// meshes resolve through the ament
 # layout of its cmeel prefix, e.g. --urdf .venv/lib/python3.11/site-packages/cmeel.prefix/share/example-robot-data/robots/ur_description/urdf/ur5_robot.urdf
 for prefix in "$ROOT"/.venv/lib/python3*/site-packages/cmeel.prefix; do
   [ -d "$prefix" ] && export AMENT_PREFIX_PATH="$prefix${AMENT_PREFIX_PATH:+:$AMENT_PREFIX_PATH}"
 done
 export PYTHONPATH="$BUILD/python"
-if [ -z "${DISPLAY:-}" ]; then
+if [ "$WINDOW" = 1 ] && [ -z "${DISPLAY:-}" ]; then
   case " ${ARGS[*]-} " in *" --offscreen "*) ;; *) ARGS+=(--offscreen "$BUILD/demo-frames") ;; esac
   echo "[demo] no DISPLAY: rendering offscreen under Xvfb"
   xvfb-run -a -s "-screen 0 1280x720x24" "${VIEWER[@]}" "${ARGS[@]}"
 else
-  "${VIEWER[@]}" "${ARGS[@]}"
+  "${VIEWER[@]}" "${ARGS[@]}"   # the app starts its own Xvfb when there is no display
 fi

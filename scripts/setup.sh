@@ -32,8 +32,12 @@ DEBIAN_PACKAGES=(
   libtinyxml2-dev
   libconsole-bridge-dev
   python3-yaml
+  python3-numpy
+  chromium
+  chromium-driver
   iproute2
   nftables
+  libopenigtlink-dev
 )
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -100,12 +104,37 @@ install_wheels() {  # install_wheels VENV REQUIREMENTS CHECK_IMPORTS
   echo "$wanted" > "$stamp"
 }
 
+install_command() {
+  # `ros2vtk` on PATH once the venv is active (or as .venv/bin/ros2vtk). The package lives in the
+  # build tree (<repo>/build/python, next to its VTK-wrapped modules): the launcher finds the
+  # checkout from its own path (<repo>/.venv/bin/ros2vtk), or ROS2VTK_BUILD_DIR, and sets PYTHONPATH.
+  local launcher="$VENV/bin/ros2vtk"
+  cat > "$launcher.tmp" <<'LAUNCHER'
+#!/usr/bin/env bash
+# ros2vtk command line (written by scripts/setup.sh): runs the package built in <repo>/build.
+BIN="$(cd "$(dirname "$0")" && pwd)"
+BUILD="${ROS2VTK_BUILD_DIR:-$(dirname "$(dirname "$BIN")")/build}"
+if [ ! -d "$BUILD/python/ros2vtk" ]; then
+  echo "ros2vtk: no build in $BUILD (run scripts/demo.sh, or set ROS2VTK_BUILD_DIR)" >&2
+  exit 2
+fi
+export PYTHONPATH="$BUILD/python${PYTHONPATH:+:$PYTHONPATH}"
+exec "$BIN/python" -m ros2vtk "$@"
+LAUNCHER
+  chmod +x "$launcher.tmp"
+  mv "$launcher.tmp" "$launcher"
+  log "command: $launcher (ros2vtk app|demo|nodes|topics|types|echo|pub|params)"
+}
+
 log "ros2vtk set-up in $ROOT"
 install_debian_packages
 make_venv "$VENV"
 install_wheels "$VENV" "$ROOT/scripts/requirements-ros.txt" \
   'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+install_wheels "$VENV" "$ROOT/scripts/requirements-app.txt" 'trame, trame_vuetify, trame_rca, PIL, selenium'
+install_command
 make_venv "$JAZZY_VENV"
 install_wheels "$JAZZY_VENV" "$ROOT/scripts/requirements-jazzy.txt" \
   'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+install_wheels "$VENV" "$ROOT/scripts/requirements-test.txt" 'pyigtl'  # the 3D Slicer stand-in
 log "done: venv python is $VENV/bin/python (Jazzy peers: $JAZZY_VENV/bin/python)"

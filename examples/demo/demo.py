@@ -10,8 +10,12 @@ What happens here, with the ros2vtk Python API only:
     primitives, with their origins, scales and colours), under a base transform that places it;
   * a CT-like phantom (gel block, tongue-like tissue, pseudotumour, fiducials) is shown as three
     orthogonal slices with a soft-tissue window, placed by an editable registration transform;
-  * it spins (timer-driven at 50 Hz, or event-driven), prints one status line a second, and
-    renders: an interactive window on a display, PNG frames in --offscreen DIR otherwise.
+  * the phantom (2 mm voxels: 32 x 26 x 19 cm, about a torso) is placed where the instrument works: at
+    the centre of the needle tip's positions over the first seconds of motion, so the tip reaches
+    into it; the three slices follow the tip, as a CT navigation view does;
+  * it shows everything in the web app (`ros2vtk.app`, prints the URL) or, with --window, in a
+    VTK window; without a display the window mode writes PNG frames (--offscreen DIR) and, unless
+    --duration says otherwise, stops after 20 s with a summary. Ctrl-C stops it cleanly.
 """
 from __future__ import annotations
 
@@ -31,6 +35,155 @@ REPO = HERE.parents[1]
 
 
 # ------------------------------------------------------------------------------ viewer
+TIP_LINK = 'needle_tip'
+PHANTOM_SPACING_MM = 2.0  # ros2vtk-make-phantom's 1 mm voxels, scaled to a torso-sized block
+
+
+class PhantomView:
+    """The CT phantom in a renderer: three orthogonal slices (W400/L40, air see-through) that
+    follow a point, plus the pseudotumour surface, all placed by the registration transform."""
+
+    def __init__(self, renderer, image, registration):
+        self.image = image
+        self.registration = registration
+        self.slice_actors = []
+        lut = vtk.vtkWindowLevelLookupTable()
+        lut.SetWindow(400)
+        lut.SetLevel(40)
+        lut.Build()
+        lut.SetBelowRangeColor(0, 0, 0, 0)  # air is see-through, so the robot stays visible
+        lut.UseBelowRangeColorOn()
+        for _axis in range(3):
+            colors = vtk.vtkImageMapToColors()
+            colors.SetInputData(image)
+            colors.SetLookupTable(lut)
+            actor = vtk.vtkImageActor()
+            actor.GetMapper().SetInputConnection(colors.GetOutputPort())
+            actor.SetUserMatrix(registration.GetMatrixTransformToParent())
+            renderer.AddActor(actor)
+            self.slice_actors.append(actor)
+        surface = vtk.vtkFlyingEdges3D()
+        surface.SetInputData(image)
+        surface.SetValue(0, 110)
+        mapper = vtk.vtkPolyDataMapper()
+        mapper.SetInputConnection(surface.GetOutputPort())
+        mapper.ScalarVisibilityOff()
+        self.tumour = vtk.vtkActor()
+        self.tumour.SetMapper(mapper)
+        self.tumour.GetProperty().SetColor(0.9, 0.3, 0.25)
+        self.tumour.GetProperty().SetOpacity(0.6)
+        self.tumour.SetUserMatrix(registration.GetMatrixTransformToParent())
+        renderer.AddActor(self.tumour)
+        extent = image.GetExtent()
+        self.follow_index([(extent[2 * i] + extent[2 * i + 1]) // 2 for i in range(3)])
+        self.tip_inside = False
+
+    def world_to_index(self, point):
+        """World (robot, mm) -> voxel index of the phantom, clamped to its extent."""
+        inverse = vtk.vtkMatrix4x4()
+        vtk.vtkMatrix4x4.Invert(self.registration.GetMatrixTransformToParent(), inverse)
+        local = inverse.MultiplyPoint((*point, 1.0))
+        origin, spacing, extent = self.image.GetOrigin(), self.image.GetSpacing(), self.image.GetExtent()
+        return [min(max(int(round((local[i] - origin[i]) / spacing[i])), extent[2 * i]), extent[2 * i + 1])
+                for i in range(3)]
+
+    def follow_index(self, index) -> None:
+        extent = self.image.GetExtent()
+        for axis, actor in enumerate(self.slice_actors):
+            e = list(extent)
+            e[2 * axis] = e[2 * axis + 1] = index[axis]
+            actor.SetDisplayExtent(*e)
+
+    def follow(self, point) -> None:
+        """Slices through `point` while it is inside the volume; they stay where they were when
+        it leaves (clamped slices at the border would show only air)."""
+        index = self.world_to_index(point)
+        inverse = vtk.vtkMatrix4x4()
+        vtk.vtkMatrix4x4.Invert(self.registration.GetMatrixTransformToParent(), inverse)
+        local = inverse.MultiplyPoint((*point, 1.0))
+        b = self.image.GetBounds()
+        if all(b[2 * i] <= local[i] <= b[2 * i + 1] for i in range(3)):
+            self.follow_index(index)
+            self.tip_inside = True
+        else:
+            self.tip_inside = False
+
+    def world_bounds(self):
+        bounds = [0.0] * 6
+        box = vtk.vtkBoundingBox()
+        matrix = self.registration.GetMatrixTransformToParent()
+        b = self.image.GetBounds()
+        for x in b[0:2]:
+            for y in b[2:4]:
+                for z in b[4:6]:
+                    box.AddPoint(matrix.MultiplyPoint((x, y, z, 1.0))[:3])
+        box.GetBounds(bounds)
+        return bounds
+
+
+class TipPlacement:
+    """Places the phantom where the instrument works: after `seconds` of watching the needle tip
+    move, at the first moment the tip is in the lower half of its heights (the instrument going
+    down towards a patient), the phantom is centred on the tip, so the tip is inside it then and
+    passes through it again as the arm moves."""
+
+    def __init__(self, registration, image, seconds: float = 3.0):
+        self.registration, self.image, self.seconds = registration, image, seconds
+        self.heights, self.start, self.placed = [], None, False
+
+    def add(self, tip, now: float) -> bool:
+        """Adds a tip sample; True when the phantom has just been placed."""
+        if self.placed:
+            return False
+        self.start = now if self.start is None else self.start
+        self.heights.append(tip[2])
+        if now - self.start < self.seconds or tip[2] > sorted(self.heights)[len(self.heights) // 2]:
+            return False
+        b = self.image.GetBounds()
+        placement = vtk.vtkMatrix4x4()
+        for i in range(3):
+            placement.SetElement(i, 3, tip[i] - (b[2 * i] + b[2 * i + 1]) / 2)
+        self.registration.SetMatrixTransformToParent(placement)
+        self.placed = True
+        return True
+
+
+def tip_position(robot):
+    """The needle tip in world coordinates (mm), or None before the robot is loaded."""
+    node = robot.GetLinkTransformNode(TIP_LINK) if robot.IsLoaded() else None
+    if node is None:
+        return None
+    matrix = vtk.vtkMatrix4x4()
+    node.GetMatrixTransformToWorld(matrix)
+    return [matrix.GetElement(i, 3) for i in range(3)]
+
+
+def display_point(renderer, point):
+    coordinate = vtk.vtkCoordinate()
+    coordinate.SetCoordinateSystemToWorld()
+    coordinate.SetValue(*point)
+    return coordinate.GetComputedDoubleDisplayValue(renderer)
+
+
+def display_box(renderer, bounds):
+    """The display-space box (x0, y0, x1, y1) of a world box's 8 corners."""
+    points = [display_point(renderer, (x, y, z)) for x in bounds[0:2] for y in bounds[2:4] for z in bounds[4:6]]
+    return [min(p[0] for p in points), min(p[1] for p in points), max(p[0] for p in points), max(p[1] for p in points)]
+
+
+def frame_scene(renderer) -> None:
+    """Everything in view (robot whole, phantom), z up, from the front-right, with a margin for
+    the arm's motion."""
+    camera = renderer.GetActiveCamera()
+    camera.SetViewUp(0, 0, 1)
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetPosition(1.0, -1.1, 0.55)
+    camera.SetViewAngle(30.0)
+    renderer.ResetCamera()
+    camera.Zoom(0.8)
+    renderer.ResetCameraClippingRange()
+
+
 class Viewer:
     def __init__(self, scene, image, registration, offscreen_dir: str | None, size=(1280, 720)):
         self.scene = scene
@@ -49,46 +202,9 @@ class Viewer:
             Path(offscreen_dir).mkdir(parents=True, exist_ok=True)
         self.actors = {}
         self.registration = registration
-        self.slice_actors = self._slices(image)
+        self.phantom = PhantomView(self.renderer, image, registration)
+        self.tip = None
         self.frame = 0
-
-    def _slices(self, image):
-        """Three orthogonal slices through the phantom's centre, CT window W400/L40."""
-        lut = vtk.vtkWindowLevelLookupTable()
-        lut.SetWindow(400)
-        lut.SetLevel(40)
-        lut.Build()
-        lut.SetBelowRangeColor(0, 0, 0, 0)  # air is see-through, so the robot stays visible
-        lut.UseBelowRangeColorOn()
-        actors = []
-        extent = image.GetExtent()
-        centre = [(extent[2 * i] + extent[2 * i + 1]) // 2 for i in range(3)]
-        for axis in range(3):
-            e = list(extent)
-            e[2 * axis] = e[2 * axis + 1] = int(centre[axis] * (1.15 if axis == 2 else 1.0))
-            colors = vtk.vtkImageMapToColors()
-            colors.SetInputData(image)
-            colors.SetLookupTable(lut)
-            actor = vtk.vtkImageActor()
-            actor.GetMapper().SetInputConnection(colors.GetOutputPort())
-            actor.SetDisplayExtent(*e)
-            actor.SetUserMatrix(self.registration.GetMatrixTransformToParent())
-            self.renderer.AddActor(actor)
-            actors.append(actor)
-        # The pseudotumour as a translucent surface, so the target stands out.
-        surface = vtk.vtkFlyingEdges3D()
-        surface.SetInputData(image)
-        surface.SetValue(0, 110)
-        mapper = vtk.vtkPolyDataMapper()
-        mapper.SetInputConnection(surface.GetOutputPort())
-        mapper.ScalarVisibilityOff()
-        tumour = vtk.vtkActor()
-        tumour.SetMapper(mapper)
-        tumour.GetProperty().SetColor(0.9, 0.3, 0.25)
-        tumour.GetProperty().SetOpacity(0.6)
-        tumour.SetUserMatrix(self.registration.GetMatrixTransformToParent())
-        self.renderer.AddActor(tumour)
-        return actors
 
     def update(self) -> None:
         """Model nodes of the scene -> actors with their world matrices."""
@@ -119,13 +235,7 @@ class Viewer:
             self.renderer.RemoveActor(self.actors.pop(gone))
 
     def reset_camera(self) -> None:
-        camera = self.renderer.GetActiveCamera()
-        camera.SetViewUp(0, 0, 1)
-        # Robot (about 1.5 m tall at the origin) and phantom (in front of it) in one view.
-        camera.SetFocalPoint(280, 0, 600)
-        camera.SetPosition(2300, -2500, 1600)
-        camera.SetViewAngle(24.0)  # idempotent, unlike Zoom()
-        self.renderer.ResetCameraClippingRange()
+        frame_scene(self.renderer)
 
     def render(self) -> str | None:
         # The robot moves: near/far planes computed once would clip links that swing towards or
@@ -153,66 +263,103 @@ class Viewer:
             coordinate.SetValue((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2)
             x, y = coordinate.GetComputedDoubleDisplayValue(self.renderer)
             projected[node_id] = {'x': x, 'y': y, 'size_mm': size}
-        Path(path).with_suffix('.json').write_text(json.dumps({'models': projected,
-                                                               'window': list(self.window.GetSize())}))
+        info = {'models': projected, 'window': list(self.window.GetSize()),
+                'phantom_bounds_mm': self.phantom.world_bounds(),
+                'phantom_display_box': display_box(self.renderer, self.phantom.world_bounds())}
+        info['tip_inside_phantom'] = self.phantom.tip_inside
+        if self.tip is not None:
+            info['tip_mm'] = self.tip
+            info['tip_display'] = list(display_point(self.renderer, self.tip))
+        Path(path).with_suffix('.json').write_text(json.dumps(info))
         self.frame += 1
         return path
 
 
 # ------------------------------------------------------------------------------ main
-def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument('--phantom', required=True, help='MetaImage (.mha) made by ros2vtk-make-phantom')
-    parser.add_argument('--robots', type=int, default=1, help='robots (namespaces /robot1, /robot2, ...)')
-    parser.add_argument('--spin', choices=('timer', 'event'), default='timer')
-    parser.add_argument('--rate', type=float, default=50.0, help='timer spin rate (Hz)')
-    parser.add_argument('--offscreen', default='', help='write PNG frames here instead of a window')
-    parser.add_argument('--duration', type=float, default=0.0, help='seconds (0: until interrupted)')
-    parser.add_argument('--frames-per-second', type=float, default=2.0, help='PNG frames written per second')
-    parser.add_argument('--urdf', default=str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'),
-                        help='the URDF the simulated robot serves (its folder is the base of relative mesh paths)')
-    parser.add_argument('--package-path', action='append', default=[],
-                        help='folder searched for package:// meshes (besides AMENT_PREFIX_PATH, ROS_PACKAGE_PATH)')
-    args = parser.parse_args()
+HEADLESS_SECONDS = 20.0  # a run with no display and no --duration stops after this
 
-    logic = ros2vtk.vtkROS2Logic()
-    logic.SetSpinRate(args.rate)
-    scene = logic.GetScene()
-    node = logic.GetDefaultROS2Node()
 
-    reader = vtk.vtkMetaImageReader()
-    reader.SetFileName(args.phantom)
-    reader.Update()
-    image = reader.GetOutput()
-    registration = ros2vtk.vtkROS2TransformNode()
-    registration.SetName('registration:robot_to_image')
-    placement = vtk.vtkMatrix4x4()
-    placement.SetElement(0, 3, 350.0)   # the phantom lies on a table in front of the robot (mm)
-    placement.SetElement(1, 3, -64.0)
-    placement.SetElement(2, 3, 150.0)
-    registration.SetMatrixTransformToParent(placement)
-    scene.AddNode(registration)
+class Demo:
+    """The demo's scene: robots fed by the simulated robot(s), the phantom, the tip placement."""
 
-    namespaces = ['/'] if args.robots == 1 else [f'/robot{i + 1}' for i in range(args.robots)]
-    urdf_folder = Path(args.urdf).resolve().parent
-    package_paths = args.package_path or [str(urdf_folder.parent)]  # <package>/urdf/robot.urdf
-    robots = {}
-    placements = {}
-    for index, ns in enumerate(namespaces):
-        name = 'robot' if ns == '/' else ns.strip('/')
-        prefix = '' if ns == '/' else name + '/'  # ros2vtk-sim-robot --frame-prefix robotN/
-        topic = '/robot_description' if ns == '/' else f'{ns}/robot_description'
-        robot = node.CreateAndAddRobotNodeFromTopic(name, topic, '', prefix)
-        robot.SetMeshBaseFolder(str(urdf_folder))
-        for folder in package_paths:
-            robot.AddMeshSearchPath(folder)
-        # Several robots stand side by side along y, 700 mm apart, through their base transforms.
+    def __init__(self, args):
+        self.args = args
+        self.logic = ros2vtk.vtkROS2Logic()
+        self.logic.SetSpinRate(args.rate)
+        self.scene = self.logic.GetScene()
+        self.node = self.logic.GetDefaultROS2Node()
+        reader = vtk.vtkMetaImageReader()
+        reader.SetFileName(args.phantom)
+        reader.Update()
+        if reader.GetErrorCode() or reader.GetOutput().GetNumberOfPoints() == 0:
+            raise SystemExit(f'[demo] cannot read the phantom {args.phantom}')
+        scale = vtk.vtkImageChangeInformation()
+        scale.SetInputConnection(reader.GetOutputPort())
+        scale.SetOutputSpacing(PHANTOM_SPACING_MM, PHANTOM_SPACING_MM, PHANTOM_SPACING_MM)
+        scale.Update()
+        self.image = scale.GetOutput()
+        self.registration = ros2vtk.vtkROS2TransformNode()
+        self.registration.SetName('registration:robot_to_image')
         placement = vtk.vtkMatrix4x4()
-        placement.SetElement(1, 3, 700.0 * (index - (len(namespaces) - 1) / 2))
-        placements[ns] = placement
-        robots[ns] = robot
-    announced = {}  # namespace -> the load last announced (a new description reloads the robot)
-    viewer = Viewer(scene, image, registration, args.offscreen or None)
+        placement.SetElement(0, 3, 350.0)   # until the tip placement: in front of the robot (mm)
+        placement.SetElement(2, 3, 150.0)
+        self.registration.SetMatrixTransformToParent(placement)
+        self.scene.AddNode(self.registration)
+        self.placement = TipPlacement(self.registration, self.image)
+        namespaces = ['/'] if args.robots == 1 else [f'/robot{i + 1}' for i in range(args.robots)]
+        urdf_folder = Path(args.urdf).resolve().parent
+        package_paths = args.package_path or [str(urdf_folder.parent)]  # <package>/urdf/robot.urdf
+        self.robots, self.placements, self.announced = {}, {}, {}
+        for index, ns in enumerate(namespaces):
+            name = 'robot' if ns == '/' else ns.strip('/')
+            prefix = '' if ns == '/' else name + '/'  # ros2vtk-sim-robot --frame-prefix robotN/
+            topic = '/robot_description' if ns == '/' else f'{ns}/robot_description'
+            robot = self.node.CreateAndAddRobotNodeFromTopic(name, topic, '', prefix)
+            robot.SetMeshBaseFolder(str(urdf_folder))
+            for folder in package_paths:
+                robot.AddMeshSearchPath(folder)
+            # Several robots stand side by side along y, 700 mm apart, through their base transforms.
+            placement = vtk.vtkMatrix4x4()
+            placement.SetElement(1, 3, 700.0 * (index - (len(namespaces) - 1) / 2))
+            self.placements[ns] = placement
+            self.robots[ns] = robot
+        self.first = next(iter(self.robots.values()))
+        self.tip = None
+
+    def after_spin(self) -> str:
+        """Per spin: announces loads, places the phantom at the tool tip, returns 'loaded',
+        'placed' or '' (what the view should re-frame for)."""
+        event = ''
+        for ns, robot in self.robots.items():
+            if robot.IsLoaded() and self.announced.get(ns) != robot.GetNumberOfLoads():
+                self.announced[ns] = robot.GetNumberOfLoads()
+                robot.GetBaseTransformNode().SetMatrixTransformToParent(self.placements[ns])
+                for warning in robot.GetWarnings().splitlines():
+                    print(f'[demo] {ns}: {warning}', flush=True)
+                print(f'[demo] robot in {ns}: {robot.GetNumberOfLinks()} links, {robot.GetNumberOfModelNodes()} '
+                      f'visuals, loaded in {1000 * robot.GetLastLoadDuration():.1f} ms', flush=True)
+                event = 'loaded'
+        self.tip = tip_position(self.first)
+        if self.tip is not None and self.first.GetNumberOfLinksTracked() == self.first.GetNumberOfLinks():
+            if self.placement.add(self.tip, time.monotonic()):
+                centre = [self.registration.GetMatrixTransformToParent().GetElement(i, 3) for i in range(3)]
+                print('[demo] phantom placed at the needle tip\'s working area (corner '
+                      + ', '.join(f'{c:.0f}' for c in centre) + ' mm)', flush=True)
+                event = 'placed'
+        return event
+
+    def status(self, spins: int, seconds: float, spin_time: float) -> str:
+        state = '; '.join(f'{ns}: {r.GetRobotState()}, {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} '
+                          f'links tracked' for ns, r in self.robots.items())
+        received = sum(self.node.GetSubscriberNodeByTopic(r.GetDescriptionTopic()).GetNumberOfMessages()
+                       for r in self.robots.values())
+        return (f'[demo] {spins / seconds:5.1f} spins/s, spin {1000 * spin_time / max(spins, 1):.3f} ms, '
+                f'mean {self.logic.GetMeanSpinDuration():.3f} ms, robot_description msgs {received}, {state}')
+
+
+def run_window(demo: Demo, args, duration: float) -> int:
+    """A VTK window (or PNG frames offscreen) driven by this loop."""
+    viewer = Viewer(demo.scene, demo.image, demo.registration, args.offscreen or None)
     viewer.reset_camera()
     interactor = None
     if not args.offscreen:
@@ -220,57 +367,106 @@ def main() -> int:
         interactor.SetRenderWindow(viewer.window)
         interactor.SetInteractorStyle(vtk.vtkInteractorStyleTrackballCamera())
         interactor.Initialize()
-    if args.offscreen:
-        print(f'[demo] no display: writing frames to {args.offscreen}', flush=True)
-
-    start = time.monotonic()
-    last_status = start
-    last_frame = 0.0
-    spins_since = 0
-    spin_time = 0.0
-    while args.duration <= 0 or time.monotonic() - start < args.duration:
-        t0 = time.perf_counter()
-        if args.spin == 'event':
-            logic.SpinOnWakeUp(1.0 / args.rate)
-        else:
-            logic.Spin()
-        spin_time += time.perf_counter() - t0
-        spins_since += 1
-        for ns, robot in robots.items():
-            if robot.IsLoaded() and announced.get(ns) != robot.GetNumberOfLoads():
-                announced[ns] = robot.GetNumberOfLoads()
-                robot.GetBaseTransformNode().SetMatrixTransformToParent(placements[ns])
-                for warning in robot.GetWarnings().splitlines():
-                    print(f'[demo] {ns}: {warning}', flush=True)
-                print(f'[demo] robot in {ns}: {robot.GetNumberOfLinks()} links, {robot.GetNumberOfModelNodes()} '
-                      f'visuals, loaded in {1000 * robot.GetLastLoadDuration():.1f} ms', flush=True)
-                viewer.update()
-                viewer.reset_camera()  # frame the robots and the phantom together
-        viewer.update()
-        now = time.monotonic()
-        if args.offscreen:
-            if now - last_frame >= 1.0 / args.frames_per_second:
+    else:
+        print(f'[demo] no display: writing frames to {args.offscreen}'
+              + (f' for {duration:g} s' if duration > 0 else ''), flush=True)
+    start = last_status = time.monotonic()
+    last_frame, spins_since, spin_time = 0.0, 0, 0.0
+    try:
+        while duration <= 0 or time.monotonic() - start < duration:
+            t0 = time.perf_counter()
+            if args.spin == 'event':
+                demo.logic.SpinOnWakeUp(1.0 / args.rate)
+            else:
+                demo.logic.Spin()
+            spin_time += time.perf_counter() - t0
+            spins_since += 1
+            event = demo.after_spin()
+            viewer.update()
+            viewer.tip = demo.tip
+            if demo.tip is not None:
+                viewer.phantom.follow(demo.tip)
+            if event:
+                viewer.reset_camera()  # the robot whole and the phantom in one view
+            now = time.monotonic()
+            if args.offscreen:
+                if event == 'placed' or now - last_frame >= 1.0 / args.frames_per_second:
+                    viewer.render()
+                    last_frame = now
+                elif args.spin == 'timer':
+                    time.sleep(max(0.0, 1.0 / args.rate - (time.perf_counter() - t0)))
+            else:
                 viewer.render()
-                last_frame = now
-            elif args.spin == 'timer':
-                time.sleep(max(0.0, 1.0 / args.rate - (time.perf_counter() - t0)))
-        else:
-            viewer.render()
-            interactor.ProcessEvents()
-            if args.spin == 'timer':
-                time.sleep(max(0.0, 1.0 / args.rate - (time.perf_counter() - t0)))
-        if now - last_status >= 1.0:
-            state = '; '.join(f'{ns}: {r.GetRobotState()}, {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} '
-                              f'links tracked' for ns, r in robots.items())
-            received = sum(node.GetSubscriberNodeByTopic(r.GetDescriptionTopic()).GetNumberOfMessages()
-                           for r in robots.values())
-            print(f'[demo] {spins_since / (now - last_status):5.1f} spins/s, spin '
-                  f'{1000 * spin_time / max(spins_since, 1):.3f} ms, mean {logic.GetMeanSpinDuration():.3f} ms, '
-                  f'robot_description msgs {received}, {state}', flush=True)
-            last_status, spins_since, spin_time = now, 0, 0.0
+                interactor.ProcessEvents()
+                if args.spin == 'timer':
+                    time.sleep(max(0.0, 1.0 / args.rate - (time.perf_counter() - t0)))
+            if now - last_status >= 1.0:
+                print(demo.status(spins_since, now - last_status, spin_time), flush=True)
+                last_status, spins_since, spin_time = now, 0, 0.0
+    except KeyboardInterrupt:
+        print('[demo] interrupted (Ctrl-C): stopping', flush=True)
+    summary = (f'[demo] summary: {time.monotonic() - start:.1f} s, {demo.logic.GetNumberOfSpins()} spins, '
+               f'mean spin {demo.logic.GetMeanSpinDuration():.3f} ms, '
+               + ', '.join(f'{ns}: {r.GetRobotState()} {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} links'
+                           for ns, r in demo.robots.items())
+               + (f', phantom placed at the tip' if demo.placement.placed else ', phantom not placed (robot not loaded)'))
     if args.offscreen:
-        print(f'[demo] {viewer.frame} frames in {args.offscreen}', flush=True)
+        summary += f', {viewer.frame} frames in {args.offscreen}'
+    print(summary, flush=True)
     return 0
+
+
+def run_app(demo: Demo, args, duration: float) -> int:
+    """The web app on the demo's logic, with the phantom in its 3D view."""
+    import ros2vtk.app
+
+    def setup(app):
+        phantom = PhantomView(app.renderer, demo.image, demo.registration)
+
+        def after_spin():
+            if demo.after_spin():
+                app.framed = -1  # re-frame: the robot whole and the phantom
+            if demo.tip is not None:
+                phantom.follow(demo.tip)
+        app.add_spin_callback(after_spin)
+        app.state.robot_selected = demo.first.GetRobotName()
+    print('[demo] starting the app (Ctrl-C stops it)', flush=True)
+    ros2vtk.app.serve(demo.logic, port=args.port, title='ros2vtk demo', on_app=setup,
+                      duration=duration if duration > 0 else None)
+    print('[demo] stopped', flush=True)
+    return 0
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('--phantom', required=True, help='MetaImage (.mha) made by ros2vtk-make-phantom')
+    parser.add_argument('--robots', type=int, default=1, help='robots (namespaces /robot1, /robot2, ...)')
+    parser.add_argument('--spin', choices=('timer', 'event'), default='timer')
+    parser.add_argument('--rate', type=float, default=50.0, help='timer spin rate (Hz)')
+    parser.add_argument('--window', action='store_true', help='a VTK window (PNG frames without a display) '
+                        'instead of the web app')
+    parser.add_argument('--port', type=int, default=8080, help='the web app\'s port (127.0.0.1 only)')
+    parser.add_argument('--offscreen', default='', help='window mode: write PNG frames here')
+    parser.add_argument('--duration', type=float, default=None,
+                        help=f'seconds (default: until Ctrl-C; {HEADLESS_SECONDS:g} s for frames without a display)')
+    parser.add_argument('--frames-per-second', type=float, default=0.5, help='PNG frames written per second')
+    parser.add_argument('--urdf', default=str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'),
+                        help='the URDF the simulated robot serves (its folder is the base of relative mesh paths)')
+    parser.add_argument('--package-path', action='append', default=[],
+                        help='folder searched for package:// meshes (besides AMENT_PREFIX_PATH, ROS_PACKAGE_PATH)')
+    args = parser.parse_args()
+    window_mode = args.window or bool(args.offscreen)
+    duration = args.duration
+    if duration is None:
+        duration = HEADLESS_SECONDS if args.offscreen else 0.0
+    try:
+        demo = Demo(args)
+        if window_mode:
+            return run_window(demo, args, duration)
+        return run_app(demo, args, duration)
+    except KeyboardInterrupt:
+        print('[demo] interrupted (Ctrl-C): stopping', flush=True)
+        return 0
 
 
 if __name__ == '__main__':

@@ -2,7 +2,7 @@
 """The benchmark suite (targets in markdown() below, results in docs/benchmarks.md): runs every measurement with its
 baseline in the same invocation, writes build/bench/results.json and docs/benchmarks.md.
 
-    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator]
+    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services]
                       [--build DIR] [--json FILE] [--markdown FILE]
 
 Run through scripts/bench.sh (set-up, build, then this with the venv's python). Benchmarks
@@ -570,6 +570,23 @@ def markdown(results: dict) -> str:
                        f'{fmt(b.get("compile_seconds_sum"), 1)} |')
         out.append('')
 
+    services = results.get('services')
+    if services:
+        out += ['## 6. Service round trip', '',
+                f'{services["service"]}, {services["count"]} calls one at a time per pairing; time from send to '
+                'response on the client. Ours: tests/interop/service_runner.py (Python on the VTK wrapping: '
+                'vtkROS2ServiceClientNode.Call, vtkROS2ServiceServerNode answered by a Python observer); '
+                'rclpy: tests/interop/service_peer.py (call_async + spin_until_future_complete, create_service).', '',
+                '| client / server | answered | median | p90 | p99 | max | mean ± sd | median / rclpy pair |',
+                '| --- | --- | --- | --- | --- | --- | --- | --- |']
+        for name, row in services['pairs'].items():
+            s = row['latency_ms']
+            out.append(f'| {name.replace("_client_", " client / ").replace("_server", " server")} | '
+                       f'{row["answered"]}/{row["calls"]} | {fmt(s.get("median"))} | {fmt(s.get("p90"))} | '
+                       f'{fmt(s.get("p99"))} | {fmt(s.get("max"))} | {fmt(s.get("mean"))} ± {fmt(s.get("sd"))} | '
+                       f'{fmt(row["median_over_rclpy_pair"], 2)} |')
+        out.append('')
+
     if targets:
         out += ['## Targets', '', '| target | measured | verdict |', '| --- | --- | --- |']
         out += [f'| {t} | {v} | {ok} |' for t, v, ok in targets]
@@ -594,6 +611,47 @@ def markdown(results: dict) -> str:
     return '\n'.join(out)
 
 
+# ----------------------------------------------------------------------------- 6. services
+def bench_services(ctx: 'Context') -> dict:
+    """Service round trip (std_srvs/Trigger, one call at a time): every pairing of our client and
+    server (tests/interop/service_runner.py, Python on the VTK wrapping) with rclpy's
+    (tests/interop/service_peer.py). Client-side time from send to response, per call."""
+    count = 20 if ctx.quick else 1000
+    interop = REPO / 'tests' / 'interop'
+    ours_server = [SYSTEM_PYTHON, interop / 'service_runner.py', 'serve', 'std_srvs/srv/Trigger', '/bench_trigger',
+                   '--count', count, '--seconds', 120]
+    rclpy_server = [VENV_PYTHON, interop / 'service_peer.py', 'server', 'std_srvs/srv/Trigger', '/bench_trigger',
+                    '--count', count, '--seconds', 120]
+    ours_client = [SYSTEM_PYTHON, interop / 'service_runner.py', 'call', 'std_srvs/srv/Trigger', '/bench_trigger',
+                   '{}', '--count', count]
+    rclpy_client = [VENV_PYTHON, interop / 'service_peer.py', 'client', 'std_srvs/srv/Trigger', '/bench_trigger',
+                    '{}', '--count', count]
+    pairs = {
+        'rclpy_client_rclpy_server': (rclpy_client, rclpy_server),
+        'ours_client_rclpy_server': (ours_client, rclpy_server),
+        'rclpy_client_ours_server': (rclpy_client, ours_server),
+        'ours_client_ours_server': (ours_client, ours_server),
+    }
+    rows: dict[str, dict] = {}
+    domain = 220
+    for name, (client_args, server_args) in pairs.items():
+        with Domain(domain, ctx.build) as session:
+            server = session.start(server_args)
+            wait_ready(server)
+            client = session.start(client_args)
+            result = last_json(client, timeout=60 + count * 0.1)
+        domain += 1
+        answered = result.get('received', result.get('ok', 0))
+        rows[name] = {'calls': count, 'answered': answered, 'latency_ms': summary(result['latency_ms'])}
+        s = rows[name]['latency_ms']
+        progress(f'service round trip, {name:27s}: median {s.get("median", float("nan")):.3f} ms, '
+                 f'p99 {s.get("p99", float("nan")):.3f} ms, {answered}/{count} answered')
+    base = rows['rclpy_client_rclpy_server']['latency_ms'].get('median', float('nan'))
+    for row in rows.values():
+        row['median_over_rclpy_pair'] = row['latency_ms'].get('median', float('nan')) / base
+    return {'count': count, 'service': 'std_srvs/srv/Trigger', 'pairs': rows}
+
+
 # ----------------------------------------------------------------------------- main
 class Context:
     def __init__(self, build: Path, quick: bool) -> None:
@@ -603,7 +661,7 @@ class Context:
 
 SECTIONS: dict[str, Callable[[Context], dict]] = {
     'spin': bench_spin, 'round_trip': bench_round_trip, 'throughput': bench_throughput,
-    'robot_load': bench_robot_load, 'generator': bench_generator,
+    'robot_load': bench_robot_load, 'generator': bench_generator, 'services': bench_services,
 }
 
 

@@ -160,6 +160,8 @@ def cmd_sub(args, logic, node) -> int:
     print(json.dumps({'count': sub.GetNumberOfMessages(), 'rejected': sub.GetNumberOfRejectedMessages(),
                       'rejection': sub.GetLastRejectionReason(),
                       'conversion_error': sub.GetLastConversionError() if hasattr(sub, 'GetLastConversionError') else '',
+                      'incompatible_qos': sub.GetNumberOfIncompatibleQoSPublishers(),
+                      'incompatible_policy': sub.GetLastIncompatibleQoSPolicy(),
                       'value': to_plain(value), 'slicer_type': sub.GetSlicerType()}), flush=True)
     return 0
 

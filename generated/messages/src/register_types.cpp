@@ -60,6 +60,15 @@
 #include "ros2vtk/std_msgs/msg/multi_array_dimension.hpp"
 #include "ros2vtk/std_msgs/msg/multi_array_layout.hpp"
 #include "ros2vtk/std_msgs/msg/string.hpp"
+#include "ros2vtk/std_srvs/srv/empty.hpp"
+#include "ros2vtk/std_srvs/srv/empty__request.hpp"
+#include "ros2vtk/std_srvs/srv/empty__response.hpp"
+#include "ros2vtk/std_srvs/srv/set_bool.hpp"
+#include "ros2vtk/std_srvs/srv/set_bool__request.hpp"
+#include "ros2vtk/std_srvs/srv/set_bool__response.hpp"
+#include "ros2vtk/std_srvs/srv/trigger.hpp"
+#include "ros2vtk/std_srvs/srv/trigger__request.hpp"
+#include "ros2vtk/std_srvs/srv/trigger__response.hpp"
 #include "ros2vtk/tf2_msgs/msg/tf_message.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -122,6 +131,12 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::MultiArrayDimension::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::MultiArrayLayout::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::String::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Empty_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Empty_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::SetBool_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::SetBool_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::tf2_msgs::msg::TFMessage::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::DescribeParameters::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::GetParameterTypes::type_support());
@@ -129,4 +144,7 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::ListParameters::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::SetParameters::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::SetParametersAtomically::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Empty::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::SetBool::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Trigger::type_support());
 }

@@ -5,6 +5,8 @@
 #include "vtkROS2ParameterNode.h"
 #include "vtkROS2PublisherGenericNode.h"
 #include "vtkROS2RobotNode.h"
+#include "vtkROS2ServiceClientNode.h"
+#include "vtkROS2ServiceServerNode.h"
 #include "vtkROS2SubscriberGenericNode.h"
 #include "vtkROS2Tf2BroadcasterNode.h"
 #include "vtkROS2Tf2LookupNode.h"
@@ -38,6 +40,8 @@ void register_builtin_node_classes(NodeClassRegistry& registry)
     { "", "vtkROS2Tf2BroadcasterNode", "", NodeDirection::Other, &create_node<vtkROS2Tf2BroadcasterNode> },
     { "", "vtkROS2ModelNode", "", NodeDirection::Other, &create_node<vtkROS2ModelNode> },
     { "", "vtkROS2RobotNode", "", NodeDirection::Other, &create_node<vtkROS2RobotNode> },
+    { "", "vtkROS2ServiceClientNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceClientNode> },
+    { "", "vtkROS2ServiceServerNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceServerNode> },
   };
   for (const auto& info : builtins)
   {

@@ -103,6 +103,7 @@ void vtkROS2ModelNode::WriteXML(vtkXMLDataElement* element)
   element->SetDoubleAttribute("opacity", this->Opacity);
   element->SetIntAttribute("visibility", this->Visibility ? 1 : 0);
   element->SetIntAttribute("scalarVisibility", this->ScalarVisibility ? 1 : 0);
+  element->SetIntAttribute("representation", this->Representation);
   std::ostringstream values;
   values.precision(17);
   for (int k = 0; k < 16; ++k)
@@ -131,6 +132,17 @@ bool vtkROS2ModelNode::ReadXML(vtkXMLDataElement* element)
   {
     this->ScalarVisibility = scalarVisibility != 0;
   }
+  int representation = Surface;
+  if (element->GetScalarAttribute("representation", representation))
+  {
+    if (representation < Points || representation > Surface)
+    {
+      vtkErrorMacro("ReadXML: representation must be 0 (points), 1 (wireframe) or 2 (surface), not "
+        << representation);
+      return false;
+    }
+    this->Representation = representation;
+  }
   if (const char* text = element->GetAttribute("matrixModelToParent"))
   {
     std::istringstream values(text);
@@ -156,5 +168,6 @@ void vtkROS2ModelNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Opacity: " << this->Opacity << "\n";
   os << indent << "Visibility: " << this->Visibility << "\n";
   os << indent << "ScalarVisibility: " << this->ScalarVisibility << "\n";
+  os << indent << "Representation: " << this->Representation << "\n";
   os << indent << "PolyData: " << this->PolyData << "\n";
 }

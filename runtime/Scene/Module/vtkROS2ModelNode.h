@@ -47,6 +47,16 @@ public:
   vtkSetMacro(ScalarVisibility, bool);
   vtkGetMacro(ScalarVisibility, bool);
   vtkBooleanMacro(ScalarVisibility, bool);
+  /// How the surface is drawn: Points, Wireframe or Surface (default), as vtkProperty's values
+  /// (VTK_POINTS 0, VTK_WIREFRAME 1, VTK_SURFACE 2).
+  enum RepresentationType
+  {
+    Points = 0,
+    Wireframe = 1,
+    Surface = 2
+  };
+  vtkSetClampMacro(Representation, int, Points, Surface);
+  vtkGetMacro(Representation, int);
 
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
@@ -61,6 +71,7 @@ protected:
   double Opacity = 1.0;
   bool Visibility = true;
   bool ScalarVisibility = false;
+  int Representation = Surface;
 
 private:
   vtkROS2ModelNode(const vtkROS2ModelNode&) = delete;

@@ -8,6 +8,8 @@
 #include "vtkROS2SubscriberNode.h"
 #include "vtkROS2ParameterNode.h"
 #include "vtkROS2RobotNode.h"
+#include "vtkROS2ServiceClientNode.h"
+#include "vtkROS2ServiceServerNode.h"
 #include "vtkROS2Tf2BroadcasterNode.h"
 #include "vtkROS2Tf2LookupNode.h"
 
@@ -34,6 +36,23 @@ const char* const Tf2LookupRole = "tf2Lookup";
 const char* const Tf2BroadcasterRole = "tf2Broadcaster";
 const char* const ParameterRole = "parameter";
 const char* const RobotRole = "robot";
+const char* const ServiceClientRole = "serviceClient";
+const char* const ServiceServerRole = "serviceServer";
+
+/// The nodes referenced under `role` (held, as observers may remove nodes meanwhile).
+template <typename NodeType>
+std::vector<vtkSmartPointer<NodeType>> Referenced(vtkROS2SceneNode* owner, const char* role)
+{
+  std::vector<vtkSmartPointer<NodeType>> nodes;
+  for (int i = 0; i < owner->GetNumberOfNodeReferences(role); ++i)
+  {
+    if (auto* node = NodeType::SafeDownCast(owner->GetNthNodeReference(role, i)))
+    {
+      nodes.emplace_back(node);
+    }
+  }
+  return nodes;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -159,6 +178,15 @@ bool vtkROS2NodeNode::Destroy()
     {
       endpoint->RemoveFromROS2Node();
     }
+  }
+  // Service endpoints live in the participant too; their nodes stay in the scene.
+  for (const auto& client : Referenced<vtkROS2ServiceClientNode>(this, ServiceClientRole))
+  {
+    client->Detach();
+  }
+  for (const auto& server : Referenced<vtkROS2ServiceServerNode>(this, ServiceServerRole))
+  {
+    server->Detach();
   }
   this->Internals->ReleaseParticipantObjects();
   this->Internals->Participant.reset();
@@ -495,19 +523,6 @@ std::string AbsoluteNodeName(const char* name)
   return !value.empty() && value[0] != '/' ? "/" + value : value;
 }
 
-template <typename NodeType>
-std::vector<vtkSmartPointer<NodeType>> Referenced(vtkROS2SceneNode* owner, const char* role)
-{
-  std::vector<vtkSmartPointer<NodeType>> nodes;
-  for (int i = 0; i < owner->GetNumberOfNodeReferences(role); ++i)
-  {
-    if (auto* node = NodeType::SafeDownCast(owner->GetNthNodeReference(role, i)))
-    {
-      nodes.emplace_back(node);
-    }
-  }
-  return nodes;
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -1005,4 +1020,140 @@ bool vtkROS2NodeNode::RemoveAndDeleteRobotNode(const char* robotName)
   }
   this->RemoveNodeReferenceID(RobotRole, robot->GetID());
   return this->Scene ? this->Scene->RemoveNode(robot) : true;
+}
+
+//------------------------------------------------------------------------------
+// Services
+//------------------------------------------------------------------------------
+namespace
+{
+/// The node under `role` whose service name (as given or resolved) is `service`.
+template <typename NodeType>
+NodeType* FindByService(vtkROS2NodeNode* owner, const char* role, const char* service)
+{
+  if (!service || !*service)
+  {
+    return nullptr;
+  }
+  std::string resolved;
+  if (owner->GetParticipant())
+  {
+    owner->GetParticipant()->resolve_name(service, resolved, nullptr);
+  }
+  for (const auto& node : Referenced<NodeType>(owner, role))
+  {
+    if (node->GetServiceName() == std::string(service) || (!resolved.empty() && node->GetServiceName() == resolved))
+    {
+      return node;
+    }
+  }
+  return nullptr;
+}
+
+/// Creates a service node of class NodeType, adds it to the scene and attaches it; nullptr and
+/// `error` when it cannot be attached (the node is removed again).
+template <typename NodeType>
+NodeType* AddServiceNode(vtkROS2NodeNode* owner, vtkROS2Scene* scene, const char* role, const char* prefix,
+  const char* type, const char* service)
+{
+  vtkNew<NodeType> node;
+  node->SetName((std::string(prefix) + service).c_str());
+  scene->AddNode(node);
+  if (!node->Attach(owner, type, service))
+  {
+    scene->RemoveNode(node);
+    return nullptr;
+  }
+  owner->AddNodeReferenceID(role, node->GetID());
+  return node;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ServiceClientNode* vtkROS2NodeNode::CreateAndAddServiceClientNode(const char* type, const char* service)
+{
+  if (!this->CheckReadyFor("CreateAndAddServiceClientNode"))
+  {
+    return nullptr;
+  }
+  if (!type || !service || !*service)
+  {
+    vtkErrorMacro("CreateAndAddServiceClientNode: type and service name are required");
+    return nullptr;
+  }
+  if (this->GetServiceClientNodeByService(service))
+  {
+    vtkErrorMacro("CreateAndAddServiceClientNode: this node has a client of " << service << " already");
+    return nullptr;
+  }
+  return AddServiceNode<vtkROS2ServiceClientNode>(this, this->Scene, ServiceClientRole, "ros2:client:", type, service);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ServiceClientNode* vtkROS2NodeNode::GetServiceClientNodeByService(const char* service)
+{
+  return FindByService<vtkROS2ServiceClientNode>(this, ServiceClientRole, service);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteServiceClientNode(const char* service)
+{
+  vtkROS2ServiceClientNode* node = this->GetServiceClientNodeByService(service);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteServiceClientNode: no client of " << (service ? service : ""));
+    return false;
+  }
+  this->RemoveNodeReferenceID(ServiceClientRole, node->GetID());
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ServiceServerNode* vtkROS2NodeNode::CreateAndAddServiceServerNode(const char* type, const char* service)
+{
+  if (!this->CheckReadyFor("CreateAndAddServiceServerNode"))
+  {
+    return nullptr;
+  }
+  if (!type || !service || !*service)
+  {
+    vtkErrorMacro("CreateAndAddServiceServerNode: type and service name are required");
+    return nullptr;
+  }
+  if (this->GetServiceServerNodeByService(service))
+  {
+    vtkErrorMacro("CreateAndAddServiceServerNode: this node serves " << service << " already");
+    return nullptr;
+  }
+  return AddServiceNode<vtkROS2ServiceServerNode>(this, this->Scene, ServiceServerRole, "ros2:server:", type, service);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ServiceServerNode* vtkROS2NodeNode::GetServiceServerNodeByService(const char* service)
+{
+  return FindByService<vtkROS2ServiceServerNode>(this, ServiceServerRole, service);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteServiceServerNode(const char* service)
+{
+  vtkROS2ServiceServerNode* node = this->GetServiceServerNodeByService(service);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteServiceServerNode: no server of " << (service ? service : ""));
+    return false;
+  }
+  this->RemoveNodeReferenceID(ServiceServerRole, node->GetID());
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetRegisteredServiceTypes() const
+{
+  std::string names;
+  for (const auto& name : ros2vtk::wire::registered_service_types())
+  {
+    names += (names.empty() ? "" : " ") + name;
+  }
+  return names;
 }

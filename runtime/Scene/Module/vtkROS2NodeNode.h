@@ -28,6 +28,8 @@ class Participant;
 
 class vtkROS2ParameterNode;
 class vtkROS2RobotNode;
+class vtkROS2ServiceClientNode;
+class vtkROS2ServiceServerNode;
 class vtkROS2Tf2BroadcasterNode;
 class vtkROS2Tf2LookupNode;
 namespace ros2vtk
@@ -116,6 +118,21 @@ public:
   vtkROS2ParameterNode* CreateAndAddParameterNode(const char* monitoredNodeName);
   vtkROS2ParameterNode* GetParameterNodeByNode(const char* monitoredNodeName);
   bool RemoveAndDeleteParameterNode(const char* monitoredNodeName);
+  ///@}
+
+  ///@{
+  /// Services of any generated .srv type (`type` as "std_srvs/srv/SetBool" or "std_srvs/SetBool"):
+  /// a client sends requests and gets responses or timeouts on Spin; a server fires an event per
+  /// request for an observer to answer. One client and one server per service name and ROS
+  /// node; nullptr / false (vtkErrorMacro listing the known types) otherwise.
+  vtkROS2ServiceClientNode* CreateAndAddServiceClientNode(const char* type, const char* service);
+  vtkROS2ServiceClientNode* GetServiceClientNodeByService(const char* service);
+  bool RemoveAndDeleteServiceClientNode(const char* service);
+  vtkROS2ServiceServerNode* CreateAndAddServiceServerNode(const char* type, const char* service);
+  vtkROS2ServiceServerNode* GetServiceServerNodeByService(const char* service);
+  bool RemoveAndDeleteServiceServerNode(const char* service);
+  /// Space-separated ROS names of the service types that can be used.
+  std::string GetRegisteredServiceTypes() const;
   ///@}
 
   ///@{

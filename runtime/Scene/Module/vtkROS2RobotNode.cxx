@@ -32,6 +32,7 @@ const char* const DescriptionRole = "robotDescription";
 const char* const BaseRole = "robotBase";
 const char* const LinkRole = "robotLink";
 const char* const LinkAttribute = "ros2vtk.link";
+const char* const PlaceholderAttribute = "ros2vtk.placeholder";
 constexpr double MillimetresPerMetre = 1000.0;
 
 // Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
@@ -703,6 +704,11 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
       if (!visual.mesh_path.empty())
       {
         model->SetAttribute("ros2vtk.meshFile", visual.mesh_path.c_str());
+      }
+      if (visual.kind == ros2vtk::robot::VisualKind::Placeholder)
+      {
+        // Stands in for a mesh that did not load; the display layer draws it as such.
+        model->SetAttribute(PlaceholderAttribute, "1");
       }
       scene->AddNode(model);
       model->SetParentTransformNodeID(linkNode->GetID());

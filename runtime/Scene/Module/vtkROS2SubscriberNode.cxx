@@ -27,6 +27,8 @@ public:
   int NumberOfNewMessages = 0;
   uint64_t RejectedSeen = 0; // rejected_count() of the current subscription already counted
   std::string LastRejectionReason;
+  uint64_t IncompatibleSeen = 0; // incompatible_qos_count() of the current subscription reported
+  std::string LastIncompatibleQoSPolicy;
   ros2vtk::scene::RateLimitedReport RejectionReport{ RejectionReportInterval };
 };
 
@@ -46,6 +48,7 @@ bool vtkROS2SubscriberNode::CreateEndpoint(ros2vtk::wire::Participant& participa
   this->Internals->Subscription =
     participant.create_subscription(this->GetMessageTypeSupport(), topic, qos, error);
   this->Internals->RejectedSeen = 0;
+  this->Internals->IncompatibleSeen = 0;
   return this->Internals->Subscription != nullptr;
 }
 
@@ -78,6 +81,7 @@ int vtkROS2SubscriberNode::ProcessIncomingMessages()
     return 0;
   }
   this->ReportRejections();
+  this->ReportIncompatibleQoS();
 
   std::vector<ros2vtk::wire::MessagePtr> taken;
   internals.Subscription->take(taken);
@@ -119,6 +123,32 @@ void vtkROS2SubscriberNode::ReportRejections()
                               << this->NumberOfRejectedMessages
                               << "); latest: " << internals.LastRejectionReason);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::ReportIncompatibleQoS()
+{
+  vtkInternals& internals = *this->Internals;
+  const uint64_t incompatible = internals.Subscription->incompatible_qos_count();
+  if (incompatible <= internals.IncompatibleSeen)
+  {
+    return;
+  }
+  const uint64_t fresh = incompatible - internals.IncompatibleSeen;
+  internals.IncompatibleSeen = incompatible;
+  this->NumberOfIncompatibleQoSPublishers += static_cast<vtkTypeInt64>(fresh);
+  internals.LastIncompatibleQoSPolicy = internals.Subscription->last_incompatible_qos_policy();
+  vtkWarningMacro("topic '" << this->GetTopic() << "': " << fresh
+                            << " publisher(s) offering incompatible QoS; no messages will arrive from "
+                               "them. Last incompatible policy: "
+                            << internals.LastIncompatibleQoSPolicy << " (this subscriber requests "
+                            << this->GetQoSDescription() << ")");
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2SubscriberNode::GetLastIncompatibleQoSPolicy() const
+{
+  return this->Internals->LastIncompatibleQoSPolicy.c_str();
 }
 
 //------------------------------------------------------------------------------

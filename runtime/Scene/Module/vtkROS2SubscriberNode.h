@@ -28,6 +28,11 @@ public:
   const char* GetLastRejectionReason() const;
   /// Publishers (local or remote) currently matched; 0 when not added.
   int GetNumberOfMatchedPublications() const;
+  /// Publishers found on the topic whose QoS cannot match this subscriber (they send nothing
+  /// here; each is reported once, as rclpy's "requesting incompatible QoS"), and the policy that
+  /// kept the latest apart ("RELIABILITY", "DURABILITY", ...; empty when none).
+  vtkTypeInt64 GetNumberOfIncompatibleQoSPublishers() const { return this->NumberOfIncompatibleQoSPublishers; }
+  const char* GetLastIncompatibleQoSPolicy() const;
 
   /// The newest message as YAML, as `ros2 topic echo` prints it; empty before the first one.
   std::string GetLastMessageYAML() const;
@@ -65,12 +70,14 @@ protected:
 
   vtkTypeInt64 NumberOfMessages = 0;
   vtkTypeInt64 NumberOfRejectedMessages = 0;
+  vtkTypeInt64 NumberOfIncompatibleQoSPublishers = 0;
 
 private:
   vtkROS2SubscriberNode(const vtkROS2SubscriberNode&) = delete;
   void operator=(const vtkROS2SubscriberNode&) = delete;
 
   void ReportRejections();
+  void ReportIncompatibleQoS();
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

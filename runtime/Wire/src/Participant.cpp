@@ -150,6 +150,22 @@ dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash)
   return writer_qos;
 }
 
+std::string qos_policy_name(uint32_t policy_id)
+{
+  switch (policy_id)
+  {
+    case dds::DURABILITY_QOS_POLICY_ID: return "DURABILITY";
+    case dds::DEADLINE_QOS_POLICY_ID: return "DEADLINE";
+    case dds::LIVELINESS_QOS_POLICY_ID: return "LIVELINESS";
+    case dds::RELIABILITY_QOS_POLICY_ID: return "RELIABILITY";
+    case dds::OWNERSHIP_QOS_POLICY_ID: return "OWNERSHIP";
+    case dds::DESTINATIONORDER_QOS_POLICY_ID: return "DESTINATION_ORDER";
+    case dds::DATAREPRESENTATION_QOS_POLICY_ID: return "DATA_REPRESENTATION";
+    case dds::TYPECONSISTENCYENFORCEMENT_QOS_POLICY_ID: return "TYPE_CONSISTENCY";
+    default: return "policy " + std::to_string(policy_id);
+  }
+}
+
 dds::DataReaderQos make_reader_qos(const QoS& qos, const std::string& type_hash)
 {
   dds::DataReaderQos reader_qos = dds::DATAREADER_QOS_DEFAULT;

@@ -26,6 +26,8 @@ namespace wire {
 /// Translates our QoS into Fast DDS entity QoS the way rmw_fastrtps does (WIRE_NOTES §2.2).
 eprosima::fastdds::dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash);
 eprosima::fastdds::dds::DataReaderQos make_reader_qos(const QoS& qos, const std::string& type_hash);
+/// "RELIABILITY", "DURABILITY", ... as ROS tools name the policy that kept endpoints apart.
+std::string qos_policy_name(uint32_t policy_id);
 
 class Participant::Impl : public eprosima::fastdds::dds::DomainParticipantListener
 {

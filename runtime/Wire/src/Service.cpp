@@ -176,6 +176,11 @@ void ServiceServer::Impl::on_data_available(dds::DataReader* data_reader)
     if (!sample.valid)
     {
       ++rejected;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        last_rejection = sample.error;
+      }
+      queued = true; // wake the owner so it can report the rejection
       continue;
     }
     ServiceRequest request;
@@ -253,6 +258,12 @@ const ServiceTypeSupport& ServiceServer::type() const
 uint64_t ServiceServer::rejected_count() const
 {
   return impl_->rejected.load();
+}
+
+std::string ServiceServer::last_rejection() const
+{
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->last_rejection;
 }
 
 //------------------------------------------------------------------------------

@@ -62,6 +62,7 @@ public:
   std::mutex mutex;
   std::deque<ServiceRequest> queue;
   std::atomic<uint64_t> rejected{ 0 };
+  std::string last_rejection; // guarded by mutex
 };
 
 class ServiceClient::Impl : public eprosima::fastdds::dds::DataReaderListener

@@ -71,7 +71,7 @@ std::unique_ptr<Subscription::Impl> Subscription::Impl::create(Participant::Impl
   impl->queue_limit = std::max<size_t>(qos.depth, 1000);
   impl->reader = owner.subscriber->create_datareader(
     impl->dds_topic, make_reader_qos(qos, type.type_hash), impl.get(),
-    dds::StatusMask::data_available());
+    dds::StatusMask::data_available() << dds::StatusMask::requested_incompatible_qos());
   if (!impl->reader)
   {
     if (error)
@@ -179,6 +179,27 @@ size_t Subscription::pending() const
 {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   return impl_->queue.size();
+}
+
+void Subscription::Impl::on_requested_incompatible_qos(dds::DataReader*,
+  const dds::RequestedIncompatibleQosStatus& status)
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    last_incompatible_policy = qos_policy_name(status.last_policy_id);
+  }
+  incompatible = status.total_count;
+}
+
+uint64_t Subscription::incompatible_qos_count() const
+{
+  return impl_->incompatible;
+}
+
+std::string Subscription::last_incompatible_qos_policy() const
+{
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->last_incompatible_policy;
 }
 
 uint64_t Subscription::rejected_count() const

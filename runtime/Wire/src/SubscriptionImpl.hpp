@@ -26,6 +26,10 @@ public:
 
   /// Runs on a Fast DDS thread: take, deserialize (already done by TypeAdapter), enqueue.
   void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
+  /// Runs on a Fast DDS thread when a publisher on the topic cannot match (rclpy's "requesting
+  /// incompatible QoS"): counted, and the policy remembered for the report.
+  void on_requested_incompatible_qos(eprosima::fastdds::dds::DataReader* reader,
+    const eprosima::fastdds::dds::RequestedIncompatibleQosStatus& status) override;
 
   Participant::Impl& owner;
   const MessageTypeSupport& type;
@@ -41,6 +45,8 @@ public:
   std::atomic<uint64_t> received{ 0 };
   std::atomic<uint64_t> rejected{ 0 };
   std::atomic<uint64_t> dropped{ 0 };
+  std::atomic<uint64_t> incompatible{ 0 };
+  std::string last_incompatible_policy; // guarded by mutex
 };
 
 } // namespace wire

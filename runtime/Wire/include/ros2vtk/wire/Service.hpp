@@ -54,7 +54,9 @@ public:
 
   const std::string& service_name() const;
   const ServiceTypeSupport& type() const;
+  /// Requests rejected as malformed since creation, and the reason of the latest one.
   uint64_t rejected_count() const;
+  std::string last_rejection() const;
 
   class Impl;
 

@@ -58,6 +58,10 @@ public:
   /// Messages dropped because the queue was full (oldest dropped first).
   uint64_t dropped_count() const;
   uint64_t received_count() const;
+  /// Publishers found on the topic whose QoS cannot match this subscription (each one counted
+  /// once; they send nothing here), and the policy that failed last ("RELIABILITY", ...).
+  uint64_t incompatible_qos_count() const;
+  std::string last_incompatible_qos_policy() const;
 
   /// Upper bound of the queue between DDS and take() (default max(depth, 1000)).
   void set_queue_limit(size_t limit);

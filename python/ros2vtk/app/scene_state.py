@@ -1,0 +1,111 @@
+"""What the app's panels show, read from the scene each refresh: plain lists and dicts for trame's
+state, built only from the logic, its scene and its default ROS node (the app keeps no state of its
+own about ROS objects). Rates are the difference of the scene's own counters between refreshes.
+"""
+from __future__ import annotations
+
+import time
+
+import vtk
+
+
+def nodes_of_class(scene, class_name: str):
+    nodes = vtk.vtkCollection()
+    scene.GetNodesByClass(class_name, nodes)
+    return [nodes.GetItemAsObject(i) for i in range(nodes.GetNumberOfItems())]
+
+
+def robot_rows(scene):
+    rows = []
+    for robot in nodes_of_class(scene, 'vtkROS2RobotNode'):
+        source = robot.GetDescriptionSource()
+        where = {'parameter': f'{robot.GetParameterNodeName()} {robot.GetParameterName()}',
+                 'topic': robot.GetDescriptionTopic(), 'file': robot.GetDescriptionFile()}.get(source, '')
+        rows.append({'name': robot.GetRobotName(), 'source': f'{source}: {where}', 'state': robot.GetRobotState(),
+                     'links': f'{robot.GetNumberOfLinksTracked()}/{robot.GetNumberOfLinks()}',
+                     'visuals': robot.GetNumberOfModelNodes(), 'placeholders': robot.GetNumberOfPlaceholders(),
+                     'fixed_frame': robot.GetFixedFrame(), 'tf_prefix': robot.GetTfPrefix(),
+                     'error': robot.GetLastError() or ''})
+    return rows
+
+
+def robot_details(robot):
+    """Per-link status (tracked by its tf lookup or not) and the load warnings of one robot."""
+    links = []
+    for link in [name for name in robot.GetLinkNames().split() if name]:
+        transform = robot.GetLinkTransformNode(link)
+        status = 'no transform node'
+        if transform is not None:
+            status = transform.GetLookupStatus() if hasattr(transform, 'GetLookupStatus') else 'placed'
+        links.append({'link': link, 'status': status})
+    return links, robot.GetWarnings()
+
+
+class TopicRates:
+    """Messages per second of each topic node, from its counter between two refreshes."""
+
+    def __init__(self):
+        self.last = {}
+
+    def rate(self, node_id: str, count: int, now: float) -> float:
+        previous = self.last.get(node_id)
+        self.last[node_id] = (count, now)
+        if previous is None or now <= previous[1]:
+            return 0.0
+        return max(0.0, (count - previous[0]) / (now - previous[1]))
+
+
+def topic_rows(scene, rates: TopicRates, now: float | None = None):
+    now = time.monotonic() if now is None else now
+    rows = []
+    for direction, class_name in (('publisher', 'vtkROS2PublisherNode'), ('subscriber', 'vtkROS2SubscriberNode')):
+        for node in nodes_of_class(scene, class_name):
+            if direction == 'publisher':
+                count, matched = node.GetNumberOfMessagesSent(), node.GetNumberOfMatchedSubscriptions()
+            else:
+                count, matched = node.GetNumberOfMessages(), node.GetNumberOfMatchedPublications()
+            rows.append({'id': node.GetID(), 'direction': direction, 'topic': node.GetTopic(),
+                         'type': node.GetROSType(), 'vtk_type': node.GetSlicerType(),
+                         'qos': node.GetQoSDescription(), 'matched': matched, 'count': count,
+                         'rate': round(rates.rate(node.GetID(), count, now), 1),
+                         'yaml_publish': hasattr(node, 'PublishYAML')})
+    return rows
+
+
+def tf_rows(scene):
+    lookups = [{'id': n.GetID(), 'parent': n.GetParentID(), 'child': n.GetChildID(), 'status': n.GetLookupStatus(),
+                'error': n.GetLastLookupError()} for n in nodes_of_class(scene, 'vtkROS2Tf2LookupNode')]
+    broadcasters = [{'id': n.GetID(), 'parent': n.GetParentID(), 'child': n.GetChildID(),
+                     'static': bool(n.GetStatic()), 'count': n.GetNumberOfBroadcasts()}
+                    for n in nodes_of_class(scene, 'vtkROS2Tf2BroadcasterNode')]
+    return lookups, broadcasters
+
+
+def parameter_rows(scene):
+    rows = []
+    for node in nodes_of_class(scene, 'vtkROS2ParameterNode'):
+        for name in [n for n in node.GetParameterNames().split() if n]:
+            ready = node.IsParameterSet(name, True)
+            value = node.PrintParameter(name) if ready else '(not set yet)'
+            rows.append({'node': node.GetMonitoredNodeName(), 'name': name,
+                         'type': node.GetParameterType(name) if ready else '',
+                         'value': value if len(value) < 400 else value[:400] + f'... ({len(value)} characters)'})
+        if not node.GetParameterNames().split():
+            rows.append({'node': node.GetMonitoredNodeName(), 'name': '', 'type': '',
+                         'value': 'ready' if node.IsMonitoredNodeReady() else 'waiting for the node'})
+    return rows
+
+
+def graph(ros_node, text_filter: str):
+    """The ROS graph as our node sees it: node names and (topic, types) rows, filtered."""
+    wanted = (text_filter or '').strip().lower()
+    nodes = [line for line in ros_node.GetNodeNamesAndNamespaces().splitlines() if line.strip()]
+    topics = []
+    for line in ros_node.GetTopicNamesAndTypes().splitlines():
+        parts = line.split(None, 1)
+        if parts:
+            topics.append({'topic': parts[0], 'types': parts[1].strip('[] ') if len(parts) > 1 else ''})
+    if wanted:
+        nodes = [n for n in nodes if wanted in n.lower()]
+        topics = [t for t in topics if wanted in t['topic'].lower() or wanted in t['types'].lower()]
+    return nodes, topics

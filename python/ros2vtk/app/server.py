@@ -1,0 +1,418 @@
+"""The ros2vtk web app: SlicerROS2's module panel in the browser, over a vtkROS2Logic.
+
+    import ros2vtk, ros2vtk.app
+    logic = ros2vtk.vtkROS2Logic()
+    ros2vtk.app.serve(logic)            # blocks; http://127.0.0.1:8080/ ; the logic spins here
+
+A trame server (Vuetify 3): one collapsible section per task (Robots, Topics, tf, Parameters,
+Scene), the list of nodes on top and the details of the selected one below, a status line, and the
+3D view streamed by trame-rca. Every panel is read from the scene on each refresh and every button
+calls the same Python API a script uses (CreateAndAddRobotNode..., PublishYAML, WriteToXMLFile):
+the app holds no ROS state the scene does not hold. The logic is spun from the server's asyncio
+loop, so VTK and the scene are only touched on that one thread.
+"""
+from __future__ import annotations
+
+import asyncio
+import os
+import sys
+import time
+
+import vtk
+
+from . import scene_state
+from .view import RenderWindowArea, frame_camera, make_display, make_render_window
+
+REFRESH_SECONDS = 0.5   # panels and status line
+FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
+
+
+def _short_names(class_names: str, prefix: str):
+    """'vtkROS2PublisherStringNode ...' -> ['String', ...] (the names CreateAndAdd... takes)."""
+    return [name[len(prefix):-len('Node')] for name in class_names.split()
+            if name.startswith(prefix) and name.endswith('Node')]
+
+
+class VTKMessages:
+    """Collects VTK's error and warning text (vtkErrorMacro of the scene's nodes) so that a failed
+    action is shown in the app, not only in the server's terminal."""
+
+    def __init__(self):
+        self._install()
+
+    def _install(self):
+        self.window = vtk.vtkStringOutputWindow()
+        vtk.vtkOutputWindow.SetInstance(self.window)
+        self.consumed = 0
+
+    def take(self) -> str:
+        """The text written since the last call (echoed on stderr too)."""
+        text = self.window.GetOutput()
+        new, self.consumed = text[self.consumed:], len(text)
+        if self.consumed > 1 << 20:  # the window cannot be cleared in VTK 9.1: start a new one
+            self._install()
+        if new:
+            sys.stderr.write(new)
+        return new.strip()
+
+
+class App:
+    """One app over one logic: state, controllers, layout, the spin task."""
+
+    def __init__(self, logic, server=None, title='ros2vtk'):
+        from trame.app import get_server
+        self.logic = logic
+        self.scene = logic.GetScene()
+        self.node = logic.GetDefaultROS2Node()
+        self.server = server or get_server('ros2vtk', client_type='vue3')
+        self.state, self.ctrl = self.server.state, self.server.controller
+        self.messages = VTKMessages()
+        self.rates = scene_state.TopicRates()
+        self.window, self.renderer = make_render_window()
+        self.display = make_display(logic, self.renderer)
+        self.area = RenderWindowArea(self.window)
+        self.view_handler = None
+        self.framed = 0
+        self.next_frame = self.next_refresh = self.frame_again_at = 0.0
+        self.errors = []
+        self.spin_callbacks = []
+        self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
+        self._init_state(title)
+        self._bind_controllers()
+        self._build_layout(title)
+        self.ctrl.on_server_ready.add(self._on_ready)
+
+    # ------------------------------------------------------------------ state
+    def _init_state(self, title):
+        s = self.state
+        s.trame__title = title
+        s.update({
+            'robots': [], 'robot_selected': '', 'robot_links': [], 'robot_warnings': '',
+            'robot_name': 'robot', 'robot_source': 'parameter', 'robot_param_node': '/robot_state_publisher',
+            'robot_param_name': 'robot_description', 'robot_topic': '/robot_description', 'robot_file': '',
+            'robot_fixed_frame': '', 'robot_tf_prefix': '', 'robot_mesh_paths': '', 'robot_mesh_base': '',
+            'topics': [], 'topic_selected': '', 'topic_yaml': '', 'topic_direction': 'subscriber',
+            'topic_type': 'String', 'topic_name': '/chatter', 'publish_yaml': "{data: 'hello'}",
+            'graph_filter': '', 'graph_nodes': [], 'graph_topics': [],
+            'tf_lookups': [], 'tf_broadcasters': [], 'tf_parent': 'world', 'tf_child': 'base_link',
+            'tf_static': False,
+            'parameters': [], 'param_node': '/robot_state_publisher', 'param_names': 'robot_description',
+            'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
+            'scene_file': os.path.abspath('ros2vtk-scene.xml'),
+            'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4],
+            'types_publishers': _short_names(self.node.GetRegisteredROS2PublisherNodes(), 'vtkROS2Publisher'),
+            'types_subscribers': _short_names(self.node.GetRegisteredROS2SubscriberNodes(), 'vtkROS2Subscriber'),
+        })
+
+    def _apply(self, form):
+        """The form's fields as the browser had them at the click."""
+        if isinstance(form, dict):
+            self.state.update(form)
+
+    def _report(self, ok: bool, success: str, failure: str) -> bool:
+        """Shows the outcome of an action: its VTK error text when it failed."""
+        text = self.messages.take()
+        if ok:
+            self.state.message, self.state.message_kind = success, 'success'
+        else:
+            detail = text.splitlines()[-1] if text else ''
+            message = f'{failure}: {detail}' if detail else failure
+            self.state.message, self.state.message_kind = message, 'error'
+            self.errors = (self.errors + [message])[-20:]
+            self.state.errors = list(self.errors)
+        self.refresh()
+        return ok
+
+    # ------------------------------------------------------------------ controllers
+    def _bind_controllers(self):
+        c = self.ctrl
+        c.add_robot = self.add_robot
+        c.remove_robot = self.remove_robot
+        c.add_topic = self.add_topic
+        c.remove_topic = self.remove_topic
+        c.publish = self.publish
+        c.add_lookup = self.add_lookup
+        c.add_broadcaster = self.add_broadcaster
+        c.watch_parameters = self.watch_parameters
+        c.set_own_parameter = self.set_own_parameter
+        c.save_scene = self.save_scene
+        c.load_scene = self.load_scene
+        c.reset_camera = self.reset_camera
+        self.state.change('robot_selected', 'topic_selected')(lambda **_: self.refresh())
+
+    def add_robot(self, form=None):
+        self._apply(form)
+        s = self.state
+        name = s.robot_name.strip()
+        if not name:
+            return self._report(False, '', 'Add robot: a name is required')
+        if s.robot_source == 'parameter':
+            robot = self.node.CreateAndAddRobotNode(name, s.robot_param_node, s.robot_param_name,
+                                                    s.robot_fixed_frame, s.robot_tf_prefix)
+        elif s.robot_source == 'topic':
+            robot = self.node.CreateAndAddRobotNodeFromTopic(name, s.robot_topic, s.robot_fixed_frame,
+                                                             s.robot_tf_prefix)
+        else:
+            robot = self.node.CreateAndAddRobotNodeFromFile(name, s.robot_file, s.robot_fixed_frame,
+                                                            s.robot_tf_prefix)
+        if robot is not None:
+            if (s.robot_mesh_base or '').strip():
+                robot.SetMeshBaseFolder(s.robot_mesh_base.strip())  # relative mesh paths start here
+            for folder in (s.robot_mesh_paths or '').split(os.pathsep):
+                if folder.strip():
+                    robot.AddMeshSearchPath(folder.strip())
+            s.robot_selected = name
+            self.framed = 0  # frame the view again once it has loaded
+        return self._report(robot is not None, f'Robot {name} added ({s.robot_source})', f'Add robot {name} failed')
+
+    def remove_robot(self, name=None):
+        name = name or self.state.robot_selected
+        ok = bool(name) and self.node.RemoveAndDeleteRobotNode(name)
+        if ok:
+            self.state.robot_selected = ''
+        return self._report(ok, f'Robot {name} removed', f'Remove robot {name} failed')
+
+    def add_topic(self, form=None):
+        self._apply(form)
+        s = self.state
+        topic, kind = s.topic_name.strip(), s.topic_type.strip()
+        if s.topic_direction == 'publisher':
+            node = self._add_yaml_publisher(kind, topic)
+        else:
+            node = self.node.CreateAndAddSubscriberNode(kind, topic)
+        if node is not None:
+            s.topic_selected = node.GetID()
+        return self._report(node is not None, f'{s.topic_direction} {topic} ({kind}) added',
+                            f'Add {s.topic_direction} {topic} failed')
+
+    def _add_yaml_publisher(self, kind, topic):
+        """A publisher the form can publish YAML with: a mapped type's node takes VTK values, so a
+        ROS type given in full gets the generic (YAML) node; a short name gets the mapped node."""
+        if '/' not in kind:
+            return self.node.CreateAndAddPublisherNode(kind, topic)
+        if self.node.GetPublisherNodeByTopic(topic) is not None:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a publisher on {topic} exists; remove it first\n')
+            return None
+        import ros2vtk
+        node = ros2vtk.vtkROS2PublisherGenericNode()
+        if not node.SetROSType(kind):
+            return None
+        node.SetName(topic)
+        self.scene.AddNode(node)
+        if not node.AddToROS2Node(self.node.GetID(), topic):
+            self.scene.RemoveNode(node)
+            return None
+        return node
+
+    def remove_topic(self, node_id=None):
+        node = self.scene.GetNodeByID(node_id or self.state.topic_selected)
+        ok = False
+        if node is not None:
+            topic = node.GetTopic()
+            if node.IsA('vtkROS2PublisherNode'):
+                ok = self.node.RemoveAndDeletePublisherNode(topic)
+            else:
+                ok = self.node.RemoveAndDeleteSubscriberNode(topic)
+            self.state.topic_selected = ''
+        return self._report(ok, 'Topic node removed', 'Remove failed')
+
+    def publish(self, form=None):
+        self._apply(form)
+        node = self.scene.GetNodeByID(self.state.topic_selected)
+        if node is None or not hasattr(node, 'PublishYAML'):
+            return self._report(False, '', 'Publish: select a YAML publisher (add one with a full ROS type, '
+                                'e.g. std_msgs/msg/String)')
+        ok = node.PublishYAML(self.state.publish_yaml)
+        return self._report(ok, f'Published on {node.GetTopic()} ({node.GetNumberOfMessagesSent()} sent)',
+                            f'Publish on {node.GetTopic()} failed')
+
+    def add_lookup(self, form=None):
+        self._apply(form)
+        s = self.state
+        node = self.node.CreateAndAddTf2LookupNode(s.tf_parent, s.tf_child)
+        return self._report(node is not None, f'Lookup {s.tf_parent} -> {s.tf_child} added', 'Add lookup failed')
+
+    def add_broadcaster(self, form=None):
+        self._apply(form)
+        s = self.state
+        node = self.node.CreateAndAddTf2BroadcasterNode(s.tf_parent, s.tf_child)
+        if node is not None:
+            node.SetStatic(bool(s.tf_static))
+            node.Broadcast(vtk.vtkMatrix4x4())  # identity until a script or transform drives it
+        return self._report(node is not None, f'Broadcaster {s.tf_parent} -> {s.tf_child} added (identity)',
+                            'Add broadcaster failed')
+
+    def watch_parameters(self, form=None):
+        self._apply(form)
+        s = self.state
+        node = self.node.GetParameterNodeByNode(s.param_node) or self.node.CreateAndAddParameterNode(s.param_node)
+        ok = node is not None
+        for name in (s.param_names or '').replace(',', ' ').split() if ok else []:
+            ok = node.AddParameter(name) and ok
+        return self._report(ok, f'Watching {s.param_node}', f'Watch {s.param_node} failed')
+
+    def set_own_parameter(self, form=None):
+        self._apply(form)
+        s = self.state
+        name, kind, text = s.own_param_name.strip(), s.own_param_type, s.own_param_value
+        try:
+            if kind == 'bool':
+                ok = self.node.SetParameterAsBool(name, text.strip().lower() in ('1', 'true', 'yes', 'on'))
+            elif kind == 'integer':
+                ok = self.node.SetParameterAsInteger(name, int(text))
+            elif kind == 'double':
+                ok = self.node.SetParameterAsDouble(name, float(text))
+            else:
+                ok = self.node.SetParameterAsString(name, text)
+        except ValueError as error:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
+            ok = False
+        return self._report(ok, f'{self.node.GetROS2NodeName()}: {name} = {text}', f'Set parameter {name} failed')
+
+    def save_scene(self, form=None):
+        self._apply(form)
+        path = self.state.scene_file
+        ok = bool(path) and self.scene.WriteToXMLFile(path)
+        return self._report(ok, f'Scene saved to {path}', f'Save to {path} failed')
+
+    def load_scene(self, form=None):
+        self._apply(form)
+        path = self.state.scene_file
+        ok = bool(path) and os.path.isfile(path)
+        if not ok:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'no such file: {path}\n')
+        else:
+            ok = self.scene.ReadFromXMLFile(path)
+            self.node = self.logic.GetDefaultROS2Node()
+            self.framed = 0
+        return self._report(ok, f'Scene loaded from {path}', f'Load {path} failed')
+
+    def reset_camera(self):
+        frame_camera(self.renderer)
+        self.render()
+
+    # ------------------------------------------------------------------ refresh and spin
+    def refresh(self):
+        s = self.state
+        now = time.monotonic()
+        s.robots = scene_state.robot_rows(self.scene)
+        robot = self.node.GetRobotNodeByName(s.robot_selected) if s.robot_selected else None
+        s.robot_links, s.robot_warnings = scene_state.robot_details(robot) if robot is not None else ([], '')
+        s.topics = scene_state.topic_rows(self.scene, self.rates, now)
+        selected = self.scene.GetNodeByID(s.topic_selected) if s.topic_selected else None
+        s.topic_yaml = selected.GetLastMessageYAML() if selected is not None and hasattr(
+            selected, 'GetLastMessageYAML') else ''
+        s.graph_nodes, s.graph_topics = scene_state.graph(self.node, s.graph_filter)
+        s.tf_lookups, s.tf_broadcasters = scene_state.tf_rows(self.scene)
+        s.parameters = scene_state.parameter_rows(self.scene)
+        then, spins, received = self.last_status
+        total = sum(t['count'] for t in s.topics if t['direction'] == 'subscriber')
+        elapsed = max(now - then, 1e-6)
+        s.status = (f'spin {(self.logic.GetNumberOfSpins() - spins) / elapsed:.0f}/s, '
+                    f'{self.logic.GetMeanSpinDuration():.3f} ms mean, '
+                    f'{max(total - received, 0) / elapsed:.0f} msgs/s, '
+                    f'{len(s.topics)} topic nodes, {len(s.robots)} robots, {len(self.errors)} errors')
+        self.last_status = (now, self.logic.GetNumberOfSpins(), total)
+
+    def render(self):
+        if self.view_handler is not None:
+            self.view_handler.schedule_render()
+
+    def _frame_once_loaded(self):
+        """Frames the camera when the number of models changes, and once more a second later (links
+        reach their tf poses over the first spins after a load)."""
+        models = self.scene.GetNumberOfNodesByClass('vtkROS2ModelNode')
+        now = time.monotonic()
+        if models and models != self.framed:
+            self.framed = models
+            self.frame_again_at = now + 1.0
+            frame_camera(self.renderer)
+        elif self.frame_again_at and now >= self.frame_again_at:
+            self.frame_again_at = 0.0
+            frame_camera(self.renderer)
+
+    async def _spin_loop(self):
+        period = 1.0 / max(self.logic.GetSpinRate(), 1.0)
+        while True:
+            try:
+                self._spin_once_and_show()
+            except Exception as error:  # noqa: BLE001 (the app keeps running; the error is shown)
+                self.errors = (self.errors + [f'spin: {error!r}'])[-20:]
+                with self.state:
+                    self.state.errors = list(self.errors)
+            await asyncio.sleep(period)
+
+    def add_spin_callback(self, callback) -> None:
+        """`callback()` runs after each spin of the app's loop (a script's per-spin work)."""
+        self.spin_callbacks.append(callback)
+
+    def _spin_once_and_show(self):
+        """One spin, the display layer updated, a frame every FRAME_SECONDS, the panels every
+        REFRESH_SECONDS."""
+        self.logic.Spin()
+        for callback in self.spin_callbacks:
+            callback()
+        self.display.Update()
+        now = time.monotonic()
+        if now >= self.next_frame:
+            self._frame_once_loaded()
+            self.render()
+            self.next_frame = now + FRAME_SECONDS
+        if now >= self.next_refresh:
+            stray = self.messages.take()  # errors from spinning (e.g. a failed reload)
+            with self.state:
+                if stray:
+                    self.errors = (self.errors + stray.splitlines()[-3:])[-20:]
+                    self.state.errors = list(self.errors)
+                self.refresh()
+            self.next_refresh = now + REFRESH_SECONDS
+
+    def _on_wake_up(self):
+        """Data queued on a ROS node: spin now rather than at the next tick (the loop's frames and
+        panel refreshes would otherwise delay messages by up to a tick)."""
+        try:
+            self.logic.Spin()
+        except Exception as error:  # noqa: BLE001
+            self.errors = (self.errors + [f'spin: {error!r}'])[-20:]
+
+    def _on_ready(self, **_):
+        self.view_handler = self.view_widget.create_view_handler(self.area, encoder='jpeg', target_fps=20)
+        loop = asyncio.get_event_loop()
+        wake_up = self.logic.GetWakeUpFileDescriptor()
+        if wake_up >= 0:
+            loop.add_reader(wake_up, self._on_wake_up)
+        loop.create_task(self._spin_loop())
+
+    # ------------------------------------------------------------------ layout
+    def _build_layout(self, title):
+        from .layout import build
+        self.view_widget = build(self, title)
+
+
+def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
+          open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None) -> None:
+    """Serves the app on `logic` until interrupted, or for `duration` seconds (blocking). Binds
+    the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
+    network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks)."""
+    from .view import ensure_x_display
+    if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
+        raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
+    if host not in ('127.0.0.1', 'localhost', '::1'):
+        print(f'[app] WARNING: serving on {host}: anyone who reaches this port controls the ROS node', flush=True)
+    xvfb = ensure_x_display()
+    app = App(logic, title=title)
+    if on_app is not None:
+        on_app(app)
+    if duration:
+        app.ctrl.on_server_ready.add(lambda **_: asyncio.get_event_loop().call_later(
+            duration, lambda: asyncio.ensure_future(app.server.stop())))
+    app.ctrl.on_server_ready.add(lambda **_: print(f'[app] ros2vtk app at http://{host}:{app.server.port}/',
+                                                   flush=True))
+    saved_argv = sys.argv
+    sys.argv = saved_argv[:1]  # trame parses sys.argv itself; our options are not its options
+    try:
+        app.server.start(host=host, port=port, timeout=0, open_browser=open_browser, show_connection_info=False)
+    finally:
+        sys.argv = saved_argv
+        if xvfb is not None:
+            xvfb.terminate()

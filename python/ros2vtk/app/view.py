@@ -1,0 +1,184 @@
+"""The app's 3D view: a VTK render window streamed to the browser through trame-rca.
+
+Debian's VTK 9.1 has no web modules, so trame-vtk's views and trame-rca's own VTK helper (both
+import vtkWebCore) cannot be used; `RenderWindowArea` implements trame-rca's area protocol instead:
+it reports the image size, resizes the window, renders and reads its pixels, and maps the browser's
+mouse events onto the window's interactor. The renderer is filled by the display layer
+(`ros2vtk.vtkROS2DisplayManager` when the build has it, otherwise `ModelActors`, a minimal
+stand-in that draws the scene's model nodes under their transforms).
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import time
+
+import numpy as np
+import vtk
+
+# Slicer's 3D view background (bottom, top), so the view looks as Slicer users know it.
+BACKGROUND_BOTTOM = (0.7568, 0.7647, 0.9098)
+BACKGROUND_TOP = (0.4549, 0.4706, 0.7451)
+
+
+def ensure_x_display() -> subprocess.Popen | None:
+    """Debian's VTK renders through GLX only: with no DISPLAY, starts an Xvfb server and points
+    DISPLAY at it. Returns the Xvfb process (the caller ends it) or None when a display exists."""
+    if os.environ.get('DISPLAY'):
+        return None
+    if not shutil.which('Xvfb'):
+        raise RuntimeError('no DISPLAY and no Xvfb: install the Debian package xvfb (scripts/setup.sh does)')
+    read_fd, write_fd = os.pipe()
+    # -displayfd: Xvfb picks a free display number and writes it to the pipe once it listens.
+    process = subprocess.Popen(['Xvfb', '-displayfd', str(write_fd), '-screen', '0', '1920x1080x24', '-nolisten', 'tcp'],
+                               pass_fds=(write_fd,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_fd)
+    number = b''
+    deadline = time.monotonic() + 15
+    while not number.endswith(b'\n') and time.monotonic() < deadline:
+        chunk = os.read(read_fd, 16)
+        if not chunk:
+            break
+        number += chunk
+    os.close(read_fd)
+    if not number.strip():
+        process.kill()
+        raise RuntimeError('Xvfb did not start (no display number reported)')
+    os.environ['DISPLAY'] = ':' + number.decode().strip()
+    return process
+
+
+def make_display(logic, renderer):
+    """The object that keeps `renderer` in step with the logic's scene: the C++ display manager
+    when built, otherwise the Python stand-in. Call its Update() after each spin."""
+    import ros2vtk
+    manager_class = getattr(ros2vtk, 'vtkROS2DisplayManager', None)
+    if manager_class is not None:
+        manager = manager_class()
+        manager.SetScene(logic.GetScene())
+        manager.SetRenderer(renderer)
+        manager.Update()
+        return manager
+    return ModelActors(logic.GetScene(), renderer)
+
+
+class ModelActors:
+    """Stand-in display layer until vtkROS2DisplayManager lands: one actor per model node of the
+    scene (colour, opacity, per-vertex colours), placed by the node's model-to-world matrix."""
+
+    def __init__(self, scene, renderer):
+        self.scene = scene
+        self.renderer = renderer
+        self.actors = {}
+
+    def Update(self) -> None:  # noqa: N802 (the display manager's VTK-style name)
+        models = vtk.vtkCollection()
+        self.scene.GetNodesByClass('vtkROS2ModelNode', models)
+        present = set()
+        for i in range(models.GetNumberOfItems()):
+            model = models.GetItemAsObject(i)
+            present.add(model.GetID())
+            actor = self.actors.get(model.GetID())
+            if actor is None or actor.GetMapper().GetInput() is not model.GetPolyData():
+                if actor is not None:
+                    self.renderer.RemoveActor(actor)
+                mapper = vtk.vtkPolyDataMapper()
+                mapper.SetInputData(model.GetPolyData())
+                mapper.SetScalarVisibility(model.GetScalarVisibility())
+                mapper.SetColorModeToDirectScalars()
+                actor = vtk.vtkActor()
+                actor.SetMapper(mapper)
+                actor.SetUserMatrix(vtk.vtkMatrix4x4())
+                self.renderer.AddActor(actor)
+                self.actors[model.GetID()] = actor
+            actor.GetProperty().SetColor(*model.GetColor())
+            actor.GetProperty().SetOpacity(model.GetOpacity())
+            model.GetMatrixModelToWorld(actor.GetUserMatrix())
+            actor.GetUserMatrix().Modified()
+            actor.Modified()
+        for gone in set(self.actors) - present:
+            self.renderer.RemoveActor(self.actors.pop(gone))
+
+
+class RenderWindowArea:
+    """trame-rca's remote controlled area over a plain vtkRenderWindow (no vtkWebCore)."""
+
+    def __init__(self, render_window: vtk.vtkRenderWindow):
+        self.window = render_window
+        self.window.SetOffScreenRendering(1)
+        self.interactor = vtk.vtkRenderWindowInteractor()
+        self.interactor.SetRenderWindow(render_window)
+        self.interactor.SetInteractorStyle(vtk.vtkInteractorStyleTrackballCamera())
+        self.interactor.EnableRenderOff()  # frames are rendered when trame-rca asks for one
+        self.grab = vtk.vtkWindowToImageFilter()
+        self.grab.SetInput(render_window)
+        self.grab.ReadFrontBufferOff()
+        self.grab.ShouldRerenderOff()
+        self.grab.SetInputBufferTypeToRGB()
+        self.frames = 0
+
+    @property
+    def img_cols_rows(self):
+        """(rows x cols x 3 uint8 array, cols, rows) of a fresh render, top row first."""
+        for renderer in _renderers(self.window):
+            renderer.ResetCameraClippingRange()  # moving robots: planes computed once would clip
+        self.window.Render()
+        self.grab.Modified()
+        self.grab.Update()
+        image = self.grab.GetOutput()
+        cols, rows, _ = image.GetDimensions()
+        scalars = image.GetPointData().GetScalars()
+        pixels = np.frombuffer(memoryview(scalars), dtype=np.uint8).reshape((rows, cols, -1))
+        self.frames += 1
+        return np.ascontiguousarray(pixels[::-1]), cols, rows
+
+    def process_resize_event(self, width: int, height: int) -> None:
+        self.window.SetSize(int(width), int(height))
+        self.interactor.UpdateSize(int(width), int(height))
+
+    def process_interaction_event(self, event: dict) -> None:
+        kind = event.get('type', '')
+        x, y = int(event.get('x', 0)), int(event.get('y', 0))
+        self.interactor.SetEventInformation(x, y, int(bool(event.get('controlKey'))),
+                                            int(bool(event.get('shiftKey'))))
+        self.interactor.SetAltKey(int(bool(event.get('altKey'))))
+        if kind == 'MouseWheel':
+            spin = event.get('spinY', event.get('deltaY', 0)) or 0
+            self.interactor.InvokeEvent('MouseWheelForwardEvent' if spin < 0 else 'MouseWheelBackwardEvent')
+        elif kind in ('MouseMove', 'LeftButtonPress', 'LeftButtonRelease', 'RightButtonPress',
+                      'RightButtonRelease', 'MiddleButtonPress', 'MiddleButtonRelease'):
+            self.interactor.InvokeEvent(kind + 'Event')
+
+
+def _renderers(window):
+    renderers = window.GetRenderers()
+    renderers.InitTraversal()
+    renderer = renderers.GetNextItem()
+    while renderer is not None:
+        yield renderer
+        renderer = renderers.GetNextItem()
+
+
+def make_render_window(size=(1000, 620)):
+    """A render window with one renderer on Slicer's gradient background."""
+    renderer = vtk.vtkRenderer()
+    renderer.SetBackground(*BACKGROUND_BOTTOM)
+    renderer.SetBackground2(*BACKGROUND_TOP)
+    renderer.GradientBackgroundOn()
+    window = vtk.vtkRenderWindow()
+    window.SetSize(*size)
+    window.AddRenderer(renderer)
+    return window, renderer
+
+
+def frame_camera(renderer) -> None:
+    """Everything in view, z up, seen from the front-right as Slicer's default 3D view."""
+    camera = renderer.GetActiveCamera()
+    camera.SetViewUp(0, 0, 1)
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetPosition(1, -1.1, 0.55)
+    camera.SetViewAngle(30.0)
+    renderer.ResetCamera()
+    camera.Zoom(0.8)  # a margin for the robot's motion
+    renderer.ResetCameraClippingRange()

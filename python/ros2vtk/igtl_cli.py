@@ -1,0 +1,108 @@
+"""`python -m ros2vtk igtl`: serve the ROS 2 scene to an unmodified 3D Slicer over OpenIGTLink.
+
+    python -m ros2vtk igtl --lookup world:tool --robot          # Slicer connects to 127.0.0.1:18944
+    python -m ros2vtk igtl --image /camera/image --map Target=tf:world:target
+
+Scene → Slicer: tf lookups and robot links as TRANSFORM (mm), robot visuals as POLYDATA, images
+as IMAGE, point clouds as POLYDATA points, strings as STRING. Slicer → ROS: --map DEVICE=tf:PARENT:CHILD
+or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped, PointCloud, Image, String).
+Coordinates: --frame ras (default: ROS x, y, z become Slicer R, A, S) or lps (x, y negated).
+Prints one JSON line per state change and a summary at the end.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import time
+
+import ros2vtk
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument('--port', type=int, default=18944)
+    parser.add_argument('--host', default='127.0.0.1',
+                        help='server: address to bind (other than 127.0.0.1 only on purpose); client: Slicer host')
+    parser.add_argument('--client', action='store_true', help='connect to a Slicer server instead of serving')
+    parser.add_argument('--lookup', action='append', default=[], metavar='PARENT:CHILD',
+                        help='mirror the tf transform PARENT <- CHILD as TRANSFORM named CHILD')
+    parser.add_argument('--robot', nargs='?', const='/robot_description', default='', metavar='TOPIC',
+                        help='mirror the robot described on TOPIC (default /robot_description): links, visuals')
+    parser.add_argument('--image', action='append', default=[], metavar='TOPIC')
+    parser.add_argument('--cloud', action='append', default=[], metavar='TOPIC', help='sensor_msgs/PointCloud2')
+    parser.add_argument('--text', action='append', default=[], metavar='TOPIC', help='std_msgs/String')
+    parser.add_argument('--map', action='append', default=[], metavar='DEVICE=tf:PARENT:CHILD|DEVICE=topic:TOPIC:TYPE')
+    parser.add_argument('--frame', choices=['ras', 'lps'], default='ras')
+    parser.add_argument('--link-local', action='store_true',
+                        help='send meshes once in link coordinates with metadata ros.parent (see docs/slicer.md)')
+    parser.add_argument('--seconds', type=float, default=0.0, help='stop after this long (0: run until Ctrl-C)')
+
+
+def run(args: argparse.Namespace, logic, node) -> int:
+    scene = logic.GetScene()
+    for pair in args.lookup:
+        parent, _, child = pair.partition(':')
+        lookup = node.CreateAndAddTf2LookupNode(parent, child)
+        lookup.SetName(child)
+    if args.robot:
+        node.CreateAndAddRobotNodeFromTopic('robot', args.robot)
+    for topics, kind in ((args.image, 'Image'), (args.cloud, 'PointCloud2'), (args.text, 'String')):
+        for topic in topics:
+            subscriber = node.CreateAndAddSubscriberNode(kind, topic)
+            if subscriber is None:
+                return 1
+            subscriber.SetName(topic.strip('/').replace('/', '_'))
+    connector = ros2vtk.vtkROS2IGTLConnectorNode()
+    scene.AddNode(connector)
+    connector.SetPort(args.port)
+    connector.SetHostname(args.host)
+    connector.SetClient(args.client)
+    connector.SetModelsInWorld(not args.link_local)
+    if args.frame == 'lps':
+        import vtk
+        lps = vtk.vtkMatrix4x4()
+        lps.SetElement(0, 0, -1.0)
+        lps.SetElement(1, 1, -1.0)
+        connector.SetWorldToSlicer(lps)
+    for entry in args.map:
+        device, _, target = entry.partition('=')
+        kind, _, rest = target.partition(':')
+        first, _, second = rest.partition(':')
+        ok = connector.MapDeviceToTf(device, first, second) if kind == 'tf' else \
+            connector.MapDeviceToTopic(device, first, second) if kind == 'topic' else False
+        if not ok:
+            print(json.dumps({'error': f'--map {entry}: expected DEVICE=tf:PARENT:CHILD or DEVICE=topic:TOPIC:TYPE'}),
+                  flush=True)
+            return 2
+    if not connector.Start(node):
+        print(json.dumps({'error': connector.GetLastError()}), flush=True)
+        return 1
+    print(json.dumps({'ready': True, 'state': connector.GetState(), 'port': args.port}), flush=True)
+    end = time.monotonic() + args.seconds if args.seconds > 0 else float('inf')
+    shown = (None, None)
+    log_lines = 0
+    try:
+        while time.monotonic() < end:
+            logic.SpinOnWakeUp(0.01)
+            logic.Spin()  # the connector's sockets are not in the wake-up set: spin at least at 100 Hz
+            state = (connector.GetState(), connector.GetNumberOfClients())
+            log = connector.GetEventLog().splitlines()  # the newest 200 lines
+            for line in log[log_lines:] if len(log) < 200 else []:
+                print(json.dumps({'event': line}), flush=True)
+            log_lines = len(log)
+            if state != shown:
+                shown = state
+                print(json.dumps({'state': state[0], 'clients': state[1]}), flush=True)
+    except KeyboardInterrupt:
+        pass
+    received = {}
+    for i in range(scene.GetNumberOfNodes()):
+        n = scene.GetNthNode(i)
+        if connector.GetReceivedNode(n.GetName()) is n:
+            received[n.GetName()] = n.GetClassName()
+    print(json.dumps({'state': connector.GetState(), 'sent': connector.GetNumberOfMessagesSent(),
+                      'received': connector.GetNumberOfMessagesReceived(),
+                      'bad': connector.GetNumberOfBadMessages(),
+                      'dropped': connector.GetNumberOfDroppedMessages(),
+                      'last_error': connector.GetLastError(), 'received_nodes': received}), flush=True)
+    connector.Stop()
+    return 0

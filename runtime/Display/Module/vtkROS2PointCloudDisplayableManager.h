@@ -1,0 +1,33 @@
+// ros2vtk — draws point-cloud subscribers (any subscriber node whose messages convert to
+// vtkPoints, e.g. sensor_msgs/PointCloud, or to vtkPolyData, e.g. PointCloud2 with its fields
+// as point data) as points at their pose ("transform" reference), coloured by their active
+// scalars when they have some, else in the node's colour attribute "ros2vtk.display.color"
+// ("r g b", 0..1; default light green).
+#ifndef vtkROS2PointCloudDisplayableManager_h
+#define vtkROS2PointCloudDisplayableManager_h
+
+#include "ros2vtkDisplayModule.h" // for export macro
+#include "vtkROS2DisplayableManager.h"
+
+class ROS2VTKDISPLAY_EXPORT vtkROS2PointCloudDisplayableManager : public vtkROS2DisplayableManager
+{
+public:
+  static vtkROS2PointCloudDisplayableManager* New();
+  vtkTypeMacro(vtkROS2PointCloudDisplayableManager, vtkROS2DisplayableManager);
+
+  bool CanDisplay(vtkROS2SceneNode* node) override;
+
+protected:
+  vtkROS2PointCloudDisplayableManager() = default;
+  ~vtkROS2PointCloudDisplayableManager() override = default;
+
+  vtkProp* CreateProp(vtkROS2SceneNode* node) override;
+  void UpdateProp(vtkROS2SceneNode* node, vtkProp* prop) override;
+  void UpdatePose(vtkROS2SceneNode* node, vtkProp* prop) override;
+
+private:
+  vtkROS2PointCloudDisplayableManager(const vtkROS2PointCloudDisplayableManager&) = delete;
+  void operator=(const vtkROS2PointCloudDisplayableManager&) = delete;
+};
+
+#endif

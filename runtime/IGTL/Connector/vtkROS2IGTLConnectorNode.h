@@ -1,0 +1,129 @@
+// ros2vtk — serves the scene to an unmodified 3D Slicer (OpenIGTLinkIF) over OpenIGTLink, and
+// brings Slicer's transforms, points, images and text back into the scene and onto ROS.
+//
+//   connector = vtkROS2IGTLConnectorNode::New(); scene->AddNode(connector);
+//   connector->SetPort(18944);            // server on 127.0.0.1 by default (Slicer's default)
+//   connector->Start(rosNode);            // from then on every spin of rosNode serves it
+//   connector->MapDeviceToTf("Target", "world", "target");
+//
+// Out (scene → Slicer): transform nodes (tf lookups, robot links) as TRANSFORM every spin, model
+// nodes (robot visuals) as POLYDATA when they change (baked in world coordinates by default, or
+// link-local with metadata "ros.parent" naming the link for a Slicer-side snippet to parent),
+// subscribers' images as IMAGE with their pose, point clouds as POLYDATA points, strings as
+// STRING. Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
+// the matrix WorldToSlicer (identity by default: ROS x, y, z become Slicer R, A, S) is applied to
+// everything sent and inverted for everything received; it is never implicit.
+// In (Slicer → scene): TRANSFORM/POSITION become transform nodes, POINT a model node of points,
+// IMAGE and STRING are kept by device; mapped devices are also published (tf or a topic).
+#ifndef vtkROS2IGTLConnectorNode_h
+#define vtkROS2IGTLConnectorNode_h
+
+#include "ros2vtkIGTLConnectorModule.h" // for export macro
+#include "vtkROS2SceneNode.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkROS2NodeNode;
+
+class ROS2VTKIGTLCONNECTOR_EXPORT vtkROS2IGTLConnectorNode : public vtkROS2SceneNode
+{
+public:
+  static vtkROS2IGTLConnectorNode* New();
+  vtkTypeMacro(vtkROS2IGTLConnectorNode, vtkROS2SceneNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Fired when a message from Slicer changed the scene (call data: const char* device name).
+  enum
+  {
+    ReceivedEvent = 16000
+  };
+
+  /// Server (default: Slicer connects to us) or client (we connect to a Slicer server).
+  void SetTypeToServer() { this->SetClient(false); }
+  void SetTypeToClient() { this->SetClient(true); }
+  vtkSetMacro(Client, bool);
+  vtkGetMacro(Client, bool);
+  /// Server: address to bind (127.0.0.1 by default; anything else is a warning, since it exposes
+  /// the scene to the network). Client: address of the Slicer to reach.
+  void SetHostname(const char* host);
+  const char* GetHostname() const;
+  vtkSetClampMacro(Port, int, 1, 65535);
+  vtkGetMacro(Port, int);
+
+  /// Starts serving; every Spin of `rosNode` then runs Update. False (GetLastError) on failure.
+  bool Start(vtkROS2NodeNode* rosNode);
+  void Stop();
+  /// One round: read peers, handle what came in, send the scene. Called from the ROS node's
+  /// spin after Start; call it yourself to drive the connector without one.
+  int Update();
+
+  /// "off", "listening", "connecting", "connected" or "error".
+  const char* GetState() const;
+  const char* GetLastError() const;
+  int GetNumberOfClients() const;
+  vtkTypeInt64 GetNumberOfMessagesSent() const;
+  vtkTypeInt64 GetNumberOfMessagesReceived() const { return this->MessagesReceived; }
+  vtkTypeInt64 GetNumberOfBadMessages() const;
+  vtkTypeInt64 GetNumberOfDroppedMessages() const;
+  /// Recent events (connections, disconnections, bad input and why), newest last.
+  std::string GetEventLog() const;
+
+  /// Which nodes are sent: all transform, model and subscriber nodes (default), or only those
+  /// added by ID.
+  vtkSetMacro(MirrorAllNodes, bool);
+  vtkGetMacro(MirrorAllNodes, bool);
+  vtkBooleanMacro(MirrorAllNodes, bool);
+  void AddMirroredNodeID(const char* nodeID);
+  void RemoveMirroredNodeID(const char* nodeID);
+  bool IsMirrored(vtkROS2SceneNode* node) const;
+
+  /// Scene world (ROS, REP 103, mm) → Slicer RAS (mm). Identity by default.
+  void SetWorldToSlicer(vtkMatrix4x4* matrix);
+  vtkMatrix4x4* GetWorldToSlicer();
+
+  /// On (default): models sent in world coordinates, again whenever they or their link move.
+  /// Off: sent once in link-local coordinates with metadata ros.parent = the link's device name.
+  vtkSetMacro(ModelsInWorld, bool);
+  vtkGetMacro(ModelsInWorld, bool);
+  vtkBooleanMacro(ModelsInWorld, bool);
+
+  /// Slicer → ROS. Device names are Slicer node names. `type` for a topic: a publisher short
+  /// name whose VTK value matches the message (PoseStamped / TransformStamped for TRANSFORM,
+  /// PointCloud for POINT, Image for IMAGE, String for STRING).
+  bool MapDeviceToTf(const char* device, const char* parentFrame, const char* childFrame);
+  bool MapDeviceToTopic(const char* device, const char* topic, const char* type);
+
+  /// The device name a node is sent under: its name when it fits OpenIGTLink's 20 bytes, else
+  /// without the robot prefix ("arm:needle_guide_link" -> "needle_guide_link"), else 16 bytes +
+  /// '~' + 3 hex digits of a hash of the whole name.
+  static std::string MakeDeviceName(const std::string& nodeName);
+
+  /// What came in by device (nullptr / "" before the first).
+  vtkImageData* GetReceivedImage(const char* device);
+  std::string GetReceivedString(const char* device);
+  /// TRANSFORM, POSITION or POINT device that came in, as the scene node it became.
+  vtkROS2SceneNode* GetReceivedNode(const char* device);
+
+protected:
+  vtkROS2IGTLConnectorNode();
+  ~vtkROS2IGTLConnectorNode() override;
+  void OnRemovedFromScene() override;
+
+  bool Client = false;
+  int Port = 18944;
+  bool MirrorAllNodes = true;
+  bool ModelsInWorld = true;
+  vtkTypeInt64 MessagesReceived = 0;
+
+private:
+  vtkROS2IGTLConnectorNode(const vtkROS2IGTLConnectorNode&) = delete;
+  void operator=(const vtkROS2IGTLConnectorNode&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

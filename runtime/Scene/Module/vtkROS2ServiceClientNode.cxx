@@ -1,0 +1,549 @@
+// ros2vtk — vtkROS2ServiceClientNode: requests of any service type over the wire client
+// (ros2vtk::wire::ServiceClient), answered or failed on the ROS node's spin.
+#include "vtkROS2ServiceClientNode.h"
+
+#include "MessageFields.hpp"
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/MessageYaml.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/QoS.hpp"
+#include "ros2vtk/wire/Service.hpp"
+
+#include "vtkObjectFactory.h"
+#include "vtkXMLDataElement.h"
+
+#include <poll.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkROS2ServiceClientNode);
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using ros2vtk::wire::MessagePtr;
+using ros2vtk::wire::MessageTypeSupport;
+
+MessagePtr NewMessage(const MessageTypeSupport& type)
+{
+  return MessagePtr(&type, type.create());
+}
+
+MessagePtr CopyMessage(const MessageTypeSupport& type, const void* from)
+{
+  MessagePtr copy = NewMessage(type);
+  type.copy(from, copy.get());
+  return copy;
+}
+
+std::string FormatSeconds(double seconds)
+{
+  std::ostringstream text;
+  text << seconds << " s";
+  return text.str();
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkROS2ServiceClientNode::vtkInternals
+{
+public:
+  /// One request between SendAsyncRequest and its response or failure.
+  struct Pending
+  {
+    vtkTypeInt64 Id = 0;
+    int64_t Sequence = -1; // DDS sequence number once written; -1 while waiting for a server
+    MessagePtr Request;
+    Clock::time_point Deadline;
+    double TimeoutSeconds = 0;
+  };
+
+  const ros2vtk::wire::ServiceTypeSupport* Type = nullptr;
+  std::string TypeName;    // as given (saved with the scene)
+  std::string ServiceName; // as given
+  std::unique_ptr<ros2vtk::wire::ServiceClient> Client;
+  MessagePtr Request;
+  MessagePtr LastResponse;
+  vtkTypeInt64 LastResponseRequestId = 0;
+  std::vector<Pending> Pendings;
+  vtkTypeInt64 NextId = 1;
+  double Timeout = 5.0;
+  int Status = vtkROS2ServiceClientNode::Idle;
+  std::string LastError;
+  vtkTypeInt64 Responses = 0;
+  vtkTypeInt64 Failures = 0;
+  bool InCall = false;
+};
+
+//------------------------------------------------------------------------------
+vtkROS2ServiceClientNode::vtkROS2ServiceClientNode()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkROS2ServiceClientNode::~vtkROS2ServiceClientNode() = default;
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!rosNode || !rosNode->GetParticipant())
+  {
+    vtkErrorMacro("service client " << service << ": the ROS node is not created");
+    return false;
+  }
+  const ros2vtk::wire::ServiceTypeSupport* support = ros2vtk::wire::find_service_type(type);
+  if (!support)
+  {
+    std::ostringstream known;
+    for (const auto& name : ros2vtk::wire::registered_service_types())
+    {
+      known << ' ' << name;
+    }
+    vtkErrorMacro("service client " << service << ": unknown service type '" << type << "' (known:" << known.str()
+                                    << ")");
+    return false;
+  }
+  std::string error;
+  auto client = rosNode->GetParticipant()->create_service_client(
+    *support, service, ros2vtk::wire::QoS::services(), &error);
+  if (!client)
+  {
+    vtkErrorMacro("service client " << service << ": " << error);
+    return false;
+  }
+  if (internals.Type != support || !internals.Request)
+  {
+    internals.Request = NewMessage(*support->request());
+    internals.LastResponse = NewMessage(*support->response());
+  }
+  internals.Type = support;
+  internals.TypeName = support->ros_type;
+  internals.ServiceName = service;
+  internals.Client = std::move(client);
+  this->SetNodeReferenceID("ros2Node", rosNode->GetID());
+  rosNode->RemoveSpinCallbacks(this);
+  rosNode->AddSpinCallback(this, [this] { return this->ProcessResponses(); });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::Detach()
+{
+  if (vtkROS2NodeNode* rosNode = this->GetROS2Node())
+  {
+    rosNode->RemoveSpinCallbacks(this);
+  }
+  this->Internals->Pendings.clear();
+  this->Internals->Client.reset();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::OnRemovedFromScene()
+{
+  this->Detach();
+  this->Superclass::OnRemovedFromScene();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::OnSceneRestored()
+{
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (rosNode && rosNode->GetParticipant() && !this->Internals->Client && !this->Internals->TypeName.empty())
+  {
+    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ServiceName);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkROS2NodeNode* vtkROS2ServiceClientNode::GetROS2Node() const
+{
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ServiceClientNode::GetServiceName() const
+{
+  return this->Internals->Client ? this->Internals->Client->service_name().c_str()
+                                 : this->Internals->ServiceName.c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ServiceClientNode::GetServiceType() const
+{
+  return this->Internals->TypeName.c_str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::IsServiceReady() const
+{
+  return this->Internals->Client && this->Internals->Client->is_server_available();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::SetRequestYAML(const char* yaml)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Type)
+  {
+    vtkErrorMacro("SetRequestYAML: the client has no service type yet");
+    return false;
+  }
+  std::string error;
+  if (!ros2vtk::wire::from_yaml(*internals.Type->request(), yaml ? yaml : "", internals.Request.get(), &error))
+  {
+    vtkErrorMacro("SetRequestYAML: invalid " << internals.Type->request()->ros_type << ": " << error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ServiceClientNode::GetRequestYAML() const
+{
+  const vtkInternals& internals = *this->Internals;
+  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->request(), internals.Request.get()) : "";
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::SetRequestField(const char* path, const char* value)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Type || !path || !value)
+  {
+    vtkErrorMacro("SetRequestField: needs a service type, a field path and a value");
+    return false;
+  }
+  std::string error;
+  if (!ros2vtk::scene::set_field_from_text(*internals.Type->request(), internals.Request.get(), path, value, &error))
+  {
+    vtkErrorMacro("SetRequestField: " << error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::ResetRequest()
+{
+  if (this->Internals->Type)
+  {
+    this->Internals->Request = NewMessage(*this->Internals->Type->request());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::SetTimeout(double seconds)
+{
+  if (!(seconds > 0) || !std::isfinite(seconds))
+  {
+    vtkErrorMacro("SetTimeout: " << seconds << " is not a positive number of seconds");
+    return;
+  }
+  if (seconds != this->Internals->Timeout)
+  {
+    this->Internals->Timeout = seconds;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkROS2ServiceClientNode::GetTimeout() const
+{
+  return this->Internals->Timeout;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Client)
+  {
+    vtkErrorMacro("SendAsyncRequest: the client is not attached to a created ROS node");
+    return -1;
+  }
+  vtkInternals::Pending pending;
+  pending.Id = internals.NextId++;
+  pending.Request = CopyMessage(*internals.Type->request(), internals.Request.get());
+  pending.TimeoutSeconds = internals.Timeout;
+  pending.Deadline =
+    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
+  // Written at once when a server is there; otherwise on the spin that sees one.
+  if (internals.Client->is_server_available())
+  {
+    pending.Sequence = internals.Client->send_request(pending.Request.get());
+  }
+  internals.Status = pending.Sequence >= 0 ? WaitingForResponse : WaitingForServer;
+  internals.LastError.clear();
+  internals.Pendings.push_back(std::move(pending));
+  this->Modified();
+  return internals.Pendings.back().Id;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequestYAML(const char* yaml)
+{
+  return this->SetRequestYAML(yaml) ? this->SendAsyncRequest() : -1;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ServiceClientNode::ProcessResponses()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Client)
+  {
+    return 0;
+  }
+  std::vector<ros2vtk::wire::ServiceResponse> responses;
+  internals.Client->take(responses);
+  std::vector<vtkTypeInt64> answered;
+  for (auto& response : responses)
+  {
+    auto found = std::find_if(internals.Pendings.begin(), internals.Pendings.end(),
+      [&](const vtkInternals::Pending& p) { return p.Sequence >= 0 && p.Sequence == response.sequence_number; });
+    if (found == internals.Pendings.end())
+    {
+      continue; // answer to a request that already timed out, or a second server's duplicate
+    }
+    answered.push_back(found->Id);
+    internals.Pendings.erase(found);
+    internals.LastResponse = std::move(response.response);
+  }
+  // Requests waiting for a server go out once it is there (the first spin that sees it).
+  std::vector<std::pair<vtkTypeInt64, std::string>> failed;
+  const bool ready = internals.Client->is_server_available();
+  const Clock::time_point now = Clock::now();
+  for (auto it = internals.Pendings.begin(); it != internals.Pendings.end();)
+  {
+    if (it->Sequence < 0 && ready)
+    {
+      it->Sequence = internals.Client->send_request(it->Request.get());
+      if (it->Sequence < 0)
+      {
+        failed.emplace_back(it->Id, "Fast DDS refused to write the request to " + internals.Client->service_name());
+        it = internals.Pendings.erase(it);
+        continue;
+      }
+    }
+    if (now >= it->Deadline)
+    {
+      failed.emplace_back(it->Id,
+        it->Sequence < 0
+          ? "timed out: no server for " + internals.Client->service_name() + " (" + internals.TypeName +
+              ") appeared within " + FormatSeconds(it->TimeoutSeconds)
+          : "timed out: " + internals.Client->service_name() + " sent no response within " +
+              FormatSeconds(it->TimeoutSeconds));
+      it = internals.Pendings.erase(it);
+      continue;
+    }
+    ++it;
+  }
+  if (answered.empty() && failed.empty())
+  {
+    return 0;
+  }
+  // The newest outcome decides the status; each outcome fires its own event.
+  this->Modified();
+  for (const vtkTypeInt64 id : answered)
+  {
+    internals.LastResponseRequestId = id;
+    internals.Status = Succeeded;
+    internals.LastError.clear();
+    ++internals.Responses;
+    this->InvokeEvent(ResponseReceivedEvent, &internals.LastResponseRequestId);
+  }
+  for (auto& failure : failed)
+  {
+    internals.Status = failure.second.compare(0, 9, "timed out") == 0 ? TimedOut : Failed;
+    internals.LastError = failure.second;
+    ++internals.Failures;
+    vtkTypeInt64 id = failure.first;
+    this->InvokeEvent(RequestFailedEvent, &id);
+  }
+  return static_cast<int>(answered.size() + failed.size());
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ServiceClientNode::Call(const char* requestYAML, double timeoutSeconds)
+{
+  vtkInternals& internals = *this->Internals;
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (!internals.Client || !rosNode)
+  {
+    vtkErrorMacro("Call: the client is not attached to a created ROS node");
+    return "";
+  }
+  if (internals.InCall)
+  {
+    vtkErrorMacro("Call: already inside a Call of this client (call from an observer?)");
+    return "";
+  }
+  const double savedTimeout = internals.Timeout;
+  if (timeoutSeconds > 0 && std::isfinite(timeoutSeconds))
+  {
+    internals.Timeout = timeoutSeconds;
+  }
+  const vtkTypeInt64 id = this->SendAsyncRequestYAML(requestYAML);
+  internals.Timeout = savedTimeout;
+  if (id < 0)
+  {
+    internals.Status = Failed;
+    internals.LastError = "invalid request YAML";
+    return "";
+  }
+  internals.InCall = true;
+  const int fd = rosNode->GetWakeUpFileDescriptor();
+  auto stillPending = [&] {
+    return std::any_of(internals.Pendings.begin(), internals.Pendings.end(),
+      [id](const vtkInternals::Pending& p) { return p.Id == id; });
+  };
+  while (stillPending())
+  {
+    // Short waits while no server is there (matching raises no wake-up), else until data.
+    pollfd wait{ fd, POLLIN, 0 };
+    ::poll(&wait, 1, 10);
+    // Every ROS node of the scene: a server on another node of this process must answer too.
+    vtkROS2Scene* scene = this->GetScene();
+    const int count = scene ? scene->GetNumberOfNodesByClass("vtkROS2NodeNode") : 0;
+    for (int i = 0; i < count; ++i)
+    {
+      if (auto* node = vtkROS2NodeNode::SafeDownCast(scene->GetNthNodeByClass(i, "vtkROS2NodeNode")))
+      {
+        node->Spin();
+      }
+    }
+    if (!scene)
+    {
+      rosNode->Spin();
+    }
+  }
+  internals.InCall = false;
+  if (internals.LastResponseRequestId == id)
+  {
+    return this->GetLastResponseYAML();
+  }
+  vtkErrorMacro("Call " << this->GetServiceName() << ": " << internals.LastError);
+  return "";
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ServiceClientNode::GetStatus() const
+{
+  return this->Internals->Status;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ServiceClientNode::GetStatusAsString() const
+{
+  switch (this->Internals->Status)
+  {
+    case WaitingForServer: return "waiting for server";
+    case WaitingForResponse: return "waiting for response";
+    case Succeeded: return "succeeded";
+    case TimedOut: return "timed out";
+    case Failed: return "failed";
+    default: return "idle";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ServiceClientNode::GetLastError() const
+{
+  return this->Internals->LastError.c_str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ServiceClientNode::GetLastResponseYAML() const
+{
+  const vtkInternals& internals = *this->Internals;
+  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->response(), internals.LastResponse.get()) : "";
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ServiceClientNode::GetResponseField(const char* path) const
+{
+  const vtkInternals& internals = *this->Internals;
+  std::string value;
+  std::string error;
+  if (!internals.Type || !path ||
+    !ros2vtk::scene::get_field_as_text(*internals.Type->response(), internals.LastResponse.get(), path, value, &error))
+  {
+    vtkErrorMacro("GetResponseField: " << (internals.Type ? error : "the client has no service type yet"));
+    return "";
+  }
+  return value;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::GetLastResponseRequestId() const
+{
+  return this->Internals->LastResponseRequestId;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ServiceClientNode::GetNumberOfPendingRequests() const
+{
+  return static_cast<int>(this->Internals->Pendings.size());
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::GetNumberOfResponses() const
+{
+  return this->Internals->Responses;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::GetNumberOfFailures() const
+{
+  return this->Internals->Failures;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  element->SetAttribute("serviceType", this->Internals->TypeName.c_str());
+  element->SetAttribute("serviceName", this->Internals->ServiceName.c_str());
+  element->SetDoubleAttribute("timeout", this->Internals->Timeout);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  if (const char* type = element->GetAttribute("serviceType"))
+  {
+    this->Internals->TypeName = type;
+  }
+  if (const char* name = element->GetAttribute("serviceName"))
+  {
+    this->Internals->ServiceName = name;
+  }
+  double timeout = 0;
+  if (element->GetScalarAttribute("timeout", timeout) && timeout > 0)
+  {
+    this->Internals->Timeout = timeout;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ServiceClientNode::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ServiceName: " << this->GetServiceName() << "\n";
+  os << indent << "ServiceType: " << this->Internals->TypeName << "\n";
+  os << indent << "Ready: " << this->IsServiceReady() << "\n";
+  os << indent << "Status: " << this->GetStatusAsString() << "\n";
+  os << indent << "PendingRequests: " << this->Internals->Pendings.size() << "\n";
+}

@@ -1,0 +1,239 @@
+"""The web app in a real browser (Debian's headless Chromium driven by Selenium), against real
+peers: the simulated robot (ros2vtk-sim-robot, its own process) and rclpy nodes (tests/interop/
+ros_peer.py). The app server (`ros2vtk app`) binds 127.0.0.1 only. Each step keeps a screenshot
+in <build>/test-artifacts/app/:
+  1. add a robot from the parameter form -> link table filled, the robot's orange appears in the view;
+  2. add a subscriber through the form while rclpy publishes -> its count rises, the YAML shows the text;
+  3. add a YAML publisher and publish from the form -> the rclpy subscriber receives the text;
+  4. save the scene, remove the nodes, reload the page, load the scene -> the same nodes are back.
+"""
+from __future__ import annotations
+
+import io
+import json
+import os
+import socket
+import subprocess
+import time
+import urllib.request
+from pathlib import Path
+
+import pytest
+from PIL import Image
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+
+REPO = Path(__file__).resolve().parents[2]
+BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
+VENV_PYTHON = Path(os.environ.get('ROS2VTK_VENV_PYTHON', REPO / '.venv' / 'bin' / 'python'))
+ARTIFACTS = BUILD / 'test-artifacts' / 'app'
+URDF = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+DOMAIN = int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '185')) + 1
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+def wait_for(what: str, check, seconds: float = 30.0, step: float = 0.25):
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        value = check()
+        if value:
+            return value
+        time.sleep(step)
+    raise AssertionError(f'timed out after {seconds:g} s waiting for {what}')
+
+
+def orange_pixels(png: bytes) -> int:
+    """Pixels of the surgical arm's 'signal' orange (0.95 0.45 0.1), shaded: nothing else in the
+    view (Slicer's blue-grey background) is red-dominant."""
+    image = Image.open(io.BytesIO(png)).convert('RGB')
+    return sum(1 for r, g, b in image.get_flattened_data() if r > 120 and r - b > 80 and r - g > 40)
+
+
+@pytest.fixture(scope='module')
+def world():
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    env = dict(os.environ, ROS_DOMAIN_ID=str(DOMAIN), ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',
+               PYTHONUNBUFFERED='1')
+    env.pop('ROS_LOCALHOST_ONLY', None)
+    processes = []
+
+    def start(args, extra=None, **kwargs):
+        process = subprocess.Popen([str(a) for a in args], env=dict(env, **(extra or {})), text=True, **kwargs)
+        processes.append(process)
+        return process
+
+    start([BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', URDF, '--rate', '20'],
+          stdout=subprocess.DEVNULL)
+    port = free_port()
+    log = open(ARTIFACTS / 'server.log', 'w')
+    server = start([VENV_PYTHON, '-m', 'ros2vtk', 'app', '--port', port], {'PYTHONPATH': str(BUILD / 'python')},
+                   stdout=log, stderr=subprocess.STDOUT, cwd=ARTIFACTS)
+    url = f'http://127.0.0.1:{port}/'
+    options = webdriver.ChromeOptions()
+    for flag in ('--headless=new', '--no-sandbox', '--disable-dev-shm-usage', '--window-size=1600,1000'):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service('/usr/bin/chromedriver'), options=options)
+
+    def listening():
+        if server.poll() is not None:
+            raise AssertionError(f'app server exited: {(ARTIFACTS / "server.log").read_text()[-2000:]}')
+        try:
+            with urllib.request.urlopen(url, timeout=5) as response:
+                return response.status == 200
+        except OSError:
+            return False
+    try:
+        wait_for('the app server', listening, seconds=120, step=0.5)
+        driver.get(url)
+        wait_for('the app page', lambda: driver.find_elements(By.ID, 'robot_add'), seconds=60)
+        yield {'driver': driver, 'start': start, 'env': env, 'url': url}
+    finally:
+        driver.quit()
+        for process in reversed(processes):
+            process.terminate()
+        for process in processes:
+            try:
+                process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                process.kill()
+        log.close()
+
+
+def type_into(driver, element_id: str, text: str) -> None:
+    """Types into a Vuetify field as a user does (select all, type), then closes any menu."""
+    field = driver.find_element(By.ID, element_id)
+    driver.execute_script('arguments[0].scrollIntoView({block: "center"})', field)
+    field.click()
+    field.send_keys(Keys.CONTROL, 'a')
+    field.send_keys(Keys.DELETE)
+    field.send_keys(text)
+    field.send_keys(Keys.ESCAPE)  # a combobox's list would cover the next field
+    assert field.get_attribute('value') == text, f'{element_id}: {field.get_attribute("value")!r}'
+    time.sleep(0.3)  # the model reaches the server before the next click
+
+
+def click(driver, element_id: str) -> None:
+    button = driver.find_element(By.ID, element_id)
+    driver.execute_script('arguments[0].scrollIntoView({block: "center"})', button)
+    button.click()
+
+
+def row_text(driver, row_id: str) -> str:
+    rows = driver.find_elements(By.ID, row_id)
+    return rows[0].text if rows else ''
+
+
+def view_png(driver) -> bytes:
+    return driver.find_element(By.ID, 'view').screenshot_as_png
+
+
+def step_shot(driver, name: str) -> None:
+    driver.save_screenshot(str(ARTIFACTS / f'{name}.png'))
+
+
+def test_1_add_robot_from_parameter_form(world):
+    driver = world['driver']
+    before = orange_pixels(view_png(driver))
+    type_into(driver, 'robot_name', 'arm')
+    click(driver, 'robot_source_parameter')
+    type_into(driver, 'robot_param_node', '/robot_state_publisher')
+    type_into(driver, 'robot_param_name', 'robot_description')
+    type_into(driver, 'robot_mesh_base', str(URDF.parent))
+    type_into(driver, 'robot_mesh_paths', str(REPO / 'examples' / 'robots'))
+    click(driver, 'robot_add')
+    row = wait_for('the robot loaded with 8/8 links tracked',
+                   lambda: 'loaded' in row_text(driver, 'robot-arm') and '8/8' in row_text(driver, 'robot-arm')
+                   and row_text(driver, 'robot-arm'))
+    links = driver.find_element(By.TAG_NAME, 'body').text
+    for link in ('base_link', 'instrument_link', 'needle_tip'):
+        assert link in links, f'link {link} missing from the link table'
+    after = wait_for('the robot orange in the view', lambda: orange_pixels(view_png(driver)) > 200 and
+                     orange_pixels(view_png(driver)), seconds=20)
+    step_shot(driver, '1-robot-added')
+    (ARTIFACTS / '1-view.png').write_bytes(view_png(driver))
+    assert before < 50, f'orange before the robot was added: {before}'
+    print(f'robot row: {row!r}; orange pixels {before} -> {after}')
+
+
+def test_2_subscriber_from_form_counts_rclpy_messages(world):
+    driver = world['driver']
+    world['start']([VENV_PYTHON, REPO / 'tests' / 'interop' / 'ros_peer.py', '--node', 'talker', 'pub', '/chatter',
+                    'std_msgs/msg/String', json.dumps({'data': 'hello from rclpy'}), '--count', '-1', '--rate', '10',
+                    '--wait-matched', '0'], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    click(driver, 'topic_direction_subscriber')
+    type_into(driver, 'topic_type', 'String')
+    type_into(driver, 'topic_name', '/chatter')
+    click(driver, 'topic_add')
+    row_id = 'topic-subscriber-/chatter'
+
+    def count():
+        cells = driver.find_elements(By.CSS_SELECTOR, f'[id="{row_id}"] td')
+        return int(cells[5].text) if len(cells) > 5 and cells[5].text.isdigit() else 0
+    first = wait_for('messages counted', count)
+    second = wait_for('the count rising', lambda: count() > first + 5 and count())
+    yaml = wait_for('the YAML of the last message', lambda: driver.find_elements(By.ID, 'topic_yaml') and
+                    driver.find_element(By.ID, 'topic_yaml').text)
+    step_shot(driver, '2-subscriber')
+    assert 'hello from rclpy' in yaml, yaml
+    assert 'std_msgs/msg/String' in row_text(driver, row_id)
+    print(f'count {first} -> {second}; yaml {yaml!r}')
+
+
+def test_3_publish_from_form_reaches_rclpy(world):
+    driver = world['driver']
+    listener = world['start']([VENV_PYTHON, REPO / 'tests' / 'interop' / 'ros_peer.py', '--node', 'listener', 'echo',
+                               '/from_app', 'std_msgs/msg/String', '--count', '1', '--timeout', '60'],
+                              stdout=subprocess.PIPE)
+    assert json.loads(listener.stdout.readline()) == {'ready': True}
+    click(driver, 'topic_direction_publisher')
+    type_into(driver, 'topic_type', 'std_msgs/msg/String')
+    type_into(driver, 'topic_name', '/from_app')
+    click(driver, 'topic_add')
+    row_id = 'topic-publisher-/from_app'
+
+    def matched():
+        cells = driver.find_elements(By.CSS_SELECTOR, f'[id="{row_id}"] td')
+        return len(cells) > 4 and cells[4].text not in ('', '0')
+    wait_for('the rclpy subscriber matched', matched)
+    type_into(driver, 'publish_yaml', "{data: 'hello from the app'}")
+    click(driver, 'publish')
+    received = json.loads(listener.stdout.readline())
+    step_shot(driver, '3-published')
+    assert received == {'data': 'hello from the app'}
+    wait_for('the outcome line', lambda: 'Published on /from_app' in driver.find_element(By.ID, 'message').text)
+
+
+def test_4_save_reload_page_load_scene(world, tmp_path):
+    driver = world['driver']
+    scene_file = ARTIFACTS / 'scene.xml'
+    scene_file.unlink(missing_ok=True)
+    type_into(driver, 'scene_file', str(scene_file))
+    click(driver, 'scene_save')
+    wait_for('the scene file', scene_file.exists)
+    saved = {rid: row_text(driver, rid) for rid in ('robot-arm', 'topic-subscriber-/chatter', 'topic-publisher-/from_app')}
+    assert all(saved.values()), saved
+    # Change the scene so that loading it visibly restores something: remove the robot and the subscriber.
+    driver.find_element(By.ID, 'robot-arm').click()
+    click(driver, 'robot_remove')
+    wait_for('the robot removed', lambda: not driver.find_elements(By.ID, 'robot-arm'))
+    driver.find_element(By.ID, 'topic-subscriber-/chatter').click()
+    click(driver, 'topic_remove')
+    wait_for('the subscriber removed', lambda: not driver.find_elements(By.ID, 'topic-subscriber-/chatter'))
+    driver.refresh()
+    wait_for('the page again', lambda: driver.find_elements(By.ID, 'scene_load'))
+    type_into(driver, 'scene_file', str(scene_file))
+    click(driver, 'scene_load')
+    for rid in saved:
+        wait_for(f'{rid} back after loading', lambda rid=rid: driver.find_elements(By.ID, rid))
+    wait_for('the robot loaded again', lambda: 'loaded' in row_text(driver, 'robot-arm'))
+    wait_for('the subscriber counting again', lambda: (lambda c: len(c) > 5 and c[5].text not in ('', '0'))(
+        driver.find_elements(By.CSS_SELECTOR, '[id="topic-subscriber-/chatter"] td')))
+    wait_for('the robot orange in the view again', lambda: orange_pixels(view_png(driver)) > 200, seconds=20)
+    step_shot(driver, '4-scene-loaded')

@@ -1,0 +1,572 @@
+"""The display layer (vtkROS2DisplayManager, vtkROS2SliceView) through the wrapped API, rendered
+offscreen (under Xvfb) and checked by actors AND pixels, with real rclpy peers (their own
+processes, tests/interop/ros_peer.py) publishing tf, an image and a point cloud.
+
+Every rendered case is saved as a PNG under <build>/display_test_images/ to look at.
+"""
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parents[1]
+BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
+IMAGES = BUILD / 'display_test_images'
+VENV_PYTHON = Path(os.environ.get('ROS2VTK_VENV_PYTHON', REPO / '.venv' / 'bin' / 'python'))
+PEER = REPO / 'tests' / 'interop' / 'ros_peer.py'
+
+# A base box (grey, 100 mm) and a tool sphere (blue, r 20 mm, 80 mm above the tool frame, so
+# it is seen from above); the tool link follows tf base <- tool.
+ROBOT = """<robot name="dm">
+  <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>
+  <material name="blue"><color rgba="0 0 1 1"/></material>
+  <link name="base"><visual><geometry><box size="0.1 0.1 0.1"/></geometry><material name="grey"/></visual></link>
+  <link name="tool"><visual><origin xyz="0 0 0.08"/><geometry><sphere radius="0.02"/></geometry>
+    <material name="blue"/></visual></link>
+  <joint name="j" type="floating"><parent link="base"/><child link="tool"/></joint>
+</robot>"""
+
+
+def _interop_conftest():
+    spec = importlib.util.spec_from_file_location('interop_conftest', REPO / 'tests' / 'interop' / 'conftest.py')
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope='module')
+def vtk():
+    import vtk as module
+    return module
+
+
+class View:
+    """An offscreen render window with a top-down parallel camera; pixels as numpy."""
+
+    def __init__(self, vtk, size=(300, 300)):
+        self.vtk = vtk
+        self.renderer = vtk.vtkRenderer()
+        self.window = vtk.vtkRenderWindow()
+        self.window.SetOffScreenRendering(1)
+        self.window.SetSize(*size)
+        self.window.AddRenderer(self.renderer)
+
+    def top_down(self, center=(0.0, 0.0, 0.0), half_height=200.0):
+        camera = self.renderer.GetActiveCamera()
+        camera.ParallelProjectionOn()
+        camera.SetFocalPoint(*center)
+        camera.SetPosition(center[0], center[1], center[2] + 1000.0)
+        camera.SetViewUp(0, 1, 0)
+        camera.SetParallelScale(half_height)
+        self.renderer.ResetCameraClippingRange()
+
+    def pixels(self, name: str) -> np.ndarray:
+        """Renders, saves <name>.png and returns the RGB pixels, row 0 at the top."""
+        vtk = self.vtk
+        self.window.Render()
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(self.window)
+        grab.SetInputBufferTypeToRGB()
+        grab.ReadFrontBufferOff()
+        grab.Update()
+        IMAGES.mkdir(parents=True, exist_ok=True)
+        writer = vtk.vtkPNGWriter()
+        writer.SetFileName(str(IMAGES / f'{name}.png'))
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+        from vtk.util.numpy_support import vtk_to_numpy
+        image = grab.GetOutput()
+        width, height, _ = image.GetDimensions()
+        rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, 3)
+        return rgb[::-1]
+
+    def display_point(self, x, y, z):
+        """Where VTK projects a world point: (column, row from the top)."""
+        coordinate = self.vtk.vtkCoordinate()
+        coordinate.SetCoordinateSystemToWorld()
+        coordinate.SetValue(x, y, z)
+        col, row = coordinate.GetComputedDisplayValue(self.renderer)
+        return col, self.window.GetSize()[1] - 1 - row
+
+
+def mask(rgb: np.ndarray, kind: str) -> np.ndarray:
+    r, g, b = (rgb[..., i].astype(int) for i in range(3))
+    if kind == 'red':
+        return (r > 150) & (g < 90) & (b < 90)
+    if kind == 'blue':
+        return (b > 150) & (r < 90) & (g < 90)
+    if kind == 'green':
+        return (g > 150) & (r < 200) & (b < 200) & (g > r + 40)
+    if kind == 'yellow':
+        return (r > 150) & (g > 150) & (b < 90)
+    raise ValueError(kind)
+
+
+def centroid(m: np.ndarray):
+    rows, cols = np.nonzero(m)
+    return (cols.mean(), rows.mean()) if len(cols) else None
+
+
+@pytest.fixture
+def ros2vtk():
+    import ros2vtk as module
+    return module
+
+
+@pytest.fixture
+def logic(ros2vtk):
+    created = ros2vtk.vtkROS2Logic()
+    yield created
+    created.GetScene().Clear()
+
+
+@pytest.fixture
+def peers():
+    env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST', PYTHONUNBUFFERED='1')
+    env.pop('ROS_LOCALHOST_ONLY', None)
+    started: list[subprocess.Popen] = []
+
+    def start(*args: str, tf: bool = False) -> subprocess.Popen:
+        run_env = dict(env)
+        if tf:
+            for key, value in _interop_conftest().tf2_msgs_env().items():
+                run_env[key] = os.pathsep.join(filter(None, [value, run_env.get(key)]))
+        process = subprocess.Popen([str(VENV_PYTHON), str(PEER), *args], stdout=subprocess.PIPE,
+                                   stderr=subprocess.PIPE, text=True, env=run_env)
+        started.append(process)
+        return process
+
+    yield start
+    for process in started:
+        if process.poll() is None:
+            process.kill()
+        process.communicate()
+
+
+def spin_until(logic, done, seconds=15.0):
+    from ros2vtk import spin_until as package_spin_until
+    return package_spin_until(logic, done, seconds)
+
+
+def make_display(ros2vtk, logic, view):
+    dm = ros2vtk.vtkROS2DisplayManager()
+    dm.SetScene(logic.GetScene())
+    dm.SetRenderer(view.renderer)
+    return dm
+
+
+# ------------------------------------------------------------------------------ models, no ROS
+def test_model_nodes_added_modified_removed(ros2vtk, logic, vtk):
+    view = View(vtk)
+    view.top_down()
+    dm = make_display(ros2vtk, logic, view)
+    scene = logic.GetScene()
+    sphere = vtk.vtkSphereSource()
+    sphere.SetRadius(40)
+    sphere.SetThetaResolution(32)
+    sphere.SetPhiResolution(32)
+    sphere.Update()
+    transform = ros2vtk.vtkROS2TransformNode()
+    scene.AddNode(transform)
+    model = ros2vtk.vtkROS2ModelNode()
+    model.SetPolyData(sphere.GetOutput())
+    model.SetColor(0, 0, 1)
+    scene.AddNode(model)
+    model.SetParentTransformNodeID(transform.GetID())
+    assert dm.GetActorForNode(model) is None  # drawn on Update, not from the observer
+    assert dm.Update() is True
+    assert dm.Update() is False               # nothing changed: nothing to do
+    actor = dm.GetActorForNode(model)
+    assert actor is not None and view.renderer.HasViewProp(actor)
+    assert dm.GetNumberOfDisplayedNodes() == 2  # the model and its transform (axes hidden)
+    rgb = view.pixels('model_added')
+    assert mask(rgb, 'blue').sum() > 500
+    assert abs(centroid(mask(rgb, 'blue'))[0] - view.display_point(0, 0, 0)[0]) < 3
+
+    # Moving the parent transform moves the actor.
+    matrix = vtk.vtkMatrix4x4()
+    matrix.SetElement(0, 3, 120.0)
+    transform.SetMatrixTransformToParent(matrix)
+    assert dm.Update() is True
+    assert actor.GetUserMatrix().GetElement(0, 3) == 120.0
+    rgb = view.pixels('model_moved')
+    assert abs(centroid(mask(rgb, 'blue'))[0] - view.display_point(120, 0, 0)[0]) < 3
+
+    # Display properties: colour, representation, opacity, visibility.
+    model.SetColor(1, 1, 0)
+    model.SetRepresentation(ros2vtk.vtkROS2ModelNode.Wireframe)
+    assert dm.Update() is True
+    assert actor.GetProperty().GetRepresentation() == vtk.VTK_WIREFRAME
+    rgb = view.pixels('model_wireframe_yellow')
+    assert mask(rgb, 'yellow').sum() > 50 and mask(rgb, 'blue').sum() == 0
+    model.SetOpacity(0.25)
+    model.VisibilityOff()
+    dm.Update()
+    assert actor.GetProperty().GetOpacity() == 0.25 and not actor.GetVisibility()
+    assert mask(view.pixels('model_hidden'), 'yellow').sum() == 0
+
+    # Removal takes the actor out at once.
+    scene.RemoveNode(model)
+    assert not view.renderer.HasViewProp(actor)
+    assert dm.GetActorForNode(model) is None
+    assert dm.Update() is True
+    assert dm.GetNumberOfDisplayedNodes() == 1
+
+
+def test_transform_axes_with_frame_name(ros2vtk, logic, vtk):
+    view = View(vtk)
+    view.top_down()
+    dm = make_display(ros2vtk, logic, view)
+    transform = ros2vtk.vtkROS2TransformNode()
+    transform.SetName('probe')
+    logic.GetScene().AddNode(transform)
+    dm.Update()
+    prop = dm.GetPropForNode(transform)
+    assert prop is not None and not prop.GetVisibility()
+    assert not mask(view.pixels('axes_hidden'), 'red').any()
+    dm.SetAxesVisible(True)
+    dm.SetAxesLength(150)
+    assert dm.Update() is True
+    rgb = view.pixels('axes_visible')
+    # x axis red to the right of the origin, y axis green above it.
+    red, green = centroid(mask(rgb, 'red')), centroid(mask(rgb, 'green'))
+    origin = view.display_point(0, 0, 0)
+    assert red[0] > origin[0] + 20 and abs(red[1] - origin[1]) < 10
+    assert green[1] < origin[1] - 20 and abs(green[0] - origin[0]) < 10
+    parts = prop.GetParts()
+    assert parts.GetItemAsObject(1).GetInput() == 'probe'
+    assert dm.GetNodeForProp(parts.GetItemAsObject(0)) == transform  # a picked part -> its node
+
+
+def test_placeholder_is_drawn_as_a_wireframe_in_the_placeholder_colour(ros2vtk, logic, vtk):
+    view = View(vtk)
+    view.top_down(half_height=100)
+    dm = make_display(ros2vtk, logic, view)
+    robot = logic.GetDefaultROS2Node().CreateAndAddRobotNodeFromTopic('ph', '/ph/robot_description', '', '')
+    assert robot.LoadRobotDescription("""<robot name="ph"><link name="base"><visual>
+        <geometry><mesh filename="missing/part.stl"/></geometry></visual></link></robot>""", '')
+    assert robot.GetNumberOfPlaceholders() == 1
+    dm.Update()
+    actor = dm.GetActorForNode(robot.GetNthModelNode(0))
+    assert actor.GetProperty().GetRepresentation() == vtk.VTK_WIREFRAME
+    assert actor.GetProperty().GetColor() == dm.GetPlaceholderColor()
+    rgb = view.pixels('robot_placeholder')
+    magenta = (rgb[..., 0] > 150) & (rgb[..., 1] < 90) & (rgb[..., 2] > 150)
+    assert magenta.sum() > 20
+
+
+# ------------------------------------------------------------------------------ with rclpy peers
+def test_robot_link_untracked_then_follows_tf_from_an_rclpy_peer(ros2vtk, logic, vtk, peers):
+    view = View(vtk)
+    view.top_down()
+    dm = make_display(ros2vtk, logic, view)
+    robot = logic.GetDefaultROS2Node().CreateAndAddRobotNodeFromTopic('dm', '/dm/robot_description', 'base', '')
+    assert robot.LoadRobotDescription(ROBOT, '')
+    dm.Update()
+    tool_model = robot.GetNthModelNode(1)
+    tool = dm.GetActorForNode(tool_model)
+    assert tool is not None
+    # No tf yet: the tool link is untracked and drawn in the error colour; the base is not.
+    assert tool.GetProperty().GetColor() == dm.GetUntrackedColor()
+    assert dm.GetActorForNode(robot.GetNthModelNode(0)).GetProperty().GetColor() == (0.5, 0.5, 0.5)
+    rgb = view.pixels('robot_untracked')
+    assert mask(rgb, 'red').sum() > 100 and mask(rgb, 'blue').sum() == 0
+
+    positions = []
+    for n, x in enumerate((0.15, -0.12)):
+        peer = peers('--node', f'tf_peer{n}', 'tf_pub', 'base', 'tool',
+                     json.dumps({'t': [x, 0.0, 0.0], 'q': [0, 0, 0, 1]}), '--seconds', '30', tf=True)
+        link = robot.GetLinkTransformNode('tool')
+
+        def at_x():
+            dm.Update()
+            return abs(link.GetMatrixTransformToParent().GetElement(0, 3) - x * 1000.0) < 1e-6
+        assert spin_until(logic, at_x, 20.0), peer.stderr.read() if peer.poll() is not None else 'no tf'
+        dm.Update()
+        assert tool.GetProperty().GetColor() == (0.0, 0.0, 1.0)
+        assert abs(tool.GetUserMatrix().GetElement(0, 3) - x * 1000.0) < 1e-6
+        rgb = view.pixels(f'robot_tool_at_{int(x * 1000)}mm')
+        assert mask(rgb, 'red').sum() == 0
+        blue = centroid(mask(rgb, 'blue'))
+        assert blue is not None
+        assert abs(blue[0] - view.display_point(x * 1000.0, 0, 80)[0]) < 3
+        positions.append(blue[0])
+        peer.kill()
+        peer.communicate()
+    assert positions[0] - positions[1] > 150  # 270 mm to the left, on a 400 mm / 300 px view
+
+
+def image_message(width=64, height=48):
+    # Left half 40, right half 220: mono8, one byte per pixel.
+    data = [40 if col < width // 2 else 220 for row in range(height) for col in range(width)]
+    return {'header': {'frame_id': 'camera'}, 'height': height, 'width': width, 'encoding': 'mono8',
+            'is_bigendian': 0, 'step': width, 'data': data}
+
+
+def test_image_slice_shows_the_published_pixels(ros2vtk, logic, vtk, peers):
+    view = View(vtk)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('Image', '/display_cam')
+    subscriber.SetAttribute('ros2vtk.display.window', '255')
+    subscriber.SetAttribute('ros2vtk.display.level', '127.5')
+    dm.Update()
+    prop = dm.GetPropForNode(subscriber)
+    assert prop is not None
+    slice_actor = prop.GetParts().GetItemAsObject(0)
+    assert not slice_actor.GetVisibility()  # nothing received yet
+    peers('pub', '/display_cam', 'sensor_msgs/Image', json.dumps(image_message()), '--count', '-1', '--rate', '5')
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    assert dm.Update() is True
+    assert slice_actor.GetVisibility()
+    bounds = slice_actor.GetBounds()
+    assert bounds[1] - bounds[0] == 63 and bounds[3] - bounds[2] == 47
+    view.top_down(center=(31.5, 23.5, 0), half_height=30)
+    rgb = view.pixels('image_slice')
+    for x, value in ((12, 40), (52, 220)):
+        col, row = (int(round(v)) for v in view.display_point(x, 23.5, 0))
+        assert list(rgb[row, col]) == [value] * 3, (x, rgb[row, col])
+
+    # The same subscriber as the volume of a slice view (axial, through the image's plane).
+    slice_view = View(vtk, size=(200, 200))
+    slices = ros2vtk.vtkROS2SliceView()
+    slices.SetRenderer(slice_view.renderer)
+    slices.SetVolumeNode(subscriber)
+    slices.SetWindowLevel(255, 127.5)
+    slices.SetSliceCenter(31.5, 23.5, 0)
+    assert slices.Update() is True
+    rgb = slice_view.pixels('image_slice_view')
+    for x, value in ((12, 40), (52, 220)):
+        col, row = (int(round(v)) for v in slice_view.display_point(x, 23.5, 0))
+        assert list(rgb[row, col]) == [value] * 3, (x, rgb[row, col])
+
+
+def test_point_cloud_shows_its_points(ros2vtk, logic, vtk, peers):
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    dm.SetPointSize(9)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('PointCloud', '/display_cloud')
+    points = [(0.1, 0.0), (-0.1, 0.05), (0.0, -0.1)]
+    message = {'header': {'frame_id': 'base'},
+               'points': [{'x': x, 'y': y, 'z': 0.0} for x, y in points]}
+    peers('pub', '/display_cloud', 'sensor_msgs/PointCloud', json.dumps(message), '--count', '-1', '--rate', '5')
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    actor = dm.GetActorForNode(subscriber)
+    assert actor is not None and actor.GetMapper().GetInput().GetNumberOfVerts() == 3
+    rgb = view.pixels('point_cloud')
+    green = mask(rgb, 'green')
+    for x, y in points:
+        col, row = (int(round(v)) for v in view.display_point(x * 1000.0, y * 1000.0, 0))
+        assert green[row - 2:row + 3, col - 2:col + 3].any(), (x, y)
+    assert green.sum() < 3 * 200  # points, not a surface
+
+
+def test_pose_array_shows_one_arrow_per_pose(ros2vtk, logic, vtk, peers):
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('PoseArray', '/display_poses')
+    message = {'header': {'frame_id': 'base'},
+               'poses': [{'position': {'x': 0.05 * i, 'y': 0.0, 'z': 0.0},
+                          'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}} for i in (-1, 1)]}
+    peers('pub', '/display_poses', 'geometry_msgs/PoseArray', json.dumps(message), '--count', '-1', '--rate', '5')
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    actor = dm.GetActorForNode(subscriber)
+    glyphs = actor.GetMapper().GetInputAlgorithm()
+    assert glyphs.GetInput().GetNumberOfPoints() == 2
+    rgb = view.pixels('pose_array')
+    orange = (rgb[..., 0] > 150) & (rgb[..., 1] < 120) & (rgb[..., 2] < 90)
+    # Each arrow starts at its pose and points along +x (50 mm long).
+    for x in (-50.0, 50.0):
+        col, row = (int(round(v)) for v in view.display_point(x + 25.0, 0, 0))
+        assert orange[row - 2:row + 3, col - 2:col + 3].any(), x
+
+
+# ------------------------------------------------------------------------------ slice views
+def test_slice_view_draws_the_intersection_of_a_model(ros2vtk, logic, vtk):
+    volume = vtk.vtkImageData()
+    volume.SetDimensions(101, 101, 101)
+    volume.SetOrigin(-50, -50, -50)
+    volume.SetSpacing(1, 1, 1)
+    volume.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    from vtk.util.numpy_support import vtk_to_numpy
+    values = vtk_to_numpy(volume.GetPointData().GetScalars())
+    values[:] = 100
+    # A needle: a thin yellow cylinder along z through (20, 0).
+    needle_source = vtk.vtkCylinderSource()
+    needle_source.SetRadius(3)
+    needle_source.SetHeight(200)
+    needle_source.SetResolution(24)
+    rotate = vtk.vtkTransformPolyDataFilter()  # the cylinder source runs along y
+    t = vtk.vtkTransform()
+    t.RotateX(90)
+    rotate.SetTransform(t)
+    rotate.SetInputConnection(needle_source.GetOutputPort())
+    rotate.Update()
+    holder = ros2vtk.vtkROS2TransformNode()
+    logic.GetScene().AddNode(holder)
+    needle = ros2vtk.vtkROS2ModelNode()
+    needle.SetPolyData(rotate.GetOutput())
+    needle.SetColor(1, 1, 0)
+    logic.GetScene().AddNode(needle)
+    needle.SetParentTransformNodeID(holder.GetID())
+    m = vtk.vtkMatrix4x4()
+    m.SetElement(0, 3, 20.0)
+    holder.SetMatrixTransformToParent(m)
+
+    shots = {}
+    for orientation in ('axial', 'sagittal', 'coronal'):
+        view = View(vtk, size=(200, 200))
+        slices = ros2vtk.vtkROS2SliceView()
+        slices.SetRenderer(view.renderer)
+        slices.SetScene(logic.GetScene())
+        slices.SetImageData(volume)
+        slices.SetWindowLevel(255, 127.5)  # grey values shown as they are
+        assert slices.SetOrientation(orientation)
+        slices.SetSliceCenter(20 if orientation == 'sagittal' else 0, 0, 0)
+        assert slices.Update() is True
+        assert slices.Update() is False  # nothing moved
+        rgb = view.pixels(f'slice_{orientation}')
+        shots[orientation] = (view, slices, rgb)
+        grey = (rgb[..., 0] == rgb[..., 1]) & (rgb[..., 1] == rgb[..., 2]) & (abs(rgb[..., 0].astype(int) - 100) <= 1)
+        assert grey.sum() > 200 * 200 * 0.5  # the slice fills the view
+    # Axial: the needle crosses the plane: a ring at (20, 0).
+    view, slices, rgb = shots['axial']
+    assert slices.GetNumberOfIntersectedModels() == 1
+    ring = centroid(mask(rgb, 'yellow'))
+    expected = view.display_point(20, 0, 0)
+    assert ring is not None and abs(ring[0] - expected[0]) < 2 and abs(ring[1] - expected[1]) < 2
+    # Laid out as Slicer does: axial and coronal show +x (patient right) on the left.
+    assert ring[0] < 100
+    rows, cols = np.nonzero(mask(shots['coronal'][2], 'yellow'))
+    assert cols.mean() < 100
+    # Coronal (plane y = 0) cuts the needle lengthwise: lines, vertical on the screen.
+    view, slices, rgb = shots['coronal']
+    rows, cols = np.nonzero(mask(rgb, 'yellow'))
+    assert len(rows) and rows.max() - rows.min() > 150 and cols.max() - cols.min() < 20
+    # Moving the needle out of the axial plane's way (along x, out of view) and back updates it.
+    view, slices, rgb = shots['axial']
+    m.SetElement(0, 3, -30.0)
+    holder.SetMatrixTransformToParent(m)
+    assert slices.Update() is True
+    ring = centroid(mask(view.pixels('slice_axial_needle_moved'), 'yellow'))
+    assert abs(ring[0] - view.display_point(-30, 0, 0)[0]) < 2
+    # A plane beyond the needle's end: nothing to cut.
+    slices.SetSliceCenter(0, 0, 150)
+    slices.Update()
+    assert slices.GetNumberOfIntersectedModels() == 0
+    assert not slices.SetOrientation('oblique')
+
+
+def test_model_representation_is_saved_with_the_scene(ros2vtk, logic):
+    model = ros2vtk.vtkROS2ModelNode()
+    model.SetRepresentation(ros2vtk.vtkROS2ModelNode.Points)
+    logic.GetScene().AddNode(model)
+    xml = logic.GetScene().WriteToXMLString()
+    assert 'representation="0"' in xml
+    restored = ros2vtk.vtkROS2Scene()
+    assert restored.ReadFromXMLString(xml)
+    assert restored.GetNthNodeByClass(0, 'vtkROS2ModelNode').GetRepresentation() == 0
+    assert not restored.ReadFromXMLString(xml.replace('representation="0"', 'representation="7"'))
+
+
+def test_volume_node_drawn_as_a_volume_when_3d_and_a_slice_when_2d(ros2vtk, logic, vtk):
+    view = View(vtk)
+    view.top_down(half_height=80)
+    dm = make_display(ros2vtk, logic, view)
+    # A 3D phantom: a bright ball (r 30 mm) in a dark 101 mm cube centred on the origin.
+    ball = vtk.vtkImageData()
+    ball.SetDimensions(51, 51, 51)
+    ball.SetSpacing(2, 2, 2)
+    ball.SetOrigin(-50, -50, -50)
+    ball.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    from vtk.util.numpy_support import vtk_to_numpy
+    z, y, x = np.mgrid[-50:51:2, -50:51:2, -50:51:2]
+    vtk_to_numpy(ball.GetPointData().GetScalars())[:] = np.where(x * x + y * y + z * z < 900, 255, 0).ravel()
+    holder = ros2vtk.vtkROS2TransformNode()
+    logic.GetScene().AddNode(holder)
+    volume = ros2vtk.vtkROS2VolumeNode()
+    volume.SetImageData(ball)
+    volume.SetWindow(255)
+    volume.SetLevel(127.5)
+    logic.GetScene().AddNode(volume)
+    volume.SetParentTransformNodeID(holder.GetID())
+    assert dm.Update()
+    prop = dm.GetPropForNode(volume)
+    slice_actor, volume_actor = prop.GetParts().GetItemAsObject(0), prop.GetParts().GetItemAsObject(1)
+    assert volume_actor.GetVisibility() and not slice_actor.GetVisibility()
+    rgb = view.pixels('volume_3d')
+    bright = rgb.sum(axis=2) > 150
+    inside = view.display_point(0, 0, 0)
+    assert bright[int(inside[1]), int(inside[0])]
+    assert not bright[int(view.display_point(45, 45, 0)[1]), int(view.display_point(45, 45, 0)[0])]
+    # The parent transform moves it.
+    m = vtk.vtkMatrix4x4()
+    m.SetElement(0, 3, 40.0)
+    holder.SetMatrixTransformToParent(m)
+    assert dm.Update()
+    assert volume_actor.GetUserMatrix().GetElement(0, 3) == 40.0
+    rgb = view.pixels('volume_3d_moved')
+    bright = rgb.sum(axis=2) > 150
+    cols = np.nonzero(bright)[1]
+    assert abs(cols.mean() - view.display_point(40, 0, 0)[0]) < 4
+    # A 2D image in a volume node is a slice.
+    flat = vtk.vtkImageData()
+    flat.SetDimensions(20, 10, 1)
+    flat.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    vtk_to_numpy(flat.GetPointData().GetScalars())[:] = 200
+    volume.SetImageData(flat)
+    assert dm.Update()
+    assert slice_actor.GetVisibility() and not volume_actor.GetVisibility()
+    volume.VisibilityOff()
+    dm.Update()
+    assert not slice_actor.GetVisibility() and not volume_actor.GetVisibility()
+
+
+def test_slice_view_reslices_a_volume_node_where_its_transform_puts_it(ros2vtk, logic, vtk):
+    from vtk.util.numpy_support import vtk_to_numpy
+    ball = vtk.vtkImageData()
+    ball.SetDimensions(51, 51, 51)
+    ball.SetSpacing(2, 2, 2)
+    ball.SetOrigin(-50, -50, -50)
+    ball.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 1)
+    z, y, x = np.mgrid[-50:51:2, -50:51:2, -50:51:2]
+    vtk_to_numpy(ball.GetPointData().GetScalars())[:] = np.where(x * x + y * y + z * z < 900, 200, 20).ravel()
+    registration = ros2vtk.vtkROS2TransformNode()
+    logic.GetScene().AddNode(registration)
+    volume = ros2vtk.vtkROS2VolumeNode()
+    volume.SetImageData(ball)
+    logic.GetScene().AddNode(volume)
+    volume.SetParentTransformNodeID(registration.GetID())
+    view = View(vtk, size=(200, 200))
+    slices = ros2vtk.vtkROS2SliceView()
+    slices.SetRenderer(view.renderer)
+    slices.SetVolumeNode(volume)
+    slices.SetWindowLevel(255, 127.5)
+    slices.SetFieldOfView(100)
+    slices.SetSliceCenter(0, 0, 0)
+    slices.Update()
+
+    def value_at(rgb, x, y):
+        col, row = (int(round(v)) for v in view.display_point(x, y, 0))
+        return int(rgb[row, col, 0])
+    rgb = view.pixels('slice_volume_node')
+    assert value_at(rgb, 0, 0) == 200 and value_at(rgb, 40, 0) == 20
+    m = vtk.vtkMatrix4x4()
+    m.SetElement(0, 3, 40.0)  # the registration moves the phantom 40 mm along x
+    registration.SetMatrixTransformToParent(m)
+    assert slices.Update() is True
+    rgb = view.pixels('slice_volume_node_registered')
+    assert value_at(rgb, 40, 0) == 200 and value_at(rgb, 0, 0) == 20
+    assert value_at(rgb, -30, 0) == 0  # beyond the moved phantom: nothing
+    slices.SetVolumeNode(logic.GetDefaultROS2Node())  # not an image: refused
+    assert slices.GetVolumeNode() == volume

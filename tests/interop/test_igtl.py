@@ -1,0 +1,275 @@
+"""3D Slicer reach (issue 16): our OpenIGTLink connector (`python -m ros2vtk igtl`, its own process)
+against pyigtl, an independent OpenIGTLink implementation standing in for Slicer's OpenIGTLinkIF
+(in this pytest process), with real rclpy peers on the ROS side. Loopback only; every loop bounded.
+Units: ROS metres in, OpenIGTLink millimetres out (and back).
+"""
+from __future__ import annotations
+
+import json
+import math
+import signal
+import struct
+import time
+from pathlib import Path
+
+import numpy as np
+import pyigtl
+import pytest
+
+from conftest import HERE, REPO, VENV_PYTHON, tf2_msgs_env
+from igtl_peer import RawClient, frame, free_port, polydata_points, start_ours, v2_metadata
+
+ARM = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+QUARTER_TURN_Z = [0, 0, math.sqrt(0.5), math.sqrt(0.5)]
+
+
+def wait_ready(process) -> None:
+    line = process.stdout.readline()
+    assert line and json.loads(line).get('ready') is True, line + process.stderr.read()
+
+
+def stop(ros, process, timeout: float = 30.0):
+    """Ctrl-C to our process (it prints its summary and exits 0), then its output."""
+    if process.poll() is None:
+        process.send_signal(signal.SIGINT)
+    return ros.finish(process, timeout=timeout)
+
+
+def wait_transform(client, device: str, seconds: float, predicate=lambda m: True):
+    """Latest TRANSFORM of `device` satisfying `predicate`, or the last one seen (None if none)."""
+    end = time.monotonic() + seconds
+    last = None
+    while time.monotonic() < end:
+        message = client.wait_for_message(device, timeout=0.5)
+        if message is not None and message.message_type == 'TRANSFORM':
+            last = message
+            if predicate(message.matrix):
+                return message
+    return last
+
+
+def test_rclpy_tf_arrives_in_pyigtl_as_transform_in_millimetres(ros):
+    port = free_port()
+    peer = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.1, -0.02, 0.3], 'q': QUARTER_TURN_Z}),
+                       '--seconds', '25')
+    ours = start_ours(ros, port, '--lookup', 'world:needle', '--seconds', '20')
+    wait_ready(ours)
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    try:
+        message = wait_transform(client, 'needle', 15, lambda m: abs(m[0, 3] - 100.0) < 1e-3)
+    finally:
+        client.stop()
+    stop(ros, ours)
+    assert message is not None, 'no TRANSFORM "needle" arrived'
+    assert message.device_name == 'needle'
+    m = message.matrix
+    assert np.allclose(m[:3, 3], [100.0, -20.0, 300.0], atol=1e-3), m  # metres -> mm
+    assert np.allclose(m[:3, :3], [[0, -1, 0], [1, 0, 0], [0, 0, 1]], atol=1e-6), m
+
+
+def test_robot_links_arrive_as_transforms_and_visuals_once_as_polydata_with_their_bounds(ros):
+    port = free_port()
+    env = dict(ros.env)
+    for key, value in tf2_msgs_env().items():
+        env[key] = ':'.join(filter(None, [value, env.get(key)]))
+    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '25'], env)
+    assert json.loads(rsp.stdout.readline())['ready']
+    expected = json.loads(rsp.stdout.readline())['links']  # yourdfpy's forward kinematics (m)
+    ours = start_ours(ros, port, '--robot', '--seconds', '22')
+    wait_ready(ours)
+    raw = RawClient(port)
+    # Until the robot is loaded and its links placed by tf (each visual is resent as its link
+    # moves into place), then 4 s of a robot standing still: nothing may be resent then.
+    messages = []
+    end = time.monotonic() + 15
+    while time.monotonic() < end and not any(t == 'POLYDATA' and d == 'needle_tip:visual0' for t, d, _, _ in messages):
+        messages += raw.read(0.5)
+    messages += raw.read(3.0)
+    still = raw.read(4.0)
+    raw.close()
+    stop(ros, ours)
+    resent = [d for t, d, _, _ in still if t == 'POLYDATA']
+    assert not resent, f'visuals resent while the robot stood still: {resent}'
+    assert any(t == 'TRANSFORM' for t, _, _, _ in still), 'transforms stopped'
+    messages += still
+    transforms = {d: body for t, d, _, body in messages if t == 'TRANSFORM'}
+    polydata = {d: (v, body) for t, d, v, body in messages if t == 'POLYDATA'}  # the latest of each
+    # Every link, named by its node ("robot:<link>"), at yourdfpy's pose in mm.
+    for link, rows in expected.items():
+        device = f'robot:{link}' if len(f'robot:{link}') <= 20 else link
+        assert device in transforms, (device, sorted(transforms))
+        values = struct.unpack('>12f', transforms[device])  # R columns then translation (transform.md)
+        translation = values[9:12]
+        assert np.allclose(translation, [1000.0 * rows[i][3] for i in range(3)], atol=1e-3), (link, translation)
+    # Every visual of the URDF (11), baked in world coordinates.
+    assert len(polydata) == 11, sorted(polydata)
+    tip = polydata['needle_tip:visual0'][1]
+    points = np.array(polydata_points(tip))
+    centre = [1000.0 * expected['needle_tip'][i][3] for i in range(3)]
+    # A 4 mm box (URDF) around the tip link's origin.
+    assert np.allclose(points.min(axis=0), np.array(centre) - 2.0, atol=1e-3), points.min(axis=0)
+    assert np.allclose(points.max(axis=0), np.array(centre) + 2.0, atol=1e-3), points.max(axis=0)
+
+
+def test_link_local_models_carry_their_link_as_metadata(ros):
+    port = free_port()
+    env = dict(ros.env)
+    for key, value in tf2_msgs_env().items():
+        env[key] = ':'.join(filter(None, [value, env.get(key)]))
+    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '20'], env)
+    ours = start_ours(ros, port, '--robot', '--link-local', '--seconds', '15')
+    wait_ready(ours)
+    raw = RawClient(port)
+    messages = []
+    end = time.monotonic() + 12
+    while time.monotonic() < end and not any(d == 'needle_tip:visual0' for _, d, _, _ in messages):
+        messages += raw.read(0.5)
+    raw.close()
+    stop(ros, ours)
+    tip = [(v, body) for t, d, v, body in messages if t == 'POLYDATA' and d == 'needle_tip:visual0']
+    assert tip, 'no POLYDATA for the tip visual'
+    version, body = tip[0]
+    assert version == 2
+    assert v2_metadata(body)['ros.parent'] == 'robot:needle_tip'
+    points = np.array(polydata_points(body, version))
+    assert np.allclose(points.min(axis=0), [-2, -2, -2], atol=1e-3)  # link-local: around 0
+    assert np.allclose(points.max(axis=0), [2, 2, 2], atol=1e-3)
+
+
+def test_rclpy_image_arrives_as_image_with_its_pixels_and_pose(ros):
+    port = free_port()
+    pixels = list(range(10, 22))  # 4 wide, 3 high, mono8
+    image = {'header': {'frame_id': 'camera'}, 'height': 3, 'width': 4, 'encoding': 'mono8',
+             'is_bigendian': 0, 'step': 4, 'data': pixels}
+    tf = ros.tf_peer('tf_pub', 'world', 'camera', json.dumps({'t': [0.1, 0.0, 0.05], 'q': [0, 0, 0, 1]}),
+                     '--seconds', '25')
+    ours = start_ours(ros, port, '--image', '/camera/image', '--lookup', 'world:camera', '--seconds', '20')
+    wait_ready(ours)
+    pub = ros.peer('pub', '/camera/image', 'sensor_msgs/msg/Image', json.dumps(image), '--count', '40',
+                   '--rate', '5', '--wait', '10')
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    message = None
+    try:
+        end = time.monotonic() + 15
+        while time.monotonic() < end:
+            got = client.wait_for_message('camera_image', timeout=0.5)
+            if got is not None and got.message_type == 'IMAGE':
+                message = got
+                if abs(got.ijk_to_world_matrix[0, 3] - 100.0) < 10.0:  # posed once tf arrived
+                    break
+    finally:
+        client.stop()
+    stop(ros, ours)
+    assert message is not None, 'no IMAGE "camera_image" arrived'
+    data = np.asarray(message.image)
+    assert data.shape in ((1, 3, 4), (3, 4)), data.shape
+    rows = data.reshape(3, 4)
+    ros_rows = np.array(pixels).reshape(3, 4)
+    # Same pixels, row order as our image keeps it (VTK's first row may be ROS's last).
+    assert np.array_equal(rows, ros_rows) or np.array_equal(rows, ros_rows[::-1]), rows
+    m = message.ijk_to_world_matrix
+    spacing = np.linalg.norm(m[:3, :3], axis=0)
+    assert np.all(spacing > 0)
+    # pyigtl gives the first voxel's position (corner): the camera frame at (100, 0, 50) mm plus
+    # the image's own origin, which for a ROS image is 0 within a pixel.
+    assert np.allclose(m[:3, 3], [100.0, 0.0, 50.0], atol=float(max(spacing)) * 3 + 1e-6), m
+
+
+def test_pyigtl_transform_and_points_come_out_on_ros_in_metres(ros):
+    port = free_port()
+    tf_echo = ros.tf_peer('tf_echo', '--count', '1', '--timeout', '25')
+    wait_ready(tf_echo)
+    points_echo = ros.peer('echo', '/slicer/points', 'sensor_msgs/msg/PointCloud', '--count', '1', '--timeout', '25')
+    wait_ready(points_echo)
+    ours = start_ours(ros, port, '--map', 'Target=tf:world:target', '--map', 'F=topic:/slicer/points:PointCloud',
+                      '--seconds', '20')
+    wait_ready(ours)
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    target = np.eye(4)
+    target[:3, :3] = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+    target[:3, 3] = [10.0, 20.0, 30.0]
+    try:
+        end = time.monotonic() + 15
+        while time.monotonic() < end and (tf_echo.poll() is None or points_echo.poll() is None):
+            # As Slicer sends: header v2 with its metadata (the notes, section 2).
+            t = pyigtl.TransformMessage(target, device_name='Target')
+            t.header_version = 2
+            t.metadata = {'MRMLNodeName': 'LinearTransform', 'TransformStatus': 'OK'}
+            client.send_message(t, wait=True)
+            p = pyigtl.PointMessage(positions=[[1.0, 2.0, 3.0], [-4.0, 5.0, 600.0]], names=['F-1', 'F-2'],
+                                    device_name='F')
+            client.send_message(p, wait=True)
+            time.sleep(0.2)
+    finally:
+        client.stop()
+    code, out, err = ros.finish(tf_echo)
+    assert code == 0, err
+    t = json.loads(out.splitlines()[-1])['transforms'][0]
+    assert (t['header']['frame_id'], t['child_frame_id']) == ('world', 'target')
+    assert [round(v, 9) for v in t['transform']['translation'].values()] == [0.01, 0.02, 0.03]
+    q = t['transform']['rotation']
+    assert math.isclose(q['z'], math.sqrt(0.5), abs_tol=1e-6) and math.isclose(q['w'], math.sqrt(0.5), abs_tol=1e-6)
+    code, out, err = ros.finish(points_echo)
+    assert code == 0, err
+    cloud = json.loads(out.splitlines()[-1])
+    got = [[p['x'], p['y'], p['z']] for p in cloud['points']]
+    assert np.allclose(got, [[0.001, 0.002, 0.003], [-0.004, 0.005, 0.6]], atol=1e-7), got
+    code, out, err = stop(ros, ours)
+    summary = json.loads(out.splitlines()[-1])
+    assert summary['received_nodes'].get('Target') == 'vtkROS2TransformNode', summary
+
+
+def test_bad_input_is_survived_explained_and_other_clients_keep_being_served(ros):
+    port = free_port()
+    peer = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.1, 0.0, 0.0], 'q': [0, 0, 0, 1]}),
+                       '--seconds', '30')
+    ours = start_ours(ros, port, '--lookup', 'world:needle', '--seconds', '22')
+    wait_ready(ours)
+    good = RawClient(port)
+    assert any(d == 'needle' for _, d, _, _ in good.read(6.0)), 'the good client got nothing at first'
+    bad_inputs = {
+        'bad header': b'\x00\x07' + b'X' * 100,
+        'oversized': frame('TRANSFORM', 'huge', b'', size=1 << 40),
+        'CRC': frame('TRANSFORM', 'crc', b'\0' * 48, crc=12345),
+        'short body': frame('TRANSFORM', 'short', b'\0' * 10),
+        'bad v2': frame('TRANSFORM', 'v2', b'\x00\x0c' + b'\xff' * 10, version=2),
+        'mid-stream': frame('TRANSFORM', 'cut', b'\0' * 48)[:70],
+    }
+    for name, data in bad_inputs.items():
+        bad = RawClient(port)
+        bad.sock.sendall(data)
+        time.sleep(0.3)
+        bad.close()
+        # The good client is still served, with fresh messages.
+        assert any(d == 'needle' for _, d, _, _ in good.read(1.0)), f'the good client stopped after {name}'
+    # A pyigtl client can still connect and get the transform.
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    try:
+        assert wait_transform(client, 'needle', 8) is not None
+    finally:
+        client.stop()
+    good.close()
+    code, out, err = stop(ros, ours, timeout=40)
+    assert code == 0, err
+    events = '\n'.join(json.loads(l).get('event', '') for l in out.splitlines() if l.startswith('{'))
+    assert 'header version 7' in events
+    assert 'exceeds the limit' in events
+    assert 'CRC mismatch' in events
+    assert 'body of 10 bytes, expected 48' in events + err
+    assert 'header v2 sections' in events
+    assert 'in the middle of a message (70 bytes of it read)' in events, events
+
+
+def test_client_mode_reaches_a_pyigtl_server(ros):
+    port = free_port()
+    peer = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.0, 0.25, 0.0], 'q': [0, 0, 0, 1]}),
+                       '--seconds', '25')
+    server = pyigtl.OpenIGTLinkServer(port=port, local_server=True)
+    try:
+        ours = start_ours(ros, port, '--client', '--lookup', 'world:needle', '--seconds', '15')
+        wait_ready(ours)
+        message = wait_transform(server, 'needle', 12, lambda m: abs(m[1, 3] - 250.0) < 1e-3)
+    finally:
+        server.stop()
+    stop(ros, ours)
+    assert message is not None and np.allclose(message.matrix[:3, 3], [0.0, 250.0, 0.0], atol=1e-3)
