@@ -119,6 +119,14 @@ set_property(GLOBAL PROPERTY _ROS2VTK_NO_INSTALL_MODULES \"\${_r2v_sub_modules}\
     CMAKE_DESTINATION     "${CMAKE_INSTALL_LIBDIR}/cmake/ros2vtk"
     LICENSE_DESTINATION   "${CMAKE_INSTALL_DATAROOTDIR}/licenses/ros2vtk"
     HIERARCHY_DESTINATION "${CMAKE_INSTALL_LIBDIR}/vtk/hierarchy/ros2vtk")
+  # Installed module libraries find their sibling libraries (libros2vtkDisplay.so needs
+  # libros2vtkNodes.so): the Python extensions' RUNPATH does not reach a library's own needs.
+  foreach(_r2v_module IN LISTS _r2v_modules)
+    get_target_property(_r2v_library "${_r2v_module}" ALIASED_TARGET)
+    if(_r2v_library)
+      set_property(TARGET "${_r2v_library}" APPEND PROPERTY INSTALL_RPATH "\$ORIGIN")
+    endif()
+  endforeach()
 
   if(_r2v_WRAP_PYTHON)
     # Exported modules also export their Python package (INTERFACE_vtk_module_python_package):
