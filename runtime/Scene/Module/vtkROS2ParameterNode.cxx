@@ -68,7 +68,7 @@ bool vtkROS2ParameterNode::Attach(vtkROS2NodeNode* rosNode, const std::string& r
     client->add(name);
   }
   this->Internals->Client = std::move(client);
-  this->SetNodeReferenceID("ros2Node", rosNode->GetID());
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   return true;
 }
 
@@ -292,7 +292,7 @@ std::string vtkROS2ParameterNode::PrintParameter(const char* name) const
 //------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2ParameterNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------
