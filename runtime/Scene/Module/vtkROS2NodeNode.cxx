@@ -16,6 +16,7 @@
 #include "ros2vtk/tf2/BufferCore.hpp"
 #include "ros2vtk/tf2_ros/TransformBroadcaster.hpp"
 #include "ros2vtk/tf2_ros/TransformListener.hpp"
+#include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/wire/ParameterServer.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -944,13 +945,13 @@ bool SetOwnParameter(ros2vtk::wire::ParameterServer* server, const char* name, u
   }                                                                                                 \
   return true;
 
-bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value) { ROS2VTK_SET_OWN_PARAMETER(1, bool_value) }
-bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value) { ROS2VTK_SET_OWN_PARAMETER(2, integer_value) }
-bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value) { ROS2VTK_SET_OWN_PARAMETER(3, double_value) }
+bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_BOOL, bool_value) }
+bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_INTEGER, integer_value) }
+bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_DOUBLE, double_value) }
 bool vtkROS2NodeNode::SetParameterAsString(const char* name, const char* text)
 {
   const std::string value = text ? text : "";
-  ROS2VTK_SET_OWN_PARAMETER(4, string_value)
+  ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_STRING, string_value)
 }
 #undef ROS2VTK_SET_OWN_PARAMETER
 

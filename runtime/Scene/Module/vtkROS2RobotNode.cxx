@@ -8,6 +8,7 @@
 #include "vtkROS2Tf2LookupNode.h"
 #include "vtkROS2TransformNode.h"
 
+#include "ros2vtk/convert/Units.hpp"
 #include "ros2vtk/robot/RobotLoader.hpp"
 
 #include "vtkCallbackCommand.h"
@@ -32,7 +33,7 @@ const char* const BaseRole = "robotBase";
 const char* const LinkRole = "robotLink";
 const char* const LinkAttribute = "ros2vtk.link";
 const char* const PlaceholderAttribute = "ros2vtk.placeholder";
-constexpr double MillimetresPerMetre = 1000.0;
+constexpr double MillimetresPerMetre = ros2vtk::convert::kMillimetresPerMetre;
 
 // Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
 // shared through the loader's cache) and the matrix brings it into the millimetre scene.
