@@ -5,8 +5,10 @@
 //   pub = node->CreateAndAddPublisherNode("String", "/pub");
 //   node->Spin(); // on the thread that owns the scene
 //
-// Publishers and subscribers are scene nodes of their own; the ROS node references them
-// (roles "publisher" / "subscriber") and they reference it (role "ROS2Node").
+// Publishers, subscribers, tf2 lookups, parameters, services and robots are scene nodes of their
+// own (children): the ROS node references them by the role of their kind ("publisher",
+// "tf2Lookup", ...) and they reference it (vtkROS2SceneNode::ROS2NodeReferenceRole). Spin order,
+// roles and the child index: docs/architecture.md.
 #ifndef vtkROS2NodeNode_h
 #define vtkROS2NodeNode_h
 
