@@ -1,7 +1,7 @@
-"""`python -m ros2vtk igtl`: serve the ROS 2 scene to an unmodified 3D Slicer over OpenIGTLink.
+"""`ros2vtk igtl` (`python -m ros2vtk igtl`): serve the ROS 2 scene to an unmodified 3D Slicer over OpenIGTLink.
 
-    python -m ros2vtk igtl --lookup world:tool --robot          # Slicer connects to 127.0.0.1:18944
-    python -m ros2vtk igtl --image /camera/image --map Target=tf:world:target
+    ros2vtk igtl --lookup world:tool --robot          # Slicer connects to 127.0.0.1:18944
+    ros2vtk igtl --image /camera/image --map Target=tf:world:target
 
 Scene → Slicer: tf lookups and robot links as TRANSFORM (mm), robot visuals as POLYDATA, images
 as IMAGE, point clouds as POLYDATA points, strings as STRING. Slicer → ROS: --map DEVICE=tf:PARENT:CHILD

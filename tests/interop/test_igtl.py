@@ -72,16 +72,17 @@ def test_robot_links_arrive_as_transforms_and_visuals_once_as_polydata_with_thei
     env = dict(ros.env)
     for key, value in tf2_msgs_env().items():
         env[key] = ':'.join(filter(None, [value, env.get(key)]))
-    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '25'], env)
+    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '60'], env)
     assert json.loads(rsp.stdout.readline())['ready']
-    expected = json.loads(rsp.stdout.readline())['links']  # yourdfpy's forward kinematics (m)
-    ours = start_ours(ros, port, '--robot', '--seconds', '22')
+    ours = start_ours(ros, port, '--robot', '--seconds', '50')
     wait_ready(ours)
+    # Printed once our robot's lookups listen to /tf: yourdfpy's forward kinematics (m).
+    expected = json.loads(rsp.stdout.readline())['links']
     raw = RawClient(port)
     # Until the robot is loaded and its links placed by tf (each visual is resent as its link
     # moves into place), then 4 s of a robot standing still: nothing may be resent then.
     messages = []
-    end = time.monotonic() + 15
+    end = time.monotonic() + 30  # robot load under a loaded machine
     while time.monotonic() < end and not any(t == 'POLYDATA' and d == 'needle_tip:visual0' for t, d, _, _ in messages):
         messages += raw.read(0.5)
     messages += raw.read(3.0)
@@ -116,18 +117,23 @@ def test_link_local_models_carry_their_link_as_metadata(ros):
     env = dict(ros.env)
     for key, value in tf2_msgs_env().items():
         env[key] = ':'.join(filter(None, [value, env.get(key)]))
-    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '20'], env)
-    ours = start_ours(ros, port, '--robot', '--link-local', '--seconds', '15')
+    rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '60'], env)
+    ours = start_ours(ros, port, '--robot', '--link-local', '--seconds', '50')
     wait_ready(ours)
     raw = RawClient(port)
     messages = []
-    end = time.monotonic() + 12
+    end = time.monotonic() + 30  # robot load under a loaded machine
     while time.monotonic() < end and not any(d == 'needle_tip:visual0' for _, d, _, _ in messages):
         messages += raw.read(0.5)
     raw.close()
+    # A client that connects later (Slicer reconnecting) gets the meshes again, sent once above.
+    again = RawClient(port)
+    later = again.read(3.0)
+    again.close()
     stop(ros, ours)
     tip = [(v, body) for t, d, v, body in messages if t == 'POLYDATA' and d == 'needle_tip:visual0']
     assert tip, 'no POLYDATA for the tip visual'
+    assert [d for t, d, _, _ in later if t == 'POLYDATA'].count('needle_tip:visual0') == 1, later
     version, body = tip[0]
     assert version == 2
     assert v2_metadata(body)['ros.parent'] == 'robot:needle_tip'
@@ -165,11 +171,13 @@ def test_rclpy_image_arrives_as_image_with_its_pixels_and_pose(ros):
     assert data.shape in ((1, 3, 4), (3, 4)), data.shape
     rows = data.reshape(3, 4)
     ros_rows = np.array(pixels).reshape(3, 4)
-    # Same pixels, row order as our image keeps it (VTK's first row may be ROS's last).
-    assert np.array_equal(rows, ros_rows) or np.array_equal(rows, ros_rows[::-1]), rows
+    # VTK images start at the bottom row (runtime/Convert/README.md: ROS row 0 = top), and the j axis
+    # points up (+A in Slicer), so the picture stands upright: the first row sent is ROS's last.
+    assert np.array_equal(rows, ros_rows[::-1]), rows
     m = message.ijk_to_world_matrix
     spacing = np.linalg.norm(m[:3, :3], axis=0)
     assert np.all(spacing > 0)
+    assert np.allclose(m[:3, 0] / spacing[0], [1, 0, 0]) and np.allclose(m[:3, 1] / spacing[1], [0, 1, 0]), m
     # pyigtl gives the first voxel's position (corner): the camera frame at (100, 0, 50) mm plus
     # the image's own origin, which for a ROS image is 0 within a pixel.
     assert np.allclose(m[:3, 3], [100.0, 0.0, 50.0], atol=float(max(spacing)) * 3 + 1e-6), m
@@ -258,6 +266,8 @@ def test_bad_input_is_survived_explained_and_other_clients_keep_being_served(ros
     assert 'body of 10 bytes, expected 48' in events + err
     assert 'header v2 sections' in events
     assert 'in the middle of a message (70 bytes of it read)' in events, events
+    summary = json.loads(out.splitlines()[-1])
+    assert summary['bad'] == 5, summary  # all but the cut message (a lost connection, not a message)
 
 
 def test_client_mode_reaches_a_pyigtl_server(ros):
@@ -273,3 +283,58 @@ def test_client_mode_reaches_a_pyigtl_server(ros):
         server.stop()
     stop(ros, ours)
     assert message is not None and np.allclose(message.matrix[:3, 3], [0.0, 250.0, 0.0], atol=1e-3)
+
+
+def test_position_message_comes_out_as_pose_stamped_in_metres(ros):
+    """POSITION (position.md: 3 float32 mm + quaternion x, y, z, w), framed by the test's own
+    encoder since pyigtl's PositionMessage does not follow the spec layout."""
+    port = free_port()
+    echo = ros.peer('echo', '/slicer/probe', 'geometry_msgs/msg/PoseStamped', '--count', '1', '--timeout', '25')
+    wait_ready(echo)
+    ours = start_ours(ros, port, '--map', 'Probe=topic:/slicer/probe:PoseStamped', '--seconds', '20')
+    wait_ready(ours)
+    raw = RawClient(port)
+    body = struct.pack('>7f', 5.0, -6.0, 70.0, *QUARTER_TURN_Z)
+    end = time.monotonic() + 15
+    while time.monotonic() < end and echo.poll() is None:
+        raw.sock.sendall(frame('POSITION', 'Probe', body))
+        raw.read(0.2)
+    raw.close()
+    code, out, err = ros.finish(echo)
+    stop(ros, ours)
+    assert code == 0, err
+    pose = json.loads(out.splitlines()[-1])['pose']
+    assert np.allclose([pose['position'][k] for k in 'xyz'], [0.005, -0.006, 0.07], atol=1e-7), pose
+    q = pose['orientation']
+    assert np.allclose([q['x'], q['y'], q['z'], q['w']], QUARTER_TURN_Z, atol=1e-6), q
+
+
+def test_pyigtl_string_and_image_come_out_on_ros_topics(ros):
+    port = free_port()
+    text_echo = ros.peer('echo', '/slicer/note', 'std_msgs/msg/String', '--count', '1', '--timeout', '25')
+    wait_ready(text_echo)
+    image_echo = ros.peer('echo', '/slicer/scan', 'sensor_msgs/msg/Image', '--count', '1', '--timeout', '25')
+    wait_ready(image_echo)
+    ours = start_ours(ros, port, '--map', 'Note=topic:/slicer/note:String',
+                      '--map', 'Scan=topic:/slicer/scan:Image', '--seconds', '20')
+    wait_ready(ours)
+    pixels = np.arange(12, dtype=np.uint8).reshape(1, 3, 4) * 7  # (k, j, i): 4 wide, 3 high
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    try:
+        end = time.monotonic() + 15
+        while time.monotonic() < end and (text_echo.poll() is None or image_echo.poll() is None):
+            client.send_message(pyigtl.StringMessage('needle inserted', device_name='Note'), wait=True)
+            client.send_message(pyigtl.ImageMessage(pixels, device_name='Scan'), wait=True)
+            time.sleep(0.2)
+    finally:
+        client.stop()
+    code, out, err = ros.finish(text_echo)
+    assert code == 0, err
+    assert json.loads(out.splitlines()[-1])['data'] == 'needle inserted'
+    code, out, err = ros.finish(image_echo)
+    assert code == 0, err
+    image = json.loads(out.splitlines()[-1])
+    assert (image['width'], image['height'], image['encoding']) == (4, 3, 'mono8'), image
+    # OpenIGTLink's j runs up like VTK's; ROS row 0 is the top: rows come out reversed.
+    assert np.array_equal(np.array(image['data'], dtype=np.uint8).reshape(3, 4), pixels[0][::-1]), image['data']
+    stop(ros, ours)

@@ -31,7 +31,7 @@ struct Grid
 };
 
 bool resolve_grid(const MultiArrayLayout& layout, size_t data_size, const char* where,
-  Grid* grid, std::string* error)
+  uint64_t max_columns, Grid* grid, std::string* error)
 {
   Grid g;
   g.offset = layout.data_offset;
@@ -82,11 +82,11 @@ bool resolve_grid(const MultiArrayLayout& layout, size_t data_size, const char* 
           " dimensions; only 0, 1 or 2 map to VTK arrays and tables");
   }
   // Bounded before anything is allocated from these numbers: the sizes come off the wire.
-  if (g.cols > kMaxTableColumns)
+  if (g.cols > max_columns)
   {
     return fail(error, where,
       "layout asks for " + std::to_string(g.cols) + " columns; at most " +
-        std::to_string(kMaxTableColumns) + " are taken");
+        std::to_string(max_columns) + " are taken");
   }
   if (g.cols == 0 && g.rows > 0)
   {
@@ -206,7 +206,7 @@ bool grid_to_table(const MultiArrayLayout& layout, const std::vector<T>& data, v
     return fail(error, where, "output table is null");
   }
   Grid g;
-  if (!resolve_grid(layout, data.size(), where, &g, error))
+  if (!resolve_grid(layout, data.size(), where, kMaxTableColumns, &g, error))
   {
     return false;
   }
@@ -305,7 +305,7 @@ bool grid_to_array(const MultiArrayLayout& layout, const std::vector<T>& data,
     return fail(error, where, "output array is null");
   }
   Grid g;
-  if (!resolve_grid(layout, data.size(), where, &g, error))
+  if (!resolve_grid(layout, data.size(), where, kMaxArrayComponents, &g, error))
   {
     return false;
   }

@@ -5,6 +5,7 @@
 #include "ros2vtk/igtl/Codec.hpp"
 #include "ros2vtk/igtl/Endpoint.hpp"
 
+#include "NodeClassRegistry.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2PublisherImageNode.h"
@@ -160,6 +161,7 @@ public:
   std::map<std::string, vtkSmartPointer<vtkImageData>> ReceivedImages;
   std::map<std::string, std::string> ReceivedStrings;
   std::set<std::string> Warned;
+  vtkTypeInt64 BadContent = 0; // well-framed messages whose body does not fit their type
 
   int HandleFrame(vtkROS2IGTLConnectorNode* self, const igtl::Frame& frame);
   void SendScene(vtkROS2IGTLConnectorNode* self);
@@ -183,10 +185,23 @@ public:
 
 vtkStandardNewMacro(vtkROS2IGTLConnectorNode);
 
+namespace {
+// The scene creates nodes by class name (vtkROS2Scene::CreateNodeByClass): one registry line.
+const bool ConnectorRegistered = [] {
+  std::string error;
+  return ros2vtk::scene::NodeClassRegistry::instance().add(
+    { "", "vtkROS2IGTLConnectorNode", "", ros2vtk::scene::NodeDirection::Other,
+      []() -> vtkROS2SceneNode* { return vtkROS2IGTLConnectorNode::New(); } },
+    &error);
+}();
+} // namespace
+
 //------------------------------------------------------------------------------
 vtkROS2IGTLConnectorNode::vtkROS2IGTLConnectorNode()
   : Internals(new vtkInternals)
 {
+  // Not in saved scenes yet: a restored connector would need its sockets and routes back.
+  this->SetSaveWithScene(false);
 }
 
 //------------------------------------------------------------------------------
@@ -271,9 +286,9 @@ void vtkROS2IGTLConnectorNode::Stop()
   if (in.Endpoint.is_started())
   {
     in.Endpoint.stop();
-    for (const std::string& line : in.Endpoint.take_events())
+    for (const igtl::Endpoint::Event& event : in.Endpoint.take_events())
     {
-      in.AddLog(line);
+      in.AddLog(event.text);
     }
   }
   in.State = "off";
@@ -302,7 +317,8 @@ vtkTypeInt64 vtkROS2IGTLConnectorNode::GetNumberOfMessagesSent() const
 
 vtkTypeInt64 vtkROS2IGTLConnectorNode::GetNumberOfBadMessages() const
 {
-  return static_cast<vtkTypeInt64>(this->Internals->Endpoint.bad_messages());
+  return static_cast<vtkTypeInt64>(this->Internals->Endpoint.bad_messages()) +
+    this->Internals->BadContent;
 }
 
 vtkTypeInt64 vtkROS2IGTLConnectorNode::GetNumberOfDroppedMessages() const
@@ -437,17 +453,13 @@ int vtkROS2IGTLConnectorNode::Update()
   {
     handled += in.HandleFrame(this, item.frame);
   }
-  for (const std::string& line : in.Endpoint.take_events())
+  for (const igtl::Endpoint::Event& event : in.Endpoint.take_events())
   {
-    in.AddLog(line);
-    if (line.find(" closed: ") != std::string::npos || line.find(": ") != std::string::npos)
+    in.AddLog(event.text);
+    if (event.problem)
     {
-      if (line.find("closed: disconnected") == std::string::npos &&
-        line.find("closed: stopped") == std::string::npos && line.find("peer ") == 0)
-      {
-        in.LastError = line;
-        vtkWarningMacro("OpenIGTLink " << line);
-      }
+      in.LastError = event.text;
+      vtkWarningMacro("OpenIGTLink " << event.text);
     }
   }
   if (in.Endpoint.peer_count() > 0)
@@ -981,6 +993,7 @@ int vtkROS2IGTLConnectorNode::vtkInternals::HandleFrame(
   {
     this->LastError = error;
     this->AddLog(error);
+    ++this->BadContent;
     vtkWarningWithObjectMacro(self, "OpenIGTLink: " << error);
     return 0;
   }

@@ -66,6 +66,7 @@ public:
   int GetNumberOfClients() const;
   vtkTypeInt64 GetNumberOfMessagesSent() const;
   vtkTypeInt64 GetNumberOfMessagesReceived() const { return this->MessagesReceived; }
+  /// Messages dropped as malformed: header, size limit, CRC, v2 sections, or a body unfit for its type.
   vtkTypeInt64 GetNumberOfBadMessages() const;
   vtkTypeInt64 GetNumberOfDroppedMessages() const;
   /// Recent events (connections, disconnections, bad input and why), newest last.

@@ -158,18 +158,18 @@ std::size_t Endpoint::peer_count() const
   return this->Peers.size();
 }
 
-std::vector<std::string> Endpoint::take_events()
+std::vector<Endpoint::Event> Endpoint::take_events()
 {
-  std::vector<std::string> out;
+  std::vector<Event> out;
   out.swap(this->Events);
   return out;
 }
 
-void Endpoint::event(const std::string& line)
+void Endpoint::event(const std::string& line, bool problem)
 {
   if (this->Events.size() < 1000) // the owner drains them every spin; bounded if it does not
   {
-    this->Events.push_back(line);
+    this->Events.push_back({ line, problem });
   }
 }
 
@@ -193,7 +193,10 @@ void Endpoint::close_peer(std::size_t index, const std::string& reason)
 {
   Peer& peer = *this->Peers[index];
   close(peer.fd);
-  this->event("peer " + std::to_string(peer.id) + " (" + peer.who + ") closed: " + reason);
+  // A peer leaving between messages (FIN, or a reset as a closing Slicer may send) is traffic.
+  const bool plain = reason == "disconnected" || reason == "stopped" ||
+    (reason.rfind("connection lost", 0) == 0 && reason.find("middle") == std::string::npos);
+  this->event("peer " + std::to_string(peer.id) + " (" + peer.who + ") closed: " + reason, !plain);
   this->Peers.erase(this->Peers.begin() + static_cast<long>(index));
   if (this->Opts.client)
   {
@@ -250,7 +253,7 @@ void Endpoint::try_connect()
   sockaddr_in address;
   if (!resolve(this->Opts.host, this->Opts.port, address, error))
   {
-    this->event(error);
+    this->event(error, true);
     this->NextConnectTime = now_seconds() + this->Opts.reconnect_interval;
     return;
   }
@@ -354,7 +357,7 @@ bool Endpoint::read(Peer& peer, std::vector<Received>& received, std::string& er
       error = why;
       return false;
     }
-    this->event("peer " + std::to_string(peer.id) + ": " + why);
+    this->event("peer " + std::to_string(peer.id) + ": " + why, true);
   }
 }
 

@@ -291,8 +291,14 @@ vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequestYAML(const char* yaml)
 int vtkROS2ServiceClientNode::ProcessResponses()
 {
   vtkInternals& internals = *this->Internals;
-  if (!internals.Client)
+  if (!internals.Client || internals.Pendings.empty())
   {
+    // Nothing asked: drop strays (answers to timed-out requests) without touching the graph.
+    std::vector<ros2vtk::wire::ServiceResponse> strays;
+    if (internals.Client)
+    {
+      internals.Client->take(strays);
+    }
     return 0;
   }
   std::vector<ros2vtk::wire::ServiceResponse> responses;
@@ -312,7 +318,9 @@ int vtkROS2ServiceClientNode::ProcessResponses()
   }
   // Requests waiting for a server go out once it is there (the first spin that sees it).
   std::vector<std::pair<vtkTypeInt64, std::string>> failed;
-  const bool ready = internals.Client->is_server_available();
+  const bool waiting = std::any_of(internals.Pendings.begin(), internals.Pendings.end(),
+    [](const vtkInternals::Pending& p) { return p.Sequence < 0; });
+  const bool ready = waiting && internals.Client->is_server_available();
   const Clock::time_point now = Clock::now();
   for (auto it = internals.Pendings.begin(); it != internals.Pendings.end();)
   {

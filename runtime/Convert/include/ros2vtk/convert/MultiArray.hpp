@@ -44,11 +44,14 @@ struct MultiArrayLayout
   uint32_t data_offset = 0;
 };
 
-/// A table gets one vtkDataArray per column (an array one component per column); a layout of 0
+/// A table gets one vtkDataArray per column, an array one component per column; a layout of 0
 /// rows but 4e9 columns passes every bounds check against the data, so the column count is
-/// capped for both. A layout of N rows and 0 columns is refused for both (VTK cannot hold it
-/// without allocating N values that no data backs).
-constexpr uint64_t kMaxTableColumns = 65536;
+/// capped: for tables at 1024, because vtkTable adds columns in linear time each (a 41-byte
+/// message of 0 x 65536 took minutes: found by tests/fuzz), for arrays at 65536 components. A
+/// layout of N rows and 0 columns is refused for both (VTK cannot hold it without allocating N
+/// values that no data backs).
+constexpr uint64_t kMaxTableColumns = 1024;
+constexpr uint64_t kMaxArrayComponents = 65536;
 
 /// Int64MultiArray / Float64MultiArray -> vtkTable (layout with 0, 1 or 2 dims; more is an
 /// error). Fails when an index the layout names lies beyond the data, on a stride that cannot

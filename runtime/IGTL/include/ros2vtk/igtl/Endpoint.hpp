@@ -34,6 +34,13 @@ public:
     double reconnect_interval = 0.5; ///< client mode, seconds
   };
 
+  /// A log line; `problem` when it reports bad input or a failure rather than normal traffic.
+  struct Event
+  {
+    std::string text;
+    bool problem = false;
+  };
+
   struct Received
   {
     int peer = 0; ///< which connection sent it
@@ -63,7 +70,7 @@ public:
 
   std::size_t peer_count() const;
   /// Log lines since the last call (connections, disconnections, bad input with the reason).
-  std::vector<std::string> take_events();
+  std::vector<Event> take_events();
   std::uint64_t messages_sent() const { return this->Sent; }
   std::uint64_t messages_dropped() const { return this->Dropped; }
   std::uint64_t bad_messages() const { return this->Bad; }
@@ -78,7 +85,7 @@ private:
   void enqueue(Peer& peer, const std::string& key, const Bytes& bytes);
   bool flush(Peer& peer, std::string& error);
   bool read(Peer& peer, std::vector<Received>& received, std::string& error);
-  void event(const std::string& line);
+  void event(const std::string& line, bool problem = false);
 
   Options Opts;
   int ListenFd = -1;
@@ -88,7 +95,7 @@ private:
   bool Started = false;
   std::vector<std::unique_ptr<Peer>> Peers;
   std::map<std::string, Bytes> Retained;
-  std::vector<std::string> Events;
+  std::vector<Event> Events;
   std::uint64_t Sent = 0;
   std::uint64_t Dropped = 0;
   std::uint64_t Bad = 0;

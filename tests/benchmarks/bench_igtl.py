@@ -1,0 +1,189 @@
+#!/usr/bin/env python3
+"""Benchmark (reported, never asserted): ROS tf in -> OpenIGTLink TRANSFORM out through
+`python -m ros2vtk igtl`, beside a bare OpenIGTLink hop in the same run.
+
+    ROS_DOMAIN_ID=... ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST .venv/bin/python tests/benchmarks/bench_igtl.py \
+        --build build [--rate 100] [--count 1000]
+
+One process holds both ends (one clock): an rclpy node publishes world <- probe on /tf at --rate,
+the translation x carrying the sequence number (1 mm each), and a reader thread on a raw TCP socket
+(the OpenIGTLink framing of tests/interop/igtl_peer.py) timestamps each TRANSFORM as it arrives.
+Latency = arrival - publish. The bare row sends the same TRANSFORM frames over loopback TCP from one
+thread to a reader thread: the floor of the OpenIGTLink leg (ROS-IGTL-Bridge reports < 1.2 ms for
+transforms, Frank et al. 2017). Prints one JSON object.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import socket
+import statistics
+import struct
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / 'interop'))
+from igtl_peer import HEADER, RawClient, frame, free_port  # noqa: E402
+
+
+def summary(latencies_ms: list) -> dict:
+    if not latencies_ms:
+        return {'n': 0}
+    ordered = sorted(latencies_ms)
+    return {'n': len(ordered), 'median_ms': round(statistics.median(ordered), 3),
+            'p99_ms': round(ordered[min(len(ordered) - 1, int(0.99 * len(ordered)))], 3),
+            'max_ms': round(ordered[-1], 3)}
+
+
+def transform_body(x_mm: float) -> bytes:
+    return struct.pack('>12f', 1, 0, 0, 0, 1, 0, 0, 0, 1, x_mm, 0, 0)
+
+
+def bare(count: int, rate: float) -> dict:
+    server = socket.socket()
+    server.bind(('127.0.0.1', 0))
+    server.listen(1)
+    sender = socket.create_connection(server.getsockname())
+    sender.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+    receiver, _ = server.accept()
+    sent = {}
+    latencies = []
+
+    def read():
+        buffer = b''
+        while len(latencies) < count:
+            data = receiver.recv(65536)
+            if not data:
+                return
+            now = time.perf_counter()
+            buffer += data
+            while len(buffer) >= HEADER.size:
+                size = HEADER.unpack(buffer[:HEADER.size])[4]
+                if len(buffer) < HEADER.size + size:
+                    break
+                seq = int(round(struct.unpack('>12f', buffer[HEADER.size:HEADER.size + 48])[9]))
+                buffer = buffer[HEADER.size + size:]
+                latencies.append(1000.0 * (now - sent[seq]))
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    for seq in range(count):
+        sent[seq] = time.perf_counter()
+        sender.sendall(frame('TRANSFORM', 'probe', transform_body(float(seq))))
+        time.sleep(1.0 / rate)
+    reader.join(timeout=5)
+    for s in (sender, receiver, server):
+        s.close()
+    return summary(latencies)
+
+
+def through_ros2vtk(build: Path, count: int, rate: float) -> dict:
+    import rclpy
+    from geometry_msgs.msg import TransformStamped
+    from tf2_msgs.msg import TFMessage
+
+    port = free_port()
+    env = dict(os.environ, PYTHONPATH=str(build / 'python'))
+    ours = subprocess.Popen(['/usr/bin/python3', '-m', 'ros2vtk', 'igtl', '--port', str(port),
+                             '--lookup', 'world:probe', '--seconds', str(count / rate + 20)],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
+    assert json.loads(ours.stdout.readline()).get('ready')
+    rclpy.init()
+    node = rclpy.create_node('bench_igtl_tf')
+    publisher = node.create_publisher(TFMessage, '/tf', 100)
+    raw = RawClient(port)
+    sent = {}
+    latencies = []
+    stop = threading.Event()
+
+    def read():
+        raw.sock.settimeout(0.2)
+        buffer = b''
+        while not stop.is_set():
+            try:
+                data = raw.sock.recv(1 << 20)
+            except socket.timeout:
+                continue
+            if not data:
+                return
+            now = time.perf_counter()
+            buffer += data
+            while len(buffer) >= HEADER.size:
+                _, kind, device, _, size, _ = HEADER.unpack(buffer[:HEADER.size])
+                if len(buffer) < HEADER.size + size:
+                    break
+                body = buffer[HEADER.size:HEADER.size + size]
+                buffer = buffer[HEADER.size + size:]
+                if kind.rstrip(b'\0') == b'TRANSFORM' and device.rstrip(b'\0') == b'probe':
+                    seq = int(round(struct.unpack('>12f', body[:48])[9]))
+                    if seq in sent and seq not in arrived:
+                        arrived.add(seq)
+                        latencies.append(1000.0 * (now - sent[seq]))
+
+    arrived: set = set()
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+
+    def publish(seq: int) -> None:
+        t = TransformStamped()
+        t.header.stamp = node.get_clock().now().to_msg()
+        t.header.frame_id = 'world'
+        t.child_frame_id = 'probe'
+        t.transform.translation.x = seq / 1000.0  # 1 mm per sequence number
+        t.transform.rotation.w = 1.0
+        sent[seq] = time.perf_counter()
+        publisher.publish(TFMessage(transforms=[t]))
+
+    # Warm-up: discovery and the first lookup (not measured).
+    deadline = time.monotonic() + 15
+    seq = 1_000_000
+    while not arrived and time.monotonic() < deadline:
+        publish(seq)
+        seq += 1
+        time.sleep(0.05)
+    arrived.clear()
+    latencies.clear()
+    for seq in range(count):
+        publish(seq)
+        time.sleep(1.0 / rate)
+    time.sleep(0.5)
+    stop.set()
+    reader.join(timeout=2)
+    raw.close()
+    ours.send_signal(2)
+    ours.communicate(timeout=20)
+    node.destroy_node()
+    rclpy.shutdown()
+    result = summary(latencies)
+    result['lost'] = count - len(latencies)  # latest-only: a pose overtaken before sending is dropped
+    return result
+
+
+def main() -> int:
+    try:
+        import tf2_msgs.msg  # noqa: F401
+    except ImportError:  # no wheel: built from its .msg (tests/fixtures/README.md); re-run with it
+        from conftest import tf2_msgs_env
+        env = dict(os.environ)
+        for key, value in tf2_msgs_env().items():
+            env[key] = os.pathsep.join(filter(None, [value, env.get(key)]))
+        return subprocess.call([sys.executable, *sys.argv], env=env)
+    parser = argparse.ArgumentParser()
+    parser.add_argument('--build', type=Path, default=HERE.parents[1] / 'build')
+    parser.add_argument('--rate', type=float, default=100.0)
+    parser.add_argument('--count', type=int, default=1000)
+    args = parser.parse_args()
+    result = {'rate_hz': args.rate, 'count': args.count,
+              'bare_openigtlink_hop': bare(args.count, args.rate),
+              'rclpy_tf_to_igtl_transform': through_ros2vtk(args.build, args.count, args.rate)}
+    print(json.dumps(result))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
