@@ -35,14 +35,15 @@ library target (an ALIAS when VTK names the real target after ``MODULE_NAME``).
   modules only tests use.
 
 The library registers its classes in the scene's node-class registry when it loads, and
-exports ``extern "C" void ros2vtk_register_<target>_nodes()`` to do it explicitly. Rules are
+exports ``extern "C" void ros2vtk_register_<target>_nodes()`` (header ``<target>Register.hpp``)
+to do it explicitly. Rules are
 validated at build time: an unknown ROS type, kind or field path stops the build with
 ``<file>:<line>: message``.
 
 .. code-block:: cmake
 
   ros2vtk_generate(<target>
-    SPECS <file.msg|folder> ...
+    SPECS <file.msg|folder> ... | ROS_PACKAGES <installed package> ...
     [MAPPINGS <rules.toml> ...]
     [DEPENDENCIES <ros2vtk_generate_messages target> ...]
     [PYTHON] [NO_INSTALL])
@@ -148,12 +149,12 @@ function(ros2vtk_generate_nodes target)
     find_package(VTK 9.1 REQUIRED COMPONENTS ${_ROS2VTK_NODES_VTK_COMPONENTS})
   endif()
 
-  # Generator arguments (JSON, rewritten only when they change) and its output list.
+  # Generator arguments (JSON, rewritten only when they change), its outputs and command.
   set(_r2v_out "${CMAKE_CURRENT_BINARY_DIR}/${target}")
   set(_r2v_args_file "${CMAKE_CURRENT_BINARY_DIR}/${target}_args.json")
   _ros2vtk_json_list(_r2v_specs_json ${_r2v_specs})
   _ros2vtk_json_list(_r2v_mappings_json ${_r2v_mappings})
-  file(CONFIGURE OUTPUT "${_r2v_args_file}" CONTENT "{
+  _ros2vtk_add_generator_command("${_r2v_fn}(${target}) ${_r2v_where}" "${target}" "{
   \"family\": \"nodes\",
   \"target\": \"${target}\",
   \"library\": \"${target}\",
@@ -163,31 +164,8 @@ function(ros2vtk_generate_nodes target)
   \"specs\": ${_r2v_specs_json},
   \"mappings\": ${_r2v_mappings_json}
 }
-" @ONLY)
-  execute_process(
-    COMMAND "${CMAKE_COMMAND}" -E env "PYTHONPATH=${_ROS2VTK_GENERATOR_DIR}"
-            "${Python3_EXECUTABLE}" -m ros2vtk_gen --args-file "${_r2v_args_file}" --list-outputs
-    OUTPUT_VARIABLE _r2v_outputs
-    ERROR_VARIABLE _r2v_error
-    RESULT_VARIABLE _r2v_result
-    OUTPUT_STRIP_TRAILING_WHITESPACE)
-  if(NOT _r2v_result EQUAL 0)
-    message(FATAL_ERROR "${_r2v_fn}(${target}): the generator could not list its outputs:\n"
-      "${_r2v_error} ${_r2v_where}")
-  endif()
-  string(REPLACE "\n" ";" _r2v_outputs "${_r2v_outputs}")
-
-  file(GLOB_RECURSE _r2v_generator_files CONFIGURE_DEPENDS
-    "${_ROS2VTK_GENERATOR_DIR}/ros2vtk_gen/*.py")
-  file(GLOB_RECURSE _r2v_template_files CONFIGURE_DEPENDS "${_ROS2VTK_TEMPLATES_DIR}/*.j2")
-  add_custom_command(
-    OUTPUT ${_r2v_outputs}
-    COMMAND "${CMAKE_COMMAND}" -E env "PYTHONPATH=${_ROS2VTK_GENERATOR_DIR}"
-            "${Python3_EXECUTABLE}" -m ros2vtk_gen --args-file "${_r2v_args_file}"
-    DEPENDS ${_r2v_generator_files} ${_r2v_template_files} ${_r2v_specs} ${_r2v_mappings}
-            "${_r2v_args_file}"
-    COMMENT "ros2vtk_gen: generating node classes of ${target}"
-    VERBATIM)
+" "ros2vtk_gen: generating node classes of ${target}" "jinja2, tomllib" _r2v_outputs
+    ${_r2v_specs} ${_r2v_mappings})
   # The module is built in a directory of its own (vtk_module_build adds the folder of its
   # vtk.module), so the generation is reached through this target.
   add_custom_target(${target}_generate DEPENDS ${_r2v_outputs})
@@ -234,6 +212,11 @@ vtk_module_add_module(${_r2v_MODULE_NAME}
   NOWRAP_HEADERS
     ${_r2v_plain_headers_text})
 vtk_module_depend(${_r2v_MODULE_NAME} ${target}_generate)
+# The wrap hierarchy reads the generated headers; Makefile generators know the rule that makes
+# them only in the directory of ${target}_generate, so order it after that target too.
+if(TARGET ${target}-hierarchy)
+  add_dependencies(${target}-hierarchy ${target}_generate)
+endif()
 vtk_module_include(${_r2v_MODULE_NAME} PUBLIC
   \"$<BUILD_INTERFACE:${_r2v_out}/include>\"
   \"$<BUILD_INTERFACE:${_r2v_out}/vtk>\")
@@ -273,29 +256,37 @@ endfunction()
 
 function(ros2vtk_generate target)
   set(_r2v_fn "ros2vtk_generate")
-  cmake_parse_arguments(PARSE_ARGV 1 _r2v "PYTHON;NO_INSTALL" "" "SPECS;MAPPINGS;DEPENDENCIES")
-  if(NOT target OR target MATCHES "^(SPECS|MAPPINGS|DEPENDENCIES|PYTHON|NO_INSTALL)$")
+  cmake_parse_arguments(PARSE_ARGV 1 _r2v "PYTHON;NO_INSTALL" ""
+    "SPECS;ROS_PACKAGES;MAPPINGS;DEPENDENCIES")
+  if(NOT target OR target MATCHES "^(SPECS|ROS_PACKAGES|MAPPINGS|DEPENDENCIES|PYTHON|NO_INSTALL)$")
     message(FATAL_ERROR "${_r2v_fn}(): the first argument must be the target name "
       "(cmake/ros2vtk_generate_nodes.cmake)")
   endif()
   if(_r2v_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${_r2v_fn}(${target}): unknown arguments '${_r2v_UNPARSED_ARGUMENTS}' "
-      "(expected SPECS, MAPPINGS, DEPENDENCIES, PYTHON, NO_INSTALL; "
+      "(expected SPECS, ROS_PACKAGES, MAPPINGS, DEPENDENCIES, PYTHON, NO_INSTALL; "
       "cmake/ros2vtk_generate_nodes.cmake)")
   endif()
-  if(NOT _r2v_SPECS)
+  if(NOT _r2v_SPECS AND NOT _r2v_ROS_PACKAGES)
     message(FATAL_ERROR "${_r2v_fn}(${target}): SPECS is required "
       "(cmake/ros2vtk_generate_nodes.cmake)")
+  endif()
+  set(_r2v_specs_args "")
+  if(_r2v_SPECS)
+    list(APPEND _r2v_specs_args SPECS ${_r2v_SPECS})
+  endif()
+  if(_r2v_ROS_PACKAGES)
+    list(APPEND _r2v_specs_args ROS_PACKAGES ${_r2v_ROS_PACKAGES})
   endif()
   set(_r2v_dependencies "")
   if(_r2v_DEPENDENCIES)
     set(_r2v_dependencies DEPENDENCIES ${_r2v_DEPENDENCIES})
   endif()
   if(NOT _r2v_MAPPINGS)
-    ros2vtk_generate_messages(${target} SPECS ${_r2v_SPECS} ${_r2v_dependencies})
+    ros2vtk_generate_messages(${target} ${_r2v_specs_args} ${_r2v_dependencies})
     return()
   endif()
-  ros2vtk_generate_messages(${target}Messages SPECS ${_r2v_SPECS} ${_r2v_dependencies})
+  ros2vtk_generate_messages(${target}Messages ${_r2v_specs_args} ${_r2v_dependencies})
   set(_r2v_options "")
   foreach(_r2v_option PYTHON NO_INSTALL)
     if(_r2v_${_r2v_option})

@@ -58,9 +58,7 @@ install(DIRECTORY
     "${PROJECT_SOURCE_DIR}/runtime/Tf2Ros/include/"
     "${PROJECT_SOURCE_DIR}/runtime/Robot/include/"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
-get_target_property(_ros2vtk_messages_out ros2vtkMessages ROS2VTK_OUTPUT_DIR)
-install(DIRECTORY "${_ros2vtk_messages_out}/include/"
-  DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+# (msg_specs/CMakeLists.txt installs them, next to the target that makes them).
 
 # The Python package's own files, next to the wrapped modules VTK installs in python/ros2vtk/.
 if(ROS2VTK_WRAP_PYTHON)

@@ -111,3 +111,20 @@ function(_ros2vtk_add_sanitized_twin name)
   set_tests_properties(${name} PROPERTIES LABELS sanitizer TIMEOUT 300
     ENVIRONMENT "ASAN_OPTIONS=max_allocation_size_mb=${ARG_MAX_ALLOCATION_MB}:allocator_may_return_null=0:detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1;${ARG_ENVIRONMENT}")
 endfunction()
+
+# One plain runtime library, as every runtime/<Folder>/CMakeLists.txt makes it: the target
+# ros2vtk<Name> from the given sources, its alias ros2vtk::<Name>, the folder's include/ as PUBLIC
+# include directory (build and install trees) and src/ as PRIVATE one, C++17, our warnings.
+function(_ros2vtk_add_library name)
+  set(_r2v_target "ros2vtk${name}")
+  add_library(${_r2v_target} ${ARGN})
+  add_library(ros2vtk::${name} ALIAS ${_r2v_target})
+  target_include_directories(${_r2v_target}
+    PUBLIC
+      "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>"
+      "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>"
+    PRIVATE
+      "${CMAKE_CURRENT_SOURCE_DIR}/src")
+  target_compile_features(${_r2v_target} PUBLIC cxx_std_17)
+  _ros2vtk_target_warnings(${_r2v_target})
+endfunction()

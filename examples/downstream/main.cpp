@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-extern "C" void ros2vtk_register_needle_guide_nodes();
+#include "needle_guideRegister.hpp" // ros2vtk_register_needle_guide_nodes()
 
 int main()
 {

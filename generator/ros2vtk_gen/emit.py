@@ -277,6 +277,7 @@ def list_outputs(config: Config) -> List[str]:
                                                                                    name)
         paths.extend(path for _, path in pairs)
     paths.append(REGISTER_PATH)
+    paths.append("include/" + naming.register_header(config.target))
     return sorted(set(paths))
 
 
@@ -306,10 +307,21 @@ def plan(config: Config) -> List[Artefact]:
             registered_services.append("::" + naming.cpp_namespace(spec.package, "srv") + "::"
                                        + spec.name)
     headers = sorted({a.path[len("include/"):] for a in artefacts if a.path.startswith("include/")})
+    register_header = naming.register_header(config.target)
+    artefacts.append(Artefact("register.hpp.j2", "include/" + register_header,
+                              f"the specs of target {config.target}", {
+                                  "function": naming.register_function(
+                                      naming.c_identifier(config.target)),
+                                  "guard": naming.include_guard(register_header),
+                                  "what": "message and service types",
+                                  "target": config.target,
+                                  "export_header": "", "export_macro": "",
+                              }))
     artefacts.append(Artefact("msg/register_types.cpp.j2", REGISTER_PATH,
                               f"the specs of target {config.target}", {
                                   "function": naming.register_function(
                                       naming.c_identifier(config.target)),
+                                  "register_header": register_header,
                                   "dependency_functions": [
                                       naming.register_function(naming.c_identifier(target))
                                       for target, _ in config.dependencies if target],

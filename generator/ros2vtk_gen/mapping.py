@@ -75,8 +75,10 @@ class Shape:
     def describe(self) -> str:
         if self.primitives:
             text = " or ".join(self.primitives)
-        else:
+        elif self.members:
             text = "message with " + ", ".join(name for name, _ in self.members)
+        else:
+            text = "messages" if self.sequence else "message"
         return f"sequence of {text}" if self.sequence else text
 
 
@@ -129,6 +131,10 @@ KINDS: Dict[str, Kind] = {
                   vtk_types=("vtkImageData",)),
     "points": Kind(roles=(("sequence", Shape(sequence=True)),), vtk_types=("vtkPoints",),
                    scalable=("sequence",)),
+    # One position or vector (geometry_msgs/Point, Vector3, a field of a custom message) as a
+    # vtkPoints holding exactly one point, scaled like any length when listed in `lengths`.
+    "point": Kind(roles=(("point", XYZ_FLOAT64),), vtk_types=("vtkPoints",),
+                  scalable=("point",)),
     "pointcloud2": Kind(
         roles=(("height", _prim("uint32")), ("width", _prim("uint32")),
                ("fields", _struct(sequence=True, name=_prim("string"), offset=_prim("uint32"),
@@ -335,9 +341,16 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
             raise fail("fields", f"role {name} must be a field path string", BAD_FIELD)
         try:
             resolved = resolve_path(base, value, table)
-            check_shape(resolved.field, shape, table)
         except ValueError as error:
             raise fail("fields", f"role {name}: {prefix}{error}", BAD_FIELD) from None
+        try:
+            check_shape(resolved.field, shape, table)
+        except ValueError as error:
+            hint = ""
+            if kind_name == "points" and resolved.field.container == SCALAR and \
+                    resolved.field.type.is_message:
+                hint = " (for a single point or vector use kind \"point\" with role point)"
+            raise fail("fields", f"role {name}: {prefix}{error}{hint}", BAD_FIELD) from None
         return resolved
 
     roles: Dict[str, Union[ResolvedField, Tuple[ResolvedField, ...]]] = {}

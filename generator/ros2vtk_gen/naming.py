@@ -63,6 +63,12 @@ def register_function(target: str) -> str:
     return f"ros2vtk_register_{target}_types"
 
 
+def register_header(target: str) -> str:
+    """Include path (under include/) of the header declaring a message library's register
+    function: ros2vtk/ros2vtkMessagesRegister.hpp."""
+    return f"ros2vtk/{c_identifier(target)}Register.hpp"
+
+
 def c_identifier(name: str) -> str:
     """A CMake target name made safe for use inside a C identifier."""
     return re.sub(r"[^A-Za-z0-9_]", "_", name)

@@ -41,6 +41,11 @@ def convert_header(target: str) -> str:
     return f"{target}Convert.hpp"
 
 
+def register_header(target: str) -> str:
+    """The header declaring register_function(target), next to the converters' header."""
+    return f"{target}Register.hpp"
+
+
 def register_function(target: str) -> str:
     """The exported C function that registers every node class of a generated library."""
     return f"ros2vtk_register_{naming.c_identifier(target)}_nodes"
@@ -57,6 +62,7 @@ def output_paths(target: str, short_names: Sequence[str]) -> List[Tuple[str, str
         ("convert/convert.hpp.j2", f"include/{convert_header(target)}", ""),
         ("convert/convert.cpp.j2", f"src/{target}Convert.cpp", ""),
         ("node/registration.cxx.j2", f"src/{target}Registration.cxx", ""),
+        ("register.hpp.j2", f"include/{register_header(target)}", ""),
     ]
     for short in short_names:
         for template, class_name in (("node/publisher", publisher_class(short)),
@@ -158,6 +164,14 @@ def plan(target: str, library: str, messages_target: str, mappings: Sequence[str
         "module_header": f"{library}Module.h",
         "convert_header": convert_header(target),
         "register_function": register_function(target),
+        "register_header": register_header(target),
+        "messages_register_header": (naming.register_header(messages_target)
+                                     if messages_target else ""),
+        # register.hpp.j2
+        "function": register_function(target),
+        "guard": naming.include_guard(register_header(target)),
+        "what": "node classes (and their message types)",
+        "export_header": f"{library}Module.h",
         "messages_register_function": (naming.register_function(
             naming.c_identifier(messages_target)) if messages_target else ""),
         "rules": views,

@@ -160,11 +160,10 @@ def main(argv=None) -> int:
         _spin(logic, args.wait)
         print(node.GetTopicNamesAndTypes(), end='')
     elif args.command == 'types':
-        for direction, names in (('publishers', node.GetRegisteredROS2PublisherNodes()),
-                                 ('subscribers', node.GetRegisteredROS2SubscriberNodes())):
-            prefix = 'vtkROS2' + direction[:-1].capitalize()
-            short = [n[len(prefix):-len('Node')] for n in names.split() if n.startswith(prefix) and n.endswith('Node')]
-            print(f'{direction + ":":13}' + ' '.join(short))
+        # Class names, as SlicerROS2's Registered...Nodes(); the short name is the part between
+        # vtkROS2Publisher/vtkROS2Subscriber and Node (what CreateAndAdd...Node takes).
+        print('publishers:  ' + node.GetRegisteredROS2PublisherNodes())
+        print('subscribers: ' + node.GetRegisteredROS2SubscriberNodes())
     elif args.command == 'pub':
         return _pub(logic, node, args)
     elif args.command == 'echo':

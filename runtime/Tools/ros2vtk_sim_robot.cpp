@@ -28,7 +28,7 @@
 #include <sstream>
 #include <thread>
 
-extern "C" void ros2vtk_register_ros2vtkMessages_types();
+#include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
 namespace {
 

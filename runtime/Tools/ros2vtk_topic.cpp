@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-extern "C" void ros2vtk_register_ros2vtkMessages_types();
+#include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
 namespace {
 
@@ -43,13 +43,15 @@ struct Options
   long wait_matched = 0;
   std::string qos = "default";
   std::string node = "ros2vtk_topic";
+  std::string node_namespace = "/";
 };
 
 int usage()
 {
   std::cerr << "usage: ros2vtk-topic list|nodes|types|echo TOPIC TYPE|pub TOPIC TYPE YAML\n"
                "       [--count N] [--rate HZ] [--timeout S] [--wait S] [--qos PROFILE]\n"
-               "       [--wait-matched N] [--node NAME]\n";
+               "       [--wait-matched N] [--node NAME] [--namespace NS]\n"
+               "TOPIC is resolved as rclpy does (relative, ~/private, {node}, {ns}).\n";
   return 2;
 }
 
@@ -81,6 +83,8 @@ bool parse(int argc, char** argv, Options& options)
       options.qos = v;
     else if (arg == "--node" && (v = value("--node")))
       options.node = v;
+    else if (arg == "--namespace" && (v = value("--namespace")))
+      options.node_namespace = v;
     else if (arg.rfind("--", 0) == 0)
       return false;
     else
@@ -106,7 +110,7 @@ const MessageTypeSupport* find_type_or_explain(const std::string& name)
 std::unique_ptr<Participant> make_participant(const Options& options)
 {
   std::string error;
-  auto participant = Participant::create(options.node, "/", ParticipantOptions::from_environment(), &error);
+  auto participant = Participant::create(options.node, options.node_namespace, ParticipantOptions::from_environment(), &error);
   if (!participant)
   {
     std::cerr << "ros2vtk-topic: " << error << "\n";

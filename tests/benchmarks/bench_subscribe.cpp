@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-extern "C" void ros2vtk_register_ros2vtkNodes_nodes();
+#include "ros2vtkNodesRegister.hpp" // ros2vtk_register_ros2vtkNodes_nodes()
 
 namespace {
 

@@ -149,6 +149,7 @@ def test_cli_list_outputs_prints_absolute_paths(tmp_path):
     assert result.returncode == 0
     assert result.stdout.split() == [
         f"{tmp_path}/include/ros2vtk/std_msgs/msg/string.hpp",
+        f"{tmp_path}/include/ros2vtk/tRegister.hpp",   # declares ros2vtk_register_t_types()
         f"{tmp_path}/src/register_types.cpp",
         f"{tmp_path}/src/std_msgs/msg/string__cdr.cpp",
         f"{tmp_path}/src/std_msgs/msg/string__type_support.cpp",

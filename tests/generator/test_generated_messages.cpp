@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-extern "C" void ros2vtk_register_ros2vtkTestMessages_types();
+#include "ros2vtk/ros2vtkTestMessagesRegister.hpp" // ros2vtk_register_ros2vtkTestMessages_types()
 
 namespace {
 

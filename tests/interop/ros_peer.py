@@ -174,11 +174,17 @@ def cmd_params(args: argparse.Namespace) -> int:
         result['types'] = list(call(client.get_parameter_types(args.get)).types)
         result['describe'] = [{'name': d.name, 'type': d.type, 'read_only': d.read_only}
                               for d in call(client.describe_parameters(args.get)).descriptors]
-    if args.set:
+    if args.set or args.set_sized:
         parameters = []
         for item in args.set:
             name, _, text = item.partition('=')
             parameters.append(Parameter(name, value=json.loads(text)))
+        for item in args.set_sized:
+            name, _, spec = item.partition('=')
+            kind, _, count = spec.partition(':')
+            made = {'string': lambda n: 'x' * n, 'integer_array': lambda n: list(range(n)),
+                    'string_array': lambda n: ['ab'] * n}[kind](int(count))
+            parameters.append(Parameter(name, value=made))
         results = call(client.set_parameters(parameters)).results
         result['set'] = [{'successful': r.successful, 'reason': r.reason} for r in results]
         end = time.monotonic() + 2.0
@@ -387,6 +393,9 @@ def main() -> int:
     params.add_argument('target')
     params.add_argument('--get', nargs='*', default=[])
     params.add_argument('--set', nargs='*', default=[])
+    params.add_argument('--set-sized', nargs='*', default=[],
+                        help='NAME=KIND:COUNT, a value made here (too big for a command line): '
+                             'KIND string (COUNT chars), integer_array, string_array (COUNT items)')
     params.add_argument('--wait', type=float, default=15.0)
     args = parser.parse_args()
     rclpy.init()

@@ -265,11 +265,14 @@ def cmd_serve(args, logic, node) -> int:
     node.SetParameterAsInteger('frame_count', 42)
     node.SetParameterAsDouble('needle_depth_mm', 37.5)
     node.SetParameterAsString('image_frame', 'ct')
-    print(json.dumps({'ready': True}), flush=True)
+    if args.value_limit >= 0:
+        node.SetParameterValueSizeLimit(args.value_limit)
+    print(json.dumps({'ready': True, 'value_limit': node.GetParameterValueSizeLimit()}), flush=True)
     end = time.monotonic() + args.seconds
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.05)
-    print(json.dumps({'needle_depth_mm': node.PrintOwnParameter('needle_depth_mm')}), flush=True)
+    print(json.dumps({'needle_depth_mm': node.PrintOwnParameter('needle_depth_mm'),
+                      'image_frame': node.PrintOwnParameter('image_frame')[:200]}), flush=True)
     return 0
 
 
@@ -370,7 +373,8 @@ def main() -> int:
     params.add_argument('names', nargs='+')
     params.add_argument('--until-changes', type=int, default=0)
     params.add_argument('--with-ready', action='store_true', help='record IsMonitoredNodeReady in the history')
-    sub.add_parser('serve')
+    serve = sub.add_parser('serve')
+    serve.add_argument('--value-limit', type=int, default=-1, help='bytes; -1 keeps the default')
     subscriber = sub.add_parser('sub')
     subscriber.add_argument('type')
     subscriber.add_argument('topic')

@@ -14,7 +14,7 @@
 #include <memory>
 #include <set>
 
-extern "C" void ros2vtk_register_ros2vtkMessages_types();
+#include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
 namespace {
 

@@ -8,11 +8,12 @@
 
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 
 #include <gtest/gtest.h>
 
-extern "C" void ros2vtk_register_ros2vtkTestNodes_nodes();
+#include "ros2vtkTestNodesRegister.hpp" // ros2vtk_register_ros2vtkTestNodes_nodes()
 
 TEST(DownstreamNodes, ScaledValueBothWays)
 {
@@ -60,4 +61,30 @@ TEST(DownstreamNodes, ClassesRegisterWithAliases)
     registry.resolve(NodeDirection::Publisher, "ros2vtk_nodes_test_msgs/msg/Marker");
   ASSERT_NE(resolution.mapped_class, nullptr) << resolution.error;
   EXPECT_EQ(resolution.mapped_class->class_name, "vtkROS2PublisherMarkerNode");
+}
+
+// Kind point: one position in metres <-> a vtkPoints of one point in millimetres.
+TEST(DownstreamNodes, SinglePointScaledBothWays)
+{
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::NeedleTarget target;
+  target.target.x = 0.01;
+  target.target.y = -0.02;
+  target.target.z = 0.125;
+  vtkNew<vtkPoints> points;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(target, points));
+  ASSERT_EQ(points->GetNumberOfPoints(), 1);
+  double p[3];
+  points->GetPoint(0, p);
+  EXPECT_NEAR(p[0], 10.0, 1e-12);
+  EXPECT_NEAR(p[1], -20.0, 1e-12);
+  EXPECT_NEAR(p[2], 125.0, 1e-12);
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::NeedleTarget back;
+  ASSERT_TRUE(ros2vtk::nodes::VTKToROS2(points, back));
+  EXPECT_NEAR(back.target.x, 0.01, 1e-15);
+  EXPECT_NEAR(back.target.z, 0.125, 1e-15);
+
+  std::string error;
+  points->InsertNextPoint(1.0, 2.0, 3.0);
+  EXPECT_FALSE(ros2vtk::nodes::VTKToROS2(points, back, 1000.0, &error));
+  EXPECT_NE(error.find("exactly one point"), std::string::npos) << error;
 }

@@ -117,6 +117,35 @@ def test_each_mistake_names_file_line_and_reason(tmp_path, table, change, line, 
     assert error.code == code
 
 
+POINT_RULE = """\
+[[mapping]]
+short_name = "Target"
+ros_type = "geometry_msgs/msg/PoseStamped"
+vtk_type = "vtkPoints"
+kind = "point"
+fields = { point = "pose.position" }
+lengths = ["pose.position"]
+"""
+
+
+def test_point_kind_reads_one_xyz_and_scales_it(tmp_path, table):
+    (rule,) = load_rules([write(tmp_path, POINT_RULE)], table)
+    assert rule.kind == "point"
+    assert rule.roles["point"].path == "pose.position"
+    assert rule.scaled_roles == ("point",)
+
+
+def test_points_kind_on_a_single_message_names_the_point_kind(tmp_path, table):
+    """The message once read 'a sequence of message with , it is ...' (issue 20, item 4)."""
+    text = POINT_RULE.replace('kind = "point"', 'kind = "points"').replace(
+        'point = "pose.position"', 'sequence = "pose.position"')
+    error = str(error_of(tmp_path, table, text))
+    assert "field 'position' must be a sequence of messages, it is geometry_msgs/msg/Point" \
+        in error, error
+    assert 'use kind "point"' in error
+    assert "with ," not in error
+
+
 def test_missing_required_key_points_at_the_rule(tmp_path, table):
     error = error_of(tmp_path, table, "\n" + GOOD_POSE.replace('kind = "rigid_transform"\n', ""))
     assert error.line == 2 and "'kind' is required" in error.message

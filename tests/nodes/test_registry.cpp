@@ -14,7 +14,7 @@
 
 #include <string>
 
-extern "C" void ros2vtk_register_ros2vtkNodes_nodes();
+#include "ros2vtkNodesRegister.hpp" // ros2vtk_register_ros2vtkNodes_nodes()
 
 namespace
 {

@@ -2,7 +2,7 @@
 // Scene library loads, so generic nodes and type-name lookups work from Python with nothing but
 // this module imported. The generated library registers only when asked (explicit function):
 // static initializers in a static library are not linked unless referenced.
-extern "C" void ros2vtk_register_ros2vtkMessages_types();
+#include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
 namespace
 {

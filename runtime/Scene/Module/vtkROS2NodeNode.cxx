@@ -956,6 +956,25 @@ bool vtkROS2NodeNode::SetParameterAsString(const char* name, const char* text)
 #undef ROS2VTK_SET_OWN_PARAMETER
 
 //------------------------------------------------------------------------------
+bool vtkROS2NodeNode::SetParameterValueSizeLimit(vtkTypeInt64 bytes)
+{
+  if (!this->Internals->Parameters || bytes < 0)
+  {
+    vtkErrorMacro("SetParameterValueSizeLimit: needs a created node and a limit >= 0");
+    return false;
+  }
+  this->Internals->Parameters->store().set_value_size_limit(static_cast<size_t>(bytes));
+  return true;
+}
+
+vtkTypeInt64 vtkROS2NodeNode::GetParameterValueSizeLimit()
+{
+  return this->Internals->Parameters
+    ? static_cast<vtkTypeInt64>(this->Internals->Parameters->store().value_size_limit())
+    : -1;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2NodeNode::PrintOwnParameter(const char* name)
 {
   const auto* value = this->Internals->Parameters && name ? this->Internals->Parameters->store().get(name) : nullptr;

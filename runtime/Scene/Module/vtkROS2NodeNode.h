@@ -173,6 +173,10 @@ public:
   bool SetParameterAsString(const char* name, const char* value);
   /// "name (type): value", or "name (not set): not set".
   std::string PrintOwnParameter(const char* name);
+  /// Largest value (bytes of a string or array) other nodes may set on these parameters; a
+  /// bigger one is refused with a reason (default 4 MiB). False before Create.
+  bool SetParameterValueSizeLimit(vtkTypeInt64 bytes);
+  vtkTypeInt64 GetParameterValueSizeLimit();
   ///@}
 
   ///@{

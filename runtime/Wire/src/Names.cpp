@@ -17,6 +17,9 @@ bool set_error(std::string* error, const std::string& message)
   return false;
 }
 
+// rmw's RMW_TOPIC_MAX_NAME_LENGTH (255 - 8): room for the DDS prefix and the service suffixes.
+const size_t topic_name_max_length = 255 - 8;
+
 bool is_token_char(char c)
 {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -25,7 +28,7 @@ bool is_token_char(char c)
 // A fully qualified name: starts with '/', tokens of [A-Za-z0-9_] not starting with a digit,
 // no empty token, no trailing '/' (except the root namespace "/" when allowed).
 bool validate_fully_qualified(const std::string& name, bool allow_root, const char* what,
-                              std::string* error)
+                              size_t max_length, std::string* error)
 {
   if (name.empty() || name[0] != '/')
   {
@@ -63,9 +66,10 @@ bool validate_fully_qualified(const std::string& name, bool allow_root, const ch
                                 "' (allowed: letters, digits, '_' and '/')");
     }
   }
-  if (name.size() > 255)
+  if (name.size() > max_length)
   {
-    return set_error(error, std::string(what) + " '" + name + "' is longer than 255 characters");
+    return set_error(error, std::string(what) + " '" + name + "' is longer than " +
+                              std::to_string(max_length) + " characters");
   }
   return true;
 }
@@ -104,7 +108,7 @@ bool normalize_namespace(const std::string& ns, std::string& normalized, std::st
   {
     candidate = "/" + candidate;
   }
-  if (!validate_fully_qualified(candidate, true, "namespace", error))
+  if (!validate_fully_qualified(candidate, true, "namespace", 255, error))
   {
     return false;
   }
@@ -117,32 +121,142 @@ std::string fully_qualified_node_name(const std::string& ns, const std::string& 
   return ns == "/" ? "/" + node : ns + "/" + node;
 }
 
-bool expand_topic_name(const std::string& name, const std::string& node_name,
-                       const std::string& ns, std::string& expanded, std::string* error)
+bool validate_topic_name(const std::string& name, std::string* error)
 {
+  auto fail = [&](const std::string& why) {
+    return set_error(error, "topic name '" + name + "' " + why);
+  };
   if (name.empty())
   {
     return set_error(error, "topic name must not be empty");
   }
-  std::string result;
-  if (name[0] == '/')
+  if (std::isdigit(static_cast<unsigned char>(name[0])))
   {
-    result = name;
+    return fail("must not start with a digit");
   }
-  else if (name[0] == '~')
+  if (name.back() == '/')
   {
-    if (name.size() > 1 && name[1] != '/')
+    return fail("must not end with '/'");
+  }
+  bool in_substitution = false;
+  for (size_t i = 0; i < name.size(); ++i)
+  {
+    const char c = name[i];
+    if (is_token_char(c))
     {
-      return set_error(error, "topic name '" + name + "': '~' must be followed by '/'");
+      if (in_substitution && name[i - 1] == '{' && std::isdigit(static_cast<unsigned char>(c)))
+      {
+        return fail("has a substitution starting with a digit");
+      }
     }
-    result = fully_qualified_node_name(ns, node_name) + name.substr(1);
+    else if (c == '/' && !in_substitution)
+    {
+      continue;
+    }
+    else if (c == '~')
+    {
+      if (i != 0)
+      {
+        return fail("has '~' that is not its first character");
+      }
+    }
+    else if (c == '{' && !in_substitution)
+    {
+      in_substitution = true;
+    }
+    else if (c == '}')
+    {
+      if (!in_substitution)
+      {
+        return fail("has an unmatched '}'");
+      }
+      in_substitution = false;
+    }
+    else if (in_substitution)
+    {
+      return fail("has '" + std::string(1, c) +
+                  "' inside a substitution (allowed: letters, digits and '_')");
+    }
+    else
+    {
+      return fail("contains '" + std::string(1, c) +
+                  "' (allowed: letters, digits, '_', '/', '~', '{' and '}')");
+    }
   }
-  else
+  if (in_substitution)
   {
-    result = ns == "/" ? "/" + name : ns + "/" + name;
+    return fail("has an unmatched '{'");
   }
-  if (!validate_fully_qualified(result, false, "topic name", error))
+  // As rcl: a token after '/' must not start with a digit, and '~' must be followed by '/'.
+  // rcl checks the latter only when a third character exists, so "~x" stays valid (-> /node_fqnx).
+  for (size_t i = 0; i + 1 < name.size(); ++i)
   {
+    if (name[i] == '/')
+    {
+      if (std::isdigit(static_cast<unsigned char>(name[i + 1])))
+      {
+        return fail("has a token starting with a digit");
+      }
+    }
+    else if (i == 1 && name[0] == '~')
+    {
+      return fail("has '~' not followed by '/'");
+    }
+  }
+  return true;
+}
+
+bool expand_topic_name(const std::string& name, const std::string& node_name,
+                       const std::string& ns, std::string& expanded, std::string* error)
+{
+  if (!validate_topic_name(name, error))
+  {
+    return false;
+  }
+  // rcl_expand_topic_name: '~' (first character only) becomes the node's fully qualified name,
+  // then every {substitution} is replaced, then a still-relative name goes under the namespace.
+  std::string result;
+  size_t i = 0;
+  if (name[0] == '~')
+  {
+    result = fully_qualified_node_name(ns, node_name);
+    i = 1;
+  }
+  while (i < name.size())
+  {
+    if (name[i] != '{')
+    {
+      result += name[i++];
+      continue;
+    }
+    const size_t close = name.find('}', i); // validate_topic_name guarantees it exists
+    const std::string key = name.substr(i + 1, close - i - 1);
+    if (key == "node")
+    {
+      result += node_name;
+    }
+    else if (key == "ns" || key == "namespace")
+    {
+      result += ns;
+    }
+    else
+    {
+      return set_error(error, "topic name '" + name + "': unknown substitution {" + key +
+                                "} (known: {node}, {ns}, {namespace})");
+    }
+    i = close + 1;
+  }
+  if (result[0] != '/')
+  {
+    result = ns == "/" ? "/" + result : ns + "/" + result;
+  }
+  if (!validate_fully_qualified(result, false, "topic name", topic_name_max_length, error))
+  {
+    if (error && result != name)
+    {
+      *error += " (expanded from '" + name + "' by node '" + node_name + "' in namespace '" + ns +
+                "')";
+    }
     return false;
   }
   expanded = result;

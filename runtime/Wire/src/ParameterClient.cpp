@@ -32,6 +32,17 @@ public:
   };
   std::map<int64_t, Request> in_flight; ///< request sequence -> what was asked, when
   std::chrono::steady_clock::time_point available_since;
+  uint64_t servers_seen = 0; ///< servers_matched_total() when the values were last fetched
+
+  /// Everything is fetched again, after the settling delay: a (new) server is there.
+  void refetch_all(uint64_t servers)
+  {
+    state = State::Ready;
+    to_fetch = watched;
+    in_flight.clear();
+    servers_seen = servers;
+    available_since = std::chrono::steady_clock::now();
+  }
 
   /// Sends a get_parameters request; false when DDS refused it (asked again later).
   bool ask(const std::vector<std::string>& names)
@@ -130,18 +141,20 @@ std::set<std::string> ParameterClient::process()
 {
   Impl& d = *impl_;
   // Availability: losing the server forgets nothing yet, but everything is fetched again when it
-  // returns (the node may have restarted with other values).
+  // returns (the node may have restarted with other values). A node restarted within its lease
+  // time never looks unavailable (the dead server stays matched), but its new server is a new
+  // match: fetch again then too. Its declarations went out on /parameter_events before our
+  // subscription matched its new writer, so the fetch is what brings the new values.
   const bool available = d.get_client->is_server_available();
+  const uint64_t servers = d.get_client->servers_matched_total();
   if (!available && d.state == State::Ready)
   {
     d.state = State::WaitingForNode;
     d.in_flight.clear();
   }
-  else if (available && d.state == State::WaitingForNode)
+  else if (available && (d.state == State::WaitingForNode || servers != d.servers_seen))
   {
-    d.state = State::Ready;
-    d.to_fetch = d.watched;
-    d.available_since = std::chrono::steady_clock::now();
+    d.refetch_all(servers);
   }
 
   // Discovery is not symmetric: our endpoints may match the server's before the server's reply

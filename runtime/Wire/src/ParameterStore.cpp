@@ -187,6 +187,32 @@ std::vector<uint8_t> ParameterStore::get_parameter_types(const std::vector<std::
   return types;
 }
 
+size_t parameter_value_size(const rcl::ParameterValue& value)
+{
+  switch (value.type)
+  {
+    case kString:
+      return value.string_value.size();
+    case kByteArray:
+      return value.byte_array_value.size();
+    case kBoolArray:
+      return value.bool_array_value.size();
+    case kIntegerArray:
+      return value.integer_array_value.size() * sizeof(int64_t);
+    case kDoubleArray:
+      return value.double_array_value.size() * sizeof(double);
+    case kStringArray:
+    {
+      size_t bytes = 0;
+      for (const auto& text : value.string_array_value)
+        bytes += text.size() + sizeof(uint32_t);
+      return bytes;
+    }
+    default:
+      return 0;
+  }
+}
+
 std::string ParameterStore::check(const rcl::Parameter& parameter) const
 {
   auto it = parameters_.find(parameter.name);
@@ -198,6 +224,14 @@ std::string ParameterStore::check(const rcl::Parameter& parameter) const
   if (descriptor.read_only)
   {
     return "parameter '" + parameter.name + "' cannot be set because it is read-only";
+  }
+  // Before the type: an oversized value is refused for its size, whatever its type.
+  const size_t size = parameter_value_size(parameter.value);
+  if (size > value_size_limit_)
+  {
+    return "parameter '" + parameter.name + "' cannot be set: its " +
+      parameter_type_name(parameter.value.type) + " value holds " + std::to_string(size) +
+      " bytes, more than this node accepts (" + std::to_string(value_size_limit_) + ")";
   }
   const uint8_t current = it->second.value.type;
   if (!descriptor.dynamic_typing && current != kNotSet && parameter.value.type != current)

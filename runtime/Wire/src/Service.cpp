@@ -118,11 +118,18 @@ void ServiceEndpoints::on_publication_matched(dds::DataWriter*,
   if (info.current_count_change > 0)
   {
     matched_readers_.insert(reader_guid);
+    ++readers_matched_total_;
   }
   else if (info.current_count_change < 0)
   {
     matched_readers_.erase(reader_guid);
   }
+}
+
+uint64_t ServiceEndpoints::readers_matched_total()
+{
+  std::lock_guard<std::mutex> lock(match_mutex_);
+  return readers_matched_total_;
 }
 
 bool ServiceEndpoints::wait_for_matched_reader(const std::array<uint8_t, 16>& reader_guid,
@@ -321,6 +328,11 @@ bool ServiceClient::is_server_available() const
   dds::SubscriptionMatchedStatus subscription;
   impl_->endpoints.reader->get_subscription_matched_status(subscription);
   return publication.current_count > 0 && subscription.current_count > 0;
+}
+
+uint64_t ServiceClient::servers_matched_total() const
+{
+  return impl_->endpoints.readers_matched_total();
 }
 
 int64_t ServiceClient::send_request(const void* request)

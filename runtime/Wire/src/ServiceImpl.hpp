@@ -35,6 +35,8 @@ public:
                               const eprosima::fastdds::dds::PublicationMatchedStatus& info) override;
   /// Waits until the writer matched the reader with this GUID (bytes), up to `timeout_ms`.
   bool wait_for_matched_reader(const std::array<uint8_t, 16>& reader_guid, int timeout_ms);
+  /// How many readers the writer has matched since it was created (never decreases).
+  uint64_t readers_matched_total();
 
   Participant::Impl& owner;
   eprosima::fastdds::dds::Topic* write_topic = nullptr;
@@ -45,6 +47,7 @@ public:
 private:
   std::mutex match_mutex_;
   std::set<std::array<uint8_t, 16>> matched_readers_;
+  uint64_t readers_matched_total_ = 0;
 };
 
 class ServiceServer::Impl : public eprosima::fastdds::dds::DataReaderListener

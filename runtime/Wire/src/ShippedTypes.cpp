@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 // Exported by the generated shipped-type library (ros2vtk::Messages).
-extern "C" void ros2vtk_register_ros2vtkMessages_types();
+#include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
 namespace ros2vtk {
 namespace wire {

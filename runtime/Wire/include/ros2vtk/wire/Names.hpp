@@ -14,8 +14,13 @@ bool validate_node_name(const std::string& name, std::string* error);
 bool normalize_namespace(const std::string& ns, std::string& normalized, std::string* error);
 /// "/ns" + "node" -> "/ns/node"; "/" + "node" -> "/node".
 std::string fully_qualified_node_name(const std::string& ns, const std::string& node);
-/// rcl's expansion: absolute stays, `~` and `~/x` are private to the node, relative names go
-/// under the namespace. Then validated as a fully qualified topic name.
+/// rcl_validate_topic_name: a topic or service name as written, before expansion
+/// (letters, digits, '_', '/', a leading '~', {substitutions}).
+bool validate_topic_name(const std::string& name, std::string* error);
+/// rcl_expand_topic_name then rmw_validate_full_topic_name, as rclpy resolves names: a leading
+/// `~` becomes the node's fully qualified name, `{node}`, `{ns}` and `{namespace}` are replaced,
+/// a name still relative goes under the namespace; the result must be a valid full topic name
+/// of at most 247 characters (docs/wire-notes.md §1.2).
 bool expand_topic_name(const std::string& name, const std::string& node_name,
                        const std::string& ns, std::string& expanded, std::string* error);
 

@@ -27,6 +27,9 @@ namespace rcl = ::ros2vtk::rcl_interfaces::msg;
 std::string parameter_type_name(uint8_t type);
 /// Human-readable value ("[1, 2, 3]", "true", "0.5"), as `ros2 param get` shows it.
 std::string parameter_value_to_string(const rcl::ParameterValue& value);
+/// Bytes a value holds: string and array payloads (8 per integer/double, 1 per bool/byte,
+/// each string of an array plus its 4-byte CDR length); scalars count 0.
+size_t parameter_value_size(const rcl::ParameterValue& value);
 
 class ParameterStore
 {
@@ -43,6 +46,13 @@ public:
   const rcl::ParameterValue* get(const std::string& name) const;
 
   void set_validator(Validator validator) { validator_ = std::move(validator); }
+
+  /// Largest value (parameter_value_size) a set may bring; bigger ones are refused with a reason
+  /// naming both sizes. Other nodes set our parameters through the services, so this bounds what
+  /// they can make us keep. Declarations (our own code) are not bounded.
+  static constexpr size_t kDefaultValueSizeLimit = 4u << 20;
+  void set_value_size_limit(size_t bytes) { value_size_limit_ = bytes; }
+  size_t value_size_limit() const { return value_size_limit_; }
 
   // The services' semantics (WIRE_NOTES §5.3). Empty results when any name is undeclared.
   std::vector<rcl::ParameterValue> get_parameters(const std::vector<std::string>& names) const;
@@ -67,6 +77,7 @@ private:
   };
   std::map<std::string, Entry> parameters_;
   Validator validator_;
+  size_t value_size_limit_ = kDefaultValueSizeLimit;
   std::vector<rcl::ParameterEvent> events_;
 };
 

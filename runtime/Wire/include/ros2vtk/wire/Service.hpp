@@ -75,6 +75,10 @@ public:
 
   /// True when a server's request reader and reply writer are both matched.
   bool is_server_available() const;
+  /// How many server request readers this client has matched since it was created. It grows
+  /// when a new server appears (a restarted node: new GUID) even while the old one is still
+  /// matched because its lease has not expired.
+  uint64_t servers_matched_total() const;
   /// Sends a request; returns its sequence number, or -1 when DDS refused it.
   int64_t send_request(const void* request);
   /// Moves the responses addressed to this client into `out`; returns how many.

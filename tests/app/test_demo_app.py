@@ -1,0 +1,95 @@
+"""The demo as a newcomer sees it (its default mode): examples/demo/demo.py serves the web app on
+its own logic (`ros2vtk.app.serve(logic, on_app=...)`) with the simulated robot running. In headless
+Chromium: the robot row is loaded with every link tracked, the view shows the robot's orange (the
+phantom's pixels are checked by tests/demo, where its projected box is known), and the demo stops by itself after --duration with exit 0. Screenshot in
+<build>/test-artifacts/app/demo-app.png."""
+from __future__ import annotations
+
+import io
+import os
+import socket
+import subprocess
+import time
+import urllib.request
+from pathlib import Path
+
+from PIL import Image
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+
+REPO = Path(__file__).resolve().parents[2]
+BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
+VENV_PYTHON = Path(os.environ.get('ROS2VTK_VENV_PYTHON', REPO / '.venv' / 'bin' / 'python'))
+ARTIFACTS = BUILD / 'test-artifacts' / 'app'
+URDF = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+
+
+def wait_for(what, check, seconds=60.0, step=0.5):
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        value = check()
+        if value:
+            return value
+        time.sleep(step)
+    raise AssertionError(f'timed out after {seconds:g} s waiting for {what}')
+
+
+def orange_pixels(png: bytes) -> int:
+    """Pixels of the robot's 'signal' orange material (nothing else in the view is red-dominant
+    with so little blue)."""
+    pixels = Image.open(io.BytesIO(png)).convert('RGB').get_flattened_data()
+    # 'signal' (0.95 0.45 0.1): green/red ~0.47, blue/red ~0.1 under any shading; the phantom's
+    # pseudotumour (0.9 0.3 0.25) has green/red 0.33 and blue/red 0.28.
+    return sum(1 for r, g, b in pixels if r > 100 and 0.38 < g / r < 0.6 and b / r < 0.2)
+
+
+def test_demo_serves_the_app_with_robot_and_phantom():
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    env = dict(os.environ, ROS_DOMAIN_ID=str(int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '185')) + 3),
+               ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST', PYTHONPATH=str(BUILD / 'python'), PYTHONUNBUFFERED='1')
+    env.pop('DISPLAY', None)  # the app starts its own Xvfb
+    phantom = BUILD / 'test-artifacts' / 'phantom.mha'
+    phantom.parent.mkdir(parents=True, exist_ok=True)
+    subprocess.run([str(BUILD / 'runtime' / 'Viewer' / 'ros2vtk-make-phantom'), str(phantom)], check=True,
+                   stdout=subprocess.DEVNULL)
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        port = s.getsockname()[1]
+    sim = subprocess.Popen([str(BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot'), '--urdf', str(URDF)], env=env,
+                           stdout=subprocess.DEVNULL)
+    demo = subprocess.Popen([str(VENV_PYTHON), str(REPO / 'examples' / 'demo' / 'demo.py'), '--phantom', str(phantom),
+                             '--port', str(port), '--duration', '45'], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    options = webdriver.ChromeOptions()
+    for flag in ('--headless=new', '--no-sandbox', '--disable-dev-shm-usage', '--window-size=1600,950'):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service('/usr/bin/chromedriver'), options=options)
+    url = f'http://127.0.0.1:{port}/'
+
+    def listening():
+        assert demo.poll() is None, demo.stdout.read()
+        try:
+            with urllib.request.urlopen(url, timeout=5) as response:
+                return response.status == 200
+        except OSError:
+            return False
+    try:
+        wait_for('the demo app', listening, seconds=120)
+        driver.get(url)
+        wait_for('the robot loaded, 8/8 links', lambda: any(
+            'loaded' in r.text and '8/8' in r.text for r in driver.find_elements(By.ID, 'robot-robot')))
+        orange = wait_for('the robot orange in the view', lambda: (lambda n: n > 100 and n)(
+            orange_pixels(driver.find_element(By.ID, 'view').screenshot_as_png)))
+        driver.save_screenshot(str(ARTIFACTS / 'demo-app.png'))
+        output, _ = demo.communicate(timeout=90)  # --duration 45 ends it
+    finally:
+        driver.quit()
+        for process in (demo, sim):
+            if process.poll() is None:
+                process.kill()
+            process.wait()
+    assert demo.returncode == 0, output
+    assert 'phantom placed at the needle tip' in output, output
+    assert '[demo] stopped' in output, output
+    print(f'view: {orange} orange pixels')

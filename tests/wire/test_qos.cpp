@@ -1,0 +1,59 @@
+// ros2vtk — unit tests of Wire's QoS profiles against rmw's profile values (WIRE_NOTES §2.1).
+#include "ros2vtk/wire/QoS.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using ros2vtk::wire::QoS;
+
+TEST(QoS, RmwProfileValues)
+{
+  const QoS defaults = QoS::default_profile();
+  EXPECT_EQ(defaults.history, QoS::History::KeepLast);
+  EXPECT_EQ(defaults.depth, 10u);
+  EXPECT_EQ(defaults.reliability, QoS::Reliability::Reliable);
+  EXPECT_EQ(defaults.durability, QoS::Durability::Volatile);
+
+  const QoS sensor = QoS::sensor_data();
+  EXPECT_EQ(sensor.depth, 5u);
+  EXPECT_EQ(sensor.reliability, QoS::Reliability::BestEffort);
+  EXPECT_EQ(sensor.durability, QoS::Durability::Volatile);
+
+  const QoS parameters = QoS::parameters();
+  EXPECT_EQ(parameters.depth, 1000u);
+  EXPECT_EQ(parameters.reliability, QoS::Reliability::Reliable);
+
+  const QoS latched = QoS::transient_local();
+  EXPECT_EQ(latched.depth, 1u);
+  EXPECT_EQ(latched.durability, QoS::Durability::TransientLocal);
+  EXPECT_EQ(latched.reliability, QoS::Reliability::Reliable);
+}
+
+TEST(QoS, ProfilesByRosName)
+{
+  QoS qos;
+  ASSERT_TRUE(QoS::from_name("sensor_data", qos));
+  EXPECT_EQ(qos, QoS::sensor_data());
+  ASSERT_TRUE(QoS::from_name("default", qos));
+  EXPECT_EQ(qos, QoS::default_profile());
+  ASSERT_TRUE(QoS::from_name("parameter_events", qos));
+  EXPECT_EQ(qos, QoS::parameters());
+  ASSERT_TRUE(QoS::from_name("transient_local", qos));
+  EXPECT_EQ(qos, QoS::transient_local());
+  ASSERT_TRUE(QoS::from_name("keep_all", qos));
+  EXPECT_EQ(qos.history, QoS::History::KeepAll);
+  EXPECT_EQ(qos.reliability, QoS::Reliability::Reliable);
+  const QoS before = qos;
+  EXPECT_FALSE(QoS::from_name("reliable_please", qos));
+  EXPECT_FALSE(QoS::from_name("", qos));
+  EXPECT_EQ(qos, before); // an unknown name leaves the QoS alone
+}
+
+TEST(QoS, TextForLogs)
+{
+  EXPECT_EQ(QoS::default_profile().to_string(), "reliable, volatile, keep_last(10)");
+  EXPECT_EQ(QoS::sensor_data().to_string(), "best_effort, volatile, keep_last(5)");
+}
+
+} // namespace
