@@ -228,3 +228,33 @@ def test_spin_until_stops_at_the_condition_or_the_timeout(logic, ros2vtk):
     sub = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('String', '/py_spin_until')
     pub = logic.GetDefaultROS2Node().CreateAndAddPublisherNode('String', '/py_spin_until')
     assert ros2vtk.spin_until(logic, lambda: pub.Publish('x') and sub.GetNumberOfMessages() > 0, seconds=10.0)
+
+
+def test_scene_file_of_the_previous_version_loads(logic, ros2vtk, tmp_path):
+    """tests/scene/data/previous_version_scene.xml was written by the version before issue 10
+    (write_previous_version_scene.py beside it): its topic nodes reference their ROS node as
+    'ROS2Node', the other children as 'ros2Node'. Both read into the one role, and the file
+    written again uses only that role."""
+    from pathlib import Path
+    fixture = Path(__file__).resolve().parents[1] / 'scene' / 'data' / 'previous_version_scene.xml'
+    scene = logic.GetScene()
+    assert scene.ReadFromXMLFile(str(fixture))
+    node = logic.GetDefaultROS2Node()
+    assert node.GetID() == 'vtkROS2NodeNode1' and node.IsCreated()
+    role = 'ros2Node'  # vtkROS2SceneNode::ROS2NodeReferenceRole
+    publisher = node.GetPublisherNodeByTopic('/legacy_pub')
+    subscriber = node.GetSubscriberNodeByTopic('/legacy_sub')
+    assert publisher is not None and publisher.GetClassName() == 'vtkROS2PublisherStringNode'
+    assert subscriber is not None and subscriber.GetAttribute('purpose') == 'legacy'
+    lookup = node.GetTf2LookupNodeByParentChild('world', 'tool')
+    broadcaster = node.GetTf2BroadcasterNodeByParentChild('world', 'marker')
+    parameters = node.GetParameterNodeByNode('/robot_state_publisher')
+    for child in (publisher, subscriber, lookup, broadcaster, parameters):
+        assert child is not None
+        assert child.GetNodeReferenceID(role) == node.GetID(), child.GetClassName()
+        assert child.GetNodeReferenceID('ROS2Node') is None
+        assert child.GetROS2Node() is node
+    assert broadcaster.GetStatic()
+    assert parameters.GetParameterNames() == 'robot_description'
+    written = scene.WriteToXMLString()
+    assert 'role="ROS2Node"' not in written and written.count('role="ros2Node"') == 5

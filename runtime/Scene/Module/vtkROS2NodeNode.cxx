@@ -16,6 +16,7 @@
 #include "ros2vtk/tf2/BufferCore.hpp"
 #include "ros2vtk/tf2_ros/TransformBroadcaster.hpp"
 #include "ros2vtk/tf2_ros/TransformListener.hpp"
+#include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/wire/ParameterServer.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -25,7 +26,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 
+#include "RateLimitedReport.hpp"
+
 #include <algorithm>
+#include <chrono>
+#include <unordered_map>
 #include <vector>
 
 namespace
@@ -38,6 +43,21 @@ const char* const ParameterRole = "parameter";
 const char* const RobotRole = "robot";
 const char* const ServiceClientRole = "serviceClient";
 const char* const ServiceServerRole = "serviceServer";
+
+/// The order in which Spin calls its children's OnROS2NodeSpin (docs/architecture.md): tf first
+/// so that everything after it sees this spin's transforms, then incoming data, parameters,
+/// services, and robots last (they read lookups and parameters). Children under any other
+/// role (a kind added outside the runtime, connectors) follow, roles sorted by name.
+const char* const SpinOrder[] = { Tf2LookupRole, SubscriberRole, ParameterRole, ServiceClientRole,
+  ServiceServerRole, RobotRole };
+
+std::string IndexKey(const char* role, const std::string& key)
+{
+  std::string joined = role;
+  joined += '\0';
+  joined += key;
+  return joined;
+}
 
 /// The nodes referenced under `role` (held, as observers may remove nodes meanwhile).
 template <typename NodeType>
@@ -69,7 +89,19 @@ public:
   std::unique_ptr<ros2vtk::tf2_ros::TransformListener> Tf2Listener;
   std::unique_ptr<ros2vtk::tf2_ros::TransformBroadcaster> Tf2Broadcasters[2]; // dynamic, static
   uint64_t Tf2RejectionsReported = 0;
-  std::vector<std::pair<vtkROS2SceneNode*, std::function<int()>>> SpinCallbacks;
+  ros2vtk::scene::RateLimitedReport Tf2RejectionReport{ std::chrono::seconds(1) };
+
+  // Children in spin order, rebuilt when the references change (ReferencesVersion). Held, as
+  // observers may remove nodes while a spin runs.
+  std::vector<vtkSmartPointer<vtkROS2SceneNode>> SpinChildren;
+  unsigned long SpinChildrenVersion = ~0ul;
+  // role '\0' key -> child; rebuilt when the references (or a child's key) change, kept
+  // current by AddChild, so creating N children costs O(N) lookups, not O(N^2) scans.
+  std::unordered_map<std::string, vtkROS2SceneNode*> ChildIndex;
+  unsigned long ChildIndexVersion = ~0ul;
+  uint64_t ChildVisits = 0; // children visited by index rebuilds and lookups (tests count them)
+  std::vector<std::string> RoleScratch;
+  std::vector<std::pair<vtkROS2SceneNode*, std::function<int()>>> SpinCallbacks; // connectors
 
   void ReleaseParticipantObjects()
   {
@@ -192,6 +224,13 @@ bool vtkROS2NodeNode::Destroy()
   this->Internals->Participant.reset();
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2SceneNode's accessor lives here so that the base class needs no subclass header.
+vtkROS2NodeNode* vtkROS2SceneNode::GetROS2Node() const
+{
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------
@@ -323,15 +362,8 @@ NodeType* vtkROS2NodeNode::FindByTopic(const char* role, const char* topic)
   {
     this->Internals->Participant->resolve_name(topic, resolved, &ignored);
   }
-  for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
-  {
-    auto* node = NodeType::SafeDownCast(this->GetNthNodeReference(role, i));
-    if (node && (resolved == node->GetTopic() || std::string(topic) == node->GetTopic()))
-    {
-      return node;
-    }
-  }
-  return nullptr;
+  vtkROS2SceneNode* found = this->FindChild(role, resolved);
+  return NodeType::SafeDownCast(found ? found : this->FindChild(role, topic));
 }
 
 //------------------------------------------------------------------------------
@@ -421,31 +453,131 @@ int vtkROS2NodeNode::Spin()
   }
   // Clear before draining: a sample queued after this point raises the wake-up again.
   this->Internals->Participant->wake_up().clear();
-  std::vector<vtkSmartPointer<vtkROS2SubscriberNode>> subscribers;
-  for (int i = 0; i < this->GetNumberOfNodeReferences(SubscriberRole); ++i)
-  {
-    if (auto* node = vtkROS2SubscriberNode::SafeDownCast(this->GetNthNodeReference(SubscriberRole, i)))
-    {
-      subscribers.emplace_back(node); // observers may remove nodes while we iterate
-    }
-  }
   int handled = 0;
   if (this->Internals->Parameters)
   {
     handled += static_cast<int>(this->Internals->Parameters->process());
   }
-  for (const auto& subscriber : subscribers)
+  handled += this->SpinTf2Listener();
+  if (this->Internals->SpinChildrenVersion != this->GetReferencesVersion())
   {
-    handled += subscriber->ProcessIncomingMessages();
+    this->CollectSpinChildren();
   }
-  handled += this->SpinParametersAndTf2();
-  // Copy: a callback may add or remove callbacks.
-  const auto callbacks = this->Internals->SpinCallbacks;
-  for (const auto& callback : callbacks)
+  // By index: a child's hook may add children (a robot its lookups); they spin next time.
+  const auto& children = this->Internals->SpinChildren;
+  for (size_t i = 0, n = children.size(); i < n; ++i)
   {
-    handled += callback.second();
+    handled += children[i]->OnROS2NodeSpin(this);
+  }
+  if (!this->Internals->SpinCallbacks.empty())
+  {
+    // Copy: a callback may add or remove callbacks.
+    const auto callbacks = this->Internals->SpinCallbacks;
+    for (const auto& callback : callbacks)
+    {
+      handled += callback.second();
+    }
   }
   return handled;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::AddSpinCallback(vtkROS2SceneNode* owner, std::function<int()> callback)
+{
+  this->Internals->SpinCallbacks.emplace_back(owner, std::move(callback));
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::RemoveSpinCallbacks(vtkROS2SceneNode* owner)
+{
+  auto& callbacks = this->Internals->SpinCallbacks;
+  callbacks.erase(std::remove_if(callbacks.begin(), callbacks.end(),
+                    [owner](const auto& entry) { return entry.first == owner; }),
+    callbacks.end());
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::CollectSpinChildren()
+{
+  vtkInternals& internals = *this->Internals;
+  std::vector<vtkSmartPointer<vtkROS2SceneNode>> children;
+  auto collect = [&](const char* role) {
+    for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
+    {
+      if (vtkROS2SceneNode* child = this->GetNthNodeReference(role, i))
+      {
+        children.emplace_back(child);
+      }
+    }
+  };
+  for (const char* role : SpinOrder)
+  {
+    collect(role);
+  }
+  this->GetNodeReferenceRoleList(internals.RoleScratch);
+  for (const auto& role : internals.RoleScratch)
+  {
+    if (std::find_if(std::begin(SpinOrder), std::end(SpinOrder),
+          [&](const char* known) { return role == known; }) == std::end(SpinOrder))
+    {
+      collect(role.c_str());
+    }
+  }
+  internals.SpinChildren.swap(children);
+  internals.SpinChildrenVersion = this->GetReferencesVersion();
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2NodeNode::FindChild(const char* role, const std::string& key)
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.ChildIndexVersion != this->GetReferencesVersion())
+  {
+    internals.ChildIndex.clear();
+    this->GetNodeReferenceRoleList(internals.RoleScratch);
+    for (const auto& indexedRole : internals.RoleScratch)
+    {
+      for (int i = 0; i < this->GetNumberOfNodeReferences(indexedRole.c_str()); ++i)
+      {
+        ++internals.ChildVisits;
+        if (vtkROS2SceneNode* child = this->GetNthNodeReference(indexedRole.c_str(), i))
+        {
+          internals.ChildIndex.emplace(IndexKey(indexedRole.c_str(), child->GetROS2NodeChildKey()), child);
+        }
+      }
+    }
+    internals.ChildIndexVersion = this->GetReferencesVersion();
+  }
+  ++internals.ChildVisits;
+  auto found = internals.ChildIndex.find(IndexKey(role, key));
+  return found == internals.ChildIndex.end() ? nullptr : found->second;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::AddChild(const char* role, vtkROS2SceneNode* child)
+{
+  vtkInternals& internals = *this->Internals;
+  const bool indexCurrent = internals.ChildIndexVersion == this->GetReferencesVersion();
+  child->SetNodeReferenceID(ROS2NodeReferenceRole, this->GetID());
+  this->AddNodeReferenceID(role, child->GetID());
+  if (indexCurrent)
+  {
+    internals.ChildIndex.emplace(IndexKey(role, child->GetROS2NodeChildKey()), child);
+    internals.ChildIndexVersion = this->GetReferencesVersion();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveChild(const char* role, vtkROS2SceneNode* child)
+{
+  this->RemoveNodeReferenceID(role, child->GetID());
+  return this->Scene ? this->Scene->RemoveNode(child) : true;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeUInt64 vtkROS2NodeNode::GetNumberOfChildVisits() const
+{
+  return this->Internals->ChildVisits;
 }
 
 //------------------------------------------------------------------------------
@@ -526,29 +658,22 @@ std::string AbsoluteNodeName(const char* name)
 } // namespace
 
 //------------------------------------------------------------------------------
-int vtkROS2NodeNode::SpinParametersAndTf2()
+int vtkROS2NodeNode::SpinTf2Listener()
 {
-  int handled = 0;
-  for (const auto& node : Referenced<vtkROS2ParameterNode>(this, ParameterRole))
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Tf2Listener)
   {
-    handled += node->ProcessParameterUpdates();
+    return 0;
   }
-  if (this->Internals->Tf2Listener)
+  const int handled = static_cast<int>(internals.Tf2Listener->process());
+  const uint64_t rejected = internals.Tf2Listener->rejected_count();
+  // At most one line a second, however many bad transforms arrive (1 kHz senders).
+  const uint64_t due = internals.Tf2RejectionReport.record(
+    rejected - internals.Tf2RejectionsReported, ros2vtk::scene::RateLimitedReport::Clock::now());
+  internals.Tf2RejectionsReported = rejected;
+  if (due > 0)
   {
-    handled += static_cast<int>(this->Internals->Tf2Listener->process());
-    const uint64_t rejected = this->Internals->Tf2Listener->rejected_count();
-    if (rejected > this->Internals->Tf2RejectionsReported)
-    {
-      // One line per spin at most, whatever the number of bad transforms.
-      vtkWarningMacro("tf2: rejected " << rejected - this->Internals->Tf2RejectionsReported
-                                       << " transform(s): "
-                                       << this->Internals->Tf2Listener->last_rejection());
-      this->Internals->Tf2RejectionsReported = rejected;
-    }
-    for (const auto& node : Referenced<vtkROS2Tf2LookupNode>(this, Tf2LookupRole))
-    {
-      handled += node->UpdateFromBuffer(*this->Internals->Tf2Buffer) ? 1 : 0;
-    }
+    vtkWarningMacro("tf2: rejected " << due << " transform(s): " << internals.Tf2Listener->last_rejection());
   }
   return handled;
 }
@@ -604,20 +729,6 @@ ros2vtk::wire::ParameterServer* vtkROS2NodeNode::GetParameterServer() const
   return this->Internals->Parameters.get();
 }
 
-//------------------------------------------------------------------------------
-void vtkROS2NodeNode::AddSpinCallback(vtkROS2SceneNode* owner, std::function<int()> callback)
-{
-  this->Internals->SpinCallbacks.emplace_back(owner, std::move(callback));
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2NodeNode::RemoveSpinCallbacks(vtkROS2SceneNode* owner)
-{
-  auto& callbacks = this->Internals->SpinCallbacks;
-  callbacks.erase(std::remove_if(callbacks.begin(), callbacks.end(),
-                    [owner](const auto& entry) { return entry.first == owner; }),
-    callbacks.end());
-}
 
 //------------------------------------------------------------------------------
 template <typename NodeType>
@@ -627,14 +738,7 @@ NodeType* vtkROS2NodeNode::FindByFrames(const char* role, const char* parentFram
   {
     return nullptr;
   }
-  for (const auto& node : Referenced<NodeType>(this, role))
-  {
-    if (std::string(node->GetParentID()) == parentFrame && std::string(node->GetChildID()) == childFrame)
-    {
-      return node;
-    }
-  }
-  return nullptr;
+  return NodeType::SafeDownCast(this->FindChild(role, std::string(parentFrame) + '\n' + childFrame));
 }
 
 //------------------------------------------------------------------------------
@@ -675,8 +779,7 @@ vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* par
   node->SetChildID(childFrame);
   node->SetName((std::string("ros2:tf2lookup:") + parentFrame + "To" + childFrame).c_str());
   this->Scene->AddNode(node);
-  node->SetNodeReferenceID("ros2Node", this->GetID());
-  this->AddNodeReferenceID(Tf2LookupRole, node->GetID());
+  this->AddChild(Tf2LookupRole, node);
   // A first lookup right away, so data already in the buffer shows without waiting for a spin.
   node->UpdateFromBuffer(*this->Internals->Tf2Buffer);
   return node;
@@ -698,8 +801,7 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, cons
                                                              << (childFrame ? childFrame : ""));
     return false;
   }
-  this->RemoveNodeReferenceID(Tf2LookupRole, node->GetID());
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
+  return this->RemoveChild(Tf2LookupRole, node);
 }
 
 //------------------------------------------------------------------------------
@@ -725,8 +827,7 @@ vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const
   node->SetChildID(childFrame);
   node->SetName((std::string("ros2:tf2broadcaster:") + parentFrame + "To" + childFrame).c_str());
   this->Scene->AddNode(node);
-  node->SetNodeReferenceID("ros2Node", this->GetID());
-  this->AddNodeReferenceID(Tf2BroadcasterRole, node->GetID());
+  this->AddChild(Tf2BroadcasterRole, node);
   return node;
 }
 
@@ -747,8 +848,7 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame,
                                                                        << " <- " << (childFrame ? childFrame : ""));
     return false;
   }
-  this->RemoveNodeReferenceID(Tf2BroadcasterRole, node->GetID());
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
+  return this->RemoveChild(Tf2BroadcasterRole, node);
 }
 
 //------------------------------------------------------------------------------
@@ -777,22 +877,14 @@ vtkROS2ParameterNode* vtkROS2NodeNode::CreateAndAddParameterNode(const char* mon
     this->Scene->RemoveNode(node);
     return nullptr;
   }
-  this->AddNodeReferenceID(ParameterRole, node->GetID());
+  this->AddChild(ParameterRole, node);
   return node;
 }
 
 //------------------------------------------------------------------------------
 vtkROS2ParameterNode* vtkROS2NodeNode::GetParameterNodeByNode(const char* monitoredNodeName)
 {
-  const std::string remote = AbsoluteNodeName(monitoredNodeName);
-  for (const auto& node : Referenced<vtkROS2ParameterNode>(this, ParameterRole))
-  {
-    if (remote == node->GetMonitoredNodeName())
-    {
-      return node;
-    }
-  }
-  return nullptr;
+  return vtkROS2ParameterNode::SafeDownCast(this->FindChild(ParameterRole, AbsoluteNodeName(monitoredNodeName)));
 }
 
 //------------------------------------------------------------------------------
@@ -804,8 +896,7 @@ bool vtkROS2NodeNode::RemoveAndDeleteParameterNode(const char* monitoredNodeName
     vtkErrorMacro("RemoveAndDeleteParameterNode: " << AbsoluteNodeName(monitoredNodeName) << " is not monitored");
     return false;
   }
-  this->RemoveNodeReferenceID(ParameterRole, node->GetID());
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
+  return this->RemoveChild(ParameterRole, node);
 }
 
 //------------------------------------------------------------------------------
@@ -854,13 +945,13 @@ bool SetOwnParameter(ros2vtk::wire::ParameterServer* server, const char* name, u
   }                                                                                                 \
   return true;
 
-bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value) { ROS2VTK_SET_OWN_PARAMETER(1, bool_value) }
-bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value) { ROS2VTK_SET_OWN_PARAMETER(2, integer_value) }
-bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value) { ROS2VTK_SET_OWN_PARAMETER(3, double_value) }
+bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_BOOL, bool_value) }
+bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_INTEGER, integer_value) }
+bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_DOUBLE, double_value) }
 bool vtkROS2NodeNode::SetParameterAsString(const char* name, const char* text)
 {
   const std::string value = text ? text : "";
-  ROS2VTK_SET_OWN_PARAMETER(4, string_value)
+  ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_STRING, string_value)
 }
 #undef ROS2VTK_SET_OWN_PARAMETER
 
@@ -949,7 +1040,7 @@ vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* ro
   robot->SetFixedFrame(fixedFrame);
   robot->SetTfPrefix(tfPrefix);
   this->Scene->AddNode(robot);
-  this->AddNodeReferenceID(RobotRole, robot->GetID());
+  this->AddChild(RobotRole, robot);
   if (!attach(robot))
   {
     this->RemoveAndDeleteRobotNode(robotName);
@@ -999,14 +1090,7 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* rob
 //------------------------------------------------------------------------------
 vtkROS2RobotNode* vtkROS2NodeNode::GetRobotNodeByName(const char* robotName)
 {
-  for (const auto& node : Referenced<vtkROS2RobotNode>(this, RobotRole))
-  {
-    if (robotName && std::string(node->GetRobotName()) == robotName)
-    {
-      return node;
-    }
-  }
-  return nullptr;
+  return robotName ? vtkROS2RobotNode::SafeDownCast(this->FindChild(RobotRole, robotName)) : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -1018,8 +1102,7 @@ bool vtkROS2NodeNode::RemoveAndDeleteRobotNode(const char* robotName)
     vtkErrorMacro("RemoveAndDeleteRobotNode: no robot '" << (robotName ? robotName : "(null)") << "'");
     return false;
   }
-  this->RemoveNodeReferenceID(RobotRole, robot->GetID());
-  return this->Scene ? this->Scene->RemoveNode(robot) : true;
+  return this->RemoveChild(RobotRole, robot);
 }
 
 //------------------------------------------------------------------------------
@@ -1040,14 +1123,8 @@ NodeType* FindByService(vtkROS2NodeNode* owner, const char* role, const char* se
   {
     owner->GetParticipant()->resolve_name(service, resolved, nullptr);
   }
-  for (const auto& node : Referenced<NodeType>(owner, role))
-  {
-    if (node->GetServiceName() == std::string(service) || (!resolved.empty() && node->GetServiceName() == resolved))
-    {
-      return node;
-    }
-  }
-  return nullptr;
+  vtkROS2SceneNode* found = resolved.empty() ? nullptr : owner->FindChild(role, resolved);
+  return NodeType::SafeDownCast(found ? found : owner->FindChild(role, service));
 }
 
 /// Creates a service node of class NodeType, adds it to the scene and attaches it; nullptr and
@@ -1064,7 +1141,7 @@ NodeType* AddServiceNode(vtkROS2NodeNode* owner, vtkROS2Scene* scene, const char
     scene->RemoveNode(node);
     return nullptr;
   }
-  owner->AddNodeReferenceID(role, node->GetID());
+  owner->AddChild(role, node);
   return node;
 }
 }
@@ -1104,8 +1181,7 @@ bool vtkROS2NodeNode::RemoveAndDeleteServiceClientNode(const char* service)
     vtkErrorMacro("RemoveAndDeleteServiceClientNode: no client of " << (service ? service : ""));
     return false;
   }
-  this->RemoveNodeReferenceID(ServiceClientRole, node->GetID());
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
+  return this->RemoveChild(ServiceClientRole, node);
 }
 
 //------------------------------------------------------------------------------
@@ -1143,8 +1219,7 @@ bool vtkROS2NodeNode::RemoveAndDeleteServiceServerNode(const char* service)
     vtkErrorMacro("RemoveAndDeleteServiceServerNode: no server of " << (service ? service : ""));
     return false;
   }
-  this->RemoveNodeReferenceID(ServiceServerRole, node->GetID());
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
+  return this->RemoveChild(ServiceServerRole, node);
 }
 
 //------------------------------------------------------------------------------

@@ -5,8 +5,10 @@
 //   pub = node->CreateAndAddPublisherNode("String", "/pub");
 //   node->Spin(); // on the thread that owns the scene
 //
-// Publishers and subscribers are scene nodes of their own; the ROS node references them
-// (roles "publisher" / "subscriber") and they reference it (role "ROS2Node").
+// Publishers, subscribers, tf2 lookups, parameters, services and robots are scene nodes of their
+// own (children): the ROS node references them by the role of their kind ("publisher",
+// "tf2Lookup", ...) and they reference it (vtkROS2SceneNode::ROS2NodeReferenceRole). Spin order,
+// roles and the child index: docs/architecture.md.
 #ifndef vtkROS2NodeNode_h
 #define vtkROS2NodeNode_h
 
@@ -200,10 +202,23 @@ public:
   ros2vtk::tf2_ros::TransformBroadcaster* GetTf2Broadcaster(bool isStatic);
   /// The server of this node's own parameters (nullptr before Create).
   ros2vtk::wire::ParameterServer* GetParameterServer() const;
-  /// Work a scene node wants done on every Spin of this ROS node, after topics, parameters
-  /// and tf (e.g. a robot updating its links). Returns what it handled.
+  /// Work done on every Spin after all children (the "connectors" step of the spin order), for
+  /// objects that are not children of this node (the OpenIGTLink connector while it runs).
+  /// Children override vtkROS2SceneNode::OnROS2NodeSpin instead.
   void AddSpinCallback(vtkROS2SceneNode* owner, std::function<int()> callback);
   void RemoveSpinCallbacks(vtkROS2SceneNode* owner);
+  ///@{
+  /// The one create/find/remove path of every child kind. A child is referenced under its
+  /// kind's `role` and found by its GetROS2NodeChildKey() through an index (rebuilt only when
+  /// the references change), so N children cost O(N) to create, not O(N^2).
+  /// AddChild sets the child's ROS2NodeReferenceRole reference and this node's `role` one.
+  vtkROS2SceneNode* FindChild(const char* role, const std::string& key);
+  void AddChild(const char* role, vtkROS2SceneNode* child);
+  /// Drops the reference and removes the child from the scene.
+  bool RemoveChild(const char* role, vtkROS2SceneNode* child);
+  /// Children visited by FindChild (index rebuilds and lookups), for tests of its scaling.
+  vtkTypeUInt64 GetNumberOfChildVisits() const;
+  ///@}
 #endif
 
 protected:
@@ -228,7 +243,8 @@ private:
   vtkROS2RobotNode* AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
     const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach);
 #endif
-  int SpinParametersAndTf2();
+  int SpinTf2Listener();
+  void CollectSpinChildren();
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

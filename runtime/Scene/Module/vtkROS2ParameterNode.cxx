@@ -2,6 +2,7 @@
 
 #include "vtkROS2NodeNode.h"
 
+#include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/wire/ParameterClient.hpp"
 #include "ros2vtk/wire/ParameterStore.hpp"
 #include "ros2vtk/wire/Participant.hpp"
@@ -68,7 +69,7 @@ bool vtkROS2ParameterNode::Attach(vtkROS2NodeNode* rosNode, const std::string& r
     client->add(name);
   }
   this->Internals->Client = std::move(client);
-  this->SetNodeReferenceID("ros2Node", rosNode->GetID());
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   return true;
 }
 
@@ -166,6 +167,26 @@ const rcl::ParameterValue* Find(const std::unique_ptr<ros2vtk::wire::ParameterCl
 {
   return client && name ? client->value(name) : nullptr;
 }
+
+using ParameterType = ros2vtk::rcl_interfaces::msg::ParameterType;
+
+/// Copies a parameter's array into a VTK array (the typed-array getters), element by element
+/// through `convert`.
+template <typename ArrayType, typename Values, typename Convert>
+bool FillArray(ArrayType* array, const Values& values, Convert convert)
+{
+  if (!array)
+  {
+    return false;
+  }
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    array->SetValue(static_cast<vtkIdType>(i), convert(values[i]));
+  }
+  return true;
+}
+const auto Same = [](const auto& value) { return value; };
 } // namespace
 
 #define ROS2VTK_PARAMETER_VALUE(name, expected, fallback)                                           \
@@ -200,81 +221,56 @@ std::string vtkROS2ParameterNode::GetParameterType(const char* name) const
 //------------------------------------------------------------------------------
 bool vtkROS2ParameterNode::GetParameterAsBool(const char* name) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 1, false)
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_BOOL, false)
   return value->bool_value;
 }
 
 vtkTypeInt64 vtkROS2ParameterNode::GetParameterAsInteger(const char* name) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 2, 0)
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_INTEGER, 0)
   return value->integer_value;
 }
 
 double vtkROS2ParameterNode::GetParameterAsDouble(const char* name) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 3, 0.0)
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_DOUBLE, 0.0)
   return value->double_value;
 }
 
 std::string vtkROS2ParameterNode::GetParameterAsString(const char* name) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 4, std::string())
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_STRING, std::string())
   return value->string_value;
 }
 
 bool vtkROS2ParameterNode::GetParameterAsByteArray(const char* name, vtkUnsignedCharArray* values) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 5, false)
-  if (!values)
-    return false;
-  values->SetNumberOfValues(static_cast<vtkIdType>(value->byte_array_value.size()));
-  for (size_t i = 0; i < value->byte_array_value.size(); ++i)
-    values->SetValue(static_cast<vtkIdType>(i), value->byte_array_value[i]);
-  return true;
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_BYTE_ARRAY, false)
+  return FillArray(values, value->byte_array_value, Same);
 }
 
 bool vtkROS2ParameterNode::GetParameterAsVectorOfBools(const char* name, vtkIntArray* values) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 6, false)
-  if (!values)
-    return false;
-  values->SetNumberOfValues(static_cast<vtkIdType>(value->bool_array_value.size()));
-  for (size_t i = 0; i < value->bool_array_value.size(); ++i)
-    values->SetValue(static_cast<vtkIdType>(i), value->bool_array_value[i] ? 1 : 0);
-  return true;
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_BOOL_ARRAY, false)
+  return FillArray(values, value->bool_array_value, [](bool item) { return item ? 1 : 0; });
 }
 
 bool vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(const char* name, vtkTypeInt64Array* values) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 7, false)
-  if (!values)
-    return false;
-  values->SetNumberOfValues(static_cast<vtkIdType>(value->integer_array_value.size()));
-  for (size_t i = 0; i < value->integer_array_value.size(); ++i)
-    values->SetValue(static_cast<vtkIdType>(i), value->integer_array_value[i]);
-  return true;
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_INTEGER_ARRAY, false)
+  return FillArray(values, value->integer_array_value, Same);
 }
 
 bool vtkROS2ParameterNode::GetParameterAsVectorOfDoubles(const char* name, vtkDoubleArray* values) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 8, false)
-  if (!values)
-    return false;
-  values->SetNumberOfValues(static_cast<vtkIdType>(value->double_array_value.size()));
-  for (size_t i = 0; i < value->double_array_value.size(); ++i)
-    values->SetValue(static_cast<vtkIdType>(i), value->double_array_value[i]);
-  return true;
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_DOUBLE_ARRAY, false)
+  return FillArray(values, value->double_array_value, Same);
 }
 
 bool vtkROS2ParameterNode::GetParameterAsVectorOfStrings(const char* name, vtkStringArray* values) const
 {
-  ROS2VTK_PARAMETER_VALUE(name, 9, false)
-  if (!values)
-    return false;
-  values->SetNumberOfValues(static_cast<vtkIdType>(value->string_array_value.size()));
-  for (size_t i = 0; i < value->string_array_value.size(); ++i)
-    values->SetValue(static_cast<vtkIdType>(i), value->string_array_value[i]);
-  return true;
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_STRING_ARRAY, false)
+  return FillArray(values, value->string_array_value, Same);
 }
 
 #undef ROS2VTK_PARAMETER_VALUE
@@ -292,7 +288,7 @@ std::string vtkROS2ParameterNode::PrintParameter(const char* name) const
 //------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2ParameterNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------

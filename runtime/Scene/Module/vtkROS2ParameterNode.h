@@ -78,6 +78,12 @@ public:
   int ProcessParameterUpdates();
 #endif
 
+
+  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): applies parameter updates.
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessParameterUpdates(); }
+  /// Index key among the ROS node's parameter nodes.
+  std::string GetROS2NodeChildKey() const override { return this->GetMonitoredNodeName(); }
+
 protected:
   vtkROS2ParameterNode();
   ~vtkROS2ParameterNode() override;

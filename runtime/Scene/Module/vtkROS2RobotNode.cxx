@@ -8,6 +8,7 @@
 #include "vtkROS2Tf2LookupNode.h"
 #include "vtkROS2TransformNode.h"
 
+#include "ros2vtk/convert/Units.hpp"
 #include "ros2vtk/robot/RobotLoader.hpp"
 
 #include "vtkCallbackCommand.h"
@@ -27,13 +28,12 @@
 
 namespace
 {
-const char* const ROS2NodeRole = "ros2Node";
 const char* const DescriptionRole = "robotDescription";
 const char* const BaseRole = "robotBase";
 const char* const LinkRole = "robotLink";
 const char* const LinkAttribute = "ros2vtk.link";
 const char* const PlaceholderAttribute = "ros2vtk.placeholder";
-constexpr double MillimetresPerMetre = 1000.0;
+constexpr double MillimetresPerMetre = ros2vtk::convert::kMillimetresPerMetre;
 
 // Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
 // shared through the loader's cache) and the matrix brings it into the millimetre scene.
@@ -156,6 +156,7 @@ vtkROS2RobotNode::~vtkROS2RobotNode() = default;
 void vtkROS2RobotNode::SetRobotName(const char* robotName)
 {
   this->Internals->RobotName = robotName ? robotName : "";
+  this->ROS2NodeChildKeyChanged();
   this->SetName(("ros2:robot:" + this->Internals->RobotName).c_str());
 }
 
@@ -372,7 +373,7 @@ int vtkROS2RobotNode::GetNumberOfPlaceholders() const
 
 vtkROS2NodeNode* vtkROS2RobotNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeRole));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------
@@ -431,9 +432,8 @@ void vtkROS2RobotNode::FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* 
   vtkInternals& internals = *this->Internals;
   internals.SourceNode = source;
   internals.SourceObserverTag = source->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
-  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   this->SetNodeReferenceID(DescriptionRole, source->GetID());
-  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
 }
 
 //------------------------------------------------------------------------------
@@ -459,8 +459,7 @@ void vtkROS2RobotNode::FollowFile(vtkROS2NodeNode* rosNode)
   vtkInternals& internals = *this->Internals;
   internals.Loader.reset(); // made again with the package holding the file (package:// URIs)
   internals.SourceChanged = true;
-  this->SetNodeReferenceID(ROS2NodeRole, rosNode->GetID());
-  rosNode->AddSpinCallback(this, [this] { return this->CheckForNewDescription(); });
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
 }
 
 //------------------------------------------------------------------------------
@@ -800,10 +799,6 @@ void vtkROS2RobotNode::ReleaseSource()
     source->RemoveObserver(internals.SourceObserverTag);
   }
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode)
-  {
-    rosNode->RemoveSpinCallbacks(this);
-  }
   if (source && internals.OwnsSourceNode && rosNode)
   {
     if (internals.Source == "parameter")

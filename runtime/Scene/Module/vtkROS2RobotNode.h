@@ -137,6 +137,12 @@ public:
   bool ReadXML(vtkXMLDataElement* element) override;
   void OnSceneRestored() override;
 
+
+  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): loads a new description.
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->CheckForNewDescription(); }
+  /// Index key among the ROS node's robots.
+  std::string GetROS2NodeChildKey() const override { return this->GetRobotName(); }
+
 protected:
   vtkROS2RobotNode();
   ~vtkROS2RobotNode() override;

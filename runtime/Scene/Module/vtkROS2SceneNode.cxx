@@ -33,6 +33,9 @@ std::string JoinKeys(const std::map<std::string, std::string>& values)
 }
 } // namespace
 
+const char* const vtkROS2SceneNode::ROS2NodeReferenceRole = "ros2Node";
+const char* const vtkROS2SceneNode::LegacyROS2NodeReferenceRole = "ROS2Node";
+
 //------------------------------------------------------------------------------
 vtkROS2SceneNode::vtkROS2SceneNode()
   : Internals(new vtkInternals)
@@ -142,6 +145,7 @@ void vtkROS2SceneNode::SetNodeReferenceID(const char* role, const char* referenc
   {
     this->Internals->References[role] = wanted;
   }
+  ++this->ReferencesVersion;
   this->Modified();
 }
 
@@ -154,6 +158,7 @@ void vtkROS2SceneNode::AddNodeReferenceID(const char* role, const char* referenc
     return;
   }
   this->Internals->References[role].emplace_back(referencedNodeID);
+  ++this->ReferencesVersion;
   this->Modified();
 }
 
@@ -180,6 +185,7 @@ void vtkROS2SceneNode::RemoveNodeReferenceID(const char* role, const char* refer
   {
     this->Internals->References.erase(it);
   }
+  ++this->ReferencesVersion;
   this->Modified();
 }
 
@@ -188,6 +194,7 @@ void vtkROS2SceneNode::RemoveNodeReferenceIDs(const char* role)
 {
   if (role && this->Internals->References.erase(role) > 0)
   {
+    ++this->ReferencesVersion;
     this->Modified();
   }
 }
@@ -238,6 +245,16 @@ const char* vtkROS2SceneNode::GetNodeReferenceRoles()
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2SceneNode::GetNodeReferenceRoleList(std::vector<std::string>& roles) const
+{
+  roles.clear();
+  for (const auto& entry : this->Internals->References)
+  {
+    roles.push_back(entry.first);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2SceneNode::SetSceneAndID(vtkROS2Scene* scene, const char* id)
 {
   if (!scene && this->Scene)
@@ -266,6 +283,7 @@ void vtkROS2SceneNode::ForgetReferencesTo(const char* referencedNodeID)
   }
   if (changed)
   {
+    ++this->ReferencesVersion;
     this->Modified();
   }
 }
@@ -345,11 +363,29 @@ bool vtkROS2SceneNode::ReadXML(vtkXMLDataElement* element)
                                                        << "' needs 'role' and 'id'");
         return false;
       }
-      this->Internals->References[role].emplace_back(id);
+      // One role, two spellings in files of earlier versions.
+      const bool legacy = std::string(role) == LegacyROS2NodeReferenceRole;
+      this->Internals->References[legacy ? ROS2NodeReferenceRole : role].emplace_back(id);
     }
   }
+  ++this->ReferencesVersion;
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2SceneNode::OnROS2NodeSpin(vtkROS2NodeNode*)
+{
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SceneNode::ROS2NodeChildKeyChanged()
+{
+  if (vtkROS2SceneNode* owner = this->GetNodeReference(ROS2NodeReferenceRole))
+  {
+    ++owner->ReferencesVersion;
+  }
 }
 
 //------------------------------------------------------------------------------

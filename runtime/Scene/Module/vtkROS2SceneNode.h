@@ -13,7 +13,10 @@
 #include "vtkObject.h"
 
 #include <memory> // for std::unique_ptr (pimpl)
+#include <string> // for std::string (child keys)
+#include <vector> // for std::vector (role lists)
 
+class vtkROS2NodeNode;
 class vtkROS2Scene;
 class vtkXMLDataElement;
 
@@ -73,6 +76,29 @@ public:
   /// that nodes can act on references (e.g. a publisher re-attaches to its ROS node).
   virtual void OnSceneRestored() {}
 
+  ///@{
+  /// Children of a ROS node (publishers, lookups, robots, ...) reference it under this one role
+  /// (MRML style, like vtkMRMLTransformableNode::TransformNodeReferenceRole). Scene files of
+  /// earlier versions also spelled it LegacyROS2NodeReferenceRole ("ROS2Node"); ReadXML reads
+  /// both into the one role.
+  static const char* const ROS2NodeReferenceRole;
+  static const char* const LegacyROS2NodeReferenceRole;
+  ///@}
+  /// The ROS node this node belongs to (its ROS2NodeReferenceRole reference), or nullptr.
+  /// Defined in vtkROS2NodeNode.cxx so that this base class needs no header of a subclass.
+  vtkROS2NodeNode* GetROS2Node() const;
+
+  /// The per-spin hook: vtkROS2NodeNode::Spin calls it on each of its children, role by role in
+  /// the documented order (tf lookups, subscribers, parameters, services, robots, then any
+  /// other kind; docs/architecture.md). Returns how many items it handled. Does nothing by
+  /// default.
+  virtual int OnROS2NodeSpin(vtkROS2NodeNode* rosNode);
+
+  /// The key that makes this node unique among its ROS node's children of the same role
+  /// (topic, "parent<newline>child" frame pair, monitored node, robot name, service name);
+  /// empty for nodes that are not looked up by key. The ROS node indexes its children by it.
+  virtual std::string GetROS2NodeChildKey() const { return std::string(); }
+
   /// The tag used in scene files: the class name by default.
   virtual const char* GetXMLTagName() { return this->GetClassName(); }
 
@@ -81,6 +107,12 @@ public:
   void SetSceneAndID(vtkROS2Scene* scene, const char* id);
   /// Used by vtkROS2Scene when a referenced node is removed: drops every reference to it.
   void ForgetReferencesTo(const char* referencedNodeID);
+  /// Grows by one on every change of this node's references (or of a referenced child's key,
+  /// see ROS2NodeChildKeyChanged): indexes built over the references compare it to know they
+  /// are current.
+  unsigned long GetReferencesVersion() const { return this->ReferencesVersion; }
+  /// The roles that hold at least one reference, sorted (GetNodeReferenceRoles as a list).
+  void GetNodeReferenceRoleList(std::vector<std::string>& roles) const;
 #endif
 
 protected:
@@ -91,8 +123,13 @@ protected:
   /// scene pointer is cleared: subclasses release what they hold through the scene.
   virtual void OnRemovedFromScene() {}
 
+  /// Subclasses whose GetROS2NodeChildKey can change while they belong to a ROS node call this
+  /// so that the ROS node's index of its children is rebuilt.
+  void ROS2NodeChildKeyChanged();
+
   vtkROS2Scene* Scene = nullptr;
   bool SaveWithScene = true;
+  unsigned long ReferencesVersion = 0;
 
 private:
   vtkROS2SceneNode(const vtkROS2SceneNode&) = delete;

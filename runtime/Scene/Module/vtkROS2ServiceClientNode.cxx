@@ -128,19 +128,13 @@ bool vtkROS2ServiceClientNode::Attach(vtkROS2NodeNode* rosNode, const std::strin
   internals.TypeName = support->ros_type;
   internals.ServiceName = service;
   internals.Client = std::move(client);
-  this->SetNodeReferenceID("ros2Node", rosNode->GetID());
-  rosNode->RemoveSpinCallbacks(this);
-  rosNode->AddSpinCallback(this, [this] { return this->ProcessResponses(); });
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkROS2ServiceClientNode::Detach()
 {
-  if (vtkROS2NodeNode* rosNode = this->GetROS2Node())
-  {
-    rosNode->RemoveSpinCallbacks(this);
-  }
   this->Internals->Pendings.clear();
   this->Internals->Client.reset();
 }
@@ -165,7 +159,7 @@ void vtkROS2ServiceClientNode::OnSceneRestored()
 //------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2ServiceClientNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------

@@ -112,6 +112,12 @@ public:
   int ProcessResponses();
 #endif
 
+
+  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes responses.
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessResponses(); }
+  /// Index key among the ROS node's service clients.
+  std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
+
 protected:
   vtkROS2ServiceClientNode();
   ~vtkROS2ServiceClientNode() override;

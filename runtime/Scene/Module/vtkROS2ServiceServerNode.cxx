@@ -107,19 +107,13 @@ bool vtkROS2ServiceServerNode::Attach(vtkROS2NodeNode* rosNode, const std::strin
   internals.ServiceName = service;
   internals.Server = std::move(server);
   internals.RejectedSeen = 0;
-  this->SetNodeReferenceID("ros2Node", rosNode->GetID());
-  rosNode->RemoveSpinCallbacks(this);
-  rosNode->AddSpinCallback(this, [this] { return this->ProcessRequests(); });
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkROS2ServiceServerNode::Detach()
 {
-  if (vtkROS2NodeNode* rosNode = this->GetROS2Node())
-  {
-    rosNode->RemoveSpinCallbacks(this);
-  }
   this->Internals->InEvent = nullptr;
   this->Internals->Pendings.clear();
   this->Internals->Server.reset();
@@ -145,7 +139,7 @@ void vtkROS2ServiceServerNode::OnSceneRestored()
 //------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2ServiceServerNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------

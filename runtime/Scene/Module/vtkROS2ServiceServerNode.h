@@ -91,6 +91,12 @@ public:
   int ProcessRequests();
 #endif
 
+
+  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): answers requests.
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
+  /// Index key among the ROS node's service servers.
+  std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
+
 protected:
   vtkROS2ServiceServerNode();
   ~vtkROS2ServiceServerNode() override;

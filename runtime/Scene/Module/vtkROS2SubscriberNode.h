@@ -46,6 +46,10 @@ public:
   /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.
   int ProcessIncomingMessages();
 
+
+  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes the queued messages.
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessIncomingMessages(); }
+
 protected:
   vtkROS2SubscriberNode();
   ~vtkROS2SubscriberNode() override;

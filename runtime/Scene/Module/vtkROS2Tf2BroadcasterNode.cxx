@@ -34,6 +34,7 @@ void vtkROS2Tf2BroadcasterNode::OnRemovedFromScene()
 void vtkROS2Tf2BroadcasterNode::SetParentID(const char* frame)
 {
   this->ParentFrame = frame ? frame : "";
+  this->ROS2NodeChildKeyChanged();
   this->Modified();
 }
 
@@ -41,13 +42,14 @@ void vtkROS2Tf2BroadcasterNode::SetParentID(const char* frame)
 void vtkROS2Tf2BroadcasterNode::SetChildID(const char* frame)
 {
   this->ChildFrame = frame ? frame : "";
+  this->ROS2NodeChildKeyChanged();
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2Tf2BroadcasterNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------

@@ -48,6 +48,9 @@ public:
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
 
+  /// Index key among the ROS node's broadcasters: "parent<newline>child".
+  std::string GetROS2NodeChildKey() const override { return this->ParentFrame + '\n' + this->ChildFrame; }
+
 protected:
   vtkROS2Tf2BroadcasterNode();
   ~vtkROS2Tf2BroadcasterNode() override;

@@ -27,6 +27,7 @@ void vtkROS2Tf2LookupNode::SetParentID(const char* frame)
   {
     this->ParentFrame = value;
     this->Status = 0;
+    this->ROS2NodeChildKeyChanged();
     this->Modified();
   }
 }
@@ -39,8 +40,16 @@ void vtkROS2Tf2LookupNode::SetChildID(const char* frame)
   {
     this->ChildFrame = value;
     this->Status = 0;
+    this->ROS2NodeChildKeyChanged();
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2Tf2LookupNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
+{
+  const ros2vtk::tf2::BufferCore* buffer = rosNode->GetTf2Buffer();
+  return buffer && this->UpdateFromBuffer(*buffer) ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -58,7 +67,7 @@ bool vtkROS2Tf2LookupNode::IsDifferentFromLast(int sec, int nsec) const
 //------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2Tf2LookupNode::GetROS2Node() const
 {
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference("ros2Node"));
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
 }
 
 //------------------------------------------------------------------------------

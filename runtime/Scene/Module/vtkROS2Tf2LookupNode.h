@@ -62,6 +62,11 @@ public:
   bool UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buffer);
 #endif
 
+  /// Index key among the ROS node's lookups: "parent<newline>child".
+  std::string GetROS2NodeChildKey() const override { return this->ParentFrame + '\n' + this->ChildFrame; }
+  /// Spin hook: the latest transform from the ROS node's tf2 buffer.
+  int OnROS2NodeSpin(vtkROS2NodeNode* rosNode) override;
+
 protected:
   vtkROS2Tf2LookupNode();
   ~vtkROS2Tf2LookupNode() override;

@@ -10,12 +10,6 @@
 
 #include "vtkXMLDataElement.h"
 
-namespace
-{
-// Reference role from a publisher/subscriber to its ROS node.
-const char* const ROS2NodeRole = "ROS2Node";
-} // namespace
-
 //------------------------------------------------------------------------------
 class vtkROS2TopicNode::vtkInternals
 {
@@ -78,7 +72,7 @@ bool vtkROS2TopicNode::AddToROS2Node(const char* nodeID, const char* topic)
     return false;
   }
   this->Internals->Topic = resolved;
-  this->SetNodeReferenceID(ROS2NodeRole, nodeID);
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, nodeID);
   const char* role = this->GetROS2NodeReferenceRole();
   bool listed = false;
   for (int i = 0; i < rosNode->GetNumberOfNodeReferences(role); ++i)
@@ -101,11 +95,11 @@ bool vtkROS2TopicNode::RemoveFromROS2Node()
     return false;
   }
   this->DestroyEndpoint();
-  if (vtkROS2SceneNode* rosNode = this->GetNodeReference(ROS2NodeRole))
+  if (vtkROS2SceneNode* rosNode = this->GetNodeReference(ROS2NodeReferenceRole))
   {
     rosNode->RemoveNodeReferenceID(this->GetROS2NodeReferenceRole(), this->GetID());
   }
-  this->SetNodeReferenceID(ROS2NodeRole, nullptr);
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, nullptr);
   this->Modified();
   return true;
 }
@@ -120,7 +114,7 @@ bool vtkROS2TopicNode::IsAddedToROS2Node() const
 vtkROS2NodeNode* vtkROS2TopicNode::GetROS2Node() const
 {
   return this->IsAddedToROS2Node()
-    ? vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeRole))
+    ? vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole))
     : nullptr;
 }
 
@@ -174,7 +168,7 @@ bool vtkROS2TopicNode::RecreateEndpoint()
     {
       rosNode->RemoveNodeReferenceID(this->GetROS2NodeReferenceRole(), this->GetID());
     }
-    this->SetNodeReferenceID(ROS2NodeRole, nullptr);
+    this->SetNodeReferenceID(ROS2NodeReferenceRole, nullptr);
     return false;
   }
   return true;
@@ -341,13 +335,13 @@ bool vtkROS2TopicNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2TopicNode::OnSceneRestored()
 {
   this->Superclass::OnSceneRestored();
-  const char* savedNode = this->GetNodeReferenceID(ROS2NodeRole);
+  const char* savedNode = this->GetNodeReferenceID(ROS2NodeReferenceRole);
   if (!savedNode || this->Internals->Topic.empty())
   {
     return;
   }
   const std::string nodeID = savedNode;
-  this->SetNodeReferenceID(ROS2NodeRole, nullptr);
+  this->SetNodeReferenceID(ROS2NodeReferenceRole, nullptr);
   this->AddToROS2Node(nodeID.c_str(), this->Internals->Topic.c_str());
 }
 

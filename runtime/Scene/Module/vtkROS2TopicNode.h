@@ -79,6 +79,9 @@ public:
   bool SetQoS(const ros2vtk::wire::QoS& qos);
 #endif
 
+  /// Index key among the ROS node's publishers / subscribers (the resolved topic).
+  std::string GetROS2NodeChildKey() const override { return this->GetTopic(); }
+
 protected:
   vtkROS2TopicNode();
   ~vtkROS2TopicNode() override;
