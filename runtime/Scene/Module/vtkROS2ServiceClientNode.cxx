@@ -157,12 +157,6 @@ void vtkROS2ServiceClientNode::OnSceneRestored()
 }
 
 //------------------------------------------------------------------------------
-vtkROS2NodeNode* vtkROS2ServiceClientNode::GetROS2Node() const
-{
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
-}
-
-//------------------------------------------------------------------------------
 const char* vtkROS2ServiceClientNode::GetServiceName() const
 {
   return this->Internals->Client ? this->Internals->Client->service_name().c_str()

@@ -96,7 +96,6 @@ public:
   vtkTypeInt64 GetNumberOfResponses() const;
   vtkTypeInt64 GetNumberOfFailures() const;
 
-  vtkROS2NodeNode* GetROS2Node() const;
 
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;

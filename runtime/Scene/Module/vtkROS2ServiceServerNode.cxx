@@ -137,12 +137,6 @@ void vtkROS2ServiceServerNode::OnSceneRestored()
 }
 
 //------------------------------------------------------------------------------
-vtkROS2NodeNode* vtkROS2ServiceServerNode::GetROS2Node() const
-{
-  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
-}
-
-//------------------------------------------------------------------------------
 const char* vtkROS2ServiceServerNode::GetServiceName() const
 {
   return this->Internals->Server ? this->Internals->Server->service_name().c_str()

@@ -77,7 +77,6 @@ public:
   vtkTypeInt64 GetNumberOfRejectedRequests() const;
   std::string GetLastRejection() const;
 
-  vtkROS2NodeNode* GetROS2Node() const;
 
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
