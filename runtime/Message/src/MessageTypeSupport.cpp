@@ -68,6 +68,21 @@ const ServiceTypeSupport* find_service_type(const std::string& ros_type)
   return it == r.services.end() ? nullptr : it->second;
 }
 
+const ServiceTypeSupport* find_service_type(const std::string& ros_type, std::string* error)
+{
+  const ServiceTypeSupport* type = find_service_type(ros_type);
+  if (!type && error)
+  {
+    *error = "unknown service type '" + ros_type + "' (known:";
+    for (const std::string& name : registered_service_types())
+    {
+      *error += ' ' + name;
+    }
+    *error += ')';
+  }
+  return type;
+}
+
 std::vector<std::string> registered_message_types()
 {
   Registry& r = registry();

@@ -99,19 +99,13 @@ bool vtkROS2ServiceClientNode::Attach(vtkROS2NodeNode* rosNode, const std::strin
     vtkErrorMacro("service client " << service << ": the ROS node is not created");
     return false;
   }
-  const ros2vtk::wire::ServiceTypeSupport* support = ros2vtk::wire::find_service_type(type);
+  std::string error;
+  const ros2vtk::wire::ServiceTypeSupport* support = ros2vtk::wire::find_service_type(type, &error);
   if (!support)
   {
-    std::ostringstream known;
-    for (const auto& name : ros2vtk::wire::registered_service_types())
-    {
-      known << ' ' << name;
-    }
-    vtkErrorMacro("service client " << service << ": unknown service type '" << type << "' (known:" << known.str()
-                                    << ")");
+    vtkErrorMacro("service client " << service << ": " << error);
     return false;
   }
-  std::string error;
   auto client = rosNode->GetParticipant()->create_service_client(
     *support, service, ros2vtk::wire::QoS::services(), &error);
   if (!client)

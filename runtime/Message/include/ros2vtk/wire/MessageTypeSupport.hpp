@@ -115,6 +115,8 @@ void register_service_type(const ServiceTypeSupport* type);
 /// Accepts "pkg/msg/Type" and "pkg/Type". nullptr when unknown.
 const MessageTypeSupport* find_message_type(const std::string& ros_type);
 const ServiceTypeSupport* find_service_type(const std::string& ros_type);
+/// As above; when unknown, `error` says so and lists the registered service types.
+const ServiceTypeSupport* find_service_type(const std::string& ros_type, std::string* error);
 
 /// Sorted ROS names of every registered message / service type.
 std::vector<std::string> registered_message_types();
