@@ -210,6 +210,19 @@ ParticipantOptions ParticipantOptions::from_environment()
   {
     options.range = DiscoveryRange::Localhost;
   }
+  if (const char* bytes = std::getenv("ROS2VTK_SOCKET_BUFFER_BYTES"))
+  {
+    char* end = nullptr;
+    const unsigned long value = std::strtoul(bytes, &end, 10);
+    if (end != bytes && *end == '\0' && value <= (1ul << 30))
+    {
+      options.socket_buffer_bytes = static_cast<uint32_t>(value);
+    }
+    else
+    {
+      std::fprintf(stderr, "[ros2vtk] ROS2VTK_SOCKET_BUFFER_BYTES='%s' is not a byte count <= 1 GiB; ignored\n", bytes);
+    }
+  }
   if (const char* peers = std::getenv("ROS_STATIC_PEERS"))
   {
     std::string list(peers);
@@ -257,6 +270,10 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   // names changed), and peers would route same-host traffic there and lose it (§2.7.3).
   auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
   qos.transport().use_builtin_transports = false;
+  udp->sendBufferSize = options.socket_buffer_bytes;
+  udp->receiveBufferSize = options.socket_buffer_bytes;
+  qos.transport().send_socket_buffer_size = options.socket_buffer_bytes;
+  qos.transport().listen_socket_buffer_size = options.socket_buffer_bytes;
   if (options.range != DiscoveryRange::Subnet)
   {
     udp->maxInitialPeersRange = 32;

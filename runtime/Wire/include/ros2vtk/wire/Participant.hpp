@@ -32,6 +32,12 @@ struct ParticipantOptions
   /// Hosts to discover by unicast besides the range (ROS_STATIC_PEERS, as ROS 2 Jazzy and later:
   /// IPv4 addresses or host names), for networks that drop multicast.
   std::vector<std::string> static_peers;
+  /// UDP send and receive socket buffer size. A 640x480 rgb8 image (921 KB) is ~15 datagrams
+  /// of 64 KB; the kernel's default 208 KB receive buffer drops the tail of a burst, and the
+  /// reliable writer repairs it only after a NACK round (docs/benchmarks.md, "where the time
+  /// goes"). The kernel caps it at net.core.rmem_max / wmem_max. 0 keeps the OS default.
+  /// ROS2VTK_SOCKET_BUFFER_BYTES overrides it (the benchmarks' same-run baseline uses 0).
+  uint32_t socket_buffer_bytes = 4u * 1024u * 1024u;
   /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY and ROS_STATIC_PEERS
   /// (';'-separated; rmw's limit of 32 peers).
   static ParticipantOptions from_environment();
