@@ -1,5 +1,9 @@
 #include "vtkROS2PublisherNode.h"
 
+#include "vtkROS2Message.h"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
 
@@ -70,6 +74,37 @@ bool vtkROS2PublisherNode::PublishMessage(const void* rosMessage)
   }
   ++this->NumberOfMessagesSent; // no ModifiedEvent: publishing is not a change of the node
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherNode::PublishMessageObject(vtkROS2Message* message)
+{
+  if (!message || !message->GetTypeSupport())
+  {
+    this->RecordFailedPublish("PublishMessageObject: the message object has no type");
+    return false;
+  }
+  if (!this->HasMessageTypeSupport() || message->GetTypeSupport() != &this->GetMessageTypeSupport())
+  {
+    const std::string reason = std::string("PublishMessageObject: a ") + message->GetROSType() +
+      " cannot go on a " + (this->HasMessageTypeSupport() ? this->GetMessageTypeSupport().ros_type : "(type not set)") +
+      " publisher";
+    this->RecordFailedPublish(reason.c_str());
+    return false;
+  }
+  return this->PublishMessage(message->GetRawMessage());
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
+{
+  if (!this->HasMessageTypeSupport())
+  {
+    return nullptr;
+  }
+  vtkROS2Message* message = vtkROS2Message::New();
+  message->SetROSType(this->GetMessageTypeSupport().ros_type);
+  return message;
 }
 
 //------------------------------------------------------------------------------

@@ -10,6 +10,8 @@
 
 #include "vtkROS2TopicNode.h"
 
+class vtkROS2Message;
+
 #include <memory> // for std::unique_ptr (pimpl)
 
 class ROS2VTKSCENE_EXPORT vtkROS2PublisherNode : public vtkROS2TopicNode
@@ -23,6 +25,14 @@ public:
   vtkTypeInt64 GetNumberOfMessagesSent() const { return this->NumberOfMessagesSent; }
   /// Subscriptions (local or remote) currently matched with this publisher; 0 when not added.
   int GetNumberOfMatchedSubscriptions() const;
+
+  /// Publishes a typed message object exactly as it is (no stamping, no unit scaling): the way
+  /// to send fields a mapping does not carry (header stamps, child_frame_id, covariances). Its
+  /// type must be this node's ROS type. False (vtkErrorMacro) otherwise, as Publish.
+  bool PublishMessageObject(vtkROS2Message* message);
+  /// A default message of this node's type to fill in (nullptr until the type is known).
+  /// The caller owns it (Python: an ordinary object).
+  VTK_NEWINSTANCE vtkROS2Message* CreateMessageObject() const;
 
 protected:
   vtkROS2PublisherNode();
