@@ -131,7 +131,7 @@ def test_rclpy_stamp_and_child_frame_reach_our_typed_object(ros):
     peer = ros.peer('pub', '/typed_in', 'geometry_msgs/msg/TransformStamped',
                     json.dumps(values), '--count', '20', '--rate', '20')
     code, out, err = ros.finish(ours, timeout=40)
-    ros.finish(peer, timeout=10)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.strip().splitlines()[-1])
     assert result == {'received': True, 'sec': 1700000000, 'nanosec': 123456789,
