@@ -9,7 +9,8 @@ from pathlib import Path
 
 def bad_then_good(ros, short: str, topic: str, ros_type: str, bad: dict, good: dict, seconds: str = '20'):
     """Our subscriber gets `bad` (5 times), then `good`; returns our last JSON line."""
-    ours = ros.scene('--seconds', seconds, 'sub', short, topic, '--count', '1000000')
+    # 6 = the 5 hostile ones (delivered and counted, refused on conversion) + 1 valid one.
+    ours = ros.scene('--seconds', seconds, 'sub', short, topic, '--count', '6')
     ros.wait_ready(ours)
     hostile = ros.peer('pub', topic, ros_type, json.dumps(bad), '--count', '5', '--rate', '10')
     assert ros.finish(hostile)[0] == 0
@@ -67,7 +68,7 @@ def test_pose_that_overflows_in_millimetres_is_refused_and_later_poses_arrive(ro
                                       'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
     good = {'header': header, 'pose': {'position': {'x': 0.25, 'y': 0.0, 'z': 0.0},
                                        'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
-    ours = ros.scene('--seconds', '15', 'sub', 'PoseStamped', '/hostile/pose', '--count', '1000000')
+    ours = ros.scene('--seconds', '15', 'sub', 'PoseStamped', '/hostile/pose', '--count', '5')
     ros.wait_ready(ours)
     hostile = ros.peer('pub', '/hostile/pose', 'geometry_msgs/msg/PoseStamped', json.dumps(bad), '--count', '30')
     code, out, err = ros.finish(ours)
