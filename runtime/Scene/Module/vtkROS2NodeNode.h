@@ -34,6 +34,7 @@ class vtkROS2ServiceClientNode;
 class vtkROS2ServiceServerNode;
 class vtkROS2Tf2BroadcasterNode;
 class vtkROS2Tf2LookupNode;
+class vtkROS2TopicNode;
 namespace ros2vtk
 {
 namespace tf2
@@ -64,6 +65,21 @@ public:
   /// environment). The scene node's Name becomes the ROS node name when it has none.
   /// False (vtkErrorMacro) for an invalid name/namespace, a DDS failure, or when already created.
   bool Create(const char* nodeName, const char* nodeNamespace = "");
+
+#ifndef __VTK_WRAP__
+  ///@{
+  /// The reference roles under which this node holds its children, one per kind (saved in scene
+  /// files: these spellings are the file format). A kind added outside the runtime picks its own.
+  static constexpr const char* PublisherRole = "publisher";
+  static constexpr const char* SubscriberRole = "subscriber";
+  static constexpr const char* Tf2LookupRole = "tf2Lookup";
+  static constexpr const char* Tf2BroadcasterRole = "tf2Broadcaster";
+  static constexpr const char* ParameterRole = "parameter";
+  static constexpr const char* RobotRole = "robot";
+  static constexpr const char* ServiceClientRole = "serviceClient";
+  static constexpr const char* ServiceServerRole = "serviceServer";
+  ///@}
+#endif
   /// Removes every publisher and subscriber from DDS (they stay in the scene) and destroys the
   /// participant. False when not created.
   bool Destroy();
@@ -231,13 +247,23 @@ private:
   vtkROS2NodeNode(const vtkROS2NodeNode&) = delete;
   void operator=(const vtkROS2NodeNode&) = delete;
 
-  template <typename NodeType>
-  NodeType* FindByTopic(const char* role, const char* topic);
-  vtkROS2SceneNode* CreateAndAdd(bool publisher, const char* type, const char* topic);
-  template <typename NodeType>
-  NodeType* FindByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  // Used by the SlicerROS2 methods of each child kind, which are defined in the kind's own
+  // .cxx file so that this class's file includes no child kind.
   bool CheckReadyFor(const char* what);
 #ifndef __VTK_WRAP__
+  /// A child by a name as given or as resolved against this node's namespace (topics,
+  /// services), or by its frame pair.
+  vtkROS2SceneNode* FindChildByName(const char* role, const char* name);
+  vtkROS2SceneNode* FindChildByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  /// Names `child`, adds it to the scene and runs `attach`; on success references it under
+  /// `role`, on failure removes it from the scene again.
+  bool AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name, const std::function<bool()>& attach);
+  /// CreateAndAddPublisherNode / SubscriberNode: the class mapped to `type`, or `newGeneric`'s
+  /// node (a new reference) for a registered type without a mapping rule.
+  vtkROS2SceneNode* CreateAndAddTopicNode(
+    bool publisher, const char* type, const char* topic, vtkROS2TopicNode* (*newGeneric)(const char* rosType));
+  /// "name" -> "/name" (monitored nodes are named absolutely).
+  static std::string AbsoluteNodeName(const char* name);
   /// Adds a robot node and attaches it to its description source with `attach`; removes it again
   /// (nullptr) when that fails.
   vtkROS2RobotNode* AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,

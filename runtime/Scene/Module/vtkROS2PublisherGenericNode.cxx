@@ -1,5 +1,7 @@
 #include "vtkROS2PublisherGenericNode.h"
 
+#include "vtkROS2NodeNode.h"
+
 #include "GenericMessageType.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -11,6 +13,21 @@
 #include <memory>
 
 vtkStandardNewMacro(vtkROS2PublisherGenericNode);
+
+namespace
+{
+/// What CreateAndAddPublisherNode makes for a type without a mapping rule.
+vtkROS2TopicNode* NewGeneric(const char* rosType)
+{
+  vtkROS2PublisherGenericNode* node = vtkROS2PublisherGenericNode::New();
+  if (!node->SetROSType(rosType))
+  {
+    node->Delete();
+    return nullptr;
+  }
+  return node;
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkROS2PublisherGenericNode::vtkROS2PublisherGenericNode() = default;
@@ -76,4 +93,13 @@ bool vtkROS2PublisherGenericNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2PublisherGenericNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode* vtkROS2NodeNode::CreateAndAddPublisherNode(const char* type, const char* topic)
+{
+  return vtkROS2PublisherNode::SafeDownCast(this->CreateAndAddTopicNode(true, type, topic, &NewGeneric));
 }

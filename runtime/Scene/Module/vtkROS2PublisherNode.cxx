@@ -1,5 +1,8 @@
 #include "vtkROS2PublisherNode.h"
 
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
+
 #include "vtkROS2Message.h"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -120,4 +123,39 @@ void vtkROS2PublisherNode::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfCalls: " << this->NumberOfCalls << "\n";
   os << indent << "NumberOfMessagesSent: " << this->NumberOfMessagesSent << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode* vtkROS2NodeNode::GetPublisherNodeByTopic(const char* topic)
+{
+  return vtkROS2PublisherNode::SafeDownCast(this->FindChildByName(PublisherRole, topic));
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfPublisherNodes()
+{
+  return this->GetNumberOfNodeReferences(PublisherRole);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeletePublisherNode(const char* topic)
+{
+  vtkROS2PublisherNode* node = this->GetPublisherNodeByTopic(topic);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeletePublisherNode: no publisher on '" << (topic ? topic : "(null)")
+                                                                    << "'");
+    return false;
+  }
+  node->RemoveFromROS2Node();
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2PublisherNode::GetROS2NodeReferenceRole() const
+{
+  return vtkROS2NodeNode::PublisherRole;
 }

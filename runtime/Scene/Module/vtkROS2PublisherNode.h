@@ -49,7 +49,7 @@ protected:
     const ros2vtk::wire::QoS& qos, std::string* error) override;
   void DestroyEndpoint() override;
   bool HasEndpoint() const override;
-  const char* GetROS2NodeReferenceRole() const override { return "publisher"; }
+  const char* GetROS2NodeReferenceRole() const override;
 
   vtkTypeInt64 NumberOfCalls = 0;
   vtkTypeInt64 NumberOfMessagesSent = 0;

@@ -14,6 +14,7 @@
 #include "ros2vtk/wire/QoS.hpp"
 #include "ros2vtk/wire/Service.hpp"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkXMLDataElement.h"
 
@@ -577,4 +578,48 @@ void vtkROS2ServiceClientNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Ready: " << this->IsServiceReady() << "\n";
   os << indent << "Status: " << this->GetStatusAsString() << "\n";
   os << indent << "PendingRequests: " << this->Internals->Pendings.size() << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2ServiceClientNode* vtkROS2NodeNode::CreateAndAddServiceClientNode(const char* type, const char* service)
+{
+  if (!this->CheckReadyFor("CreateAndAddServiceClientNode"))
+  {
+    return nullptr;
+  }
+  if (!type || !service || !*service)
+  {
+    vtkErrorMacro("CreateAndAddServiceClientNode: type and service name are required");
+    return nullptr;
+  }
+  if (this->GetServiceClientNodeByService(service))
+  {
+    vtkErrorMacro("CreateAndAddServiceClientNode: this node has a client of " << service << " already");
+    return nullptr;
+  }
+  vtkNew<vtkROS2ServiceClientNode> node;
+  const bool attached = this->AdoptChild(ServiceClientRole, node, (std::string("ros2:client:") + service).c_str(),
+    [&] { return node->Attach(this, type, service); });
+  return attached ? node.GetPointer() : nullptr; // the scene holds it
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ServiceClientNode* vtkROS2NodeNode::GetServiceClientNodeByService(const char* service)
+{
+  return vtkROS2ServiceClientNode::SafeDownCast(this->FindChildByName(ServiceClientRole, service));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteServiceClientNode(const char* service)
+{
+  vtkROS2ServiceClientNode* node = this->GetServiceClientNodeByService(service);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteServiceClientNode: no client of " << (service ? service : ""));
+    return false;
+  }
+  return this->RemoveChild(ServiceClientRole, node);
 }

@@ -121,6 +121,8 @@ public:
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes responses.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessResponses(); }
+  /// Destroy hook: the wire endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
   /// Index key among the ROS node's service clients.
   std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
 

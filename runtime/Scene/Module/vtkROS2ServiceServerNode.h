@@ -98,6 +98,8 @@ public:
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): answers requests.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
+  /// Destroy hook: the wire endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
   /// Index key among the ROS node's service servers.
   std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
 

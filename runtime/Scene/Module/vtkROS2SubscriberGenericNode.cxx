@@ -1,5 +1,7 @@
 #include "vtkROS2SubscriberGenericNode.h"
 
+#include "vtkROS2NodeNode.h"
+
 #include "GenericMessageType.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -9,6 +11,21 @@
 
 
 vtkStandardNewMacro(vtkROS2SubscriberGenericNode);
+
+namespace
+{
+/// What CreateAndAddSubscriberNode makes for a type without a mapping rule.
+vtkROS2TopicNode* NewGeneric(const char* rosType)
+{
+  vtkROS2SubscriberGenericNode* node = vtkROS2SubscriberGenericNode::New();
+  if (!node->SetROSType(rosType))
+  {
+    node->Delete();
+    return nullptr;
+  }
+  return node;
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkROS2SubscriberGenericNode::vtkROS2SubscriberGenericNode() = default;
@@ -55,4 +72,13 @@ bool vtkROS2SubscriberGenericNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2SubscriberGenericNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode* vtkROS2NodeNode::CreateAndAddSubscriberNode(const char* type, const char* topic)
+{
+  return vtkROS2SubscriberNode::SafeDownCast(this->CreateAndAddTopicNode(false, type, topic, &NewGeneric));
 }

@@ -1,5 +1,8 @@
 #include "vtkROS2SubscriberNode.h"
 
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
+
 #include "vtkROS2Message.h"
 
 #include "RateLimitedReport.hpp"
@@ -246,4 +249,39 @@ void vtkROS2SubscriberNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfMessages: " << this->NumberOfMessages << "\n";
   os << indent << "NumberOfRejectedMessages: " << this->NumberOfRejectedMessages << "\n";
   os << indent << "LastRejectionReason: " << this->Internals->LastRejectionReason << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode* vtkROS2NodeNode::GetSubscriberNodeByTopic(const char* topic)
+{
+  return vtkROS2SubscriberNode::SafeDownCast(this->FindChildByName(SubscriberRole, topic));
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfSubscriberNodes()
+{
+  return this->GetNumberOfNodeReferences(SubscriberRole);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteSubscriberNode(const char* topic)
+{
+  vtkROS2SubscriberNode* node = this->GetSubscriberNodeByTopic(topic);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteSubscriberNode: no subscriber on '" << (topic ? topic : "(null)")
+                                                                      << "'");
+    return false;
+  }
+  node->RemoveFromROS2Node();
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2SubscriberNode::GetROS2NodeReferenceRole() const
+{
+  return vtkROS2NodeNode::SubscriberRole;
 }

@@ -79,7 +79,7 @@ protected:
     const ros2vtk::wire::QoS& qos, std::string* error) override;
   void DestroyEndpoint() override;
   bool HasEndpoint() const override;
-  const char* GetROS2NodeReferenceRole() const override { return "subscriber"; }
+  const char* GetROS2NodeReferenceRole() const override;
 
   vtkTypeInt64 NumberOfMessages = 0;
   vtkTypeInt64 NumberOfRejectedMessages = 0;

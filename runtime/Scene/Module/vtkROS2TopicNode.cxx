@@ -1,12 +1,15 @@
 #include "vtkROS2TopicNode.h"
 
 #include "vtkROS2NodeNode.h"
+
+#include "NodeClassRegistry.hpp"
 #include "vtkROS2Scene.h"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/QoS.hpp"
 
+#include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 
 //------------------------------------------------------------------------------
@@ -352,4 +355,60 @@ void vtkROS2TopicNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "QoS: " << this->Internals->QoS.to_string() << "\n";
   os << indent << "ScaleLengths: " << this->ScaleLengths << "\n";
   os << indent << "AddedToROS2Node: " << this->IsAddedToROS2Node() << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2NodeNode::CreateAndAddTopicNode(
+  bool publisher, const char* type, const char* topic, vtkROS2TopicNode* (*newGeneric)(const char* rosType))
+{
+  using ros2vtk::scene::NodeDirection;
+  const char* what = publisher ? "CreateAndAddPublisherNode" : "CreateAndAddSubscriberNode";
+  if (!this->CheckReadyFor(what))
+  {
+    return nullptr;
+  }
+  if (!type || !topic)
+  {
+    vtkErrorMacro(<< what << ": type and topic are required");
+    return nullptr;
+  }
+  const char* role = publisher ? PublisherRole : SubscriberRole;
+  if (this->FindChildByName(role, topic))
+  {
+    vtkErrorMacro(<< what << ": this ROS node already has a " << role << " on '" << topic
+                  << "'; remove it first");
+    return nullptr;
+  }
+  const auto resolution = ros2vtk::scene::NodeClassRegistry::instance().resolve(
+    publisher ? NodeDirection::Publisher : NodeDirection::Subscriber, type);
+  vtkSmartPointer<vtkROS2TopicNode> node;
+  if (resolution.mapped_class)
+  {
+    node.TakeReference(vtkROS2TopicNode::SafeDownCast(resolution.mapped_class->create()));
+  }
+  else if (resolution.generic_type)
+  {
+    node.TakeReference(newGeneric(resolution.generic_type->ros_type));
+  }
+  else
+  {
+    vtkErrorMacro(<< what << ": " << resolution.error);
+    return nullptr;
+  }
+  if (!node)
+  {
+    vtkErrorMacro(<< what << ": could not create a node for '" << type << "'");
+    return nullptr;
+  }
+  node->SetName(topic);
+  this->Scene->AddNode(node);
+  if (!node->AddToROS2Node(this->GetID(), topic))
+  {
+    this->Scene->RemoveNode(node);
+    return nullptr;
+  }
+  return node; // the scene holds it
 }
