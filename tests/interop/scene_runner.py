@@ -193,7 +193,7 @@ def vtk_sample(short: str):
                 m.SetElement(i, j, v)
         return m
     pose = matrix([[0, -1, 0, 100], [1, 0, 0, -250], [0, 0, 1, 1500], [0, 0, 0, 1]])
-    if short in ('PoseStamped', 'TransformStamped'):
+    if short in ('PoseStamped', 'TransformStamped', 'Pose', 'Transform'):
         return pose
     if short == 'PoseArray':
         collection = vtk.vtkTransformCollection()
@@ -202,7 +202,9 @@ def vtk_sample(short: str):
             t.SetMatrix(m)
             collection.AddItem(t)
         return collection
-    if short == 'WrenchStamped':
+    if short == 'Vector3':
+        return vtk_array(vtk.vtkDoubleArray, (0.5, -1.5, 2.25))
+    if short in ('WrenchStamped', 'Wrench'):
         return vtk_array(vtk.vtkDoubleArray, (1.0, -2.0, 9.81, 0.1, 0.0, -0.05))
     if short == 'DoubleArray':
         return vtk_array(vtk.vtkDoubleArray, (0.5, -1.25, 1e-9, 12345.678))
