@@ -16,7 +16,7 @@ import numpy as np
 import pyigtl
 import pytest
 
-from conftest import HERE, REPO, VENV_PYTHON, tf2_msgs_env
+from conftest import BUILD, HERE, REPO, VENV_PYTHON, tf2_msgs_env
 from igtl_peer import RawClient, frame, free_port, polydata_points, start_ours, v2_metadata
 
 ARM = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
@@ -338,3 +338,40 @@ def test_pyigtl_string_and_image_come_out_on_ros_topics(ros):
     # OpenIGTLink's j runs up like VTK's; ROS row 0 is the top: rows come out reversed.
     assert np.array_equal(np.array(image['data'], dtype=np.uint8).reshape(3, 4), pixels[0][::-1]), image['data']
     stop(ros, ours)
+
+
+def test_a_connector_restored_from_a_saved_scene_serves_its_port_lookups_and_mappings(ros, tmp_path):
+    """`ros2vtk igtl ... --save-scene F` then, in a new process, `ros2vtk igtl --scene F`: the
+    restored connector listens on the saved port, sends the saved tf lookup to pyigtl and routes
+    the saved device mapping to tf, read by rclpy."""
+    port = free_port()
+    saved = tmp_path / 'slicer_link.xml'
+    first = start_ours(ros, port, '--lookup', 'world:needle', '--map', 'Target=tf:world:target',
+                       '--save-scene', str(saved), '--seconds', '0.2')
+    code, out, err = ros.finish(first)
+    assert code == 0 and saved.exists(), out + err
+    peer = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.0, 0.0, 0.125], 'q': [0, 0, 0, 1]}),
+                       '--seconds', '25')
+    tf_echo = ros.tf_peer('tf_echo', '--count', '1', '--timeout', '25', '--child', 'target')
+    wait_ready(tf_echo)
+    ours = ros.start(['/usr/bin/python3', '-m', 'ros2vtk', 'igtl', '--scene', str(saved), '--seconds', '20'],
+                     dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    wait_ready(ours)
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)  # the port came from the file only
+    target = np.eye(4)
+    target[:3, 3] = [0.0, 40.0, 0.0]
+    try:
+        message = wait_transform(client, 'needle', 15, lambda m: abs(m[2, 3] - 125.0) < 1e-3)
+        end = time.monotonic() + 10
+        while time.monotonic() < end and tf_echo.poll() is None:
+            client.send_message(pyigtl.TransformMessage(target, device_name='Target'), wait=True)
+            time.sleep(0.2)
+    finally:
+        client.stop()
+    stop(ros, ours)
+    assert message is not None and np.allclose(message.matrix[:3, 3], [0.0, 0.0, 125.0], atol=1e-3)
+    code, out, err = ros.finish(tf_echo)
+    assert code == 0, err
+    t = [t for t in json.loads(out.splitlines()[-1])['transforms'] if t['child_frame_id'] == 'target'][0]
+    assert t['header']['frame_id'] == 'world'
+    assert [round(v, 9) for v in t['transform']['translation'].values()] == [0.0, 0.04, 0.0]
