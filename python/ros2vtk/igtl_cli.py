@@ -4,8 +4,9 @@
     ros2vtk igtl --image /camera/image --map Target=tf:world:target
 
 Scene → Slicer: tf lookups and robot links as TRANSFORM (mm), robot visuals as POLYDATA, images
-as IMAGE, point clouds as POLYDATA points, strings as STRING. Slicer → ROS: --map DEVICE=tf:PARENT:CHILD
-or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped, PointCloud, Image, String).
+as IMAGE, point clouds as POLYDATA points, strings as STRING, pose arrays as TDATA. Slicer → ROS:
+--map DEVICE=tf:PARENT:CHILD or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped, PointCloud,
+PoseArray (from TDATA), Image, String).
 Coordinates: --frame ras (default: ROS x, y, z become Slicer R, A, S) or lps (x, y negated).
 Prints one JSON line per state change and a summary at the end.
 """
@@ -30,6 +31,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--image', action='append', default=[], metavar='TOPIC')
     parser.add_argument('--cloud', action='append', default=[], metavar='TOPIC', help='sensor_msgs/PointCloud2')
     parser.add_argument('--text', action='append', default=[], metavar='TOPIC', help='std_msgs/String')
+    parser.add_argument('--poses', action='append', default=[], metavar='TOPIC',
+                        help='geometry_msgs/PoseArray as TDATA (one Slicer transform per pose)')
     parser.add_argument('--map', action='append', default=[], metavar='DEVICE=tf:PARENT:CHILD|DEVICE=topic:TOPIC:TYPE')
     parser.add_argument('--frame', choices=['ras', 'lps'], default='ras')
     parser.add_argument('--link-local', action='store_true',
@@ -71,7 +74,8 @@ def run(args: argparse.Namespace, logic, node) -> int:
         lookup.SetName(child)
     if args.robot:
         node.CreateAndAddRobotNodeFromTopic('robot', args.robot)
-    for topics, kind in ((args.image, 'Image'), (args.cloud, 'PointCloud2'), (args.text, 'String')):
+    for topics, kind in ((args.image, 'Image'), (args.cloud, 'PointCloud2'), (args.text, 'String'),
+                         (args.poses, 'PoseArray')):
         for topic in topics:
             subscriber = node.CreateAndAddSubscriberNode(kind, topic)
             if subscriber is None:

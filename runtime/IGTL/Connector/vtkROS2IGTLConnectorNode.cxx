@@ -9,6 +9,7 @@
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2PublisherImageNode.h"
+#include "vtkROS2PublisherPoseArrayNode.h"
 #include "vtkROS2PublisherPointCloudNode.h"
 #include "vtkROS2PublisherPoseStampedNode.h"
 #include "vtkROS2PublisherStringNode.h"
@@ -18,6 +19,7 @@
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2SubscriberPointCloud2Node.h"
 #include "vtkROS2SubscriberPointCloudNode.h"
+#include "vtkROS2SubscriberPoseArrayNode.h"
 #include "vtkROS2SubscriberStringNode.h"
 #include "vtkROS2Tf2BroadcasterNode.h"
 #include "vtkROS2Tf2LookupNode.h"
@@ -35,6 +37,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTransform.h>
+#include <vtkTransformCollection.h>
 #include <vtkWeakPointer.h>
 #include <vtkXMLDataElement.h>
 
@@ -855,6 +859,30 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
         out.data.assign(bytes, bytes + size);
         this->Send(igtl::encode_image(device, out, now), true);
       }
+      else if (auto* poses = vtkROS2SubscriberPoseArrayNode::SafeDownCast(subscriber))
+      {
+        // PoseArray → TDATA: Slicer makes one linear transform per element, named by it.
+        vtkTransformCollection* collection = poses->GetLastMessage();
+        if (!collection)
+        {
+          continue;
+        }
+        vtkNew<vtkMatrix4x4> pose;
+        this->ImagePose(self, poses->GetLastMessageFrameID(), pose);
+        vtkMatrix4x4::Multiply4x4(this->WorldToSlicer, pose, slicer);
+        std::vector<igtl::TrackingItem> items;
+        collection->InitTraversal();
+        while (vtkTransform* element = collection->GetNextItem())
+        {
+          igtl::TrackingItem item;
+          item.name = vtkROS2IGTLConnectorNode::MakeDeviceName(
+            device + "_" + std::to_string(items.size()));
+          vtkMatrix4x4::Multiply4x4(slicer, element->GetMatrix(), world);
+          item.matrix = to_array(world);
+          items.push_back(item);
+        }
+        this->Send(igtl::encode_tracking_data(device, items, now), true);
+      }
       else
       {
         vtkPoints* points = nullptr;
@@ -996,6 +1024,13 @@ void vtkROS2IGTLConnectorNode::vtkInternals::Publish(vtkROS2IGTLConnectorNode* s
       published = cloud->Publish(p) > 0;
     }
   }
+  else if (auto* collection = vtkTransformCollection::SafeDownCast(value))
+  {
+    if (auto* poses = vtkROS2PublisherPoseArrayNode::SafeDownCast(publisher))
+    {
+      published = poses->Publish(collection) > 0;
+    }
+  }
   else if (auto* image = vtkImageData::SafeDownCast(value))
   {
     if (auto* images = vtkROS2PublisherImageNode::SafeDownCast(publisher))
@@ -1085,6 +1120,33 @@ int vtkROS2IGTLConnectorNode::vtkInternals::HandleFrame(
         model->SetPolyData(poly);
       }
       this->Publish(self, device, points, nullptr);
+    }
+  }
+  else if (frame.type == "TDATA")
+  {
+    // As Slicer: one transform node per element (by element name); mapped as a whole
+    // (PoseArray in world coordinates).
+    std::vector<igtl::TrackingItem> items;
+    if (igtl::decode_tracking_data(frame, items, error))
+    {
+      vtkNew<vtkTransformCollection> collection;
+      for (const igtl::TrackingItem& item : items)
+      {
+        vtkNew<vtkMatrix4x4> slicer;
+        from_array(item.matrix, slicer);
+        vtkNew<vtkTransform> world;
+        world->PostMultiply();
+        world->SetMatrix(slicer);
+        world->Concatenate(this->SlicerToWorld);
+        vtkNew<vtkMatrix4x4> matrix;
+        matrix->DeepCopy(world->GetMatrix());
+        if (vtkROS2TransformNode* node = this->ReceivedTransformNode(self, item.name))
+        {
+          node->SetMatrixTransformToParent(matrix);
+        }
+        collection->AddItem(world);
+      }
+      this->Publish(self, device, collection, nullptr);
     }
   }
   else if (frame.type == "IMAGE")

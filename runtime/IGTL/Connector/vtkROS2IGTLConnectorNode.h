@@ -10,10 +10,11 @@
 // nodes (robot visuals) as POLYDATA when they change (baked in world coordinates by default, or
 // link-local with metadata "ros.parent" naming the link for a Slicer-side snippet to parent),
 // subscribers' images as IMAGE with their pose, point clouds as POLYDATA points, strings as
-// STRING. Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
+// STRING, pose arrays as TDATA (elements <device>_<i>, posed by the tf lookup of their frame). Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
 // the matrix WorldToSlicer (identity by default: ROS x, y, z become Slicer R, A, S) is applied to
 // everything sent and inverted for everything received; it is never implicit.
-// In (Slicer → scene): TRANSFORM/POSITION become transform nodes, POINT a model node of points,
+// In (Slicer → scene): TRANSFORM/POSITION become transform nodes, TDATA one transform node per
+// element (as Slicer does) and a PoseArray when mapped, POINT a model node of points,
 // IMAGE and STRING are kept by device; mapped devices are also published (tf or a topic).
 #ifndef vtkROS2IGTLConnectorNode_h
 #define vtkROS2IGTLConnectorNode_h
@@ -94,7 +95,7 @@ public:
 
   /// Slicer → ROS. Device names are Slicer node names. `type` for a topic: a publisher short
   /// name whose VTK value matches the message (PoseStamped / TransformStamped for TRANSFORM,
-  /// PointCloud for POINT, Image for IMAGE, String for STRING).
+  /// PointCloud for POINT, PoseArray for TDATA, Image for IMAGE, String for STRING).
   bool MapDeviceToTf(const char* device, const char* parentFrame, const char* childFrame);
   bool MapDeviceToTopic(const char* device, const char* topic, const char* type);
   /// The mapping of `device` as the CLI spells it ("tf:PARENT:CHILD", "topic:TOPIC:TYPE"), or "".
