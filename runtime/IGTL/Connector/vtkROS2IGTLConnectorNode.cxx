@@ -8,12 +8,7 @@
 #include "NodeClassRegistry.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
-#include "vtkROS2PublisherImageNode.h"
-#include "vtkROS2PublisherPoseArrayNode.h"
-#include "vtkROS2PublisherPointCloudNode.h"
-#include "vtkROS2PublisherPoseStampedNode.h"
-#include "vtkROS2PublisherStringNode.h"
-#include "vtkROS2PublisherTransformStampedNode.h"
+#include "vtkROS2PublisherNode.h"
 #include "vtkROS2RobotNode.h"
 #include "vtkROS2Scene.h"
 #include "vtkROS2SubscriberImageNode.h"
@@ -1003,52 +998,13 @@ void vtkROS2IGTLConnectorNode::vtkInternals::Publish(vtkROS2IGTLConnectorNode* s
       return;
     }
   }
-  // The publishers whose Publish takes what OpenIGTLink carries (matrix, points, image, text).
+  // Any publisher class: the generic entry routes the value to its own Publish, or says why not.
   vtkROS2PublisherNode* publisher = route.publisher;
-  bool published = false;
-  if (auto* m = vtkMatrix4x4::SafeDownCast(value))
-  {
-    if (auto* pose = vtkROS2PublisherPoseStampedNode::SafeDownCast(publisher))
-    {
-      published = pose->Publish(m) > 0;
-    }
-    else if (auto* tfs = vtkROS2PublisherTransformStampedNode::SafeDownCast(publisher))
-    {
-      published = tfs->Publish(m) > 0;
-    }
-  }
-  else if (auto* p = vtkPoints::SafeDownCast(value))
-  {
-    if (auto* cloud = vtkROS2PublisherPointCloudNode::SafeDownCast(publisher))
-    {
-      published = cloud->Publish(p) > 0;
-    }
-  }
-  else if (auto* collection = vtkTransformCollection::SafeDownCast(value))
-  {
-    if (auto* poses = vtkROS2PublisherPoseArrayNode::SafeDownCast(publisher))
-    {
-      published = poses->Publish(collection) > 0;
-    }
-  }
-  else if (auto* image = vtkImageData::SafeDownCast(value))
-  {
-    if (auto* images = vtkROS2PublisherImageNode::SafeDownCast(publisher))
-    {
-      published = images->Publish(image) > 0;
-    }
-  }
-  else if (text)
-  {
-    if (auto* strings = vtkROS2PublisherStringNode::SafeDownCast(publisher))
-    {
-      published = strings->Publish(*text) > 0;
-    }
-  }
+  const bool published = text ? publisher->PublishValue(vtkVariant(*text)) > 0
+                              : publisher->PublishObject(value) > 0;
   if (!published && this->Warned.insert(device + ":type").second)
   {
-    this->AddLog("'" + device + "': a " + publisher->GetClassName() + " on " + route.topic +
-      " cannot publish what this device sends");
+    this->AddLog("'" + device + "' → " + route.topic + ": " + publisher->GetLastPublishError());
   }
   (void)self;
 }
