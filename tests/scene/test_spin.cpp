@@ -391,3 +391,45 @@ TEST_F(SpinTest, GenericNodesCarryAnyRegisteredTypeAsYAML)
   EXPECT_EQ(pub->GetNumberOfCalls(), 2);
   EXPECT_EQ(pub->GetNumberOfMessagesSent(), 1);
 }
+
+TEST_F(SpinTest, GenericNodeTypeIsFixedWhileAddedAndUnknownTypesAreNamed)
+{
+  for (const bool publisher : { true, false })
+  {
+    vtkSmartPointer<vtkROS2TopicNode> node;
+    if (publisher)
+    {
+      node = vtkSmartPointer<vtkROS2PublisherGenericNode>::New();
+    }
+    else
+    {
+      node = vtkSmartPointer<vtkROS2SubscriberGenericNode>::New();
+    }
+    auto setType = [&](const char* type) {
+      return publisher ? vtkROS2PublisherGenericNode::SafeDownCast(node)->SetROSType(type)
+                       : vtkROS2SubscriberGenericNode::SafeDownCast(node)->SetROSType(type);
+    };
+    const vtkMTimeType before = node->GetMTime();
+    ASSERT_TRUE(setType("geometry_msgs/Point"));
+    EXPECT_GT(node->GetMTime(), before);
+    const vtkMTimeType typed = node->GetMTime();
+    ASSERT_TRUE(setType("geometry_msgs/msg/Point")); // the same type: not a modification
+    EXPECT_EQ(node->GetMTime(), typed);
+
+    this->Output->Errors.clear();
+    EXPECT_FALSE(setType("no_pkg/msg/Nothing"));
+    EXPECT_NE(this->Output->Errors.find("unknown ROS message type 'no_pkg/msg/Nothing'"),
+      std::string::npos) << this->Output->Errors;
+    EXPECT_NE(this->Output->Errors.find("geometry_msgs/msg/Point"), std::string::npos)
+      << "the error lists the registered types";
+
+    this->Logic->GetScene()->AddNode(node);
+    ASSERT_TRUE(node->AddToROS2Node(
+      this->Talker->GetID(), publisher ? "/generic_fixed_pub" : "/generic_fixed_sub"))
+      << this->Output->Errors;
+    this->Output->Errors.clear();
+    EXPECT_FALSE(setType("std_msgs/msg/String"));
+    EXPECT_NE(this->Output->Errors.find("cannot change the type while added to a ROS node"),
+      std::string::npos) << this->Output->Errors;
+  }
+}

@@ -21,21 +21,16 @@ vtkROS2PublisherGenericNode::~vtkROS2PublisherGenericNode() = default;
 //------------------------------------------------------------------------------
 bool vtkROS2PublisherGenericNode::SetROSType(const char* rosType)
 {
-  if (this->IsAddedToROS2Node())
-  {
-    vtkErrorMacro("SetROSType: cannot change the type while added to a ROS node");
-    return false;
-  }
-  std::string error;
-  const ros2vtk::wire::MessageTypeSupport* type = ros2vtk::scene::find_generic_type(rosType, error);
-  if (!type)
+  bool changed = false;
+  const std::string error =
+    ros2vtk::scene::assign_generic_type(rosType, this->IsAddedToROS2Node(), this->Type, changed);
+  if (!error.empty())
   {
     vtkErrorMacro("SetROSType: " << error);
     return false;
   }
-  if (type != this->Type)
+  if (changed)
   {
-    this->Type = type;
     this->Modified();
   }
   return true;
@@ -69,8 +64,8 @@ bool vtkROS2PublisherGenericNode::PublishYAML(const char* yaml)
 //------------------------------------------------------------------------------
 bool vtkROS2PublisherGenericNode::ReadXML(vtkXMLDataElement* element)
 {
-  const char* rosType = element ? element->GetAttribute("rosType") : nullptr;
-  if (rosType && *rosType && !this->SetROSType(rosType))
+  const char* rosType = ros2vtk::scene::saved_generic_type(element);
+  if (rosType && !this->SetROSType(rosType))
   {
     return false;
   }

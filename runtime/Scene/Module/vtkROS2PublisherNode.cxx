@@ -1,5 +1,9 @@
 #include "vtkROS2PublisherNode.h"
 
+#include "vtkROS2Message.h"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
 
@@ -77,6 +81,37 @@ bool vtkROS2PublisherNode::PublishMessage(const void* rosMessage)
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2PublisherNode::PublishMessageObject(vtkROS2Message* message)
+{
+  if (!message || !message->GetTypeSupport())
+  {
+    this->RecordFailedPublish("PublishMessageObject: the message object has no type");
+    return false;
+  }
+  if (!this->HasMessageTypeSupport() || message->GetTypeSupport() != &this->GetMessageTypeSupport())
+  {
+    const std::string reason = std::string("PublishMessageObject: a ") + message->GetROSType() +
+      " cannot go on a " + (this->HasMessageTypeSupport() ? this->GetMessageTypeSupport().ros_type : "(type not set)") +
+      " publisher";
+    this->RecordFailedPublish(reason.c_str());
+    return false;
+  }
+  return this->PublishMessage(message->GetRawMessage());
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
+{
+  if (!this->HasMessageTypeSupport())
+  {
+    return nullptr;
+  }
+  vtkROS2Message* message = vtkROS2Message::New();
+  message->SetROSType(this->GetMessageTypeSupport().ros_type);
+  return message;
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2PublisherNode::RecordFailedPublish(const char* reason)
 {
   ++this->NumberOfCalls;
@@ -87,6 +122,10 @@ void vtkROS2PublisherNode::RecordFailedPublish(const char* reason)
 //------------------------------------------------------------------------------
 int vtkROS2PublisherNode::PublishObject(vtkObject* object)
 {
+  if (auto* message = vtkROS2Message::SafeDownCast(object))
+  {
+    return this->PublishMessageObject(message) ? 1 : 0;
+  }
   const std::string reason = std::string("PublishObject: ") + this->GetClassName() +
     " publishes " + this->GetSlicerType() + ", not " +
     (object ? object->GetClassName() : "a null object");

@@ -15,6 +15,8 @@
 
 class vtkObject;
 
+class vtkROS2Message;
+
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
@@ -30,10 +32,18 @@ public:
   /// Subscriptions (local or remote) currently matched with this publisher; 0 when not added.
   int GetNumberOfMatchedSubscriptions() const;
 
+  /// Publishes a typed message object exactly as it is (no stamping, no unit scaling): the way
+  /// to send fields a mapping does not carry (header stamps, child_frame_id, covariances). Its
+  /// type must be this node's ROS type. False (vtkErrorMacro) otherwise, as Publish.
+  bool PublishMessageObject(vtkROS2Message* message);
+  /// A default message of this node's type to fill in (nullptr until the type is known).
+  /// The caller owns it (Python: an ordinary object).
+  VTK_NEWINSTANCE vtkROS2Message* CreateMessageObject() const;
   /// Publishes `object` when it is of this node's VTK type (GetSlicerType(): vtkMatrix4x4,
   /// vtkPoints, vtkImageData, vtkTransformCollection, …), through the class's own Publish.
-  /// Returns the messages sent: 0 when this node takes no such object (the reason in
-  /// vtkErrorMacro and GetLastPublishError(); the call is counted).
+  /// A vtkROS2Message of this node's type goes to PublishMessageObject. Returns the messages
+  /// sent: 0 when this node takes no such object (the reason in vtkErrorMacro and
+  /// GetLastPublishError(); the call is counted).
   virtual int PublishObject(vtkObject* object);
   /// The same for nodes whose value is a bool, an integer, a double or a string (Bool, Int,
   /// Double, String): a vtkVariant of that kind (a string variant for String, a number for

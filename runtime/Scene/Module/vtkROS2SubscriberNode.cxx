@@ -1,5 +1,7 @@
 #include "vtkROS2SubscriberNode.h"
 
+#include "vtkROS2Message.h"
+
 #include "RateLimitedReport.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -211,6 +213,30 @@ bool vtkROS2SubscriberNode::GetLastMessageStringField(const char* fieldName, std
     }
   }
   return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberNode::GetLastMessageObject(vtkROS2Message* message) const
+{
+  const void* raw = this->GetLastRawMessage();
+  if (!raw || !message)
+  {
+    return false;
+  }
+  message->CopyFromRaw(*this->Internals->Batch.back().type(), raw);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberNode::GetNewMessageObject(int i, vtkROS2Message* message) const
+{
+  const void* raw = this->GetNewRawMessage(i);
+  if (!raw || !message)
+  {
+    return false;
+  }
+  message->CopyFromRaw(*this->Internals->Batch[static_cast<size_t>(i)].type(), raw);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -12,6 +12,8 @@
 
 #include "vtkROS2TopicNode.h"
 
+class vtkROS2Message;
+
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
@@ -41,6 +43,13 @@ public:
   /// (e.g. "data" of a std_msgs/String, as robot_description is). False (and `value` untouched)
   /// before the first message or when the type has no string field of that name.
   bool GetLastMessageStringField(const char* fieldName, std::string& value) const;
+
+  /// The newest message, every field, as a typed message object (header stamps, frame ids and
+  /// whatever a mapping leaves out; values as on the wire, SI units). False before the first.
+  bool GetLastMessageObject(vtkROS2Message* message) const;
+  /// Message i of those the latest spin brought (0 = oldest; see GetNumberOfNewMessages in
+  /// subclasses); false for an index out of range.
+  bool GetNewMessageObject(int i, vtkROS2Message* message) const;
 
   /// Takes the queued messages; returns how many were new. Called by vtkROS2NodeNode::Spin on
   /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.

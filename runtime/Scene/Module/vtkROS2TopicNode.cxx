@@ -1,6 +1,5 @@
 #include "vtkROS2TopicNode.h"
 
-#include "QoSNames.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -182,8 +181,7 @@ bool vtkROS2TopicNode::SetQoSProfile(const char* profile)
   {
     vtkErrorMacro("SetQoSProfile: unknown profile '"
       << (profile ? profile : "(null)")
-      << "'; known: default, sensor_data, transient_local, latched, services_default, "
-         "parameters, parameter_events");
+      << "'; known: " << ros2vtk::wire::QoS::profile_names());
     return false;
   }
   return this->SetQoS(qos);
@@ -193,7 +191,7 @@ bool vtkROS2TopicNode::SetQoSProfile(const char* profile)
 bool vtkROS2TopicNode::SetReliability(const char* reliability)
 {
   ros2vtk::wire::QoS qos = this->Internals->QoS;
-  if (!ros2vtk::scene::parse_reliability(reliability, qos.reliability))
+  if (!ros2vtk::wire::QoS::parse(reliability, qos.reliability))
   {
     vtkErrorMacro("SetReliability: unknown value '" << (reliability ? reliability : "(null)")
                                                     << "'; use reliable or best_effort");
@@ -206,7 +204,7 @@ bool vtkROS2TopicNode::SetReliability(const char* reliability)
 bool vtkROS2TopicNode::SetDurability(const char* durability)
 {
   ros2vtk::wire::QoS qos = this->Internals->QoS;
-  if (!ros2vtk::scene::parse_durability(durability, qos.durability))
+  if (!ros2vtk::wire::QoS::parse(durability, qos.durability))
   {
     vtkErrorMacro("SetDurability: unknown value '" << (durability ? durability : "(null)")
                                                    << "'; use volatile or transient_local");
@@ -219,7 +217,7 @@ bool vtkROS2TopicNode::SetDurability(const char* durability)
 bool vtkROS2TopicNode::SetHistory(const char* history)
 {
   ros2vtk::wire::QoS qos = this->Internals->QoS;
-  if (!ros2vtk::scene::parse_history(history, qos.history))
+  if (!ros2vtk::wire::QoS::parse(history, qos.history))
   {
     vtkErrorMacro("SetHistory: unknown value '" << (history ? history : "(null)")
                                                 << "'; use keep_last or keep_all");
@@ -244,19 +242,19 @@ bool vtkROS2TopicNode::SetHistoryDepth(int depth)
 //------------------------------------------------------------------------------
 const char* vtkROS2TopicNode::GetReliability() const
 {
-  return ros2vtk::scene::to_name(this->Internals->QoS.reliability);
+  return ros2vtk::wire::QoS::name_of(this->Internals->QoS.reliability);
 }
 
 //------------------------------------------------------------------------------
 const char* vtkROS2TopicNode::GetDurability() const
 {
-  return ros2vtk::scene::to_name(this->Internals->QoS.durability);
+  return ros2vtk::wire::QoS::name_of(this->Internals->QoS.durability);
 }
 
 //------------------------------------------------------------------------------
 const char* vtkROS2TopicNode::GetHistory() const
 {
-  return ros2vtk::scene::to_name(this->Internals->QoS.history);
+  return ros2vtk::wire::QoS::name_of(this->Internals->QoS.history);
 }
 
 //------------------------------------------------------------------------------
@@ -318,9 +316,9 @@ bool vtkROS2TopicNode::ReadXML(vtkXMLDataElement* element)
   const char* reliability = element->GetAttribute("reliability");
   const char* durability = element->GetAttribute("durability");
   const char* history = element->GetAttribute("history");
-  if ((reliability && !ros2vtk::scene::parse_reliability(reliability, qos.reliability)) ||
-    (durability && !ros2vtk::scene::parse_durability(durability, qos.durability)) ||
-    (history && !ros2vtk::scene::parse_history(history, qos.history)) || depth < 1)
+  if ((reliability && !ros2vtk::wire::QoS::parse(reliability, qos.reliability)) ||
+    (durability && !ros2vtk::wire::QoS::parse(durability, qos.durability)) ||
+    (history && !ros2vtk::wire::QoS::parse(history, qos.history)) || depth < 1)
   {
     vtkErrorMacro("ReadXML: invalid QoS in node '" << element->GetAttribute("id") << "'");
     return false;
