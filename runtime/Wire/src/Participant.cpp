@@ -448,10 +448,24 @@ void Participant::Impl::remove_local_endpoint(const rtps::GUID_t& guid)
 void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
                                                  rtps::ParticipantDiscoveryInfo&& info)
 {
+  const Gid gid = to_gid(info.info.m_guid);
+  if (info.status == rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT)
+  {
+    std::lock_guard<std::mutex> lock(peers_mutex);
+    remote_participants.insert(gid);
+  }
   if (info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
       info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
   {
-    graph.remove_remote_participant(to_gid(info.info.m_guid));
+    {
+      std::lock_guard<std::mutex> lock(peers_mutex);
+      if (remote_participants.erase(gid) > 0 &&
+          info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+      {
+        ++dropped_participants;
+      }
+    }
+    graph.remove_remote_participant(gid);
   }
 }
 
@@ -601,6 +615,18 @@ size_t Participant::count_subscribers(const std::string& topic) const
 {
   std::string resolved;
   return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), false) : 0;
+}
+
+size_t Participant::remote_participant_count() const
+{
+  std::lock_guard<std::mutex> lock(impl_->peers_mutex);
+  return impl_->remote_participants.size();
+}
+
+uint64_t Participant::dropped_participant_count() const
+{
+  std::lock_guard<std::mutex> lock(impl_->peers_mutex);
+  return impl_->dropped_participants;
 }
 
 std::vector<uint8_t> Participant::gid() const

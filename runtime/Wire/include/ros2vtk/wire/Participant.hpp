@@ -99,6 +99,12 @@ public:
   size_t count_publishers(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
 
+  /// Link status: remote participants (other processes' nodes, on any host) discovered and not
+  /// yet removed, and how many of them were dropped because their lease expired (silence
+  /// beyond the lease duration, e.g. a cut network) since this participant was created.
+  size_t remote_participant_count() const;
+  uint64_t dropped_participant_count() const;
+
   /// 16-byte DDS GUID of the participant (the rmw gid).
   std::vector<uint8_t> gid() const;
 
