@@ -131,7 +131,7 @@ def test_rclpy_stamp_and_child_frame_reach_our_typed_object(ros):
     peer = ros.peer('pub', '/typed_in', 'geometry_msgs/msg/TransformStamped',
                     json.dumps(values), '--count', '20', '--rate', '20')
     code, out, err = ros.finish(ours, timeout=40)
-    ros.finish(peer, timeout=10)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.strip().splitlines()[-1])
     assert result == {'received': True, 'sec': 1700000000, 'nanosec': 123456789,
@@ -153,3 +153,72 @@ def test_our_typed_object_reaches_rclpy_with_its_stamp_and_child_frame(ros):
     code, out, err = ros.finish(ours, timeout=30)
     assert code == 0, err
     assert json.loads(out.strip().splitlines()[-1])['refused_wrong_type'] is True
+
+
+OUR_SERVICE_CLIENT = r'''
+import json, ros2vtk
+logic = ros2vtk.vtkROS2Logic()
+node = logic.GetDefaultROS2Node()
+client = node.CreateAndAddServiceClientNode('std_srvs/srv/SetBool', '/typed_enable')
+request = ros2vtk.Message('std_srvs/srv/SetBool_Request')
+request.data = True
+wrong = ros2vtk.Message('std_msgs/msg/Bool')
+refused = not client.SetRequestObject(wrong.vtk)
+assert client.SetRequestObject(request.vtk)
+client.SendAsyncRequest()
+ros2vtk.spin_until(logic, lambda: client.GetNumberOfResponses() > 0, 20)
+response = ros2vtk.Message()
+ok = client.GetLastResponseObject(response.vtk)
+print(json.dumps({'ok': ok, 'refused_wrong_type': refused, 'type': response.ros_type,
+                  'success': response.success if ok else None,
+                  'message': response.message if ok else None}), flush=True)
+'''
+
+OUR_SERVICE_SERVER = r'''
+import json, ros2vtk
+logic = ros2vtk.vtkROS2Logic()
+node = logic.GetDefaultROS2Node()
+server = node.CreateAndAddServiceServerNode('std_srvs/srv/SetBool', '/typed_serve')
+seen = []
+def answer(caller, event):
+    request = ros2vtk.Message()
+    caller.GetRequestObject(request.vtk)
+    seen.append(request.data)
+    response = ros2vtk.Message('std_srvs/srv/SetBool_Response')
+    response.success = not request.data
+    response.message = 'typed ' + request.ros_type
+    caller.SetResponseObject(response.vtk)
+server.AddObserver(server.RequestReceivedEvent, answer)
+print(json.dumps({'ready': True}), flush=True)
+ros2vtk.spin_until(logic, lambda: server.GetNumberOfResponses() >= 1, 25)
+logic.SpinFor(0.5)
+print(json.dumps({'seen': seen, 'responses': server.GetNumberOfResponses()}), flush=True)
+'''
+
+
+def test_our_service_client_sends_and_reads_typed_objects(ros):
+    server = ros.start([str(VENV_PYTHON), str(HERE / 'service_peer.py'), 'server',
+                        'std_srvs/srv/SetBool', '/typed_enable', '--seconds', '25'])
+    assert json.loads(server.stdout.readline()) == {'ready': True}
+    ours = ros.start(['/usr/bin/python3', '-c', OUR_SERVICE_CLIENT], env=_our_python(ros.env))
+    code, out, err = ros.finish(ours, timeout=40)
+    ros.stop(server)
+    assert code == 0, err
+    assert json.loads(out.strip().splitlines()[-1]) == {
+        'ok': True, 'refused_wrong_type': True, 'type': 'std_srvs/srv/SetBool_Response',
+        'success': True, 'message': 'rclpy set True'}
+
+
+def test_our_service_server_answers_with_a_typed_object(ros):
+    ours = ros.start(['/usr/bin/python3', '-c', OUR_SERVICE_SERVER], env=_our_python(ros.env))
+    assert json.loads(ours.stdout.readline()) == {'ready': True}
+    client = ros.start([str(VENV_PYTHON), str(HERE / 'service_peer.py'), 'client',
+                        'std_srvs/srv/SetBool', '/typed_serve', '{"data": false}'])
+    code, out, err = ros.finish(client, timeout=40)
+    assert code == 0, err
+    result = json.loads(out.strip().splitlines()[-1])
+    assert result['received'] == 1, result
+    assert result['first'] == {'success': True, 'message': 'typed std_srvs/srv/SetBool_Request'}
+    code, out, err = ros.finish(ours, timeout=30)
+    assert code == 0, err
+    assert json.loads(out.strip().splitlines()[-1]) == {'seen': [False], 'responses': 1}

@@ -17,7 +17,7 @@ def test_echo_prints_yaml_and_the_vtk_value_in_mm(ros):
     peer = ros.peer('pub', '/cli/pose', 'geometry_msgs/msg/PoseStamped',
                     json.dumps(SAMPLES['geometry_msgs/msg/PoseStamped']), '--count', '50', '--rate', '10')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     assert 'frame_id: ct_scanner' in out
     assert '# as vtkMatrix4x4 translation (mm): 100, -250, 1500' in out
@@ -30,7 +30,7 @@ def test_nodes_and_topics_list_the_rclpy_node(ros):
     topics = cli(ros, '--wait', '3', 'topics')
     _, nodes_out, _ = ros.finish(nodes)
     _, topics_out, _ = ros.finish(topics)
-    ros.finish(peer)
+    ros.stop(peer)
     assert '/cli_peer' in nodes_out.split()
     assert '/cli/chatter std_msgs/msg/String' in topics_out.splitlines()
 

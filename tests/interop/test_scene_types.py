@@ -78,7 +78,7 @@ def test_rclpy_publisher_to_our_vtk_subscriber(ros, short, ros_type, expected):
     message = INCOMING_MESSAGES.get(short, SAMPLES[ros_type])
     peer = ros.peer('pub', topic, ros_type, json.dumps(message), '--count', str(SENT), '--rate', '20')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] == SENT and result['rejected'] == 0, result
@@ -93,7 +93,7 @@ def test_joint_state_becomes_a_table_without_scaling(ros):
     peer = ros.peer('pub', '/scene_in/joints', 'sensor_msgs/msg/JointState',
                     json.dumps(SAMPLES['sensor_msgs/msg/JointState']), '--count', '40', '--rate', '10')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     table = json.loads(out.splitlines()[-1])['value']
     names = next(v for v in table.values() if v and isinstance(v[0], str))
@@ -155,7 +155,7 @@ def test_our_vtk_publisher_to_rclpy_subscriber(ros, short, ros_type, expected):
     ros.wait_ready(echo)
     ours = ros.scene('--seconds', '10', 'pub', short, topic)
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 0, err
     message = json.loads(out.splitlines()[-1])
     close(expected, message)
@@ -168,7 +168,7 @@ def test_pose_array_rotations_and_metres(ros):
     ros.wait_ready(echo)
     ours = ros.scene('--seconds', '8', 'pub', 'PoseArray', '/scene_out/poses')
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 0, err
     poses = json.loads(out.splitlines()[-1])['poses']
     close(POSE_WIRE, poses[0])

@@ -2,6 +2,8 @@
 // (ros2vtk::wire::ServiceClient), answered or failed on the ROS node's spin.
 #include "vtkROS2ServiceClientNode.h"
 
+#include "vtkROS2Message.h"
+
 #include "MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
@@ -209,6 +211,33 @@ bool vtkROS2ServiceClientNode::SetRequestField(const char* path, const char* val
     vtkErrorMacro("SetRequestField: " << error);
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::SetRequestObject(vtkROS2Message* request)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Type || !request || request->GetTypeSupport() != internals.Type->request())
+  {
+    vtkErrorMacro("SetRequestObject: needs a message object of type "
+      << (internals.Type ? internals.Type->request()->ros_type : "(no service type yet)") << ", got "
+      << (request && request->GetTypeSupport() ? request->GetROSType() : "(none)"));
+    return false;
+  }
+  internals.Type->request()->copy(request->GetRawMessage(), internals.Request.get());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::GetRequestObject(vtkROS2Message* request) const
+{
+  const vtkInternals& internals = *this->Internals;
+  if (!internals.Type || !request)
+  {
+    return false;
+  }
+  request->CopyFromRaw(*internals.Type->request(), internals.Request.get());
   return true;
 }
 
@@ -469,6 +498,18 @@ std::string vtkROS2ServiceClientNode::GetResponseField(const char* path) const
     return "";
   }
   return value;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceClientNode::GetLastResponseObject(vtkROS2Message* response) const
+{
+  const vtkInternals& internals = *this->Internals;
+  if (!internals.Type || !response || this->GetNumberOfResponses() == 0)
+  {
+    return false;
+  }
+  response->CopyFromRaw(*internals.Type->response(), internals.LastResponse.get());
+  return true;
 }
 
 //------------------------------------------------------------------------------

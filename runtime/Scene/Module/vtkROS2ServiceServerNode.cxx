@@ -2,6 +2,8 @@
 // (ros2vtk::wire::ServiceServer), answered by observers on the ROS node's spin.
 #include "vtkROS2ServiceServerNode.h"
 
+#include "vtkROS2Message.h"
+
 #include "MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
 
@@ -168,6 +170,37 @@ std::string vtkROS2ServiceServerNode::GetRequestField(const char* path) const
     return "";
   }
   return value;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceServerNode::GetRequestObject(vtkROS2Message* request) const
+{
+  const vtkInternals::Pending* current = this->Internals->Current();
+  if (!current || !request)
+  {
+    vtkErrorMacro("GetRequestObject: " << (current ? "null message object" : "no request is being handled"));
+    return false;
+  }
+  request->CopyFromRaw(*this->Internals->Type->request(), current->Request.get());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ServiceServerNode::SetResponseObject(vtkROS2Message* response)
+{
+  vtkInternals::Pending* current = this->Internals->Current();
+  const ros2vtk::wire::MessageTypeSupport* type = this->Internals->Type ? this->Internals->Type->response() : nullptr;
+  if (!current || !response || response->GetTypeSupport() != type)
+  {
+    vtkErrorMacro("SetResponseObject: "
+      << (!current ? std::string("no request is being handled")
+                   : std::string("needs a message object of type ") + (type ? type->ros_type : "?") + ", got " +
+            (response && response->GetTypeSupport() ? response->GetROSType() : "(none)")));
+    return false;
+  }
+  type->copy(response->GetRawMessage(), current->Response.get());
+  current->Answered = true;
+  return true;
 }
 
 //------------------------------------------------------------------------------
