@@ -154,7 +154,20 @@ def cmd_sub(args, logic, node) -> int:
         print(json.dumps({'error': f'QoS profile {args.qos} refused'}), flush=True)
         return 1
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
-    run(logic, args.seconds, lambda: sub.GetNumberOfMessages() >= args.count)
+    next_status = [time.monotonic()]
+
+    def step() -> bool:
+        if args.status_every > 0 and time.monotonic() >= next_status[0]:
+            # The link status a panel shows (wall-clock stamped, for the test to place it).
+            next_status[0] += args.status_every
+            print(json.dumps({'status': {'t': time.time(), 'link': node.GetLinkState(),
+                                         'participants': node.GetNumberOfDiscoveredParticipants(),
+                                         'dropped': node.GetNumberOfDroppedParticipants(),
+                                         'matched': sub.GetNumberOfMatchedPublications(),
+                                         'since_last': sub.GetSecondsSinceLastMessage(),
+                                         'count': sub.GetNumberOfMessages()}}), flush=True)
+        return sub.GetNumberOfMessages() >= args.count
+    run(logic, args.seconds, step)
     run(logic, args.linger, lambda: False)  # anything beyond --count would show up here
     value = None if args.type == 'Empty' else sub.GetLastMessage()  # Empty carries no value
     print(json.dumps({'count': sub.GetNumberOfMessages(), 'rejected': sub.GetNumberOfRejectedMessages(),
@@ -383,6 +396,8 @@ def main() -> int:
     subscriber.add_argument('--count', type=int, default=1)
     subscriber.add_argument('--linger', type=float, default=0.0)
     subscriber.add_argument('--qos', default='', help='a QoS profile name (default: the default profile)')
+    subscriber.add_argument('--status-every', type=float, default=0.0,
+                            help='print the link status (node and subscriber) every this many seconds')
     publisher = sub.add_parser('pub')
     publisher.add_argument('type')
     publisher.add_argument('topic')

@@ -680,6 +680,30 @@ std::string vtkROS2NodeNode::PrintOwnParameter(const char* name)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfDiscoveredParticipants() const
+{
+  return this->Internals->Participant
+    ? static_cast<int>(this->Internals->Participant->remote_participant_count())
+    : 0;
+}
+
+vtkTypeInt64 vtkROS2NodeNode::GetNumberOfDroppedParticipants() const
+{
+  return this->Internals->Participant
+    ? static_cast<vtkTypeInt64>(this->Internals->Participant->dropped_participant_count())
+    : 0;
+}
+
+const char* vtkROS2NodeNode::GetLinkState() const
+{
+  if (!this->Internals->Participant)
+  {
+    return "not created";
+  }
+  return this->GetNumberOfDiscoveredParticipants() > 0 ? "peers" : "no peers";
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2NodeNode::GetNodeNamesAndNamespaces()
 {
   std::string lines;

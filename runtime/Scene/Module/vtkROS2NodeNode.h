@@ -181,6 +181,17 @@ public:
   ///@}
 
   ///@{
+  /// Link status, for a panel: other ROS processes' participants this node currently sees (on
+  /// any host), how many were dropped because they fell silent beyond the DDS lease (20 s: a
+  /// cut network), and a word for it: "not created" (no participant), "no peers" (nobody
+  /// found, or everybody dropped) or "peers". A short outage, within the lease, shows instead
+  /// on the subscribers (vtkROS2SubscriberNode::GetSecondsSinceLastMessage) and recovers by itself.
+  int GetNumberOfDiscoveredParticipants() const;
+  vtkTypeInt64 GetNumberOfDroppedParticipants() const;
+  const char* GetLinkState() const;
+  ///@}
+
+  ///@{
   /// This ROS node's own parameters, served to `ros2 param` and rclpy clients (declared on
   /// first set; a later set must keep the type). False with vtkErrorMacro otherwise.
   bool SetParameterAsBool(const char* name, bool value);

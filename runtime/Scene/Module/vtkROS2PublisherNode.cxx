@@ -61,20 +61,24 @@ bool vtkROS2PublisherNode::PublishMessage(const void* rosMessage)
   ++this->NumberOfCalls;
   if (!this->Internals->Publisher)
   {
-    vtkErrorMacro("Publish: not added to a ROS node (call AddToROS2Node or use "
-                  "vtkROS2NodeNode::CreateAndAddPublisherNode)");
+    this->LastPublishError = "Publish: not added to a ROS node (call AddToROS2Node or use "
+                             "vtkROS2NodeNode::CreateAndAddPublisherNode)";
+    vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
   if (!rosMessage)
   {
-    vtkErrorMacro("Publish: no message");
+    this->LastPublishError = "Publish: no message";
+    vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
   if (!this->Internals->Publisher->publish(rosMessage))
   {
-    vtkErrorMacro("Publish: DDS refused the sample on '" << this->GetTopic() << "'");
+    this->LastPublishError = "Publish: DDS refused the sample on '" + std::string(this->GetTopic()) + "'";
+    vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
+  this->LastPublishError.clear();
   ++this->NumberOfMessagesSent; // no ModifiedEvent: publishing is not a change of the node
   return true;
 }
@@ -114,7 +118,32 @@ vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
 void vtkROS2PublisherNode::RecordFailedPublish(const char* reason)
 {
   ++this->NumberOfCalls;
+  this->LastPublishError = reason ? reason : "failed";
   vtkErrorMacro("Publish on '" << this->GetTopic() << "': " << (reason ? reason : "failed"));
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherNode::PublishObject(vtkObject* object)
+{
+  if (auto* message = vtkROS2Message::SafeDownCast(object))
+  {
+    return this->PublishMessageObject(message) ? 1 : 0;
+  }
+  const std::string reason = std::string("PublishObject: ") + this->GetClassName() +
+    " publishes " + this->GetSlicerType() + ", not " +
+    (object ? object->GetClassName() : "a null object");
+  this->RecordFailedPublish(reason.c_str());
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherNode::PublishValue(const vtkVariant& value)
+{
+  const std::string reason = std::string("PublishValue: ") + this->GetClassName() +
+    " publishes " + this->GetSlicerType() + ", not a " +
+    (value.IsValid() ? value.GetTypeAsString() : "invalid") + " value";
+  this->RecordFailedPublish(reason.c_str());
+  return 0;
 }
 
 //------------------------------------------------------------------------------

@@ -14,6 +14,7 @@
 
 #include "vtkCommand.h"
 
+#include <chrono>
 #include <vector>
 
 namespace
@@ -30,6 +31,8 @@ public:
   // Messages of the latest spin that brought any; the newest is Batch.back().
   std::vector<ros2vtk::wire::MessagePtr> Batch;
   int NumberOfNewMessages = 0;
+  std::chrono::steady_clock::time_point LastMessageArrival{};
+  bool HasMessage = false;
   uint64_t RejectedSeen = 0; // rejected_count() of the current subscription already counted
   std::string LastRejectionReason;
   uint64_t IncompatibleSeen = 0; // incompatible_qos_count() of the current subscription reported
@@ -96,6 +99,8 @@ int vtkROS2SubscriberNode::ProcessIncomingMessages()
     return 0;
   }
   internals.Batch = std::move(taken);
+  internals.LastMessageArrival = std::chrono::steady_clock::now();
+  internals.HasMessage = true;
   this->NumberOfMessages += internals.NumberOfNewMessages;
   this->OnNewMessages();
 
@@ -105,6 +110,17 @@ int vtkROS2SubscriberNode::ProcessIncomingMessages()
   this->MTime.Modified();
   this->InvokeEvent(vtkCommand::ModifiedEvent, &count);
   return count;
+}
+
+//------------------------------------------------------------------------------
+double vtkROS2SubscriberNode::GetSecondsSinceLastMessage() const
+{
+  if (!this->Internals->HasMessage)
+  {
+    return -1.0;
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                       this->Internals->LastMessageArrival).count();
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,9 @@ public:
   const char* GetLastRejectionReason() const;
   /// Publishers (local or remote) currently matched; 0 when not added.
   int GetNumberOfMatchedPublications() const;
+  /// Seconds (wall clock) since a spin last brought a message; -1 before the first. With the
+  /// matched publications, what a panel shows of a link outage while it lasts.
+  double GetSecondsSinceLastMessage() const;
   /// Publishers found on the topic whose QoS cannot match this subscriber (they send nothing
   /// here; each is reported once, as rclpy's "requesting incompatible QoS"), and the policy that
   /// kept the latest apart ("RELIABILITY", "DURABILITY", ...; empty when none).

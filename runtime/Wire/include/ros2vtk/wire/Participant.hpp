@@ -32,8 +32,15 @@ struct ParticipantOptions
   /// Hosts to discover by unicast besides the range (ROS_STATIC_PEERS, as ROS 2 Jazzy and later:
   /// IPv4 addresses or host names), for networks that drop multicast.
   std::vector<std::string> static_peers;
-  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY and ROS_STATIC_PEERS
-  /// (';'-separated; rmw's limit of 32 peers).
+  /// Fast DDS discovery servers (ROS_DISCOVERY_SERVER: "host:port;host:port", the position in
+  /// the list is the server id, as Fast DDS reads it; empty: no server). The participant is
+  /// then a discovery client of them, with no multicast.
+  std::string discovery_servers;
+  /// ROS_SUPER_CLIENT=TRUE (as rmw_fastrtps): a super client, which the servers tell about the
+  /// whole graph (node and topic lists), not only about the endpoints it matches.
+  bool super_client = false;
+  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY, ROS_STATIC_PEERS
+  /// (';'-separated; rmw's limit of 32 peers), ROS_DISCOVERY_SERVER and ROS_SUPER_CLIENT.
   static ParticipantOptions from_environment();
 };
 
@@ -91,6 +98,12 @@ public:
   std::vector<TopicInfo> topic_names_and_types() const;
   size_t count_publishers(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
+
+  /// Link status: remote participants (other processes' nodes, on any host) discovered and not
+  /// yet removed, and how many of them were dropped because their lease expired (silence
+  /// beyond the lease duration, e.g. a cut network) since this participant was created.
+  size_t remote_participant_count() const;
+  uint64_t dropped_participant_count() const;
 
   /// 16-byte DDS GUID of the participant (the rmw gid).
   std::vector<uint8_t> gid() const;
