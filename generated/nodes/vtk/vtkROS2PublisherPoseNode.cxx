@@ -60,6 +60,17 @@ int vtkROS2PublisherPoseNode::Publish(vtkMatrix4x4* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherPoseNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkMatrix4x4::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkMatrix4x4* vtkROS2PublisherPoseNode::GetBlankMessage() const
 {
   return vtkMatrix4x4::New();

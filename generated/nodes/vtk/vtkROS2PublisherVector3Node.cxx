@@ -60,6 +60,17 @@ int vtkROS2PublisherVector3Node::Publish(vtkDoubleArray* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherVector3Node::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkDoubleArray::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2PublisherVector3Node::GetBlankMessage() const
 {
   return vtkDoubleArray::New();

@@ -60,6 +60,17 @@ int vtkROS2PublisherWrenchNode::Publish(vtkDoubleArray* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherWrenchNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkDoubleArray::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2PublisherWrenchNode::GetBlankMessage() const
 {
   return vtkDoubleArray::New();
