@@ -39,7 +39,8 @@ def test_nodes_and_topics_list_the_rclpy_node(ros):
 # (written out by hand, not read from the registry under test).
 SHORT_NAMES = ['Bool', 'DoubleArray', 'Double', 'DoubleTable', 'Empty', 'Image', 'IntArray', 'Int',
                'IntTable', 'JointState', 'PointCloud2', 'PointCloud', 'PoseArray', 'PoseStamped',
-               'String', 'TransformStamped', 'UInt8Image', 'WrenchStamped']
+               'String', 'TransformStamped', 'UInt8Image', 'WrenchStamped',
+               'Pose', 'Transform', 'Wrench', 'Vector3']
 
 
 def test_types_lists_a_publisher_and_a_subscriber_class_per_short_name(ros):

@@ -566,6 +566,24 @@ vtkROS2SceneNode* vtkROS2NodeNode::FindChildByFrames(const char* role, const cha
 }
 
 //------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2NodeNode::FindChildByID(const char* role, const char* nodeID)
+{
+  if (!nodeID || !this->Scene)
+  {
+    return nullptr;
+  }
+  for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
+  {
+    vtkROS2SceneNode* child = this->GetNthNodeReference(role, i);
+    if (child && child->GetID() && std::string(child->GetID()) == nodeID)
+    {
+      return child;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2NodeNode::AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name,
   const std::function<bool()>& attach)
 {

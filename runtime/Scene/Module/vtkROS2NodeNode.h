@@ -109,6 +109,9 @@ public:
   /// Space-separated class names of the publisher / subscriber classes that can be created.
   std::string GetRegisteredROS2PublisherNodes() const;
   std::string GetRegisteredROS2SubscriberNodes() const;
+  /// SlicerROS2's spelling of the two above.
+  std::string RegisteredROS2PublisherNodes() const { return this->GetRegisteredROS2PublisherNodes(); }
+  std::string RegisteredROS2SubscriberNodes() const { return this->GetRegisteredROS2SubscriberNodes(); }
 
   /// Processes what DDS queued for this node's subscribers, on the calling thread (each
   /// subscriber with new messages fires one ModifiedEvent). Returns the number of messages.
@@ -124,9 +127,13 @@ public:
   /// unique per ROS node. Remove* return false (vtkErrorMacro) when there is no such node.
   vtkROS2Tf2LookupNode* CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2LookupNode* GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame);
+  /// By scene node ID (SlicerROS2 scripts keep IDs); nullptr unless it is this node's lookup.
+  vtkROS2Tf2LookupNode* GetTf2LookupNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2BroadcasterNode* CreateAndAddTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByParentChild(const char* parentFrame, const char* childFrame);
+  /// By scene node ID; nullptr unless it is this node's broadcaster.
+  vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
   ///@}
 
@@ -135,6 +142,8 @@ public:
   /// monitored node ("/robot_state_publisher"; a name without '/' is taken as absolute).
   vtkROS2ParameterNode* CreateAndAddParameterNode(const char* monitoredNodeName);
   vtkROS2ParameterNode* GetParameterNodeByNode(const char* monitoredNodeName);
+  /// By scene node ID; nullptr unless it is this node's parameter node.
+  vtkROS2ParameterNode* GetParameterNodeByNodeID(const char* nodeID);
   bool RemoveAndDeleteParameterNode(const char* monitoredNodeName);
   ///@}
 
@@ -266,6 +275,8 @@ private:
   /// services), or by its frame pair.
   vtkROS2SceneNode* FindChildByName(const char* role, const char* name);
   vtkROS2SceneNode* FindChildByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  /// The scene node `nodeID` when this node references it under `role`.
+  vtkROS2SceneNode* FindChildByID(const char* role, const char* nodeID);
   /// Names `child`, adds it to the scene and runs `attach`; on success references it under
   /// `role`, on failure removes it from the scene again.
   bool AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name, const std::function<bool()>& attach);

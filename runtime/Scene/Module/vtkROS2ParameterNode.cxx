@@ -215,8 +215,10 @@ bool vtkROS2ParameterNode::IsParameterSet(const char* name, bool noWarning) cons
 //------------------------------------------------------------------------------
 std::string vtkROS2ParameterNode::GetParameterType(const char* name) const
 {
+  // "" for a parameter this node has never seen, as SlicerROS2 answers; "not set" for one the
+  // monitored node reports without a value.
   const rcl::ParameterValue* value = Find(this->Internals->Client, name);
-  return ros2vtk::wire::parameter_type_name(value ? value->type : 0);
+  return value ? ros2vtk::wire::parameter_type_name(value->type) : std::string();
 }
 
 //------------------------------------------------------------------------------
@@ -384,4 +386,10 @@ bool vtkROS2NodeNode::RemoveAndDeleteParameterNode(const char* monitoredNodeName
     return false;
   }
   return this->RemoveChild(ParameterRole, node);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2ParameterNode* vtkROS2NodeNode::GetParameterNodeByNodeID(const char* nodeID)
+{
+  return vtkROS2ParameterNode::SafeDownCast(this->FindChildByID(ParameterRole, nodeID));
 }

@@ -210,3 +210,9 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame,
   }
   return this->RemoveChild(Tf2BroadcasterRole, node);
 }
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByID(const char* nodeID)
+{
+  return vtkROS2Tf2BroadcasterNode::SafeDownCast(this->FindChildByID(Tf2BroadcasterRole, nodeID));
+}

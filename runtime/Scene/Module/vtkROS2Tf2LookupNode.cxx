@@ -196,3 +196,9 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, cons
   }
   return this->RemoveChild(Tf2LookupRole, node);
 }
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByID(const char* nodeID)
+{
+  return vtkROS2Tf2LookupNode::SafeDownCast(this->FindChildByID(Tf2LookupRole, nodeID));
+}
