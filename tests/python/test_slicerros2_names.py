@@ -47,3 +47,12 @@ def test_parameter_type_of_a_parameter_never_seen_is_empty():
     parameters.AddParameter('robot_description')
     assert parameters.GetParameterType('robot_description') == ''
     assert parameters.GetParameterType('never_added') == ''
+
+
+def test_empty_publisher_takes_slicerros2s_publish_with_text():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    publisher = node.CreateAndAddPublisherNode('Empty', '/slicerros2_names_empty')
+    assert publisher.Publish('') == 1
+    assert publisher.Publish() == 1
+    assert publisher.GetNumberOfMessagesSent() == 2
