@@ -5,7 +5,9 @@
 #   lib/                          libros2vtkMessage.a, libros2vtkMessages.a, libros2vtkConvert.a,
 #                                 libros2vtkWire.a, libros2vtkTf2.a, libros2vtkTf2Ros.a,
 #                                 libros2vtkRobotModel.a, libros2vtkRobotLoader.a,
-#                                 libros2vtkScene.so, libros2vtkNodes.so
+#                                 libros2vtkIGTL.a (with libopenigtlink-dev),
+#                                 libros2vtkScene.so, libros2vtkNodes.so, libros2vtkDisplay.so,
+#                                 libros2vtkIGTLConnector.so
 #   include/                      ros2vtk/{wire,convert,tf2,tf2_ros,robot}/*, the generated
 #                                 message headers (ros2vtk/<package>/msg/*.hpp) and, from VTK's
 #                                 module install, include/ros2vtk/ (the scene and node classes)
@@ -19,7 +21,7 @@
 #   share/ros2vtk/templates/      its Jinja2 templates
 #   share/ros2vtk/msg_specs/      the shipped interface specs and mapping rules
 #
-# The VTK modules (ros2vtk::Scene, ros2vtk::Nodes) are installed and exported by
+# The VTK modules (ros2vtk::Scene, ros2vtk::Nodes, ros2vtk::Display, ros2vtk::IGTLConnector) are installed and exported by
 # vtk_module_build itself (cmake/ros2vtk_vtk.cmake, one export set per module); this file
 # exports the plain libraries they and generated downstream code link.
 
@@ -36,6 +38,12 @@ set(ROS2VTK_INSTALL_PYTHONDIR "python")  # as MODULE_DESTINATION in cmake/ros2vt
 # the ros2vtk::<Name> aliases the build tree has.
 set(_ros2vtk_exported_libraries ros2vtkMessage ros2vtkMessages ros2vtkConvert ros2vtkWire
   ros2vtkTf2 ros2vtkTf2Ros ros2vtkRobotModel ros2vtkRobotLoader)
+# The OpenIGTLink connector's library, when libopenigtlink-dev was found (runtime/IGTL).
+if(TARGET ros2vtkIGTL)
+  list(APPEND _ros2vtk_exported_libraries ros2vtkIGTL)
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/runtime/IGTL/include/"
+    DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+endif()
 install(TARGETS ${_ros2vtk_exported_libraries}
   EXPORT ros2vtkTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"

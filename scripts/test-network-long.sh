@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The two-host network tests (tests/network) including what CI leaves out: the 2-minute link cut and
-# the packet-loss comparisons with an rclpy subscriber
+# the packet-loss comparisons with an rclpy subscriber, and the discovery server without an id
 # (~6 min). Needs root for the network namespaces. Usage: scripts/test-network-long.sh [pytest args]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

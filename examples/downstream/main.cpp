@@ -2,10 +2,12 @@
 // as ROS 2 does) and read it back, then convert its pose with the generated converter into a
 // vtkMatrix4x4 in millimetres and back. Then the installed runtime libraries: where the guide
 // is in the world (ros2vtk::Tf2), its topic's DDS name (ros2vtk::Wire), and a small guide holder
-// robot: forward kinematics (ros2vtk::RobotModel) and its visuals (ros2vtk::RobotLoader).
+// robot: forward kinematics (ros2vtk::RobotModel) and its visuals (ros2vtk::RobotLoader), and its
+// pose as an OpenIGTLink TRANSFORM (ros2vtk::IGTL).
 #include "needle_guideConvert.hpp"  // generated: ros2vtk::nodes::ROS2ToVTK / VTKToROS2
 
 #include <ros2vtk/needle_guide_msgs/msg/needle_guide.hpp>  // generated message type + CDR
+#include <ros2vtk/igtl/Codec.hpp>
 #include <ros2vtk/robot/KinematicTree.hpp>
 #include <ros2vtk/robot/RobotLoader.hpp>
 #include <ros2vtk/tf2/BufferCore.hpp>
@@ -124,5 +126,30 @@ int main()
     return 1;
   }
   std::printf("holder visuals %zu\n", visuals.visual_count());
+
+  // OpenIGTLink (ros2vtk::IGTL): the guide's pose as the TRANSFORM a Slicer would read, framed
+  // into bytes and read back.
+  ros2vtk::igtl::Matrix pose{};
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      pose[r * 4 + c] = matrix->GetElement(r, c);
+    }
+  }
+  const std::vector<std::uint8_t> igtl_bytes =
+    ros2vtk::igtl::encode_frame(ros2vtk::igtl::encode_transform("guide", pose, 0));
+  ros2vtk::igtl::FrameReader igtl_reader;
+  igtl_reader.feed(igtl_bytes.data(), igtl_bytes.size());
+  ros2vtk::igtl::Frame igtl_frame;
+  ros2vtk::igtl::Matrix igtl_pose{};
+  if (igtl_reader.next(igtl_frame, error) != ros2vtk::igtl::FrameReader::Result::Frame ||
+      !ros2vtk::igtl::decode_transform(igtl_frame, igtl_pose, error))
+  {
+    std::fprintf(stderr, "IGTL: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("igtl %s %s %zu bytes x_mm %.1f\n", igtl_frame.type.c_str(),
+              igtl_frame.device.c_str(), igtl_bytes.size(), igtl_pose[3]);
   return 0;
 }

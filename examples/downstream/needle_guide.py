@@ -1,7 +1,7 @@
 """The downstream node classes from Python: this project's wrapped module (ros2vtk.needle_guide,
 built with NEEDLE_GUIDE_PYTHON=ON) joins the installed ros2vtk package, and a NeedleGuide
 publisher and subscriber, made by short name through the node-class registry, exchange one
-guide pose over ROS 2 (the same process, loopback).
+guide pose over ROS 2 (the same process, loopback); the installed OpenIGTLink connector starts.
 
     PYTHONPATH=<build>/python:<ros2vtk prefix>/python /usr/bin/python3 needle_guide.py
 
@@ -10,6 +10,7 @@ Prints "NeedleGuide Python OK" and exits 0; any failure exits non-zero with the 
 
 from __future__ import annotations
 
+import socket
 import sys
 
 import ros2vtk
@@ -57,6 +58,17 @@ def main() -> int:
     if '0.1' not in sub.GetLastMessageYAML():  # metres on the wire
         print(f'unexpected YAML:\n{sub.GetLastMessageYAML()}', file=sys.stderr)
         return 1
+    # The installed OpenIGTLink connector (ros2vtk::IGTLConnector): serve the scene on a free port.
+    with socket.socket() as probe:  # a free port
+        probe.bind(('127.0.0.1', 0))
+        port = probe.getsockname()[1]
+    connector = ros2vtk.vtkROS2IGTLConnectorNode()
+    connector.SetPort(port)
+    if not connector.Start(node):
+        print(f'IGTL connector did not start: {connector.GetLastError()}', file=sys.stderr)
+        return 1
+    print(f'igtl connector {connector.GetState()}')
+    connector.Stop()
     logic.GetScene().Clear()
     print('NeedleGuide Python OK')
     return 0

@@ -16,37 +16,26 @@ import tomllib
 from dataclasses import dataclass, field
 from typing import Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
-from .errors import GeneratorError
+from .errors import (MAPPING_BAD_FIELD, MAPPING_BAD_FILE, MAPPING_BAD_KEY, MAPPING_BAD_KIND,
+                     MAPPING_BAD_LENGTHS, MAPPING_DUPLICATE, MAPPING_UNKNOWN_ROS_TYPE,
+                     GeneratorError)
+from .kinds import KINDS
+from .kinds.base import Kind, Shape
 from .model import ARRAY, BOUNDED_SEQUENCE, SCALAR, SEQUENCE, Field, Message
 
-# Error codes (docs/errors.md): R2V201 file/TOML, R2V202 rule keys, R2V203 unknown ROS type,
-# R2V204 unknown kind / VTK type, R2V205 field path, R2V206 duplicate, R2V207 lengths.
-BAD_FILE = "R2V201"
-BAD_KEY = "R2V202"
-UNKNOWN_ROS_TYPE = "R2V203"
-BAD_KIND = "R2V204"
-BAD_FIELD = "R2V205"
-DUPLICATE = "R2V206"
-BAD_LENGTHS = "R2V207"
+# Error codes (docs/errors.md), defined in errors.py beside the parse codes.
+BAD_FILE = MAPPING_BAD_FILE
+BAD_KEY = MAPPING_BAD_KEY
+UNKNOWN_ROS_TYPE = MAPPING_UNKNOWN_ROS_TYPE
+BAD_KIND = MAPPING_BAD_KIND
+BAD_FIELD = MAPPING_BAD_FIELD
+DUPLICATE = MAPPING_DUPLICATE
+BAD_LENGTHS = MAPPING_BAD_LENGTHS
 
 SHORT_NAME_RE = re.compile(r"^[A-Z][A-Za-z0-9]*$")
 RULE_KEYS = ("short_name", "aliases", "ros_type", "vtk_type", "kind", "fields", "header",
              "lengths")
 HEADER_TYPE = "std_msgs/msg/Header"
-
-INTEGER_TYPES = ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64")
-FLOAT_TYPES = ("float32", "float64")
-NUMERIC_TYPES = INTEGER_TYPES + ("uint64",) + FLOAT_TYPES
-
-# kind "value": the C++ value type -> the primitive field types it can hold without loss.
-VALUE_TYPES: Dict[str, Tuple[str, ...]] = {
-    "std::string": ("string",),
-    "bool": ("bool",),
-    "int": ("int8", "uint8", "int16", "uint16", "int32"),
-    "vtkTypeInt64": ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64"),
-    "double": FLOAT_TYPES,
-}
-
 
 class MappingError(GeneratorError):
     """A malformed or inconsistent mapping rule, located in its file."""
@@ -59,107 +48,6 @@ class MappingError(GeneratorError):
     def __str__(self) -> str:
         where = f"{self.path}:{self.line}" if self.line else self.path
         return f"{where}: {self.message} [{self.code}]"
-
-
-# ---------------------------------------------------------------- what each kind reads
-
-@dataclass(frozen=True)
-class Shape:
-    """The type a role's field must have: a primitive of `primitives`, or a message that has
-    at least `members` (each a Shape), held once (`sequence` False) or as a sequence."""
-
-    primitives: Tuple[str, ...] = ()
-    members: Tuple[Tuple[str, "Shape"], ...] = ()
-    sequence: bool = False
-
-    def describe(self) -> str:
-        if self.primitives:
-            text = " or ".join(self.primitives)
-        elif self.members:
-            text = "message with " + ", ".join(name for name, _ in self.members)
-        else:
-            text = "messages" if self.sequence else "message"
-        return f"sequence of {text}" if self.sequence else text
-
-
-def _prim(*names: str, sequence: bool = False) -> Shape:
-    return Shape(primitives=names, sequence=sequence)
-
-
-def _struct(sequence: bool = False, **members: Shape) -> Shape:
-    return Shape(members=tuple(members.items()), sequence=sequence)
-
-
-XYZ_FLOAT64 = _struct(x=_prim("float64"), y=_prim("float64"), z=_prim("float64"))
-QUATERNION = _struct(x=_prim("float64"), y=_prim("float64"), z=_prim("float64"),
-                     w=_prim("float64"))
-MULTI_ARRAY_LAYOUT = _struct(
-    dim=_struct(sequence=True, label=_prim("string"), size=_prim("uint32"),
-                stride=_prim("uint32")),
-    data_offset=_prim("uint32"))
-
-
-@dataclass(frozen=True)
-class Kind:
-    """One conversion pattern: the roles it reads, the VTK types it makes, what it can scale.
-
-    `element_roles` are read relative to the element of the `sequence` role (PoseArray's
-    `position` inside each of `poses`). `scalable` names the roles whose field may appear in
-    `lengths` (for pointcloud2 the pseudo-path `<data>.xyz`: the x/y/z inside the bytes)."""
-
-    roles: Tuple[Tuple[str, Shape], ...] = ()
-    element_roles: Tuple[Tuple[str, Shape], ...] = ()
-    vtk_types: Tuple[str, ...] = ()
-    scalable: Tuple[str, ...] = ()
-
-
-KINDS: Dict[str, Kind] = {
-    "value": Kind(roles=(("value", _prim("bool", "string", *NUMERIC_TYPES)),),
-                  vtk_types=tuple(VALUE_TYPES), scalable=("value",)),
-    "empty": Kind(vtk_types=("void",)),
-    "rigid_transform": Kind(roles=(("translation", XYZ_FLOAT64), ("rotation", QUATERNION)),
-                            vtk_types=("vtkMatrix4x4",), scalable=("translation",)),
-    "rigid_transform_collection": Kind(
-        roles=(("sequence", Shape(sequence=True)),),
-        element_roles=(("translation", XYZ_FLOAT64), ("rotation", QUATERNION)),
-        vtk_types=("vtkTransformCollection",), scalable=("translation",)),
-    "vector_array": Kind(roles=(("components", _prim(*NUMERIC_TYPES)),),
-                         vtk_types=("vtkDoubleArray",)),
-    "image": Kind(roles=(("height", _prim("uint32")), ("width", _prim("uint32")),
-                         ("encoding", _prim("string")), ("is_bigendian", _prim("uint8")),
-                         ("step", _prim("uint32")), ("data", _prim("uint8", sequence=True))),
-                  vtk_types=("vtkImageData",)),
-    "points": Kind(roles=(("sequence", Shape(sequence=True)),), vtk_types=("vtkPoints",),
-                   scalable=("sequence",)),
-    # One position or vector (geometry_msgs/Point, Vector3, a field of a custom message) as a
-    # vtkPoints holding exactly one point, scaled like any length when listed in `lengths`.
-    "point": Kind(roles=(("point", XYZ_FLOAT64),), vtk_types=("vtkPoints",),
-                  scalable=("point",)),
-    "pointcloud2": Kind(
-        roles=(("height", _prim("uint32")), ("width", _prim("uint32")),
-               ("fields", _struct(sequence=True, name=_prim("string"), offset=_prim("uint32"),
-                                  datatype=_prim("uint8"), count=_prim("uint32"))),
-               ("is_bigendian", _prim("bool")), ("point_step", _prim("uint32")),
-               ("row_step", _prim("uint32")), ("data", _prim("uint8", sequence=True)),
-               ("is_dense", _prim("bool"))),
-        vtk_types=("vtkPolyData",), scalable=("data",)),
-    "joint_state_table": Kind(
-        roles=(("name", _prim("string", sequence=True)),
-               ("position", _prim("float64", sequence=True)),
-               ("velocity", _prim("float64", sequence=True)),
-               ("effort", _prim("float64", sequence=True))),
-        vtk_types=("vtkTable",)),
-    "multiarray_table": Kind(roles=(("layout", MULTI_ARRAY_LAYOUT),
-                                    ("data", _prim("int64", "float64", sequence=True))),
-                             vtk_types=("vtkTable",)),
-    "multiarray_array": Kind(roles=(("layout", MULTI_ARRAY_LAYOUT),
-                                    ("data", _prim("int64", "float64", sequence=True))),
-                             vtk_types=("vtkTypeInt64Array", "vtkDoubleArray")),
-}
-# multiarray_array: the array class follows the data's element type.
-MULTIARRAY_ARRAY_TYPES = {"int64": "vtkTypeInt64Array", "float64": "vtkDoubleArray"}
-# points: x, y and z of the sequence's elements, all float32 or all float64.
-POINT_ELEMENT_TYPES = ("float32", "float64")
 
 
 # ---------------------------------------------------------------- the validated rule
@@ -326,7 +214,7 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
     fields = raw.get("fields", {})
     if not isinstance(fields, dict):
         raise fail("fields", "'fields' must be a table of role = \"path\"", BAD_KEY)
-    known_roles = [name for name, _ in kind.roles + kind.element_roles]
+    known_roles = list(kind.role_names())
     extra = sorted(set(fields) - set(known_roles))
     if extra:
         raise fail("fields", f"kind {kind_name} has no role(s) {', '.join(extra)} (its roles: "
@@ -346,16 +234,13 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
         try:
             check_shape(resolved.field, shape, table)
         except ValueError as error:
-            hint = ""
-            if kind_name == "points" and resolved.field.container == SCALAR and \
-                    resolved.field.type.is_message:
-                hint = " (for a single point or vector use kind \"point\" with role point)"
+            hint = kind.shape_hint(resolved) if kind.shape_hint else ""
             raise fail("fields", f"role {name}: {prefix}{error}{hint}", BAD_FIELD) from None
         return resolved
 
     roles: Dict[str, Union[ResolvedField, Tuple[ResolvedField, ...]]] = {}
     for name, shape in kind.roles:
-        if kind_name == "vector_array" and name == "components":
+        if name in kind.list_roles:
             roles[name] = _resolve_components(fields[name], shape, message, table, fail)
         else:
             roles[name] = resolve_role(name, shape, message, "")
@@ -370,7 +255,8 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
         for name, shape in kind.element_roles:
             element_roles[name] = resolve_role(name, shape, element,
                                                f"(inside each element of '{sequence.path}') ")
-    _check_kind_specifics(kind_name, vtk_type, roles, table, fail)
+    if kind.check:
+        kind.check(vtk_type, roles, table, fail)
 
     header = None
     if "header" in raw:
@@ -386,7 +272,7 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
     lengths = raw.get("lengths", [])
     if not isinstance(lengths, list) or not all(isinstance(p, str) for p in lengths):
         raise fail("lengths", "'lengths' must be a list of field paths", BAD_KEY)
-    scaled = _scaled_roles(kind_name, kind, lengths, roles, element_roles, message, table,
+    scaled = _scaled_roles(kind, lengths, roles, element_roles, message, table,
                            lambda text: fail("lengths", text, BAD_LENGTHS))
 
     return Rule(short_name=short_name, aliases=tuple(aliases), ros_type=ros_type,
@@ -416,64 +302,22 @@ def _resolve_components(value, shape: Shape, message: Message, table, fail):
     return tuple(resolved)
 
 
-def _check_kind_specifics(kind_name: str, vtk_type: str, roles, table, fail) -> None:
-    """Type rules one Shape cannot say: value types, the array class, point precision."""
-    if kind_name == "value":
-        primitive = roles["value"].primitive
-        if primitive not in VALUE_TYPES[vtk_type]:
-            raise fail("vtk_type", f"a {primitive} field cannot be held in '{vtk_type}' "
-                       f"(that takes {' or '.join(VALUE_TYPES[vtk_type])})", BAD_KIND)
-    elif kind_name == "multiarray_array":
-        wanted = MULTIARRAY_ARRAY_TYPES[roles["data"].primitive]
-        if vtk_type != wanted:
-            raise fail("vtk_type", f"{roles['data'].primitive} data goes into {wanted}, not "
-                       f"'{vtk_type}'", BAD_KIND)
-    elif kind_name == "points":
-        sequence = roles["sequence"]
-        if not sequence.field.type.is_message:
-            raise fail("fields", f"role sequence: '{sequence.path}' must hold messages with "
-                       "x, y, z", BAD_FIELD)
-        element = table[sequence.field.type.ros_name()]
-        types = set()
-        for axis in "xyz":
-            item = next((f for f in element.fields if f.name == axis), None)
-            if item is None or item.container != SCALAR or \
-                    item.type.name not in POINT_ELEMENT_TYPES or not item.type.is_primitive:
-                raise fail("fields", f"role sequence: elements of '{sequence.path}' "
-                           f"({element.ros_type}) need a float32 or float64 field '{axis}'",
-                           BAD_FIELD)
-            types.add(item.type.name)
-        if len(types) != 1:
-            raise fail("fields", f"role sequence: x, y, z of {element.ros_type} must have "
-                       "one type", BAD_FIELD)
-
-
-def _scaled_roles(kind_name: str, kind: Kind, lengths: List[str], roles, element_roles,
-                  message: Message, table, fail) -> Tuple[str, ...]:
+def _scaled_roles(kind: Kind, lengths: List[str], roles, element_roles, message: Message,
+                  table, fail) -> Tuple[str, ...]:
     """Maps each `lengths` path to the role it scales; a path the kind cannot scale is an
     error (the units policy must never be silently ignored)."""
-    scalable: Dict[str, str] = {}
-    for role in kind.scalable:
-        if role in element_roles:
-            scalable[f"{roles['sequence'].path}.{element_roles[role].path}"] = role
-        elif kind_name == "pointcloud2" and role == "data":
-            scalable[f"{roles['data'].path}.xyz"] = role
-        elif role in roles:
-            resolved = roles[role]
-            if kind_name == "value" and resolved.primitive not in FLOAT_TYPES:
-                continue
-            scalable[resolved.path] = role
+    scalable = kind.paths_to_scale(roles, element_roles)
     scaled: List[str] = []
     for path in lengths:
         if path not in scalable:
             hint = (f"this kind can scale: {', '.join(sorted(scalable))}" if scalable
-                    else f"kind {kind_name} has no length to scale")
-            if kind_name != "pointcloud2" or not path.endswith(".xyz"):
+                    else f"kind {kind.name} has no length to scale")
+            if not (kind.pseudo_length_suffix and path.endswith(kind.pseudo_length_suffix)):
                 try:
                     resolve_path(message, path, table)
                 except ValueError as error:
                     raise fail(f"lengths: {error}") from None
-            raise fail(f"lengths: '{path}' is not a length of kind {kind_name} ({hint})")
+            raise fail(f"lengths: '{path}' is not a length of kind {kind.name} ({hint})")
         if scalable[path] in scaled:
             raise fail(f"lengths: '{path}' is listed twice")
         scaled.append(scalable[path])

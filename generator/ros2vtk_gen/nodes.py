@@ -10,17 +10,12 @@ from __future__ import annotations
 from typing import Dict, List, Sequence, Tuple
 
 from . import naming
-from .mapping import FLOAT_TYPES, Rule, ResolvedField, load_rules, short_names_of
+from .kinds import KINDS
+from .kinds.base import CPP_FIELD_TYPES, EMPTY, OBJECT, VALUE
+from .mapping import Rule, ResolvedField, load_rules, short_names_of
 from .model import Message
 
-# C++ type of a primitive field (the struct member type the generated message uses).
-CPP_FIELD_TYPES = {
-    "bool": "bool", "byte": "uint8_t", "char": "uint8_t",
-    "int8": "int8_t", "uint8": "uint8_t", "int16": "int16_t", "uint16": "uint16_t",
-    "int32": "int32_t", "uint32": "uint32_t", "int64": "int64_t", "uint64": "uint64_t",
-    "float32": "float", "float64": "double", "string": "std::string",
-}
-# VTK classes whose header a node header includes (kept to what the kinds make).
+# The scale argument of a role whose lengths are not scaled.
 NO_LENGTH_SCALING = "::ros2vtk::convert::kNoLengthScaling"
 
 
@@ -100,8 +95,7 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
                      for name, resolved in rule.element_roles.items()}
     scale = {name: ("lengthScale" if name in rule.scaled_roles else NO_LENGTH_SCALING)
              for name in list(rule.roles) + list(rule.element_roles)}
-    is_value = rule.kind == "value"
-    is_empty = rule.kind == "empty"
+    kind = KINDS[rule.kind]
     view = {
         "short_name": rule.short_name,
         "aliases": list(rule.aliases),
@@ -115,9 +109,10 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "alias_classes": [{"short_name": alias, "publisher_class": publisher_class(alias),
                            "subscriber_class": subscriber_class(alias)}
                           for alias in rule.aliases],
-        "is_value": is_value,
-        "is_empty": is_empty,
-        "is_object": not is_value and not is_empty,
+        "is_value": kind.signature == VALUE,
+        "is_empty": kind.signature == EMPTY,
+        "is_object": kind.signature == OBJECT,
+        "takes_encoding": kind.takes_encoding,
         "roles": roles,
         "element_roles": element_roles,
         "scale": scale,
@@ -128,26 +123,8 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "line": rule.line,
         "spec": f"mapping rule {rule.short_name} ({rule.mapping_file})",
     }
-    if is_value:
-        value = rule.roles["value"]
-        assert isinstance(value, ResolvedField)
-        view["value_type"] = rule.vtk_type
-        view["value_param"] = ("const std::string&" if rule.vtk_type == "std::string"
-                               else rule.vtk_type)
-        view["value_field_cpp"] = _cpp_type(value)
-        view["value_scaled"] = "value" in rule.scaled_roles and value.primitive in FLOAT_TYPES
-        view["value_default"] = {"std::string": "std::string()", "bool": "false"}.get(
-            rule.vtk_type, "0")
-    if rule.kind == "points":
-        sequence = rule.roles["sequence"]
-        assert isinstance(sequence, ResolvedField)
-        element = table[sequence.field.type.ros_name()]
-        x = next(f for f in element.fields if f.name == "x")
-        view["point_type"] = CPP_FIELD_TYPES[x.type.name]
-    if rule.kind in ("multiarray_table", "multiarray_array"):
-        data = rule.roles["data"]
-        assert isinstance(data, ResolvedField)
-        view["data_type"] = _cpp_type(data)
+    if kind.view:
+        view.update(kind.view(rule, table))
     return view
 
 

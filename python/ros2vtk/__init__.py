@@ -70,5 +70,6 @@ for _module in extension_modules.values():
 del _module, _name
 
 from .spinning import spin_until  # noqa: E402 (after the classes it spins)
+from .messages import Message  # noqa: E402 (wraps vtkROS2Message)
 
-__all__ += ['spin_until']
+__all__ += ['spin_until', 'Message']

@@ -4,8 +4,9 @@
     ros2vtk igtl --image /camera/image --map Target=tf:world:target
 
 Scene → Slicer: tf lookups and robot links as TRANSFORM (mm), robot visuals as POLYDATA, images
-as IMAGE, point clouds as POLYDATA points, strings as STRING. Slicer → ROS: --map DEVICE=tf:PARENT:CHILD
-or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped, PointCloud, Image, String).
+as IMAGE, point clouds as POLYDATA points, strings as STRING, pose arrays as TDATA. Slicer → ROS:
+--map DEVICE=tf:PARENT:CHILD or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped, PointCloud,
+PoseArray (from TDATA), Image, String).
 Coordinates: --frame ras (default: ROS x, y, z become Slicer R, A, S) or lps (x, y negated).
 Prints one JSON line per state change and a summary at the end.
 """
@@ -30,22 +31,51 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--image', action='append', default=[], metavar='TOPIC')
     parser.add_argument('--cloud', action='append', default=[], metavar='TOPIC', help='sensor_msgs/PointCloud2')
     parser.add_argument('--text', action='append', default=[], metavar='TOPIC', help='std_msgs/String')
+    parser.add_argument('--poses', action='append', default=[], metavar='TOPIC',
+                        help='geometry_msgs/PoseArray as TDATA (one Slicer transform per pose)')
     parser.add_argument('--map', action='append', default=[], metavar='DEVICE=tf:PARENT:CHILD|DEVICE=topic:TOPIC:TYPE')
     parser.add_argument('--frame', choices=['ras', 'lps'], default='ras')
     parser.add_argument('--link-local', action='store_true',
                         help='send meshes once in link coordinates with metadata ros.parent (see docs/slicer.md)')
     parser.add_argument('--seconds', type=float, default=0.0, help='stop after this long (0: run until Ctrl-C)')
+    parser.add_argument('--save-scene', default='', metavar='FILE',
+                        help='write the scene (connector settings, mappings, lookups, robot) to FILE once started')
+    parser.add_argument('--scene', default='', metavar='FILE',
+                        help='restore a scene written by --save-scene (or vtkROS2Scene.WriteToXMLFile) and serve '
+                             'its connector; the other scene options are then not used')
+
+
+def _restore(args: argparse.Namespace, logic):
+    """The connector of the scene file args.scene, restored and started as it was saved (or None)."""
+    scene = logic.GetScene()
+    if not scene.ReadFromXMLFile(args.scene):
+        print(json.dumps({'error': f'--scene {args.scene}: not a readable scene file'}), flush=True)
+        return None
+    connector = scene.GetNthNodeByClass(0, 'vtkROS2IGTLConnectorNode')
+    if connector is None:
+        print(json.dumps({'error': f'--scene {args.scene}: holds no vtkROS2IGTLConnectorNode'}), flush=True)
+        return None
+    if connector.GetState() == 'off':
+        ros_node = connector.GetStartedROS2Node() or logic.GetDefaultROS2Node()
+        connector.Start(ros_node)  # a connector saved while stopped starts now
+    return connector
 
 
 def run(args: argparse.Namespace, logic, node) -> int:
     scene = logic.GetScene()
+    if args.scene:
+        connector = _restore(args, logic)
+        if connector is None:
+            return 1
+        return _serve(args, logic, connector)
     for pair in args.lookup:
         parent, _, child = pair.partition(':')
         lookup = node.CreateAndAddTf2LookupNode(parent, child)
         lookup.SetName(child)
     if args.robot:
         node.CreateAndAddRobotNodeFromTopic('robot', args.robot)
-    for topics, kind in ((args.image, 'Image'), (args.cloud, 'PointCloud2'), (args.text, 'String')):
+    for topics, kind in ((args.image, 'Image'), (args.cloud, 'PointCloud2'), (args.text, 'String'),
+                         (args.poses, 'PoseArray')):
         for topic in topics:
             subscriber = node.CreateAndAddSubscriberNode(kind, topic)
             if subscriber is None:
@@ -76,7 +106,19 @@ def run(args: argparse.Namespace, logic, node) -> int:
     if not connector.Start(node):
         print(json.dumps({'error': connector.GetLastError()}), flush=True)
         return 1
-    print(json.dumps({'ready': True, 'state': connector.GetState(), 'port': args.port}), flush=True)
+    if args.save_scene and not scene.WriteToXMLFile(args.save_scene):
+        print(json.dumps({'error': f'--save-scene {args.save_scene}: cannot write'}), flush=True)
+        return 1
+    return _serve(args, logic, connector)
+
+
+def _serve(args: argparse.Namespace, logic, connector) -> int:
+    """Spins until --seconds or Ctrl-C, printing state changes and events, then a summary."""
+    scene = logic.GetScene()
+    if connector.GetState() in ('off', 'error'):
+        print(json.dumps({'error': connector.GetLastError() or 'the connector is not started'}), flush=True)
+        return 1
+    print(json.dumps({'ready': True, 'state': connector.GetState(), 'port': connector.GetPort()}), flush=True)
     end = time.monotonic() + args.seconds if args.seconds > 0 else float('inf')
     shown = (None, None)
     log_lines = 0

@@ -9,6 +9,7 @@
 // Usage: ros2vtk-sim-robot --urdf FILE [--namespace NS] [--rate HZ] [--frame-prefix P]
 //                          [--duration S] [--node NAME]
 #include "ros2vtk/geometry_msgs/msg/transform_stamped.hpp"
+#include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/robot/KinematicTree.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
 #include "ros2vtk/std_msgs/msg/string.hpp"
@@ -160,7 +161,7 @@ struct Trajectory
 rcl_interfaces::msg::ParameterValue string_value(const std::string& text)
 {
   rcl_interfaces::msg::ParameterValue value;
-  value.type = 4;
+  value.type = rcl_interfaces::msg::ParameterType::PARAMETER_STRING;
   value.string_value = text;
   return value;
 }
@@ -223,10 +224,10 @@ int main(int argc, char** argv)
 
   wire::ParameterStore& store = parameters->store();
   rcl_interfaces::msg::ParameterValue frequency;
-  frequency.type = 3;
+  frequency.type = rcl_interfaces::msg::ParameterType::PARAMETER_DOUBLE;
   frequency.double_value = options.rate;
   rcl_interfaces::msg::ParameterValue off;
-  off.type = 1;
+  off.type = rcl_interfaces::msg::ParameterType::PARAMETER_BOOL;
   store.declare("robot_description", string_value(urdf), nullptr);
   store.declare("publish_frequency", frequency, nullptr);
   store.declare("frame_prefix", string_value(options.frame_prefix), nullptr);

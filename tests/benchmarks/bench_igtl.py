@@ -1,16 +1,19 @@
 #!/usr/bin/env python3
 """Benchmark (reported, never asserted): ROS tf in -> OpenIGTLink TRANSFORM out through
-`python -m ros2vtk igtl`, beside a bare OpenIGTLink hop in the same run.
+`python -m ros2vtk igtl`, received by pyigtl (the Slicer stand-in), beside bare OpenIGTLink hops in
+the same run. scripts/bench.sh runs it (section igtl of run_benchmarks.py).
 
     ROS_DOMAIN_ID=... ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST .venv/bin/python tests/benchmarks/bench_igtl.py \
         --build build [--rate 100] [--count 1000]
 
 One process holds both ends (one clock): an rclpy node publishes world <- probe on /tf at --rate,
-the translation x carrying the sequence number (1 mm each), and a reader thread on a raw TCP socket
-(the OpenIGTLink framing of tests/interop/igtl_peer.py) timestamps each TRANSFORM as it arrives.
-Latency = arrival - publish. The bare row sends the same TRANSFORM frames over loopback TCP from one
-thread to a reader thread: the floor of the OpenIGTLink leg (ROS-IGTL-Bridge reports < 1.2 ms for
-transforms, Frank et al. 2017). Prints one JSON object.
+the translation x carrying the sequence number (1 mm each), and a pyigtl OpenIGTLinkClient
+receives the TRANSFORMs; each is timestamped when pyigtl's receive thread stores it (a dict hook,
+so pyigtl's 10 ms wait_for_message polling is not measured). Latency = stored - published.
+The bare rows send the same TRANSFORM frames from a plain TCP socket (TCP_NODELAY) to (a) a raw
+reader thread, the floor of the OpenIGTLink leg, and (b) a pyigtl client timestamped as above, the
+same receiver as the ros2vtk row (ROS-IGTL-Bridge reports < 1.2 ms for transforms, Frank et al.
+2017). Prints one JSON object.
 """
 from __future__ import annotations
 
@@ -28,7 +31,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / 'interop'))
-from igtl_peer import HEADER, RawClient, frame, free_port  # noqa: E402
+from igtl_peer import HEADER, frame, free_port  # noqa: E402
 
 
 def summary(latencies_ms: list) -> dict:
@@ -82,6 +85,62 @@ def bare(count: int, rate: float) -> dict:
     return summary(latencies)
 
 
+class ArrivalLog(dict):
+    """pyigtl's incoming-message store (device -> latest message) that also timestamps arrivals."""
+
+    def __init__(self, arrived: list) -> None:
+        super().__init__()
+        self.arrived = arrived  # (perf_counter, message)
+
+    def __setitem__(self, key, value) -> None:
+        self.arrived.append((time.perf_counter(), value))
+        super().__setitem__(key, value)
+
+
+def pyigtl_client(port: int) -> tuple:
+    """A pyigtl client whose every stored message is timestamped: (client, [(t, message)])."""
+    import pyigtl
+    arrived: list = []
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port, start_now=False)
+    client.incoming_messages = ArrivalLog(arrived)
+    client.start()
+    return client, arrived
+
+
+def sequence_of(message) -> int | None:
+    if message.message_type != 'TRANSFORM' or message.device_name != 'probe':
+        return None
+    return int(round(float(message.matrix[0, 3])))
+
+
+def bare_to_pyigtl(count: int, rate: float) -> dict:
+    """Plain socket server sending TRANSFORM frames -> pyigtl client (the receiver of the ros2vtk row)."""
+    server = socket.socket()
+    server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    server.bind(('127.0.0.1', 0))
+    server.listen(1)
+    client, arrived = pyigtl_client(server.getsockname()[1])
+    sender, _ = server.accept()
+    sender.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+    sent = {}
+    for seq in range(count):
+        sent[seq] = time.perf_counter()
+        sender.sendall(frame('TRANSFORM', 'probe', transform_body(float(seq))))
+        time.sleep(1.0 / rate)
+    time.sleep(0.5)
+    client.stop()
+    for s in (sender, server):
+        s.close()
+    latencies = {}
+    for t, message in list(arrived):
+        seq = sequence_of(message)
+        if seq in sent and seq not in latencies:
+            latencies[seq] = 1000.0 * (t - sent[seq])
+    result = summary(list(latencies.values()))
+    result['lost'] = count - len(latencies)
+    return result
+
+
 def through_ros2vtk(build: Path, count: int, rate: float) -> dict:
     import rclpy
     from geometry_msgs.msg import TransformStamped
@@ -96,38 +155,16 @@ def through_ros2vtk(build: Path, count: int, rate: float) -> dict:
     rclpy.init()
     node = rclpy.create_node('bench_igtl_tf')
     publisher = node.create_publisher(TFMessage, '/tf', 100)
-    raw = RawClient(port)
+    client, stored = pyigtl_client(port)
     sent = {}
-    latencies = []
-    stop = threading.Event()
+    arrived: dict = {}  # seq -> latency (ms), first arrival only
 
-    def read():
-        raw.sock.settimeout(0.2)
-        buffer = b''
-        while not stop.is_set():
-            try:
-                data = raw.sock.recv(1 << 20)
-            except socket.timeout:
-                continue
-            if not data:
-                return
-            now = time.perf_counter()
-            buffer += data
-            while len(buffer) >= HEADER.size:
-                _, kind, device, _, size, _ = HEADER.unpack(buffer[:HEADER.size])
-                if len(buffer) < HEADER.size + size:
-                    break
-                body = buffer[HEADER.size:HEADER.size + size]
-                buffer = buffer[HEADER.size + size:]
-                if kind.rstrip(b'\0') == b'TRANSFORM' and device.rstrip(b'\0') == b'probe':
-                    seq = int(round(struct.unpack('>12f', body[:48])[9]))
-                    if seq in sent and seq not in arrived:
-                        arrived.add(seq)
-                        latencies.append(1000.0 * (now - sent[seq]))
-
-    arrived: set = set()
-    reader = threading.Thread(target=read, daemon=True)
-    reader.start()
+    def collect() -> None:
+        while stored:
+            t, message = stored.pop(0)
+            seq = sequence_of(message)
+            if seq is not None and seq in sent and seq not in arrived:
+                arrived[seq] = 1000.0 * (t - sent[seq])
 
     def publish(seq: int) -> None:
         t = TransformStamped()
@@ -141,20 +178,23 @@ def through_ros2vtk(build: Path, count: int, rate: float) -> dict:
 
     # Warm-up: discovery and the first lookup (not measured).
     deadline = time.monotonic() + 15
-    seq = 1_000_000
+    seq = 100_000
     while not arrived and time.monotonic() < deadline:
         publish(seq)
         seq += 1
         time.sleep(0.05)
+        collect()
+    sent.clear()
+    time.sleep(0.2)
+    collect()
     arrived.clear()
-    latencies.clear()
     for seq in range(count):
         publish(seq)
         time.sleep(1.0 / rate)
     time.sleep(0.5)
-    stop.set()
-    reader.join(timeout=2)
-    raw.close()
+    collect()
+    client.stop()
+    latencies = list(arrived.values())
     ours.send_signal(2)
     ours.communicate(timeout=20)
     node.destroy_node()
@@ -180,6 +220,7 @@ def main() -> int:
     args = parser.parse_args()
     result = {'rate_hz': args.rate, 'count': args.count,
               'bare_openigtlink_hop': bare(args.count, args.rate),
+              'bare_openigtlink_to_pyigtl': bare_to_pyigtl(args.count, args.rate),
               'rclpy_tf_to_igtl_transform': through_ros2vtk(args.build, args.count, args.rate)}
     print(json.dumps(result))
     return 0

@@ -2,7 +2,7 @@
 """The benchmark suite (targets in markdown() below, results in docs/benchmarks.md): runs every measurement with its
 baseline in the same invocation, writes build/bench/results.json and docs/benchmarks.md.
 
-    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services]
+    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,igtl,network]
                       [--build DIR] [--json FILE] [--markdown FILE]
 
 Run through scripts/bench.sh (set-up, build, then this with the venv's python). Benchmarks
@@ -589,6 +589,53 @@ def markdown(results: dict) -> str:
 
     if results.get('sender_split'):
         out += sender_split_markdown(results['sender_split'], targets)
+
+    igtl = results.get('igtl')
+    if igtl:
+        out += ['## 7. 3D Slicer link (OpenIGTLink)', '',
+                f'tests/benchmarks/bench_igtl.py: an rclpy node publishes `world <- probe` on /tf at {igtl["rate_hz"]:.0f} Hz, '
+                '`python -m ros2vtk igtl --lookup world:probe` serves it, and a pyigtl client (the Slicer stand-in) in '
+                'the publisher\'s process (one clock) receives the TRANSFORMs, each timestamped when pyigtl\'s receive '
+                'thread stores it. Beside it in the same run, the same TRANSFORM frames from a plain socket to a raw '
+                'reader (the floor of the OpenIGTLink leg) and to the same pyigtl receiver (the bare OpenIGTLink hop).', '',
+                f'| {igtl["rate_hz"]:.0f} Hz, {igtl["count"]} transforms | median | p99 | max | n | lost | paper |',
+                '| --- | --- | --- | --- | --- | --- | --- |']
+        rows = (('bare OpenIGTLink hop: socket → raw reader', 'bare_openigtlink_hop', ''),
+                ('bare OpenIGTLink hop: socket → pyigtl', 'bare_openigtlink_to_pyigtl', ''),
+                ('rclpy tf → ros2vtk → pyigtl TRANSFORM', 'rclpy_tf_to_igtl_transform',
+                 'ROS-IGTL-Bridge: < 1.2 ms (transforms; Frank et al. 2017, its machine)'))
+        for label, key, paper in rows:
+            r = igtl.get(key, {})
+            out.append(f'| {label} | {fmt(r.get("median_ms"))} | {fmt(r.get("p99_ms"))} | {fmt(r.get("max_ms"))} | '
+                       f'{r.get("n", 0)} | {r.get("lost", 0)} | {paper} |')
+        out += ['', 'The CLI spins on DDS wake-up with a 10 ms ceiling; "lost" counts poses overtaken before sending '
+                '(latest-only queues per client).', '']
+        ours = igtl.get('rclpy_tf_to_igtl_transform', {})
+        if ours.get('median_ms') is not None:
+            targets.append(('tf → Slicer TRANSFORM below ROS-IGTL-Bridge\'s 1.2 ms (median)',
+                            f'{fmt(ours["median_ms"])} ms', verdict(ours['median_ms'] < 1.2)))
+
+    network = results.get('network')
+    if network:
+        out += ['## 8. Two hosts: round trip across the veth link vs loopback', '',
+                f'The paper\'s round trip (rclpy client, Float64 send times, {network["rate_hz"]} Hz, '
+                f'{network["count"]} messages) in tests/network\'s two network namespaces: across the veth link '
+                '(client on the robot host 198.18.0.1, echo on the imaging host 198.18.0.2) and, in the same run, '
+                'on one host (client and echo in the imaging namespace). SUBNET discovery, UDPv4. The kernel has '
+                'no netem: the veth adds no delay of its own, so the difference is the path through the stack.', '',
+                '| path | echo side | median | p90 | p99 | max | n | lost | median / same echo on loopback |',
+                '| --- | --- | --- | --- | --- | --- | --- | --- | --- |']
+        labels = {'ours_event': 'ours, event-driven', 'rclpy_relay': 'rclpy relay'}
+        for path in ('loopback', 'veth'):
+            for name, row in network['rows'].get(path, {}).items():
+                s = row['latency_ms']
+                base = network['rows'].get('loopback', {}).get(name, {}).get('latency_ms', {}).get('median')
+                ratio = s.get('median') / base if base and s.get('median') is not None else None
+                out.append(f'| {path} | {labels.get(name, name)} | {fmt(s.get("median"))} | {fmt(s.get("p90"))} | '
+                           f'{fmt(s.get("p99"))} | {fmt(s.get("max"))} | {s.get("n", 0)} | {row["lost"]} | '
+                           f'{fmt(ratio, 2)} |')
+        out.append('')
+
     if targets:
         out += ['## Targets', '', '| target | measured | verdict |', '| --- | --- | --- |']
         out += [f'| {t} | {v} | {ok} |' for t, v, ok in targets]
@@ -654,7 +701,7 @@ def bench_services(ctx: 'Context') -> dict:
     return {'count': count, 'service': 'std_srvs/srv/Trigger', 'pairs': rows}
 
 
-# ----------------------------------------------------------------------------- 7. sender split (issue 17)
+# ----------------------------------------------------------------------------- 9. sender split (issue 17)
 SPLIT_STREAMS = [
     ('pose_1khz', 'PoseStamped', 1000, 5.0, []),
     ('image_rgb8_640x480', 'Image', 30, 5.0, ['--width', '640', '--height', '480', '--encoding', 'rgb8']),
@@ -730,7 +777,7 @@ def bench_sender_split(ctx: 'Context') -> dict:
 
 
 def sender_split_markdown(split: dict, targets: list) -> list[str]:
-    out = ['## 7. Sender split: the same C++ sender into ours and into rclpy', '',
+    out = ['## 9. Sender split: the same C++ sender into ours and into rclpy', '',
            f'Sender: {split["sender"]}. Latency = receiver clock when the VTK object is ready (ours) or when '
            'the Python callback has the message (rclpy) − header stamp written by the sender before it '
            'serializes. "sender" = duration of the Publish() call. Runs alternate ours / rclpy; each run is one row '
@@ -774,6 +821,69 @@ def sender_split_markdown(split: dict, targets: list) -> list[str]:
             'buffers, which we do not control.', '']
     return out
 
+# ----------------------------------------------------------------------------- 7. igtl
+def bench_igtl(ctx: 'Context') -> dict:
+    """rclpy tf → `ros2vtk igtl` → pyigtl TRANSFORM at 100 Hz, beside bare OpenIGTLink hops
+    (tests/benchmarks/bench_igtl.py, one process, one clock)."""
+    count = 50 if ctx.quick else 1000
+    with Domain(226, ctx.build) as session:
+        process = session.start([VENV_PYTHON, HERE / 'bench_igtl.py', '--build', ctx.build,
+                                 '--rate', 100, '--count', count])
+        result = last_json(process, timeout=120 + count / 100)
+    r = result['rclpy_tf_to_igtl_transform']
+    progress(f'igtl: tf → pyigtl TRANSFORM median {r.get("median_ms")} ms, p99 {r.get("p99_ms")} ms; bare hop to '
+             f'pyigtl median {result["bare_openigtlink_to_pyigtl"].get("median_ms")} ms')
+    return result
+
+
+# ----------------------------------------------------------------------------- 8. network
+def bench_network(ctx: 'Context') -> dict:
+    """The paper's round trip across the veth link of tests/network's two namespaces (client on the
+    robot host, echo on the imaging host) and, in the same run, on one host (client and echo in the
+    imaging namespace): ours (round_trip.py, event-driven) and rclpy's relay as the echo side."""
+    if os.geteuid() != 0:
+        raise RuntimeError('needs root: the two hosts are network namespaces (tests/network)')
+    import importlib.util
+    spec = importlib.util.spec_from_file_location('network_conftest', REPO / 'tests' / 'network' / 'conftest.py')
+    network = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(network)
+    reason = network.namespaces_unavailable()
+    if reason:
+        raise RuntimeError(reason)
+    count, rate = (40, 100) if ctx.quick else (1000, 100)
+    seconds = count / rate + 40
+    echoes = {
+        'ours_event': [SYSTEM_PYTHON, REPO / 'examples' / 'round_trip' / 'round_trip.py', '--spin', 'event',
+                       '--seconds', seconds],
+        'rclpy_relay': [VENV_PYTHON, HERE / 'rclpy_relay.py', '--seconds', seconds],
+    }
+    rows: dict[str, dict] = {}
+    domain = 227
+    for path in ('veth', 'loopback'):
+        for name, echo_args in echoes.items():
+            lab = network.Lab(f'b{os.getpid() % 10000}', domain)
+            try:
+                for host in (lab.robot, lab.imaging):
+                    host.env.update(FASTDDS_BUILTIN_TRANSPORTS='UDPv4', PYTHONPATH=str(ctx.build / 'python'),
+                                    PYTHONUNBUFFERED='1')
+                echo = lab.imaging.start([str(a) for a in echo_args])
+                wait_ready(echo)
+                client_host = lab.robot if path == 'veth' else lab.imaging
+                client = client_host.start([str(a) for a in [VENV_PYTHON, REPO / 'tests' / 'interop' / 'ros_peer.py',
+                                                             'round_trip', '--count', count, '--rate', rate]])
+                result = last_json(client, timeout=60 + count / rate)
+            finally:
+                lab.close()
+            domain += 1
+            latencies = result.pop('latency_ms')
+            row = {'sent': result['sent'], 'received': result['received'], 'lost': result['lost'],
+                   'latency_ms': summary(latencies)}
+            rows.setdefault(path, {})[name] = row
+            s = row['latency_ms']
+            progress(f'round trip {path:8s} {name:11s}: median {s.get("median", float("nan")):.3f} ms, '
+                     f'p99 {s.get("p99", float("nan")):.3f} ms, lost {row["lost"]}')
+    return {'count': count, 'rate_hz': rate, 'rows': rows}
+
 
 # ----------------------------------------------------------------------------- main
 class Context:
@@ -786,6 +896,7 @@ SECTIONS: dict[str, Callable[[Context], dict]] = {
     'spin': bench_spin, 'round_trip': bench_round_trip, 'throughput': bench_throughput,
     'robot_load': bench_robot_load, 'generator': bench_generator, 'services': bench_services,
     'sender_split': bench_sender_split,
+    'igtl': bench_igtl, 'network': bench_network,
 }
 
 

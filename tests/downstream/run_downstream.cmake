@@ -92,7 +92,8 @@ foreach(GENERATOR IN LISTS _generators)
     "tf2 world->guide 1.100 -0.020 0.035"   # ros2vtk::Tf2
     "dds topic rt/needle_guide"            # ros2vtk::Wire
     "holder stage z 0.055"                 # ros2vtk::RobotModel: 0.01 m origin + 0.045 m depth
-    "holder visuals 2")                    # ros2vtk::RobotLoader
+    "holder visuals 2"                     # ros2vtk::RobotLoader
+    "igtl TRANSFORM guide 106 bytes x_mm 100.0") # ros2vtk::IGTL: 58-byte header + 48-byte body
 
   # 4. The wrapped module from Python (Debian's python3-vtk9): the installed package plus this
   #    build's python/ros2vtk/, a NeedleGuide publisher and subscriber by short name.
@@ -107,6 +108,7 @@ foreach(GENERATOR IN LISTS _generators)
     expect_output(Python
       "classes vtkROS2PublisherNeedleGuideNode vtkROS2SubscriberNeedleGuideNode"
       "received_mm 100.0 -20.0 35.0"
+      "igtl connector listening"
       "NeedleGuide Python OK")
   endif()
   message(STATUS "downstream: passed with ${GENERATOR}")

@@ -93,6 +93,18 @@ class Ros:
         return process.returncode, out, err
 
     @staticmethod
+    def stop(process: subprocess.Popen) -> None:
+        """Ends a process whose output the test does not need (a publisher that would go on for
+        its --seconds after the peer has what it wanted)."""
+        if process.poll() is None:
+            process.terminate()
+        try:
+            process.communicate(timeout=10)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.communicate()
+
+    @staticmethod
     def wait_ready(process: subprocess.Popen, timeout: float = 20.0) -> None:
         """Waits for the {"ready": true} line an echo peer prints once subscribed."""
         line = process.stdout.readline()

@@ -121,3 +121,26 @@ def v2_metadata(body: bytes) -> dict:
         at += value_size
     assert ext == 12
     return out
+
+
+TDATA_ELEMENT = struct.Struct('>20sBx12f')  # tdata.md: name, type, reserved, R11 R21 R31 R12 … TX TY TZ
+
+
+def tdata_body(elements) -> bytes:
+    """A TDATA body from (name, 4x4 matrix) pairs, 6D instruments, written from the spec."""
+    out = b''
+    for name, m in elements:
+        rotation = [m[r][c] for c in range(3) for r in range(3)]  # column by column
+        out += TDATA_ELEMENT.pack(name.encode(), 2, *rotation, m[0][3], m[1][3], m[2][3])
+    return out
+
+
+def tdata_elements(body: bytes):
+    """(name, type, 4x4 matrix as nested lists) of every element of a TDATA body."""
+    assert len(body) % TDATA_ELEMENT.size == 0, len(body)
+    out = []
+    for offset in range(0, len(body), TDATA_ELEMENT.size):
+        name, kind, *v = TDATA_ELEMENT.unpack_from(body, offset)
+        m = [[v[0], v[3], v[6], v[9]], [v[1], v[4], v[7], v[10]], [v[2], v[5], v[8], v[11]], [0, 0, 0, 1]]
+        out.append((name.rstrip(b'\0').decode(), kind, m))
+    return out

@@ -251,7 +251,10 @@ def cmd_tf_echo(args: argparse.Namespace) -> int:
     while printed < args.count and time.monotonic() < deadline:
         rclpy.spin_once(node, timeout_sec=0.05)
         while received and printed < args.count:
-            print(json.dumps(to_plain(received.pop(0))), flush=True)
+            message = received.pop(0)
+            if args.child and all(t.child_frame_id != args.child for t in message.transforms):
+                continue  # another frame's transform (--child filters)
+            print(json.dumps(to_plain(message)), flush=True)
             printed += 1
     node.destroy_node()
     return 0 if printed >= args.count else 3
@@ -377,6 +380,7 @@ def main() -> int:
     tf_echo.add_argument('--static', action='store_true')
     tf_echo.add_argument('--count', type=int, default=1)
     tf_echo.add_argument('--timeout', type=float, default=20.0)
+    tf_echo.add_argument('--child', default='', help='only messages with a transform of this child frame')
     param_node = sub.add_parser('param_node')
     param_node.add_argument('--seconds', type=float, default=20.0)
     param_node.add_argument('--change-after', type=float, default=4.0)

@@ -154,7 +154,20 @@ def cmd_sub(args, logic, node) -> int:
         print(json.dumps({'error': f'QoS profile {args.qos} refused'}), flush=True)
         return 1
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
-    run(logic, args.seconds, lambda: sub.GetNumberOfMessages() >= args.count)
+    next_status = [time.monotonic()]
+
+    def step() -> bool:
+        if args.status_every > 0 and time.monotonic() >= next_status[0]:
+            # The link status a panel shows (wall-clock stamped, for the test to place it).
+            next_status[0] += args.status_every
+            print(json.dumps({'status': {'t': time.time(), 'link': node.GetLinkState(),
+                                         'participants': node.GetNumberOfDiscoveredParticipants(),
+                                         'dropped': node.GetNumberOfDroppedParticipants(),
+                                         'matched': sub.GetNumberOfMatchedPublications(),
+                                         'since_last': sub.GetSecondsSinceLastMessage(),
+                                         'count': sub.GetNumberOfMessages()}}), flush=True)
+        return sub.GetNumberOfMessages() >= args.count
+    run(logic, args.seconds, step)
     run(logic, args.linger, lambda: False)  # anything beyond --count would show up here
     value = None if args.type == 'Empty' else sub.GetLastMessage()  # Empty carries no value
     print(json.dumps({'count': sub.GetNumberOfMessages(), 'rejected': sub.GetNumberOfRejectedMessages(),
@@ -193,7 +206,7 @@ def vtk_sample(short: str):
                 m.SetElement(i, j, v)
         return m
     pose = matrix([[0, -1, 0, 100], [1, 0, 0, -250], [0, 0, 1, 1500], [0, 0, 0, 1]])
-    if short in ('PoseStamped', 'TransformStamped'):
+    if short in ('PoseStamped', 'TransformStamped', 'Pose', 'Transform'):
         return pose
     if short == 'PoseArray':
         collection = vtk.vtkTransformCollection()
@@ -202,7 +215,9 @@ def vtk_sample(short: str):
             t.SetMatrix(m)
             collection.AddItem(t)
         return collection
-    if short == 'WrenchStamped':
+    if short == 'Vector3':
+        return vtk_array(vtk.vtkDoubleArray, (0.5, -1.5, 2.25))
+    if short in ('WrenchStamped', 'Wrench'):
         return vtk_array(vtk.vtkDoubleArray, (1.0, -2.0, 9.81, 0.1, 0.0, -0.05))
     if short == 'DoubleArray':
         return vtk_array(vtk.vtkDoubleArray, (0.5, -1.25, 1e-9, 12345.678))
@@ -381,6 +396,8 @@ def main() -> int:
     subscriber.add_argument('--count', type=int, default=1)
     subscriber.add_argument('--linger', type=float, default=0.0)
     subscriber.add_argument('--qos', default='', help='a QoS profile name (default: the default profile)')
+    subscriber.add_argument('--status-every', type=float, default=0.0,
+                            help='print the link status (node and subscriber) every this many seconds')
     publisher = sub.add_parser('pub')
     publisher.add_argument('type')
     publisher.add_argument('topic')

@@ -9,13 +9,14 @@ from pathlib import Path
 
 def bad_then_good(ros, short: str, topic: str, ros_type: str, bad: dict, good: dict, seconds: str = '20'):
     """Our subscriber gets `bad` (5 times), then `good`; returns our last JSON line."""
-    ours = ros.scene('--seconds', seconds, 'sub', short, topic, '--count', '1000000')
+    # 6 = the 5 hostile ones (delivered and counted, refused on conversion) + 1 valid one.
+    ours = ros.scene('--seconds', seconds, 'sub', short, topic, '--count', '6')
     ros.wait_ready(ours)
     hostile = ros.peer('pub', topic, ros_type, json.dumps(bad), '--count', '5', '--rate', '10')
     assert ros.finish(hostile)[0] == 0
     valid = ros.peer('pub', topic, ros_type, json.dumps(good), '--count', '40', '--rate', '10')
     code, out, err = ros.finish(ours, timeout=float(seconds) + 20)
-    ros.finish(valid)
+    ros.stop(valid)
     assert code == 0, err
     return json.loads(out.splitlines()[-1]), err
 
@@ -39,7 +40,7 @@ def test_multi_array_error_names_the_layout(ros):
     ros.wait_ready(ours)
     hostile = ros.peer('pub', '/hostile/table', 'std_msgs/msg/Int64MultiArray', json.dumps(bad), '--count', '30')
     code, out, err = ros.finish(ours)
-    ros.finish(hostile)
+    ros.stop(hostile)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['value'] is None or result['value'] == {}, result
@@ -53,7 +54,7 @@ def test_invalid_utf8_arrives_as_str_with_replacement_characters(ros):
     ros.wait_ready(ours)
     peer = ros.peer('pub_raw', '/hostile/utf8', 'std_msgs/msg/String', '000100000400000061ff6200', '--count', '30')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['value'] == 'a\ufffdb', result
@@ -67,11 +68,11 @@ def test_pose_that_overflows_in_millimetres_is_refused_and_later_poses_arrive(ro
                                       'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
     good = {'header': header, 'pose': {'position': {'x': 0.25, 'y': 0.0, 'z': 0.0},
                                        'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}}}
-    ours = ros.scene('--seconds', '15', 'sub', 'PoseStamped', '/hostile/pose', '--count', '1000000')
+    ours = ros.scene('--seconds', '15', 'sub', 'PoseStamped', '/hostile/pose', '--count', '5')
     ros.wait_ready(ours)
     hostile = ros.peer('pub', '/hostile/pose', 'geometry_msgs/msg/PoseStamped', json.dumps(bad), '--count', '30')
     code, out, err = ros.finish(ours)
-    ros.finish(hostile)
+    ros.stop(hostile)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['value'] is None, result
@@ -102,7 +103,7 @@ def test_description_from_the_network_cannot_make_us_read_meshes_outside_the_roo
     ours = ros.scene('--seconds', '15', 'robot', 'sneaky', '--source', 'topic',
                      '--mesh-path', str(tmp_path / 'ws'), '--follow', '0.5')
     code, out, err = ros.finish(ours, timeout=40)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     loaded = json.loads(out.splitlines()[1])
     assert loaded['state'] == 'loaded', loaded
@@ -126,7 +127,7 @@ def test_empty_robot_description_says_what_arrived_and_a_later_one_loads(ros):
     valid = ros.peer('pub', '/robot_description', 'std_msgs/msg/String', json.dumps({'data': urdf}),
                      '--qos', 'latched', '--count', '1', '--linger', '10')
     code, out, err = ros.finish(ours, timeout=40)
-    ros.finish(valid)
+    ros.stop(valid)
     assert code == 0, err
     last = json.loads(out.splitlines()[-1])
     assert last['state'] == 'loaded' and last['loads'] == 1, last

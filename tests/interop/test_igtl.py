@@ -16,8 +16,10 @@ import numpy as np
 import pyigtl
 import pytest
 
-from conftest import HERE, REPO, VENV_PYTHON, tf2_msgs_env
-from igtl_peer import RawClient, frame, free_port, polydata_points, start_ours, v2_metadata
+from conftest import BUILD, HERE, REPO, VENV_PYTHON, tf2_msgs_env
+from igtl_peer import (RawClient, frame, free_port, polydata_points, start_ours, tdata_body, tdata_elements,
+                       v2_metadata)
+from samples import SAMPLES
 
 ARM = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
 QUARTER_TURN_Z = [0, 0, math.sqrt(0.5), math.sqrt(0.5)]
@@ -338,3 +340,100 @@ def test_pyigtl_string_and_image_come_out_on_ros_topics(ros):
     # OpenIGTLink's j runs up like VTK's; ROS row 0 is the top: rows come out reversed.
     assert np.array_equal(np.array(image['data'], dtype=np.uint8).reshape(3, 4), pixels[0][::-1]), image['data']
     stop(ros, ours)
+
+
+def test_a_connector_restored_from_a_saved_scene_serves_its_port_lookups_and_mappings(ros, tmp_path):
+    """`ros2vtk igtl ... --save-scene F` then, in a new process, `ros2vtk igtl --scene F`: the
+    restored connector listens on the saved port, sends the saved tf lookup to pyigtl and routes
+    the saved device mapping to tf, read by rclpy."""
+    port = free_port()
+    saved = tmp_path / 'slicer_link.xml'
+    first = start_ours(ros, port, '--lookup', 'world:needle', '--map', 'Target=tf:world:target',
+                       '--save-scene', str(saved), '--seconds', '0.2')
+    code, out, err = ros.finish(first)
+    assert code == 0 and saved.exists(), out + err
+    peer = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.0, 0.0, 0.125], 'q': [0, 0, 0, 1]}),
+                       '--seconds', '25')
+    tf_echo = ros.tf_peer('tf_echo', '--count', '1', '--timeout', '25', '--child', 'target')
+    wait_ready(tf_echo)
+    ours = ros.start(['/usr/bin/python3', '-m', 'ros2vtk', 'igtl', '--scene', str(saved), '--seconds', '20'],
+                     dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    wait_ready(ours)
+    client = pyigtl.OpenIGTLinkClient('127.0.0.1', port)  # the port came from the file only
+    target = np.eye(4)
+    target[:3, 3] = [0.0, 40.0, 0.0]
+    try:
+        message = wait_transform(client, 'needle', 15, lambda m: abs(m[2, 3] - 125.0) < 1e-3)
+        end = time.monotonic() + 10
+        while time.monotonic() < end and tf_echo.poll() is None:
+            client.send_message(pyigtl.TransformMessage(target, device_name='Target'), wait=True)
+            time.sleep(0.2)
+    finally:
+        client.stop()
+    stop(ros, ours)
+    assert message is not None and np.allclose(message.matrix[:3, 3], [0.0, 0.0, 125.0], atol=1e-3)
+    code, out, err = ros.finish(tf_echo)
+    assert code == 0, err
+    t = [t for t in json.loads(out.splitlines()[-1])['transforms'] if t['child_frame_id'] == 'target'][0]
+    assert t['header']['frame_id'] == 'world'
+    assert [round(v, 9) for v in t['transform']['translation'].values()] == [0.0, 0.04, 0.0]
+
+
+def test_rclpy_pose_array_arrives_as_tdata_one_6d_element_per_pose_in_millimetres(ros):
+    """PoseArray → TDATA (Slicer makes one linear transform per element); the body is read with
+    the test's own decoder (pyigtl drops TDATA), from tdata.md's layout."""
+    port = free_port()
+    sample = SAMPLES['geometry_msgs/msg/PoseArray']
+    pub = ros.peer('pub', '/targets', 'geometry_msgs/msg/PoseArray', json.dumps(sample),
+                   '--count', '60', '--rate', '5', '--wait', '15')
+    ours = start_ours(ros, port, '--poses', '/targets', '--seconds', '20')
+    wait_ready(ours)
+    client = RawClient(port)
+    try:
+        end = time.monotonic() + 15
+        tdata = None
+        while tdata is None and time.monotonic() < end:
+            tdata = next((m for m in client.read(0.5) if m[0] == 'TDATA'), None)
+    finally:
+        client.close()
+    stop(ros, ours)
+    pub.kill()
+    assert tdata is not None, 'no TDATA arrived'
+    assert tdata[1] == 'targets'
+    elements = tdata_elements(tdata[3])
+    assert [(name, kind) for name, kind, _ in elements] == [('targets_0', 2), ('targets_1', 2)]
+    first, second = (np.array(m) for _, _, m in elements)
+    assert np.allclose(first[:3, 3], [100.0, -250.0, 1500.0], atol=1e-3), first  # m -> mm
+    assert np.allclose(first[:3, :3], [[0, -1, 0], [1, 0, 0], [0, 0, 1]], atol=1e-6), first
+    assert np.allclose(second[:3, 3], [-200.0, 0.0, 300.0], atol=1e-3), second
+    assert np.allclose(second[:3, :3], [[1, 0, 0], [0, -1, 0], [0, 0, -1]], atol=1e-6), second
+
+
+def test_tdata_from_slicer_becomes_transform_nodes_and_a_pose_array_on_ros_in_metres(ros):
+    port = free_port()
+    echo = ros.peer('echo', '/slicer/targets', 'geometry_msgs/msg/PoseArray', '--count', '1', '--timeout', '20')
+    wait_ready(echo)
+    ours = start_ours(ros, port, '--map', 'Targets=topic:/slicer/targets:PoseArray', '--seconds', '15')
+    wait_ready(ours)
+    turn = [[0, -1, 0, 10.0], [1, 0, 0, 20.0], [0, 0, 1, 30.0], [0, 0, 0, 1]]
+    shift = [[1, 0, 0, -5.0], [0, 1, 0, 0.0], [0, 0, 1, 250.0], [0, 0, 0, 1]]
+    body = tdata_body([('Tip', turn), ('Entry', shift)])
+    client = RawClient(port)
+    try:
+        end = time.monotonic() + 12
+        while time.monotonic() < end and echo.poll() is None:
+            client.sock.sendall(frame('TDATA', 'Targets', body))
+            time.sleep(0.2)
+    finally:
+        client.close()
+    code, out, err = ros.finish(echo)
+    assert code == 0, err
+    poses = json.loads(out.splitlines()[-1])['poses']
+    got = [[p['position'][k] for k in 'xyz'] for p in poses]
+    assert np.allclose(got, [[0.01, 0.02, 0.03], [-0.005, 0.0, 0.25]], atol=1e-7), got
+    q = poses[0]['orientation']
+    assert np.allclose([q['x'], q['y'], q['z'], q['w']], [0, 0, math.sqrt(0.5), math.sqrt(0.5)], atol=1e-6)
+    code, out, err = stop(ros, ours)
+    summary = json.loads(out.splitlines()[-1])
+    assert summary['received_nodes'].get('Tip') == 'vtkROS2TransformNode', summary
+    assert summary['received_nodes'].get('Entry') == 'vtkROS2TransformNode', summary

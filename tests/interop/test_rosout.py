@@ -13,8 +13,8 @@ def test_rclpy_rosout_subscriber_receives_our_warning_for_rejected_samples(ros):
     ros.wait_ready(ours)
     bad = ros.peer('pub_raw', '/bad/string', 'std_msgs/msg/String', '00010000ffffffff41', '--count', '3')
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(bad)
-    ros.finish(ours)
+    ros.stop(bad)
+    ros.stop(ours)
     assert code == 0, err
     log = json.loads(out.splitlines()[-1])
     assert log['level'] == 30, log  # WARN
@@ -32,7 +32,7 @@ def test_log_level_error_keeps_warnings_off_rosout(ros):
     ros.wait_ready(ours)
     bad = ros.peer('pub_raw', '/bad/string', 'std_msgs/msg/String', '00010000ffffffff41', '--count', '3')
     code, out, err = ros.finish(echo, timeout=30)
-    ros.finish(bad)
+    ros.stop(bad)
     code_ours, out_ours, err_ours = ros.finish(ours)
     assert code == 3, f'a warning reached /rosout although the level is error: {out}'
     result = json.loads(out_ours.splitlines()[-1])

@@ -21,7 +21,7 @@ def test_malformed_payloads_are_rejected_counted_and_we_keep_running(ros):
     good = ros.peer('pub', '/bad/string', 'std_msgs/msg/String', json.dumps({'data': 'still alive'}),
                     '--count', '30', '--rate', '10')
     code, out, err = ros.finish(ours)
-    ros.finish(good)
+    ros.stop(good)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['value'] == 'still alive'
@@ -36,7 +36,7 @@ def test_image_whose_step_does_not_fit_its_data_gives_no_image_and_a_reason(ros)
     ros.wait_ready(ours)
     peer = ros.peer('pub', '/bad/image', 'sensor_msgs/msg/Image', json.dumps(image), '--count', '30')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] >= 1 and result['value'] is None
@@ -50,7 +50,7 @@ def test_nan_pose_is_refused_with_a_reason(ros):
     ros.wait_ready(ours)
     peer = ros.peer('pub', '/bad/pose', 'geometry_msgs/msg/PoseStamped', json.dumps(pose), '--count', '30')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] >= 1 and result['value'] is None
@@ -77,6 +77,6 @@ def test_after_forty_reopened_scenes_a_peer_numbered_above_31_still_finds_our_no
                       '--count', '40', '--rate', '10',
                       env=dict(ros.env, FASTDDS_DEFAULT_PROFILES_FILE=str(profile)))
     code, out, err = ros.finish(ours)
-    ros.finish(talker)
+    ros.stop(talker)
     assert code == 0, err
     assert json.loads(out.splitlines()[-1])['value'] == 'found you'

@@ -17,7 +17,7 @@ def test_echo_prints_yaml_and_the_vtk_value_in_mm(ros):
     peer = ros.peer('pub', '/cli/pose', 'geometry_msgs/msg/PoseStamped',
                     json.dumps(SAMPLES['geometry_msgs/msg/PoseStamped']), '--count', '50', '--rate', '10')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     assert 'frame_id: ct_scanner' in out
     assert '# as vtkMatrix4x4 translation (mm): 100, -250, 1500' in out
@@ -30,7 +30,7 @@ def test_nodes_and_topics_list_the_rclpy_node(ros):
     topics = cli(ros, '--wait', '3', 'topics')
     _, nodes_out, _ = ros.finish(nodes)
     _, topics_out, _ = ros.finish(topics)
-    ros.finish(peer)
+    ros.stop(peer)
     assert '/cli_peer' in nodes_out.split()
     assert '/cli/chatter std_msgs/msg/String' in topics_out.splitlines()
 
@@ -39,7 +39,8 @@ def test_nodes_and_topics_list_the_rclpy_node(ros):
 # (written out by hand, not read from the registry under test).
 SHORT_NAMES = ['Bool', 'DoubleArray', 'Double', 'DoubleTable', 'Empty', 'Image', 'IntArray', 'Int',
                'IntTable', 'JointState', 'PointCloud2', 'PointCloud', 'PoseArray', 'PoseStamped',
-               'String', 'TransformStamped', 'UInt8Image', 'WrenchStamped']
+               'String', 'TransformStamped', 'UInt8Image', 'WrenchStamped',
+               'Pose', 'Transform', 'Wrench', 'Vector3']
 
 
 def test_types_lists_a_publisher_and_a_subscriber_class_per_short_name(ros):

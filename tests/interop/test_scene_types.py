@@ -60,9 +60,18 @@ INCOMING = [
     # unlabelled dim[1]: columns "<j>"; strides 4 and 2 over a 2 x 2 grid
     ('DoubleTable', 'std_msgs/msg/Float64MultiArray', {'0': [0.5, 1e-9], '1': [-1.25, 12345.678]}),
     ('Empty', 'std_msgs/msg/Empty', None),
+    # the unstamped forms (SlicerROS2's Pose and Wrench examples)
+    ('Pose', 'geometry_msgs/msg/Pose', rigid(ROT_Z90, [100.0, -250.0, 1500.0])),
+    ('Transform', 'geometry_msgs/msg/Transform', rigid([[1, 0, 0], [0, 1, 0], [0, 0, 1]], [10.0, 20.0, -300.0])),
+    ('Wrench', 'geometry_msgs/msg/Wrench', [1.0, -2.0, 9.81, 0.1, 0.0, -0.05]),
+    ('Vector3', 'geometry_msgs/msg/Vector3', [0.5, -1.5, 2.25]),  # any unit: never scaled
 ]
 # messages sent instead of SAMPLES[ros_type]
 INCOMING_MESSAGES = {
+    'Pose': SAMPLES['geometry_msgs/msg/PoseStamped']['pose'],
+    'Transform': SAMPLES['geometry_msgs/msg/TransformStamped']['transform'],
+    'Wrench': SAMPLES['geometry_msgs/msg/WrenchStamped']['wrench'],
+    'Vector3': {'x': 0.5, 'y': -1.5, 'z': 2.25},
     'DoubleTable': {'layout': {'dim': [{'label': 'rows', 'size': 2, 'stride': 4},
                                        {'label': '', 'size': 2, 'stride': 2}], 'data_offset': 0},
                     'data': [0.5, -1.25, 1e-9, 12345.678]},
@@ -75,10 +84,10 @@ def test_rclpy_publisher_to_our_vtk_subscriber(ros, short, ros_type, expected):
     topic = '/scene_in/' + short.lower()
     ours = ros.scene('--seconds', '20', 'sub', short, topic, '--count', str(SENT), '--linger', '1')
     ros.wait_ready(ours)
-    message = INCOMING_MESSAGES.get(short, SAMPLES[ros_type])
+    message = INCOMING_MESSAGES[short] if short in INCOMING_MESSAGES else SAMPLES[ros_type]
     peer = ros.peer('pub', topic, ros_type, json.dumps(message), '--count', str(SENT), '--rate', '20')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] == SENT and result['rejected'] == 0, result
@@ -93,7 +102,7 @@ def test_joint_state_becomes_a_table_without_scaling(ros):
     peer = ros.peer('pub', '/scene_in/joints', 'sensor_msgs/msg/JointState',
                     json.dumps(SAMPLES['sensor_msgs/msg/JointState']), '--count', '40', '--rate', '10')
     code, out, err = ros.finish(ours)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     table = json.loads(out.splitlines()[-1])['value']
     names = next(v for v in table.values() if v and isinstance(v[0], str))
@@ -145,6 +154,12 @@ OUTGOING = [
      {'header': {'frame_id': 'ct_scanner'}, 'name': ['shoulder', 'elbow'], 'position': [0.1, -0.5],
       'velocity': [0.0, 0.5], 'effort': []}),
     ('Empty', 'std_msgs/msg/Empty', {}),
+    ('Pose', 'geometry_msgs/msg/Pose', POSE_WIRE),
+    ('Transform', 'geometry_msgs/msg/Transform',
+     {'translation': {'x': 0.1, 'y': -0.25, 'z': 1.5}, 'rotation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S}}),
+    ('Wrench', 'geometry_msgs/msg/Wrench',
+     {'force': {'x': 1.0, 'y': -2.0, 'z': 9.81}, 'torque': {'x': 0.1, 'y': 0.0, 'z': -0.05}}),
+    ('Vector3', 'geometry_msgs/msg/Vector3', {'x': 0.5, 'y': -1.5, 'z': 2.25}),
 ]
 
 
@@ -155,7 +170,7 @@ def test_our_vtk_publisher_to_rclpy_subscriber(ros, short, ros_type, expected):
     ros.wait_ready(echo)
     ours = ros.scene('--seconds', '10', 'pub', short, topic)
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 0, err
     message = json.loads(out.splitlines()[-1])
     close(expected, message)
@@ -168,7 +183,7 @@ def test_pose_array_rotations_and_metres(ros):
     ros.wait_ready(echo)
     ours = ros.scene('--seconds', '8', 'pub', 'PoseArray', '/scene_out/poses')
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 0, err
     poses = json.loads(out.splitlines()[-1])['poses']
     close(POSE_WIRE, poses[0])

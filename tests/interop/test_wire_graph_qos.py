@@ -13,7 +13,7 @@ def test_our_node_and_topics_appear_in_rclpy_graph(ros):
                     '--wait-matched', '0')
     graph = ros.peer('graph', '--wait', '15', '--expect-node', 'ros2vtk_graph_probe')
     code, out, err = ros.finish(graph)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 0, err
     result = json.loads(out)
     assert ['ros2vtk_graph_probe', '/'] in result['nodes']
@@ -52,7 +52,7 @@ def test_other_domain_sees_nothing(ros):
     graph = ros.peer('graph', '--wait', '3', env=other)
     code, out, _ = ros.finish(echo)
     _, graph_out, _ = ros.finish(graph)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 3 and out.strip() == '', 'a node on another ROS_DOMAIN_ID received our message'
     assert 'isolated_node' not in graph_out
 
@@ -65,7 +65,7 @@ def test_transient_local_reaches_late_joiner(ros):
     echo = ros.peer('echo', '/latched', 'std_msgs/msg/String', '--count', '1', '--timeout', '10',
                     '--qos', 'transient_local')
     code, out, err = ros.finish(echo)
-    ros.finish(ours)
+    ros.stop(ours)
     assert code == 0, err
     assert json.loads(out.splitlines()[-1]) == {'data': 'robot description'}
 
@@ -76,7 +76,7 @@ def test_best_effort_sensor_publisher_reaches_sensor_subscriber(ros):
     peer = ros.peer('pub', '/sensor', 'std_msgs/msg/Float64', json.dumps({'data': 2.5}),
                     '--count', '60', '--rate', '20', '--qos', 'sensor_data')
     code, out, err = ros.finish(echo)
-    ros.finish(peer)
+    ros.stop(peer)
     assert code == 0, err
     assert out.count('data: 2.5') == 2
 
@@ -91,7 +91,7 @@ def test_thousand_messages_at_1khz_none_lost(ros):
                     '--count', '1000', '--rate', '1000', '--qos', 'keep_all',
                     '--sequence-field', 'data', '--linger', '3')
     code, out, err = ros.finish(echo, timeout=60)
-    ros.finish(peer, timeout=60)
+    ros.stop(peer)
     assert code == 0, err
     values = [int(line.split(':')[1]) for line in out.splitlines() if line.startswith('data:')]
     assert values == list(range(1000))

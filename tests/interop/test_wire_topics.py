@@ -45,7 +45,7 @@ def test_rclpy_publisher_reaches_our_subscriber(ros, ros_type):
     publisher = ros.peer('pub', topic, ros_type, json.dumps(SAMPLES[ros_type]),
                          '--count', '40', '--rate', '20', '--wait-matched', '1')
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(publisher)
+    ros.stop(publisher)
     assert code == 0, f'our echo failed ({code}): {err}'
     documents = [d for d in out.split('---\n') if d.strip()]
     assert len(documents) == 3
@@ -61,7 +61,7 @@ def test_our_publisher_reaches_rclpy_subscriber(ros, ros_type):
     publisher = ros.tool('pub', topic, ros_type, json.dumps(SAMPLES[ros_type]),
                          '--count', '40', '--rate', '20', '--wait-matched', '1', '--wait', '15')
     code, out, err = ros.finish(echo, timeout=40)
-    ros.finish(publisher)
+    ros.stop(publisher)
     assert code == 0, f'rclpy echo got too few messages ({code}): {err}'
     lines = [json.loads(line) for line in out.splitlines() if line.strip()]
     assert len(lines) == 3

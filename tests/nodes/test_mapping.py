@@ -254,3 +254,48 @@ def test_cli_generates_the_classes_of_a_good_rule(tmp_path):
     assert (out / "vtk" / "vtkROS2PublisherPoseStampedNode.h").is_file()
     assert (out / "vtk" / "vtkROS2SubscriberPoseStampedNode.cxx").is_file()
     assert "ros2vtk_register_t_nodes" in (out / "src" / "tRegistration.cxx").read_text()
+
+
+# ---------------------------------------------------------------- one place per kind
+
+def test_every_kind_has_its_module_and_its_template_and_nothing_else():
+    """Kinds are found by scanning generator/ros2vtk_gen/kinds/ (one module each); an object
+    kind's converter bodies are templates/convert/kinds/<kind>.j2. A template without a kind,
+    or an object kind without a template, is a half-added kind."""
+    from ros2vtk_gen.kinds import KINDS
+    from ros2vtk_gen.kinds.base import OBJECT
+    templates_dir = os.path.join(REPO, "templates", "convert", "kinds")
+    templates = {name[:-len(".j2")] for name in os.listdir(templates_dir)
+                 if name.endswith(".j2") and not name.startswith("_")}
+    object_kinds = {name for name, kind in KINDS.items() if kind.signature == OBJECT}
+    assert object_kinds == templates
+    assert {"value", "empty"} <= set(KINDS) - object_kinds
+    for name, kind in KINDS.items():
+        assert kind.name == name
+        assert kind.vtk_types, name
+
+
+def test_a_rule_of_each_kind_reports_the_kind_hooks_errors(tmp_path, table):
+    """The hooks moved into the kind modules still speak: value's type check, multiarray_array's
+    class check, points' element check and hint, pointcloud2's `.xyz` length."""
+    cases = [
+        ('short_name = "V"\nros_type = "std_msgs/msg/Float64"\nvtk_type = "bool"\n'
+         'kind = "value"\nfields = { value = "data" }\n', "cannot be held in 'bool'"),
+        ('short_name = "A"\nros_type = "std_msgs/msg/Float64MultiArray"\n'
+         'vtk_type = "vtkTypeInt64Array"\nkind = "multiarray_array"\n'
+         'fields = { layout = "layout", data = "data" }\n', "data goes into vtkDoubleArray"),
+        ('short_name = "P"\nros_type = "geometry_msgs/msg/PoseStamped"\nvtk_type = "vtkPoints"\n'
+         'kind = "points"\nfields = { sequence = "pose.position" }\n',
+         'use kind "point" with role point'),
+        ('short_name = "C"\nros_type = "sensor_msgs/msg/PointCloud2"\nvtk_type = "vtkPolyData"\n'
+         'kind = "pointcloud2"\nfields = { height = "height", width = "width", '
+         'fields = "fields", is_bigendian = "is_bigendian", point_step = "point_step", '
+         'row_step = "row_step", data = "data", is_dense = "is_dense" }\n'
+         'lengths = ["height.xyz"]\n', "is not a length of kind pointcloud2"),
+    ]
+    for number, (rule, wanted) in enumerate(cases):
+        path = tmp_path / f"rule{number}.toml"
+        path.write_text("[[mapping]]\n" + rule)
+        with pytest.raises(MappingError) as caught:
+            load_rules([str(path)], table)
+        assert wanted in str(caught.value), str(caught.value)

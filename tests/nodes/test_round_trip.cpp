@@ -1,6 +1,7 @@
 // In-process self-test of the generated node plumbing: a generated publisher on one ROS node,
 // the generated subscriber on another (two DDS participants of this process), Spin, and the
 // converted values on the other side. Real-peer interop lives in tests/interop.
+#include "ros2vtk_test/SceneTestSupport.hpp"
 #include "vtkROS2Logic.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2PublisherDoubleTableNode.h"
@@ -33,21 +34,8 @@
 namespace
 {
 using Clock = std::chrono::steady_clock;
+using ros2vtk_test::SpinUntil;
 
-bool SpinUntil(vtkROS2Logic* logic, const std::function<bool()>& done, double seconds = 10.0)
-{
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end)
-  {
-    logic->Spin();
-    if (done())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return done();
-}
 
 class NodesRoundTrip : public ::testing::Test
 {

@@ -116,3 +116,44 @@ def test_bad_publish_returns_zero_with_a_reason(logic):
         pub.GlobalWarningDisplayOn()
     assert pub.GetLastConversionError() != ''
     assert pub.GetNumberOfMessagesSent() == 0
+
+
+def test_generic_publish_object_and_value_reach_the_typed_publish_or_say_why_not(logic):
+    """PublishObject / PublishValue (the path of callers that hold a publisher of any class, as
+    the OpenIGTLink connector's device mappings): the node's own VTK type is published, anything
+    else is refused with a reason naming both types, and nothing is sent for it."""
+    from vtkmodules.vtkCommonCore import vtkPoints, vtkVariant
+    node = logic.GetDefaultROS2Node()
+    pose_pub = node.CreateAndAddPublisherNode('PoseStamped', '/py_generic_pose')
+    pose_sub = node.CreateAndAddSubscriberNode('PoseStamped', '/py_generic_pose')
+    text_pub = node.CreateAndAddPublisherNode('String', '/py_generic_text')
+    text_sub = node.CreateAndAddSubscriberNode('String', '/py_generic_text')
+    int_pub = node.CreateAndAddPublisherNode('Int', '/py_generic_int')
+    int_sub = node.CreateAndAddSubscriberNode('Int', '/py_generic_int')
+    connect(logic, pose_pub, pose_sub)
+    connect(logic, text_pub, text_sub)
+    connect(logic, int_pub, int_sub)
+    matrix = vtkMatrix4x4()
+    matrix.SetElement(1, 3, 42.0)
+    assert pose_pub.PublishObject(matrix) == 1
+    assert text_pub.PublishValue(vtkVariant('from Slicer')) == 1
+    assert int_pub.PublishValue(vtkVariant(-7)) == 1
+    pose_pub.GlobalWarningDisplayOff()
+    try:
+        assert pose_pub.PublishObject(vtkPoints()) == 0
+        assert 'vtkROS2PublisherPoseStampedNode publishes vtkMatrix4x4, not vtkPoints' in pose_pub.GetLastPublishError()
+        assert pose_pub.PublishObject(None) == 0
+        assert pose_pub.PublishValue(vtkVariant(1.0)) == 0
+        assert text_pub.PublishValue(vtkVariant(3.5)) == 0
+        assert 'vtkROS2PublisherStringNode publishes' in text_pub.GetLastPublishError()
+        assert int_pub.PublishValue(vtkVariant('12')) == 0  # a string is not a number here
+        assert text_pub.PublishObject(matrix) == 0
+    finally:
+        pose_pub.GlobalWarningDisplayOn()
+    assert spin_until(logic, lambda: pose_sub.GetNumberOfMessages() >= 1 and text_sub.GetNumberOfMessages() >= 1
+                      and int_sub.GetNumberOfMessages() >= 1)
+    assert pose_sub.GetLastMessage().GetElement(1, 3) == 42.0
+    assert text_sub.GetLastMessage() == 'from Slicer'
+    assert int_sub.GetLastMessage() == -7
+    assert (pose_pub.GetNumberOfMessagesSent(), text_pub.GetNumberOfMessagesSent(), int_pub.GetNumberOfMessagesSent()) \
+        == (1, 1, 1)

@@ -1,4 +1,5 @@
 // Node classes by the three name forms, ROS type names, generic fallback, unknown types.
+#include "ros2vtk_test/SceneTestSupport.hpp"
 #include "NodeClassRegistry.hpp"
 #include "TestStringNodes.h"
 #include "vtkROS2Logic.h"
@@ -23,18 +24,7 @@ using ros2vtk::scene::NodeDirection;
 
 namespace
 {
-// Captures error text instead of printing it.
-class CapturingOutputWindow : public vtkOutputWindow
-{
-public:
-  static CapturingOutputWindow* New();
-  vtkTypeMacro(CapturingOutputWindow, vtkOutputWindow);
-  void DisplayErrorText(const char* text) override { this->Errors += text; }
-  void DisplayWarningText(const char* text) override { this->Warnings += text; }
-  std::string Errors;
-  std::string Warnings;
-};
-vtkStandardNewMacro(CapturingOutputWindow);
+using ros2vtk_test::CapturingOutputWindow;
 
 class NodeClassRegistryTest : public ::testing::Test
 {

@@ -1,6 +1,7 @@
 // Service nodes of two ROS nodes in one process: a client node calls a server node (sync and
 // async, events on the spinning thread), malformed requests from a hostile peer are rejected
 // with a reason while the server keeps answering, and bad use gets a clear error.
+#include "ros2vtk_test/SceneTestSupport.hpp"
 #include "vtkROS2Logic.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
@@ -29,33 +30,9 @@
 namespace
 {
 using Clock = std::chrono::steady_clock;
+using ros2vtk_test::SpinUntil;
 
-class ServiceOutputWindow : public vtkOutputWindow
-{
-public:
-  static ServiceOutputWindow* New();
-  vtkTypeMacro(ServiceOutputWindow, vtkOutputWindow);
-  void DisplayErrorText(const char* text) override { this->Errors += text; }
-  void DisplayWarningText(const char* text) override { this->Warnings += text; }
-  std::string Errors;
-  std::string Warnings;
-};
-vtkStandardNewMacro(ServiceOutputWindow);
 
-bool SpinUntil(vtkROS2Logic* logic, const std::function<bool()>& done, double seconds = 10.0)
-{
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end)
-  {
-    logic->Spin();
-    if (done())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return done();
-}
 
 class ServiceTest : public ::testing::Test
 {
@@ -88,7 +65,7 @@ protected:
     return server;
   }
 
-  vtkNew<ServiceOutputWindow> Output;
+  vtkNew<ros2vtk_test::CapturingOutputWindow> Output;
   vtkNew<vtkROS2Logic> Logic;
   vtkSmartPointer<vtkROS2NodeNode> Other;
   vtkROS2NodeNode* Node = nullptr;

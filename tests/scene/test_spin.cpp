@@ -1,6 +1,7 @@
 // Spin semantics with two ROS nodes of one process talking to each other: events fire on the
 // spinning thread only, once per spin, with the count; malformed samples are counted and
 // reported rate-limited; QoS and save/restore act on the real DDS endpoints.
+#include "ros2vtk_test/SceneTestSupport.hpp"
 #include "TestStringNodes.h"
 #include "vtkROS2Logic.h"
 #include "vtkROS2NodeNode.h"
@@ -33,39 +34,9 @@
 namespace
 {
 using Clock = std::chrono::steady_clock;
+using ros2vtk_test::SpinUntil;
 
-class CountingOutputWindow : public vtkOutputWindow
-{
-public:
-  static CountingOutputWindow* New();
-  vtkTypeMacro(CountingOutputWindow, vtkOutputWindow);
-  void DisplayErrorText(const char* text) override { this->Errors += text; }
-  void DisplayWarningText(const char* text) override
-  {
-    ++this->NumberOfWarnings;
-    this->Warnings += text;
-  }
-  int NumberOfWarnings = 0;
-  std::string Errors;
-  std::string Warnings;
-};
-vtkStandardNewMacro(CountingOutputWindow);
 
-// Spins `logic` until `done` or the timeout; true when done.
-bool SpinUntil(vtkROS2Logic* logic, const std::function<bool()>& done, double seconds = 10.0)
-{
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
-  while (Clock::now() < end)
-  {
-    logic->Spin();
-    if (done())
-    {
-      return true;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return done();
-}
 
 // Every ModifiedEvent of one subscriber: call data count and the thread it fired on.
 struct ModifiedLog
@@ -120,7 +91,7 @@ protected:
     })) << "publisher and subscriber never matched";
   }
 
-  vtkNew<CountingOutputWindow> Output;
+  vtkNew<ros2vtk_test::CapturingOutputWindow> Output;
   vtkNew<vtkROS2Logic> Logic;
   vtkSmartPointer<vtkROS2NodeNode> Talker;
   vtkROS2NodeNode* Listener = nullptr;
@@ -390,4 +361,46 @@ TEST_F(SpinTest, GenericNodesCarryAnyRegisteredTypeAsYAML)
   EXPECT_FALSE(pub->PublishYAML("{x: [not a number}"));
   EXPECT_EQ(pub->GetNumberOfCalls(), 2);
   EXPECT_EQ(pub->GetNumberOfMessagesSent(), 1);
+}
+
+TEST_F(SpinTest, GenericNodeTypeIsFixedWhileAddedAndUnknownTypesAreNamed)
+{
+  for (const bool publisher : { true, false })
+  {
+    vtkSmartPointer<vtkROS2TopicNode> node;
+    if (publisher)
+    {
+      node = vtkSmartPointer<vtkROS2PublisherGenericNode>::New();
+    }
+    else
+    {
+      node = vtkSmartPointer<vtkROS2SubscriberGenericNode>::New();
+    }
+    auto setType = [&](const char* type) {
+      return publisher ? vtkROS2PublisherGenericNode::SafeDownCast(node)->SetROSType(type)
+                       : vtkROS2SubscriberGenericNode::SafeDownCast(node)->SetROSType(type);
+    };
+    const vtkMTimeType before = node->GetMTime();
+    ASSERT_TRUE(setType("geometry_msgs/Point"));
+    EXPECT_GT(node->GetMTime(), before);
+    const vtkMTimeType typed = node->GetMTime();
+    ASSERT_TRUE(setType("geometry_msgs/msg/Point")); // the same type: not a modification
+    EXPECT_EQ(node->GetMTime(), typed);
+
+    this->Output->Errors.clear();
+    EXPECT_FALSE(setType("no_pkg/msg/Nothing"));
+    EXPECT_NE(this->Output->Errors.find("unknown ROS message type 'no_pkg/msg/Nothing'"),
+      std::string::npos) << this->Output->Errors;
+    EXPECT_NE(this->Output->Errors.find("geometry_msgs/msg/Point"), std::string::npos)
+      << "the error lists the registered types";
+
+    this->Logic->GetScene()->AddNode(node);
+    ASSERT_TRUE(node->AddToROS2Node(
+      this->Talker->GetID(), publisher ? "/generic_fixed_pub" : "/generic_fixed_sub"))
+      << this->Output->Errors;
+    this->Output->Errors.clear();
+    EXPECT_FALSE(setType("std_msgs/msg/String"));
+    EXPECT_NE(this->Output->Errors.find("cannot change the type while added to a ROS node"),
+      std::string::npos) << this->Output->Errors;
+  }
 }

@@ -50,10 +50,53 @@ TEST(QoS, ProfilesByRosName)
   EXPECT_EQ(qos, before); // an unknown name leaves the QoS alone
 }
 
+TEST(QoS, EveryListedProfileNameParsesAndTheAliasesToo)
+{
+  // profile_names() is what error messages list: each entry must be accepted.
+  const std::string names = QoS::profile_names();
+  size_t start = 0;
+  int count = 0;
+  while (start < names.size())
+  {
+    size_t end = names.find(", ", start);
+    end = end == std::string::npos ? names.size() : end;
+    QoS qos;
+    EXPECT_TRUE(QoS::from_name(names.substr(start, end - start), qos)) << names.substr(start, end - start);
+    ++count;
+    start = end + 2;
+  }
+  EXPECT_EQ(count, 11);
+  for (const char* alias : { "system_default", "best_effort", "services", "latched" })
+  {
+    EXPECT_NE(names.find(alias), std::string::npos) << alias;
+  }
+}
+
+TEST(QoS, PolicyNamesBothWays)
+{
+  QoS::Reliability reliability = QoS::Reliability::Reliable;
+  ASSERT_TRUE(QoS::parse("best_effort", reliability));
+  EXPECT_EQ(reliability, QoS::Reliability::BestEffort);
+  EXPECT_STREQ(QoS::name_of(reliability), "best_effort");
+  QoS::Durability durability = QoS::Durability::Volatile;
+  ASSERT_TRUE(QoS::parse("transient_local", durability));
+  EXPECT_STREQ(QoS::name_of(durability), "transient_local");
+  QoS::History history = QoS::History::KeepLast;
+  ASSERT_TRUE(QoS::parse("keep_all", history));
+  EXPECT_STREQ(QoS::name_of(history), "keep_all");
+  EXPECT_FALSE(QoS::parse("Reliable", reliability)); // ROS spells them in lower case
+  EXPECT_FALSE(QoS::parse(static_cast<const char*>(nullptr), history));
+  EXPECT_EQ(reliability, QoS::Reliability::BestEffort); // unknown names leave the value alone
+  EXPECT_EQ(history, QoS::History::KeepAll);
+}
+
 TEST(QoS, TextForLogs)
 {
   EXPECT_EQ(QoS::default_profile().to_string(), "reliable, volatile, keep_last(10)");
   EXPECT_EQ(QoS::sensor_data().to_string(), "best_effort, volatile, keep_last(5)");
+  QoS all;
+  ASSERT_TRUE(QoS::from_name("keep_all", all));
+  EXPECT_EQ(all.to_string(), "reliable, volatile, keep_all");
 }
 
 } // namespace

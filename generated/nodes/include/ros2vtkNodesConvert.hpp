@@ -13,9 +13,13 @@
 
 #include "vtkType.h" // for vtkTypeInt64
 
+#include "ros2vtk/geometry_msgs/msg/pose.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose_array.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/transform.hpp"
 #include "ros2vtk/geometry_msgs/msg/transform_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/vector3.hpp"
+#include "ros2vtk/geometry_msgs/msg/wrench.hpp"
 #include "ros2vtk/geometry_msgs/msg/wrench_stamped.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
@@ -65,6 +69,30 @@ bool VTKToROS2(vtkTransformCollection* object, ::ros2vtk::geometry_msgs::msg::Po
 bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::WrenchStamped& message, vtkDoubleArray* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::WrenchStamped& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Pose: geometry_msgs/msg/Pose <-> vtkMatrix4x4 (kind rigid_transform, geometry_msgs.toml; lengths: translation).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Pose& message, vtkMatrix4x4* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::geometry_msgs::msg::Pose& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Transform: geometry_msgs/msg/Transform <-> vtkMatrix4x4 (kind rigid_transform, geometry_msgs.toml; lengths: translation).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Transform& message, vtkMatrix4x4* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::geometry_msgs::msg::Transform& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Wrench: geometry_msgs/msg/Wrench <-> vtkDoubleArray (kind vector_array, geometry_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Wrench& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Wrench& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Vector3: geometry_msgs/msg/Vector3 <-> vtkDoubleArray (kind vector_array, geometry_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Vector3& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Vector3& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image, sensor_msgs.toml).

@@ -151,6 +151,124 @@ bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::WrenchStam
 }
 
 //------------------------------------------------------------------------------
+// Pose: geometry_msgs/msg/Pose <-> vtkMatrix4x4 (kind rigid_transform)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Pose& message, vtkMatrix4x4* object,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  pose.translation = { { message.position.x, message.position.y, message.position.z } };
+  pose.rotation = { { message.orientation.x, message.orientation.y, message.orientation.z, message.orientation.w } };
+  return ::ros2vtk::convert::pose_to_matrix(pose, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::geometry_msgs::msg::Pose& message,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  if (!::ros2vtk::convert::matrix_to_pose(object, lengthScale, &pose, error))
+  {
+    return false;
+  }
+  message.position.x = pose.translation[0];
+  message.position.y = pose.translation[1];
+  message.position.z = pose.translation[2];
+  message.orientation.x = pose.rotation[0];
+  message.orientation.y = pose.rotation[1];
+  message.orientation.z = pose.rotation[2];
+  message.orientation.w = pose.rotation[3];
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Transform: geometry_msgs/msg/Transform <-> vtkMatrix4x4 (kind rigid_transform)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Transform& message, vtkMatrix4x4* object,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  pose.translation = { { message.translation.x, message.translation.y, message.translation.z } };
+  pose.rotation = { { message.rotation.x, message.rotation.y, message.rotation.z, message.rotation.w } };
+  return ::ros2vtk::convert::pose_to_matrix(pose, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::geometry_msgs::msg::Transform& message,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  if (!::ros2vtk::convert::matrix_to_pose(object, lengthScale, &pose, error))
+  {
+    return false;
+  }
+  message.translation.x = pose.translation[0];
+  message.translation.y = pose.translation[1];
+  message.translation.z = pose.translation[2];
+  message.rotation.x = pose.rotation[0];
+  message.rotation.y = pose.rotation[1];
+  message.rotation.z = pose.rotation[2];
+  message.rotation.w = pose.rotation[3];
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Wrench: geometry_msgs/msg/Wrench <-> vtkDoubleArray (kind vector_array)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Wrench& message, vtkDoubleArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const double values[6] = {
+    static_cast<double>(message.force.x),
+    static_cast<double>(message.force.y),
+    static_cast<double>(message.force.z),
+    static_cast<double>(message.torque.x),
+    static_cast<double>(message.torque.y),
+    static_cast<double>(message.torque.z),
+  };
+  return ::ros2vtk::convert::values_to_array(values, 6, object, error);
+}
+
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Wrench& message,
+  double /*lengthScale*/, std::string* error)
+{
+  double values[6] = {};
+  if (!::ros2vtk::convert::array_to_values(object, 6, values, error))
+  {
+    return false;
+  }
+  message.force.x = static_cast<double>(values[0]);
+  message.force.y = static_cast<double>(values[1]);
+  message.force.z = static_cast<double>(values[2]);
+  message.torque.x = static_cast<double>(values[3]);
+  message.torque.y = static_cast<double>(values[4]);
+  message.torque.z = static_cast<double>(values[5]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Vector3: geometry_msgs/msg/Vector3 <-> vtkDoubleArray (kind vector_array)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Vector3& message, vtkDoubleArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const double values[3] = {
+    static_cast<double>(message.x),
+    static_cast<double>(message.y),
+    static_cast<double>(message.z),
+  };
+  return ::ros2vtk::convert::values_to_array(values, 3, object, error);
+}
+
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Vector3& message,
+  double /*lengthScale*/, std::string* error)
+{
+  double values[3] = {};
+  if (!::ros2vtk::convert::array_to_values(object, 3, values, error))
+  {
+    return false;
+  }
+  message.x = static_cast<double>(values[0]);
+  message.y = static_cast<double>(values[1]);
+  message.z = static_cast<double>(values[2]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image)
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Image& message, vtkImageData* object,
   double /*lengthScale*/, std::string* error)

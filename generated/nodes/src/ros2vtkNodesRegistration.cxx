@@ -12,6 +12,14 @@
 #include "vtkROS2SubscriberPoseArrayNode.h"
 #include "vtkROS2PublisherWrenchStampedNode.h"
 #include "vtkROS2SubscriberWrenchStampedNode.h"
+#include "vtkROS2PublisherPoseNode.h"
+#include "vtkROS2SubscriberPoseNode.h"
+#include "vtkROS2PublisherTransformNode.h"
+#include "vtkROS2SubscriberTransformNode.h"
+#include "vtkROS2PublisherWrenchNode.h"
+#include "vtkROS2SubscriberWrenchNode.h"
+#include "vtkROS2PublisherVector3Node.h"
+#include "vtkROS2SubscriberVector3Node.h"
 #include "vtkROS2PublisherImageNode.h"
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2PublisherPointCloudNode.h"
@@ -81,6 +89,22 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherWrenchStampedNode> },
     { "WrenchStamped", "vtkROS2SubscriberWrenchStampedNode", "geometry_msgs/msg/WrenchStamped", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberWrenchStampedNode> },
+    { "Pose", "vtkROS2PublisherPoseNode", "geometry_msgs/msg/Pose", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherPoseNode> },
+    { "Pose", "vtkROS2SubscriberPoseNode", "geometry_msgs/msg/Pose", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberPoseNode> },
+    { "Transform", "vtkROS2PublisherTransformNode", "geometry_msgs/msg/Transform", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherTransformNode> },
+    { "Transform", "vtkROS2SubscriberTransformNode", "geometry_msgs/msg/Transform", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberTransformNode> },
+    { "Wrench", "vtkROS2PublisherWrenchNode", "geometry_msgs/msg/Wrench", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherWrenchNode> },
+    { "Wrench", "vtkROS2SubscriberWrenchNode", "geometry_msgs/msg/Wrench", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberWrenchNode> },
+    { "Vector3", "vtkROS2PublisherVector3Node", "geometry_msgs/msg/Vector3", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherVector3Node> },
+    { "Vector3", "vtkROS2SubscriberVector3Node", "geometry_msgs/msg/Vector3", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberVector3Node> },
     { "Image", "vtkROS2PublisherImageNode", "sensor_msgs/msg/Image", NodeDirection::Publisher,
       &CreateNode<vtkROS2PublisherImageNode> },
     { "Image", "vtkROS2SubscriberImageNode", "sensor_msgs/msg/Image", NodeDirection::Subscriber,

@@ -48,3 +48,15 @@ int vtkROS2PublisherBoolNode::Publish(bool value)
   }
   return this->PublishMessage(&message) ? 1 : 0;
 }
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherBoolNode::PublishValue(const vtkVariant& value)
+{
+  bool valid = false;
+  const bool converted = value.ToInt(&valid) != 0;
+  if (!value.IsNumeric() || !valid)
+  {
+    return this->Superclass::PublishValue(value);
+  }
+  return this->Publish(converted);
+}

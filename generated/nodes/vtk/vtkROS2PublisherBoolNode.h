@@ -21,6 +21,10 @@ public:
   /// (vtkErrorMacro says why, e.g. the node is not added to a ROS node).
   int Publish(bool value);
 
+  /// The generic path (vtkROS2PublisherNode::PublishValue): a number vtkVariant is published
+  /// through Publish; any other value is refused with the reason.
+  int PublishValue(const vtkVariant& value) override;
+
   const char* GetSlicerType() const override { return "bool"; }
 
 protected:

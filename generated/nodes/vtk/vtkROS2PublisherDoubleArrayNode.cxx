@@ -60,6 +60,17 @@ int vtkROS2PublisherDoubleArrayNode::Publish(vtkDoubleArray* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherDoubleArrayNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkDoubleArray::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2PublisherDoubleArrayNode::GetBlankMessage() const
 {
   return vtkDoubleArray::New();

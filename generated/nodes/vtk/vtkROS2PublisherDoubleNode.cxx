@@ -48,3 +48,15 @@ int vtkROS2PublisherDoubleNode::Publish(double value)
   }
   return this->PublishMessage(&message) ? 1 : 0;
 }
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherDoubleNode::PublishValue(const vtkVariant& value)
+{
+  bool valid = false;
+  const double converted = value.ToDouble(&valid);
+  if (!value.IsNumeric() || !valid)
+  {
+    return this->Superclass::PublishValue(value);
+  }
+  return this->Publish(converted);
+}

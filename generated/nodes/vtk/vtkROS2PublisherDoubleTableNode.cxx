@@ -60,6 +60,17 @@ int vtkROS2PublisherDoubleTableNode::Publish(vtkTable* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherDoubleTableNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkTable::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkTable* vtkROS2PublisherDoubleTableNode::GetBlankMessage() const
 {
   return vtkTable::New();

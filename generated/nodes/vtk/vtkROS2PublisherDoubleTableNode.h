@@ -24,6 +24,10 @@ public:
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
   int Publish(vtkTable* message);
 
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkTable is
+  /// published through Publish; any other object is refused with the reason.
+  int PublishObject(vtkObject* object) override;
+
   /// A new, empty vtkTable to fill and pass to Publish (the caller owns it).
   VTK_NEWINSTANCE vtkTable* GetBlankMessage() const;
 

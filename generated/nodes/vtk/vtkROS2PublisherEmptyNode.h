@@ -20,6 +20,9 @@ public:
   /// Sends one empty message. Returns the number of messages sent: 1, or 0 on failure
   /// (vtkErrorMacro says why, e.g. the node is not added to a ROS node).
   int Publish();
+  /// The same; SlicerROS2 scripts call Publish('') on an empty-message publisher, the text is
+  /// ignored.
+  int Publish(const char* /*ignored*/) { return this->Publish(); }
 
   const char* GetSlicerType() const override { return "void"; }
 

@@ -67,6 +67,17 @@ int vtkROS2PublisherImageNode::Publish(vtkImageData* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherImageNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkImageData::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkROS2PublisherImageNode::GetBlankMessage() const
 {
   return vtkImageData::New();

@@ -24,6 +24,10 @@ public:
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
   int Publish(vtkImageData* message);
 
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkImageData is
+  /// published through Publish; any other object is refused with the reason.
+  int PublishObject(vtkObject* object) override;
+
   /// A new, empty vtkImageData to fill and pass to Publish (the caller owns it).
   VTK_NEWINSTANCE vtkImageData* GetBlankMessage() const;
 

@@ -60,6 +60,17 @@ int vtkROS2PublisherIntArrayNode::Publish(vtkTypeInt64Array* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherIntArrayNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkTypeInt64Array::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkTypeInt64Array* vtkROS2PublisherIntArrayNode::GetBlankMessage() const
 {
   return vtkTypeInt64Array::New();

@@ -48,3 +48,15 @@ int vtkROS2PublisherIntNode::Publish(vtkTypeInt64 value)
   }
   return this->PublishMessage(&message) ? 1 : 0;
 }
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherIntNode::PublishValue(const vtkVariant& value)
+{
+  bool valid = false;
+  const vtkTypeInt64 converted = value.ToTypeInt64(&valid);
+  if (!value.IsNumeric() || !valid)
+  {
+    return this->Superclass::PublishValue(value);
+  }
+  return this->Publish(converted);
+}

@@ -60,6 +60,17 @@ int vtkROS2PublisherIntTableNode::Publish(vtkTable* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherIntTableNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkTable::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkTable* vtkROS2PublisherIntTableNode::GetBlankMessage() const
 {
   return vtkTable::New();

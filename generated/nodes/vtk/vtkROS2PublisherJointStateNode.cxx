@@ -66,6 +66,17 @@ int vtkROS2PublisherJointStateNode::Publish(vtkTable* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherJointStateNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkTable::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkTable* vtkROS2PublisherJointStateNode::GetBlankMessage() const
 {
   return vtkTable::New();

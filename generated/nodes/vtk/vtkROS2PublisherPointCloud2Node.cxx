@@ -66,6 +66,17 @@ int vtkROS2PublisherPointCloud2Node::Publish(vtkPolyData* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherPointCloud2Node::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkPolyData::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkPolyData* vtkROS2PublisherPointCloud2Node::GetBlankMessage() const
 {
   return vtkPolyData::New();

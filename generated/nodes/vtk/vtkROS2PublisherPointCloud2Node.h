@@ -25,6 +25,10 @@ public:
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
   int Publish(vtkPolyData* message);
 
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkPolyData is
+  /// published through Publish; any other object is refused with the reason.
+  int PublishObject(vtkObject* object) override;
+
   /// A new, empty vtkPolyData to fill and pass to Publish (the caller owns it).
   VTK_NEWINSTANCE vtkPolyData* GetBlankMessage() const;
 

@@ -66,6 +66,17 @@ int vtkROS2PublisherPointCloudNode::Publish(vtkPoints* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherPointCloudNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkPoints::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkPoints* vtkROS2PublisherPointCloudNode::GetBlankMessage() const
 {
   return vtkPoints::New();

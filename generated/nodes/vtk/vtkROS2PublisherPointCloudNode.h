@@ -25,6 +25,10 @@ public:
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
   int Publish(vtkPoints* message);
 
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkPoints is
+  /// published through Publish; any other object is refused with the reason.
+  int PublishObject(vtkObject* object) override;
+
   /// A new, empty vtkPoints to fill and pass to Publish (the caller owns it).
   VTK_NEWINSTANCE vtkPoints* GetBlankMessage() const;
 

@@ -66,6 +66,17 @@ int vtkROS2PublisherPoseArrayNode::Publish(vtkTransformCollection* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherPoseArrayNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkTransformCollection::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkTransformCollection* vtkROS2PublisherPoseArrayNode::GetBlankMessage() const
 {
   return vtkTransformCollection::New();

@@ -25,6 +25,10 @@ public:
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
   int Publish(vtkTransformCollection* message);
 
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkTransformCollection is
+  /// published through Publish; any other object is refused with the reason.
+  int PublishObject(vtkObject* object) override;
+
   /// A new, empty vtkTransformCollection to fill and pass to Publish (the caller owns it).
   VTK_NEWINSTANCE vtkTransformCollection* GetBlankMessage() const;
 

@@ -66,6 +66,17 @@ int vtkROS2PublisherPoseStampedNode::Publish(vtkMatrix4x4* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherPoseStampedNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkMatrix4x4::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkMatrix4x4* vtkROS2PublisherPoseStampedNode::GetBlankMessage() const
 {
   return vtkMatrix4x4::New();

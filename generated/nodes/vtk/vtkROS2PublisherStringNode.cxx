@@ -48,3 +48,13 @@ int vtkROS2PublisherStringNode::Publish(const std::string& value)
   }
   return this->PublishMessage(&message) ? 1 : 0;
 }
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherStringNode::PublishValue(const vtkVariant& value)
+{
+  if (!value.IsString())
+  {
+    return this->Superclass::PublishValue(value);
+  }
+  return this->Publish(value.ToString());
+}

@@ -21,6 +21,10 @@ public:
   /// (vtkErrorMacro says why, e.g. the node is not added to a ROS node).
   int Publish(const std::string& value);
 
+  /// The generic path (vtkROS2PublisherNode::PublishValue): a string vtkVariant is published
+  /// through Publish; any other value is refused with the reason.
+  int PublishValue(const vtkVariant& value) override;
+
   const char* GetSlicerType() const override { return "std::string"; }
 
 protected:

@@ -66,6 +66,17 @@ int vtkROS2PublisherTransformStampedNode::Publish(vtkMatrix4x4* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherTransformStampedNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkMatrix4x4::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkMatrix4x4* vtkROS2PublisherTransformStampedNode::GetBlankMessage() const
 {
   return vtkMatrix4x4::New();

@@ -25,6 +25,10 @@ public:
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
   int Publish(vtkMatrix4x4* message);
 
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkMatrix4x4 is
+  /// published through Publish; any other object is refused with the reason.
+  int PublishObject(vtkObject* object) override;
+
   /// A new, empty vtkMatrix4x4 to fill and pass to Publish (the caller owns it).
   VTK_NEWINSTANCE vtkMatrix4x4* GetBlankMessage() const;
 

@@ -66,6 +66,17 @@ int vtkROS2PublisherWrenchStampedNode::Publish(vtkDoubleArray* object)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2PublisherWrenchStampedNode::PublishObject(vtkObject* object)
+{
+  auto* typed = vtkDoubleArray::SafeDownCast(object);
+  if (!typed)
+  {
+    return this->Superclass::PublishObject(object);
+  }
+  return this->Publish(typed);
+}
+
+//------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2PublisherWrenchStampedNode::GetBlankMessage() const
 {
   return vtkDoubleArray::New();

@@ -8,16 +8,13 @@
 #include "NodeClassRegistry.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
-#include "vtkROS2PublisherImageNode.h"
-#include "vtkROS2PublisherPointCloudNode.h"
-#include "vtkROS2PublisherPoseStampedNode.h"
-#include "vtkROS2PublisherStringNode.h"
-#include "vtkROS2PublisherTransformStampedNode.h"
+#include "vtkROS2PublisherNode.h"
 #include "vtkROS2RobotNode.h"
 #include "vtkROS2Scene.h"
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2SubscriberPointCloud2Node.h"
 #include "vtkROS2SubscriberPointCloudNode.h"
+#include "vtkROS2SubscriberPoseArrayNode.h"
 #include "vtkROS2SubscriberStringNode.h"
 #include "vtkROS2Tf2BroadcasterNode.h"
 #include "vtkROS2Tf2LookupNode.h"
@@ -35,7 +32,10 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTransform.h>
+#include <vtkTransformCollection.h>
 #include <vtkWeakPointer.h>
+#include <vtkXMLDataElement.h>
 
 #include <chrono>
 #include <cstring>
@@ -150,7 +150,6 @@ public:
   std::string LastError;
   std::deque<std::string> Log;
   vtkWeakPointer<vtkROS2NodeNode> ROSNode;
-  std::set<std::string> Mirrored;
   vtkNew<vtkMatrix4x4> WorldToSlicer;
   vtkNew<vtkMatrix4x4> SlicerToWorld;
   std::map<std::string, SentModel> SentModels;       // by model node ID
@@ -197,11 +196,12 @@ const bool ConnectorRegistered = [] {
 } // namespace
 
 //------------------------------------------------------------------------------
+const char* const vtkROS2IGTLConnectorNode::MirroredNodeReferenceRole = "igtlMirrored";
+const char* const vtkROS2IGTLConnectorNode::StartedROS2NodeReferenceRole = "igtlROS2Node";
+
 vtkROS2IGTLConnectorNode::vtkROS2IGTLConnectorNode()
   : Internals(new vtkInternals)
 {
-  // Not in saved scenes yet: a restored connector would need its sockets and routes back.
-  this->SetSaveWithScene(false);
 }
 
 //------------------------------------------------------------------------------
@@ -266,9 +266,15 @@ bool vtkROS2IGTLConnectorNode::Start(vtkROS2NodeNode* rosNode)
   in.SentModels.clear();
   in.SentMessages.clear();
   in.ROSNode = rosNode;
+  this->StartRequested = true;
+  this->RemoveNodeReferenceIDs(StartedROS2NodeReferenceRole);
   if (rosNode)
   {
     rosNode->AddSpinCallback(this, [this]() { return this->Update(); });
+    if (rosNode->GetID())
+    {
+      this->SetNodeReferenceID(StartedROS2NodeReferenceRole, rosNode->GetID());
+    }
   }
   this->Modified();
   return true;
@@ -283,6 +289,7 @@ void vtkROS2IGTLConnectorNode::Stop()
     in.ROSNode->RemoveSpinCallbacks(this);
   }
   in.ROSNode = nullptr;
+  this->StartRequested = false;
   if (in.Endpoint.is_started())
   {
     in.Endpoint.stop();
@@ -339,10 +346,10 @@ std::string vtkROS2IGTLConnectorNode::GetEventLog() const
 //------------------------------------------------------------------------------
 void vtkROS2IGTLConnectorNode::AddMirroredNodeID(const char* nodeID)
 {
-  if (nodeID)
+  if (nodeID && *nodeID)
   {
-    this->Internals->Mirrored.insert(nodeID);
-    this->Modified();
+    this->RemoveNodeReferenceID(MirroredNodeReferenceRole, nodeID); // once
+    this->AddNodeReferenceID(MirroredNodeReferenceRole, nodeID);
   }
 }
 
@@ -350,8 +357,7 @@ void vtkROS2IGTLConnectorNode::RemoveMirroredNodeID(const char* nodeID)
 {
   if (nodeID)
   {
-    this->Internals->Mirrored.erase(nodeID);
-    this->Modified();
+    this->RemoveNodeReferenceID(MirroredNodeReferenceRole, nodeID);
   }
 }
 
@@ -361,7 +367,19 @@ bool vtkROS2IGTLConnectorNode::IsMirrored(vtkROS2SceneNode* node) const
   {
     return false; // what Slicer sent is not echoed back
   }
-  return this->MirrorAllNodes || this->Internals->Mirrored.count(node->GetID()) > 0;
+  if (this->MirrorAllNodes)
+  {
+    return true;
+  }
+  const int count = this->GetNumberOfNodeReferences(MirroredNodeReferenceRole);
+  for (int i = 0; i < count; ++i)
+  {
+    if (std::strcmp(this->GetNthNodeReferenceID(MirroredNodeReferenceRole, i), node->GetID()) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -413,6 +431,131 @@ bool vtkROS2IGTLConnectorNode::MapDeviceToTopic(const char* device, const char* 
   route.type = type;
   this->Internals->Routes[device] = route;
   return true;
+}
+
+std::string vtkROS2IGTLConnectorNode::GetDeviceMap(const char* device) const
+{
+  auto it = this->Internals->Routes.find(device ? device : "");
+  if (it == this->Internals->Routes.end())
+  {
+    return std::string();
+  }
+  const vtkInternals::Route& route = it->second;
+  return route.parent.empty() ? "topic:" + route.topic + ":" + route.type
+                              : "tf:" + route.parent + ":" + route.child;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2IGTLConnectorNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element); // the mirrored nodes and the ROS node are references
+  vtkInternals& in = *this->Internals;
+  element->SetAttribute("type", this->Client ? "client" : "server");
+  element->SetAttribute("hostname", in.Host.c_str());
+  element->SetIntAttribute("port", this->Port);
+  element->SetIntAttribute("mirrorAllNodes", this->MirrorAllNodes ? 1 : 0);
+  element->SetIntAttribute("modelsInWorld", this->ModelsInWorld ? 1 : 0);
+  element->SetIntAttribute("started", in.Endpoint.is_started() ? 1 : 0);
+  double matrix[16];
+  vtkMatrix4x4::DeepCopy(matrix, in.WorldToSlicer);
+  element->SetVectorAttribute("worldToSlicer", 16, matrix);
+  for (const auto& [device, route] : in.Routes)
+  {
+    vtkNew<vtkXMLDataElement> map;
+    map->SetName("DeviceMap");
+    map->SetAttribute("device", device.c_str());
+    if (!route.parent.empty())
+    {
+      map->SetAttribute("parentFrame", route.parent.c_str());
+      map->SetAttribute("childFrame", route.child.c_str());
+    }
+    else
+    {
+      map->SetAttribute("topic", route.topic.c_str());
+      map->SetAttribute("messageType", route.type.c_str());
+    }
+    element->AddNestedElement(map);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2IGTLConnectorNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  const char* type = element->GetAttribute("type");
+  if (type && std::strcmp(type, "client") != 0 && std::strcmp(type, "server") != 0)
+  {
+    vtkErrorMacro("ReadXML: type is '" << type << "', expected 'client' or 'server'");
+    return false;
+  }
+  int port = this->Port;
+  if (element->GetScalarAttribute("port", port) && (port < 1 || port > 65535))
+  {
+    vtkErrorMacro("ReadXML: port " << port << " is not in 1..65535");
+    return false;
+  }
+  double matrix[16];
+  const bool hasMatrix = element->GetAttribute("worldToSlicer") != nullptr;
+  if (hasMatrix && element->GetVectorAttribute("worldToSlicer", 16, matrix) != 16)
+  {
+    vtkErrorMacro("ReadXML: worldToSlicer needs 16 numbers");
+    return false;
+  }
+  this->Client = type && std::strcmp(type, "client") == 0;
+  this->Port = port;
+  if (const char* host = element->GetAttribute("hostname"))
+  {
+    this->Internals->Host = host;
+  }
+  int value = 0;
+  if (element->GetScalarAttribute("mirrorAllNodes", value))
+    this->MirrorAllNodes = value != 0;
+  if (element->GetScalarAttribute("modelsInWorld", value))
+    this->ModelsInWorld = value != 0;
+  this->StartRequested = element->GetScalarAttribute("started", value) && value != 0;
+  if (hasMatrix)
+  {
+    vtkNew<vtkMatrix4x4> worldToSlicer;
+    worldToSlicer->DeepCopy(matrix);
+    this->SetWorldToSlicer(worldToSlicer);
+  }
+  this->Internals->Routes.clear();
+  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* map = element->GetNestedElement(i);
+    if (!map->GetName() || std::strcmp(map->GetName(), "DeviceMap") != 0)
+    {
+      continue; // the base class's own elements
+    }
+    const char* device = map->GetAttribute("device");
+    const bool ok = map->GetAttribute("parentFrame")
+      ? this->MapDeviceToTf(device, map->GetAttribute("parentFrame"), map->GetAttribute("childFrame"))
+      : this->MapDeviceToTopic(device, map->GetAttribute("topic"), map->GetAttribute("messageType"));
+    if (!ok)
+    {
+      vtkErrorMacro("ReadXML: DeviceMap " << i << " is incomplete");
+      return false;
+    }
+  }
+  return true;
+}
+
+vtkROS2NodeNode* vtkROS2IGTLConnectorNode::GetStartedROS2Node() const
+{
+  return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(StartedROS2NodeReferenceRole));
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2IGTLConnectorNode::OnSceneRestored()
+{
+  if (!this->StartRequested || this->Internals->Endpoint.is_started())
+  {
+    return;
+  }
+  this->Start(this->GetStartedROS2Node()); // a failure (port taken) is in GetState / GetLastError
 }
 
 //------------------------------------------------------------------------------
@@ -711,6 +854,30 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
         out.data.assign(bytes, bytes + size);
         this->Send(igtl::encode_image(device, out, now), true);
       }
+      else if (auto* poses = vtkROS2SubscriberPoseArrayNode::SafeDownCast(subscriber))
+      {
+        // PoseArray → TDATA: Slicer makes one linear transform per element, named by it.
+        vtkTransformCollection* collection = poses->GetLastMessage();
+        if (!collection)
+        {
+          continue;
+        }
+        vtkNew<vtkMatrix4x4> pose;
+        this->ImagePose(self, poses->GetLastMessageFrameID(), pose);
+        vtkMatrix4x4::Multiply4x4(this->WorldToSlicer, pose, slicer);
+        std::vector<igtl::TrackingItem> items;
+        collection->InitTraversal();
+        while (vtkTransform* element = collection->GetNextItem())
+        {
+          igtl::TrackingItem item;
+          item.name = vtkROS2IGTLConnectorNode::MakeDeviceName(
+            device + "_" + std::to_string(items.size()));
+          vtkMatrix4x4::Multiply4x4(slicer, element->GetMatrix(), world);
+          item.matrix = to_array(world);
+          items.push_back(item);
+        }
+        this->Send(igtl::encode_tracking_data(device, items, now), true);
+      }
       else
       {
         vtkPoints* points = nullptr;
@@ -831,45 +998,13 @@ void vtkROS2IGTLConnectorNode::vtkInternals::Publish(vtkROS2IGTLConnectorNode* s
       return;
     }
   }
-  // The publishers whose Publish takes what OpenIGTLink carries (matrix, points, image, text).
+  // Any publisher class: the generic entry routes the value to its own Publish, or says why not.
   vtkROS2PublisherNode* publisher = route.publisher;
-  bool published = false;
-  if (auto* m = vtkMatrix4x4::SafeDownCast(value))
-  {
-    if (auto* pose = vtkROS2PublisherPoseStampedNode::SafeDownCast(publisher))
-    {
-      published = pose->Publish(m) > 0;
-    }
-    else if (auto* tfs = vtkROS2PublisherTransformStampedNode::SafeDownCast(publisher))
-    {
-      published = tfs->Publish(m) > 0;
-    }
-  }
-  else if (auto* p = vtkPoints::SafeDownCast(value))
-  {
-    if (auto* cloud = vtkROS2PublisherPointCloudNode::SafeDownCast(publisher))
-    {
-      published = cloud->Publish(p) > 0;
-    }
-  }
-  else if (auto* image = vtkImageData::SafeDownCast(value))
-  {
-    if (auto* images = vtkROS2PublisherImageNode::SafeDownCast(publisher))
-    {
-      published = images->Publish(image) > 0;
-    }
-  }
-  else if (text)
-  {
-    if (auto* strings = vtkROS2PublisherStringNode::SafeDownCast(publisher))
-    {
-      published = strings->Publish(*text) > 0;
-    }
-  }
+  const bool published = text ? publisher->PublishValue(vtkVariant(*text)) > 0
+                              : publisher->PublishObject(value) > 0;
   if (!published && this->Warned.insert(device + ":type").second)
   {
-    this->AddLog("'" + device + "': a " + publisher->GetClassName() + " on " + route.topic +
-      " cannot publish what this device sends");
+    this->AddLog("'" + device + "' → " + route.topic + ": " + publisher->GetLastPublishError());
   }
   (void)self;
 }
@@ -941,6 +1076,33 @@ int vtkROS2IGTLConnectorNode::vtkInternals::HandleFrame(
         model->SetPolyData(poly);
       }
       this->Publish(self, device, points, nullptr);
+    }
+  }
+  else if (frame.type == "TDATA")
+  {
+    // As Slicer: one transform node per element (by element name); mapped as a whole
+    // (PoseArray in world coordinates).
+    std::vector<igtl::TrackingItem> items;
+    if (igtl::decode_tracking_data(frame, items, error))
+    {
+      vtkNew<vtkTransformCollection> collection;
+      for (const igtl::TrackingItem& item : items)
+      {
+        vtkNew<vtkMatrix4x4> slicer;
+        from_array(item.matrix, slicer);
+        vtkNew<vtkTransform> world;
+        world->PostMultiply();
+        world->SetMatrix(slicer);
+        world->Concatenate(this->SlicerToWorld);
+        vtkNew<vtkMatrix4x4> matrix;
+        matrix->DeepCopy(world->GetMatrix());
+        if (vtkROS2TransformNode* node = this->ReceivedTransformNode(self, item.name))
+        {
+          node->SetMatrixTransformToParent(matrix);
+        }
+        collection->AddItem(world);
+      }
+      this->Publish(self, device, collection, nullptr);
     }
   }
   else if (frame.type == "IMAGE")

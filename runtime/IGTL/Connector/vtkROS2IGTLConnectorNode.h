@@ -10,10 +10,11 @@
 // nodes (robot visuals) as POLYDATA when they change (baked in world coordinates by default, or
 // link-local with metadata "ros.parent" naming the link for a Slicer-side snippet to parent),
 // subscribers' images as IMAGE with their pose, point clouds as POLYDATA points, strings as
-// STRING. Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
+// STRING, pose arrays as TDATA (elements <device>_<i>, posed by the tf lookup of their frame). Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
 // the matrix WorldToSlicer (identity by default: ROS x, y, z become Slicer R, A, S) is applied to
 // everything sent and inverted for everything received; it is never implicit.
-// In (Slicer → scene): TRANSFORM/POSITION become transform nodes, POINT a model node of points,
+// In (Slicer → scene): TRANSFORM/POSITION become transform nodes, TDATA one transform node per
+// element (as Slicer does) and a PoseArray when mapped, POINT a model node of points,
 // IMAGE and STRING are kept by device; mapped devices are also published (tf or a topic).
 #ifndef vtkROS2IGTLConnectorNode_h
 #define vtkROS2IGTLConnectorNode_h
@@ -27,6 +28,7 @@
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkROS2NodeNode;
+class vtkXMLDataElement;
 
 class ROS2VTKIGTLCONNECTOR_EXPORT vtkROS2IGTLConnectorNode : public vtkROS2SceneNode
 {
@@ -93,14 +95,28 @@ public:
 
   /// Slicer → ROS. Device names are Slicer node names. `type` for a topic: a publisher short
   /// name whose VTK value matches the message (PoseStamped / TransformStamped for TRANSFORM,
-  /// PointCloud for POINT, Image for IMAGE, String for STRING).
+  /// PointCloud for POINT, PoseArray for TDATA, Image for IMAGE, String for STRING).
   bool MapDeviceToTf(const char* device, const char* parentFrame, const char* childFrame);
   bool MapDeviceToTopic(const char* device, const char* topic, const char* type);
+  /// The mapping of `device` as the CLI spells it ("tf:PARENT:CHILD", "topic:TOPIC:TYPE"), or "".
+  std::string GetDeviceMap(const char* device) const;
 
   /// The device name a node is sent under: its name when it fits OpenIGTLink's 20 bytes, else
   /// without the robot prefix ("arm:needle_guide_link" -> "needle_guide_link"), else 16 bytes +
   /// '~' + 3 hex digits of a hash of the whole name.
   static std::string MakeDeviceName(const std::string& nodeName);
+
+  /// Scene files keep the settings (type, host, port, mirrored nodes, device mappings,
+  /// WorldToSlicer, ModelsInWorld) and whether it was started, with which ROS node: a restored
+  /// connector that was serving serves again (OnSceneRestored). What came in is not saved.
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
+  void OnSceneRestored() override;
+  /// Node reference roles: the mirrored nodes, and the ROS node it was started with.
+  static const char* const MirroredNodeReferenceRole;
+  static const char* const StartedROS2NodeReferenceRole;
+  /// The ROS node of the last Start (kept through a save and restore), or nullptr.
+  vtkROS2NodeNode* GetStartedROS2Node() const;
 
   /// What came in by device (nullptr / "" before the first).
   vtkImageData* GetReceivedImage(const char* device);
@@ -117,6 +133,7 @@ protected:
   int Port = 18944;
   bool MirrorAllNodes = true;
   bool ModelsInWorld = true;
+  bool StartRequested = false; // from a scene file: Start again in OnSceneRestored
   vtkTypeInt64 MessagesReceived = 0;
 
 private:

@@ -11,6 +11,7 @@
 #include <igtlPolyDataMessage.h>
 #include <igtlPositionMessage.h>
 #include <igtlStringMessage.h>
+#include <igtlTrackingDataMessage.h>
 #include <igtlTransformMessage.h>
 
 #include <algorithm>
@@ -183,6 +184,27 @@ Frame encode_points(const std::string& device, const std::vector<PointItem>& poi
   return frame;
 }
 
+Frame encode_tracking_data(const std::string& device, const std::vector<TrackingItem>& items,
+  std::uint64_t timestamp)
+{
+  ::igtl::TrackingDataMessage::Pointer message = ::igtl::TrackingDataMessage::New();
+  stamp(message, device, timestamp);
+  for (const TrackingItem& item : items)
+  {
+    ::igtl::TrackingDataElement::Pointer element = ::igtl::TrackingDataElement::New();
+    element->SetName(item.name.substr(0, 20).c_str());
+    element->SetType(::igtl::TrackingDataElement::TYPE_6D);
+    ::igtl::Matrix4x4 m;
+    to_igtl(item.matrix, m);
+    element->SetMatrix(m);
+    message->AddTrackingDataElement(element);
+  }
+  message->Pack();
+  Frame frame = frame_of(message, "TDATA", device);
+  frame.timestamp = timestamp;
+  return frame;
+}
+
 Frame encode_image(const std::string& device, const Image& image, std::uint64_t timestamp)
 {
   ::igtl::ImageMessage::Pointer message = ::igtl::ImageMessage::New();
@@ -349,6 +371,41 @@ bool decode_points(const Frame& frame, std::vector<PointItem>& points, std::stri
       return false;
     }
     points.push_back(item);
+  }
+  return true;
+}
+
+bool decode_tracking_data(const Frame& frame, std::vector<TrackingItem>& items, std::string& error)
+{
+  if (frame.content.size() % 70 != 0) // IGTL_TDATA_ELEMENT_SIZE
+  {
+    error = size_error(frame, "a multiple of 70");
+    return false;
+  }
+  ::igtl::TrackingDataMessage::Pointer message = ::igtl::TrackingDataMessage::New();
+  if (!unpack(frame, message, error))
+  {
+    return false;
+  }
+  items.clear();
+  for (int i = 0; i < message->GetNumberOfTrackingDataElements(); ++i)
+  {
+    ::igtl::TrackingDataElement::Pointer element;
+    message->GetTrackingDataElement(i, element);
+    TrackingItem item;
+    item.name = element->GetName();
+    ::igtl::Matrix4x4 m;
+    element->GetMatrix(m);
+    from_igtl(m, item.matrix);
+    for (double v : item.matrix)
+    {
+      if (!std::isfinite(v))
+      {
+        error = "TDATA '" + frame.device + "': element " + std::to_string(i) + " is not finite";
+        return false;
+      }
+    }
+    items.push_back(item);
   }
   return true;
 }

@@ -5,6 +5,8 @@
 
 #include <string>
 
+class vtkXMLDataElement;
+
 namespace ros2vtk {
 namespace wire {
 struct MessageTypeSupport;
@@ -14,6 +16,15 @@ namespace scene {
 /// Finds a registered message type by "pkg/msg/Type" or "pkg/Type". On failure returns nullptr
 /// and sets `error` to a message listing the registered types.
 const wire::MessageTypeSupport* find_generic_type(const char* ros_type, std::string& error);
+
+/// SetROSType of both generic nodes: the type cannot change while the node is added to a ROS
+/// node (its endpoint exists); otherwise `ros_type` is looked up and stored in `type`. Returns ""
+/// on success (`changed` says whether `type` changed), else the reason.
+std::string assign_generic_type(const char* ros_type, bool added_to_ros_node,
+  const wire::MessageTypeSupport*& type, bool& changed);
+
+/// The `rosType` attribute a generic node saved, or nullptr when absent or empty.
+const char* saved_generic_type(vtkXMLDataElement* element);
 
 } // namespace scene
 } // namespace ros2vtk

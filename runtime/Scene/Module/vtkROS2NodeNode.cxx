@@ -1,17 +1,7 @@
 #include "vtkROS2NodeNode.h"
 
 #include "NodeClassRegistry.hpp"
-#include "vtkROS2PublisherGenericNode.h"
-#include "vtkROS2PublisherNode.h"
 #include "vtkROS2Scene.h"
-#include "vtkROS2SubscriberGenericNode.h"
-#include "vtkROS2SubscriberNode.h"
-#include "vtkROS2ParameterNode.h"
-#include "vtkROS2RobotNode.h"
-#include "vtkROS2ServiceClientNode.h"
-#include "vtkROS2ServiceServerNode.h"
-#include "vtkROS2Tf2BroadcasterNode.h"
-#include "vtkROS2Tf2LookupNode.h"
 
 #include "ros2vtk/tf2/BufferCore.hpp"
 #include "ros2vtk/tf2_ros/TransformBroadcaster.hpp"
@@ -35,21 +25,14 @@
 
 namespace
 {
-const char* const PublisherRole = "publisher";
-const char* const SubscriberRole = "subscriber";
-const char* const Tf2LookupRole = "tf2Lookup";
-const char* const Tf2BroadcasterRole = "tf2Broadcaster";
-const char* const ParameterRole = "parameter";
-const char* const RobotRole = "robot";
-const char* const ServiceClientRole = "serviceClient";
-const char* const ServiceServerRole = "serviceServer";
 
 /// The order in which Spin calls its children's OnROS2NodeSpin (docs/architecture.md): tf first
 /// so that everything after it sees this spin's transforms, then incoming data, parameters,
 /// services, and robots last (they read lookups and parameters). Children under any other
 /// role (a kind added outside the runtime, connectors) follow, roles sorted by name.
-const char* const SpinOrder[] = { Tf2LookupRole, SubscriberRole, ParameterRole, ServiceClientRole,
-  ServiceServerRole, RobotRole };
+const char* const SpinOrder[] = { vtkROS2NodeNode::Tf2LookupRole, vtkROS2NodeNode::SubscriberRole,
+  vtkROS2NodeNode::ParameterRole, vtkROS2NodeNode::ServiceClientRole, vtkROS2NodeNode::ServiceServerRole,
+  vtkROS2NodeNode::RobotRole };
 
 std::string IndexKey(const char* role, const std::string& key)
 {
@@ -59,20 +42,6 @@ std::string IndexKey(const char* role, const std::string& key)
   return joined;
 }
 
-/// The nodes referenced under `role` (held, as observers may remove nodes meanwhile).
-template <typename NodeType>
-std::vector<vtkSmartPointer<NodeType>> Referenced(vtkROS2SceneNode* owner, const char* role)
-{
-  std::vector<vtkSmartPointer<NodeType>> nodes;
-  for (int i = 0; i < owner->GetNumberOfNodeReferences(role); ++i)
-  {
-    if (auto* node = NodeType::SafeDownCast(owner->GetNthNodeReference(role, i)))
-    {
-      nodes.emplace_back(node);
-    }
-  }
-  return nodes;
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -195,30 +164,23 @@ bool vtkROS2NodeNode::Destroy()
   {
     return false;
   }
-  // Endpoints first: they live inside the participant.
-  for (const char* role : { PublisherRole, SubscriberRole })
+  // Children whose endpoints live inside the participant release them first (topic and
+  // service nodes); the nodes stay in the scene.
+  std::vector<vtkSmartPointer<vtkROS2SceneNode>> children;
+  this->GetNodeReferenceRoleList(this->Internals->RoleScratch);
+  for (const auto& role : this->Internals->RoleScratch)
   {
-    std::vector<vtkSmartPointer<vtkROS2TopicNode>> endpoints;
-    for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
+    for (int i = 0; i < this->GetNumberOfNodeReferences(role.c_str()); ++i)
     {
-      if (auto* endpoint = vtkROS2TopicNode::SafeDownCast(this->GetNthNodeReference(role, i)))
+      if (vtkROS2SceneNode* child = this->GetNthNodeReference(role.c_str(), i))
       {
-        endpoints.emplace_back(endpoint);
+        children.emplace_back(child);
       }
     }
-    for (const auto& endpoint : endpoints)
-    {
-      endpoint->RemoveFromROS2Node();
-    }
   }
-  // Service endpoints live in the participant too; their nodes stay in the scene.
-  for (const auto& client : Referenced<vtkROS2ServiceClientNode>(this, ServiceClientRole))
+  for (const auto& child : children)
   {
-    client->Detach();
-  }
-  for (const auto& server : Referenced<vtkROS2ServiceServerNode>(this, ServiceServerRole))
-  {
-    server->Detach();
+    child->OnROS2NodeDestroyed(this);
   }
   this->Internals->ReleaseParticipantObjects();
   this->Internals->Participant.reset();
@@ -269,153 +231,20 @@ void vtkROS2NodeNode::OnRemovedFromScene()
 }
 
 //------------------------------------------------------------------------------
-vtkROS2SceneNode* vtkROS2NodeNode::CreateAndAdd(bool publisher, const char* type, const char* topic)
+vtkROS2SceneNode* vtkROS2NodeNode::FindChildByName(const char* role, const char* name)
 {
-  using ros2vtk::scene::NodeDirection;
-  const char* what = publisher ? "CreateAndAddPublisherNode" : "CreateAndAddSubscriberNode";
-  if (!this->Scene)
-  {
-    vtkErrorMacro(<< what << ": add this ROS node to a scene first");
-    return nullptr;
-  }
-  if (!this->Internals->Participant)
-  {
-    vtkErrorMacro(<< what << ": the ROS node is not created (call Create first)");
-    return nullptr;
-  }
-  if (!type || !topic)
-  {
-    vtkErrorMacro(<< what << ": type and topic are required");
-    return nullptr;
-  }
-  const char* role = publisher ? PublisherRole : SubscriberRole;
-  if (this->FindByTopic<vtkROS2TopicNode>(role, topic))
-  {
-    vtkErrorMacro(<< what << ": this ROS node already has a " << role << " on '" << topic
-                  << "'; remove it first");
-    return nullptr;
-  }
-  const auto resolution = ros2vtk::scene::NodeClassRegistry::instance().resolve(
-    publisher ? NodeDirection::Publisher : NodeDirection::Subscriber, type);
-  vtkSmartPointer<vtkROS2TopicNode> node;
-  if (resolution.mapped_class)
-  {
-    node.TakeReference(vtkROS2TopicNode::SafeDownCast(resolution.mapped_class->create()));
-  }
-  else if (resolution.generic_type)
-  {
-    const char* rosType = resolution.generic_type->ros_type;
-    if (publisher)
-    {
-      auto generic = vtkSmartPointer<vtkROS2PublisherGenericNode>::New();
-      node = generic->SetROSType(rosType) ? generic : nullptr;
-    }
-    else
-    {
-      auto generic = vtkSmartPointer<vtkROS2SubscriberGenericNode>::New();
-      node = generic->SetROSType(rosType) ? generic : nullptr;
-    }
-  }
-  else
-  {
-    vtkErrorMacro(<< what << ": " << resolution.error);
-    return nullptr;
-  }
-  if (!node)
-  {
-    vtkErrorMacro(<< what << ": could not create a node for '" << type << "'");
-    return nullptr;
-  }
-  node->SetName(topic);
-  this->Scene->AddNode(node);
-  if (!node->AddToROS2Node(this->GetID(), topic))
-  {
-    this->Scene->RemoveNode(node);
-    return nullptr;
-  }
-  return node; // the scene holds it
-}
-
-//------------------------------------------------------------------------------
-vtkROS2PublisherNode* vtkROS2NodeNode::CreateAndAddPublisherNode(const char* type, const char* topic)
-{
-  return vtkROS2PublisherNode::SafeDownCast(this->CreateAndAdd(true, type, topic));
-}
-
-//------------------------------------------------------------------------------
-vtkROS2SubscriberNode* vtkROS2NodeNode::CreateAndAddSubscriberNode(const char* type, const char* topic)
-{
-  return vtkROS2SubscriberNode::SafeDownCast(this->CreateAndAdd(false, type, topic));
-}
-
-//------------------------------------------------------------------------------
-template <typename NodeType>
-NodeType* vtkROS2NodeNode::FindByTopic(const char* role, const char* topic)
-{
-  if (!topic)
+  if (!name || !*name)
   {
     return nullptr;
   }
-  std::string resolved = topic;
+  std::string resolved = name;
   std::string ignored;
   if (this->Internals->Participant)
   {
-    this->Internals->Participant->resolve_name(topic, resolved, &ignored);
+    this->Internals->Participant->resolve_name(name, resolved, &ignored);
   }
   vtkROS2SceneNode* found = this->FindChild(role, resolved);
-  return NodeType::SafeDownCast(found ? found : this->FindChild(role, topic));
-}
-
-//------------------------------------------------------------------------------
-vtkROS2PublisherNode* vtkROS2NodeNode::GetPublisherNodeByTopic(const char* topic)
-{
-  return this->FindByTopic<vtkROS2PublisherNode>(PublisherRole, topic);
-}
-
-//------------------------------------------------------------------------------
-vtkROS2SubscriberNode* vtkROS2NodeNode::GetSubscriberNodeByTopic(const char* topic)
-{
-  return this->FindByTopic<vtkROS2SubscriberNode>(SubscriberRole, topic);
-}
-
-//------------------------------------------------------------------------------
-int vtkROS2NodeNode::GetNumberOfPublisherNodes()
-{
-  return this->GetNumberOfNodeReferences(PublisherRole);
-}
-
-//------------------------------------------------------------------------------
-int vtkROS2NodeNode::GetNumberOfSubscriberNodes()
-{
-  return this->GetNumberOfNodeReferences(SubscriberRole);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeletePublisherNode(const char* topic)
-{
-  vtkROS2PublisherNode* node = this->GetPublisherNodeByTopic(topic);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeletePublisherNode: no publisher on '" << (topic ? topic : "(null)")
-                                                                    << "'");
-    return false;
-  }
-  node->RemoveFromROS2Node();
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteSubscriberNode(const char* topic)
-{
-  vtkROS2SubscriberNode* node = this->GetSubscriberNodeByTopic(topic);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteSubscriberNode: no subscriber on '" << (topic ? topic : "(null)")
-                                                                      << "'");
-    return false;
-  }
-  node->RemoveFromROS2Node();
-  return this->Scene ? this->Scene->RemoveNode(node) : true;
+  return found ? found : this->FindChild(role, name);
 }
 
 //------------------------------------------------------------------------------
@@ -647,15 +476,11 @@ void vtkROS2NodeNode::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 // tf2, parameters and spin callbacks
 //------------------------------------------------------------------------------
-namespace
-{
-std::string AbsoluteNodeName(const char* name)
+std::string vtkROS2NodeNode::AbsoluteNodeName(const char* name)
 {
   std::string value = name ? name : "";
   return !value.empty() && value[0] != '/' ? "/" + value : value;
 }
-
-} // namespace
 
 //------------------------------------------------------------------------------
 int vtkROS2NodeNode::SpinTf2Listener()
@@ -731,14 +556,46 @@ ros2vtk::wire::ParameterServer* vtkROS2NodeNode::GetParameterServer() const
 
 
 //------------------------------------------------------------------------------
-template <typename NodeType>
-NodeType* vtkROS2NodeNode::FindByFrames(const char* role, const char* parentFrame, const char* childFrame)
+vtkROS2SceneNode* vtkROS2NodeNode::FindChildByFrames(const char* role, const char* parentFrame, const char* childFrame)
 {
   if (!parentFrame || !childFrame)
   {
     return nullptr;
   }
-  return NodeType::SafeDownCast(this->FindChild(role, std::string(parentFrame) + '\n' + childFrame));
+  return this->FindChild(role, std::string(parentFrame) + '\n' + childFrame);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2NodeNode::FindChildByID(const char* role, const char* nodeID)
+{
+  if (!nodeID || !this->Scene)
+  {
+    return nullptr;
+  }
+  for (int i = 0; i < this->GetNumberOfNodeReferences(role); ++i)
+  {
+    vtkROS2SceneNode* child = this->GetNthNodeReference(role, i);
+    if (child && child->GetID() && std::string(child->GetID()) == nodeID)
+    {
+      return child;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name,
+  const std::function<bool()>& attach)
+{
+  child->SetName(name);
+  this->Scene->AddNode(child);
+  if (!attach())
+  {
+    this->Scene->RemoveNode(child);
+    return false;
+  }
+  this->AddChild(role, child);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -755,148 +612,6 @@ bool vtkROS2NodeNode::CheckReadyFor(const char* what)
     return false;
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame)
-{
-  if (!this->CheckReadyFor("CreateAndAddTf2LookupNode") || !this->GetTf2Buffer())
-  {
-    return nullptr;
-  }
-  if (!parentFrame || !*parentFrame || !childFrame || !*childFrame)
-  {
-    vtkErrorMacro("CreateAndAddTf2LookupNode: parent and child frames are required");
-    return nullptr;
-  }
-  if (this->FindByFrames<vtkROS2Tf2LookupNode>(Tf2LookupRole, parentFrame, childFrame))
-  {
-    vtkErrorMacro("CreateAndAddTf2LookupNode: " << parentFrame << " <- " << childFrame << " exists already");
-    return nullptr;
-  }
-  vtkNew<vtkROS2Tf2LookupNode> node;
-  node->SetParentID(parentFrame);
-  node->SetChildID(childFrame);
-  node->SetName((std::string("ros2:tf2lookup:") + parentFrame + "To" + childFrame).c_str());
-  this->Scene->AddNode(node);
-  this->AddChild(Tf2LookupRole, node);
-  // A first lookup right away, so data already in the buffer shows without waiting for a spin.
-  node->UpdateFromBuffer(*this->Internals->Tf2Buffer);
-  return node;
-}
-
-//------------------------------------------------------------------------------
-vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame)
-{
-  return this->FindByFrames<vtkROS2Tf2LookupNode>(Tf2LookupRole, parentFrame, childFrame);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame)
-{
-  vtkROS2Tf2LookupNode* node = this->GetTf2LookupNodeByParentChild(parentFrame, childFrame);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: no lookup " << (parentFrame ? parentFrame : "") << " <- "
-                                                             << (childFrame ? childFrame : ""));
-    return false;
-  }
-  return this->RemoveChild(Tf2LookupRole, node);
-}
-
-//------------------------------------------------------------------------------
-vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const char* parentFrame,
-                                                                           const char* childFrame)
-{
-  if (!this->CheckReadyFor("CreateAndAddTf2BroadcasterNode"))
-  {
-    return nullptr;
-  }
-  if (!parentFrame || !*parentFrame || !childFrame || !*childFrame)
-  {
-    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: parent and child frames are required");
-    return nullptr;
-  }
-  if (this->FindByFrames<vtkROS2Tf2BroadcasterNode>(Tf2BroadcasterRole, parentFrame, childFrame))
-  {
-    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: " << parentFrame << " <- " << childFrame << " exists already");
-    return nullptr;
-  }
-  vtkNew<vtkROS2Tf2BroadcasterNode> node;
-  node->SetParentID(parentFrame);
-  node->SetChildID(childFrame);
-  node->SetName((std::string("ros2:tf2broadcaster:") + parentFrame + "To" + childFrame).c_str());
-  this->Scene->AddNode(node);
-  this->AddChild(Tf2BroadcasterRole, node);
-  return node;
-}
-
-//------------------------------------------------------------------------------
-vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByParentChild(const char* parentFrame,
-                                                                               const char* childFrame)
-{
-  return this->FindByFrames<vtkROS2Tf2BroadcasterNode>(Tf2BroadcasterRole, parentFrame, childFrame);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame)
-{
-  vtkROS2Tf2BroadcasterNode* node = this->GetTf2BroadcasterNodeByParentChild(parentFrame, childFrame);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: no broadcaster " << (parentFrame ? parentFrame : "")
-                                                                       << " <- " << (childFrame ? childFrame : ""));
-    return false;
-  }
-  return this->RemoveChild(Tf2BroadcasterRole, node);
-}
-
-//------------------------------------------------------------------------------
-vtkROS2ParameterNode* vtkROS2NodeNode::CreateAndAddParameterNode(const char* monitoredNodeName)
-{
-  if (!this->CheckReadyFor("CreateAndAddParameterNode"))
-  {
-    return nullptr;
-  }
-  const std::string remote = AbsoluteNodeName(monitoredNodeName);
-  if (remote.empty())
-  {
-    vtkErrorMacro("CreateAndAddParameterNode: the monitored node name is required");
-    return nullptr;
-  }
-  if (this->GetParameterNodeByNode(remote.c_str()))
-  {
-    vtkErrorMacro("CreateAndAddParameterNode: " << remote << " is monitored already");
-    return nullptr;
-  }
-  vtkNew<vtkROS2ParameterNode> node;
-  node->SetName(("ros2:param:" + remote).c_str());
-  this->Scene->AddNode(node);
-  if (!node->Attach(this, remote))
-  {
-    this->Scene->RemoveNode(node);
-    return nullptr;
-  }
-  this->AddChild(ParameterRole, node);
-  return node;
-}
-
-//------------------------------------------------------------------------------
-vtkROS2ParameterNode* vtkROS2NodeNode::GetParameterNodeByNode(const char* monitoredNodeName)
-{
-  return vtkROS2ParameterNode::SafeDownCast(this->FindChild(ParameterRole, AbsoluteNodeName(monitoredNodeName)));
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteParameterNode(const char* monitoredNodeName)
-{
-  vtkROS2ParameterNode* node = this->GetParameterNodeByNode(monitoredNodeName);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteParameterNode: " << AbsoluteNodeName(monitoredNodeName) << " is not monitored");
-    return false;
-  }
-  return this->RemoveChild(ParameterRole, node);
 }
 
 //------------------------------------------------------------------------------
@@ -983,6 +698,30 @@ std::string vtkROS2NodeNode::PrintOwnParameter(const char* name)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfDiscoveredParticipants() const
+{
+  return this->Internals->Participant
+    ? static_cast<int>(this->Internals->Participant->remote_participant_count())
+    : 0;
+}
+
+vtkTypeInt64 vtkROS2NodeNode::GetNumberOfDroppedParticipants() const
+{
+  return this->Internals->Participant
+    ? static_cast<vtkTypeInt64>(this->Internals->Participant->dropped_participant_count())
+    : 0;
+}
+
+const char* vtkROS2NodeNode::GetLinkState() const
+{
+  if (!this->Internals->Participant)
+  {
+    return "not created";
+  }
+  return this->GetNumberOfDiscoveredParticipants() > 0 ? "peers" : "no peers";
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2NodeNode::GetNodeNamesAndNamespaces()
 {
   std::string lines;
@@ -1013,213 +752,6 @@ std::string vtkROS2NodeNode::GetTopicNamesAndTypes()
     }
   }
   return lines;
-}
-
-//------------------------------------------------------------------------------
-// robots
-//------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
-  const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach)
-{
-  if (!this->CheckReadyFor(what))
-  {
-    return nullptr;
-  }
-  if (!robotName || !*robotName)
-  {
-    vtkErrorMacro(<< what << ": a robot name is required");
-    return nullptr;
-  }
-  if (this->GetRobotNodeByName(robotName))
-  {
-    vtkErrorMacro(<< what << ": robot '" << robotName << "' exists already on this ROS node");
-    return nullptr;
-  }
-  vtkNew<vtkROS2RobotNode> robot;
-  robot->SetRobotName(robotName);
-  robot->SetFixedFrame(fixedFrame);
-  robot->SetTfPrefix(tfPrefix);
-  this->Scene->AddNode(robot);
-  this->AddChild(RobotRole, robot);
-  if (!attach(robot))
-  {
-    this->RemoveAndDeleteRobotNode(robotName);
-    return nullptr;
-  }
-  return robot;
-}
-
-//------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
-  const char* parameterName, const char* fixedFrame, const char* tfPrefix)
-{
-  const std::string remote = AbsoluteNodeName(parameterNodeName);
-  const std::string parameter = parameterName && *parameterName ? parameterName : "robot_description";
-  if (remote.empty())
-  {
-    vtkErrorMacro("CreateAndAddRobotNode: the node serving the description is required "
-                  "(e.g. /robot_state_publisher)");
-    return nullptr;
-  }
-  return this->AddRobotNode("CreateAndAddRobotNode", robotName, fixedFrame, tfPrefix,
-    [&](vtkROS2RobotNode* robot) { return robot->AttachToParameter(this, remote, parameter); });
-}
-
-//------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic,
-  const char* fixedFrame, const char* tfPrefix)
-{
-  const std::string name = topic && *topic ? topic : "/robot_description";
-  return this->AddRobotNode("CreateAndAddRobotNodeFromTopic", robotName, fixedFrame, tfPrefix,
-    [&](vtkROS2RobotNode* robot) { return robot->AttachToTopic(this, name); });
-}
-
-//------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* robotName, const char* urdfFile,
-  const char* fixedFrame, const char* tfPrefix)
-{
-  if (!urdfFile || !*urdfFile)
-  {
-    vtkErrorMacro("CreateAndAddRobotNodeFromFile: a URDF file is required");
-    return nullptr;
-  }
-  return this->AddRobotNode("CreateAndAddRobotNodeFromFile", robotName, fixedFrame, tfPrefix,
-    [&](vtkROS2RobotNode* robot) { return robot->AttachToFile(this, urdfFile); });
-}
-
-//------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::GetRobotNodeByName(const char* robotName)
-{
-  return robotName ? vtkROS2RobotNode::SafeDownCast(this->FindChild(RobotRole, robotName)) : nullptr;
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteRobotNode(const char* robotName)
-{
-  vtkROS2RobotNode* robot = this->GetRobotNodeByName(robotName);
-  if (!robot)
-  {
-    vtkErrorMacro("RemoveAndDeleteRobotNode: no robot '" << (robotName ? robotName : "(null)") << "'");
-    return false;
-  }
-  return this->RemoveChild(RobotRole, robot);
-}
-
-//------------------------------------------------------------------------------
-// Services
-//------------------------------------------------------------------------------
-namespace
-{
-/// The node under `role` whose service name (as given or resolved) is `service`.
-template <typename NodeType>
-NodeType* FindByService(vtkROS2NodeNode* owner, const char* role, const char* service)
-{
-  if (!service || !*service)
-  {
-    return nullptr;
-  }
-  std::string resolved;
-  if (owner->GetParticipant())
-  {
-    owner->GetParticipant()->resolve_name(service, resolved, nullptr);
-  }
-  vtkROS2SceneNode* found = resolved.empty() ? nullptr : owner->FindChild(role, resolved);
-  return NodeType::SafeDownCast(found ? found : owner->FindChild(role, service));
-}
-
-/// Creates a service node of class NodeType, adds it to the scene and attaches it; nullptr and
-/// `error` when it cannot be attached (the node is removed again).
-template <typename NodeType>
-NodeType* AddServiceNode(vtkROS2NodeNode* owner, vtkROS2Scene* scene, const char* role, const char* prefix,
-  const char* type, const char* service)
-{
-  vtkNew<NodeType> node;
-  node->SetName((std::string(prefix) + service).c_str());
-  scene->AddNode(node);
-  if (!node->Attach(owner, type, service))
-  {
-    scene->RemoveNode(node);
-    return nullptr;
-  }
-  owner->AddChild(role, node);
-  return node;
-}
-}
-
-//------------------------------------------------------------------------------
-vtkROS2ServiceClientNode* vtkROS2NodeNode::CreateAndAddServiceClientNode(const char* type, const char* service)
-{
-  if (!this->CheckReadyFor("CreateAndAddServiceClientNode"))
-  {
-    return nullptr;
-  }
-  if (!type || !service || !*service)
-  {
-    vtkErrorMacro("CreateAndAddServiceClientNode: type and service name are required");
-    return nullptr;
-  }
-  if (this->GetServiceClientNodeByService(service))
-  {
-    vtkErrorMacro("CreateAndAddServiceClientNode: this node has a client of " << service << " already");
-    return nullptr;
-  }
-  return AddServiceNode<vtkROS2ServiceClientNode>(this, this->Scene, ServiceClientRole, "ros2:client:", type, service);
-}
-
-//------------------------------------------------------------------------------
-vtkROS2ServiceClientNode* vtkROS2NodeNode::GetServiceClientNodeByService(const char* service)
-{
-  return FindByService<vtkROS2ServiceClientNode>(this, ServiceClientRole, service);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteServiceClientNode(const char* service)
-{
-  vtkROS2ServiceClientNode* node = this->GetServiceClientNodeByService(service);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteServiceClientNode: no client of " << (service ? service : ""));
-    return false;
-  }
-  return this->RemoveChild(ServiceClientRole, node);
-}
-
-//------------------------------------------------------------------------------
-vtkROS2ServiceServerNode* vtkROS2NodeNode::CreateAndAddServiceServerNode(const char* type, const char* service)
-{
-  if (!this->CheckReadyFor("CreateAndAddServiceServerNode"))
-  {
-    return nullptr;
-  }
-  if (!type || !service || !*service)
-  {
-    vtkErrorMacro("CreateAndAddServiceServerNode: type and service name are required");
-    return nullptr;
-  }
-  if (this->GetServiceServerNodeByService(service))
-  {
-    vtkErrorMacro("CreateAndAddServiceServerNode: this node serves " << service << " already");
-    return nullptr;
-  }
-  return AddServiceNode<vtkROS2ServiceServerNode>(this, this->Scene, ServiceServerRole, "ros2:server:", type, service);
-}
-
-//------------------------------------------------------------------------------
-vtkROS2ServiceServerNode* vtkROS2NodeNode::GetServiceServerNodeByService(const char* service)
-{
-  return FindByService<vtkROS2ServiceServerNode>(this, ServiceServerRole, service);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteServiceServerNode(const char* service)
-{
-  vtkROS2ServiceServerNode* node = this->GetServiceServerNodeByService(service);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteServiceServerNode: no server of " << (service ? service : ""));
-    return false;
-  }
-  return this->RemoveChild(ServiceServerRole, node);
 }
 
 //------------------------------------------------------------------------------

@@ -34,6 +34,7 @@ class vtkROS2ServiceClientNode;
 class vtkROS2ServiceServerNode;
 class vtkROS2Tf2BroadcasterNode;
 class vtkROS2Tf2LookupNode;
+class vtkROS2TopicNode;
 namespace ros2vtk
 {
 namespace tf2
@@ -64,6 +65,21 @@ public:
   /// environment). The scene node's Name becomes the ROS node name when it has none.
   /// False (vtkErrorMacro) for an invalid name/namespace, a DDS failure, or when already created.
   bool Create(const char* nodeName, const char* nodeNamespace = "");
+
+#ifndef __VTK_WRAP__
+  ///@{
+  /// The reference roles under which this node holds its children, one per kind (saved in scene
+  /// files: these spellings are the file format). A kind added outside the runtime picks its own.
+  static constexpr const char* PublisherRole = "publisher";
+  static constexpr const char* SubscriberRole = "subscriber";
+  static constexpr const char* Tf2LookupRole = "tf2Lookup";
+  static constexpr const char* Tf2BroadcasterRole = "tf2Broadcaster";
+  static constexpr const char* ParameterRole = "parameter";
+  static constexpr const char* RobotRole = "robot";
+  static constexpr const char* ServiceClientRole = "serviceClient";
+  static constexpr const char* ServiceServerRole = "serviceServer";
+  ///@}
+#endif
   /// Removes every publisher and subscriber from DDS (they stay in the scene) and destroys the
   /// participant. False when not created.
   bool Destroy();
@@ -93,6 +109,9 @@ public:
   /// Space-separated class names of the publisher / subscriber classes that can be created.
   std::string GetRegisteredROS2PublisherNodes() const;
   std::string GetRegisteredROS2SubscriberNodes() const;
+  /// SlicerROS2's spelling of the two above.
+  std::string RegisteredROS2PublisherNodes() const { return this->GetRegisteredROS2PublisherNodes(); }
+  std::string RegisteredROS2SubscriberNodes() const { return this->GetRegisteredROS2SubscriberNodes(); }
 
   /// Processes what DDS queued for this node's subscribers, on the calling thread (each
   /// subscriber with new messages fires one ModifiedEvent). Returns the number of messages.
@@ -108,9 +127,13 @@ public:
   /// unique per ROS node. Remove* return false (vtkErrorMacro) when there is no such node.
   vtkROS2Tf2LookupNode* CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2LookupNode* GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame);
+  /// By scene node ID (SlicerROS2 scripts keep IDs); nullptr unless it is this node's lookup.
+  vtkROS2Tf2LookupNode* GetTf2LookupNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2BroadcasterNode* CreateAndAddTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByParentChild(const char* parentFrame, const char* childFrame);
+  /// By scene node ID; nullptr unless it is this node's broadcaster.
+  vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
   ///@}
 
@@ -119,6 +142,8 @@ public:
   /// monitored node ("/robot_state_publisher"; a name without '/' is taken as absolute).
   vtkROS2ParameterNode* CreateAndAddParameterNode(const char* monitoredNodeName);
   vtkROS2ParameterNode* GetParameterNodeByNode(const char* monitoredNodeName);
+  /// By scene node ID; nullptr unless it is this node's parameter node.
+  vtkROS2ParameterNode* GetParameterNodeByNodeID(const char* nodeID);
   bool RemoveAndDeleteParameterNode(const char* monitoredNodeName);
   ///@}
 
@@ -162,6 +187,17 @@ public:
   /// entry per line, "/ns/name" and "/topic type1 type2". Discovery takes about a second.
   std::string GetNodeNamesAndNamespaces();
   std::string GetTopicNamesAndTypes();
+  ///@}
+
+  ///@{
+  /// Link status, for a panel: other ROS processes' participants this node currently sees (on
+  /// any host), how many were dropped because they fell silent beyond the DDS lease (20 s: a
+  /// cut network), and a word for it: "not created" (no participant), "no peers" (nobody
+  /// found, or everybody dropped) or "peers". A short outage, within the lease, shows instead
+  /// on the subscribers (vtkROS2SubscriberNode::GetSecondsSinceLastMessage) and recovers by itself.
+  int GetNumberOfDiscoveredParticipants() const;
+  vtkTypeInt64 GetNumberOfDroppedParticipants() const;
+  const char* GetLinkState() const;
   ///@}
 
   ///@{
@@ -231,13 +267,25 @@ private:
   vtkROS2NodeNode(const vtkROS2NodeNode&) = delete;
   void operator=(const vtkROS2NodeNode&) = delete;
 
-  template <typename NodeType>
-  NodeType* FindByTopic(const char* role, const char* topic);
-  vtkROS2SceneNode* CreateAndAdd(bool publisher, const char* type, const char* topic);
-  template <typename NodeType>
-  NodeType* FindByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  // Used by the SlicerROS2 methods of each child kind, which are defined in the kind's own
+  // .cxx file so that this class's file includes no child kind.
   bool CheckReadyFor(const char* what);
 #ifndef __VTK_WRAP__
+  /// A child by a name as given or as resolved against this node's namespace (topics,
+  /// services), or by its frame pair.
+  vtkROS2SceneNode* FindChildByName(const char* role, const char* name);
+  vtkROS2SceneNode* FindChildByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  /// The scene node `nodeID` when this node references it under `role`.
+  vtkROS2SceneNode* FindChildByID(const char* role, const char* nodeID);
+  /// Names `child`, adds it to the scene and runs `attach`; on success references it under
+  /// `role`, on failure removes it from the scene again.
+  bool AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name, const std::function<bool()>& attach);
+  /// CreateAndAddPublisherNode / SubscriberNode: the class mapped to `type`, or `newGeneric`'s
+  /// node (a new reference) for a registered type without a mapping rule.
+  vtkROS2SceneNode* CreateAndAddTopicNode(
+    bool publisher, const char* type, const char* topic, vtkROS2TopicNode* (*newGeneric)(const char* rosType));
+  /// "name" -> "/name" (monitored nodes are named absolutely).
+  static std::string AbsoluteNodeName(const char* name);
   /// Adds a robot node and attaches it to its description source with `attach`; removes it again
   /// (nullptr) when that fails.
   vtkROS2RobotNode* AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,

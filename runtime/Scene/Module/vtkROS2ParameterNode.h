@@ -47,7 +47,8 @@ public:
   /// Whether the parameter has a value (the remote node declared and set it).
   bool IsParameterSet(const char* name, bool noWarning = false) const;
   /// "bool", "integer", "double", "string", "byte_array", "bool_array", "integer_array",
-  /// "double_array", "string_array", or "not set".
+  /// "double_array", "string_array", "not set" (reported without a value), or "" for a
+  /// parameter never seen (SlicerROS2's answer).
   std::string GetParameterType(const char* name) const;
 
   /// Typed values; a wrong type or unset parameter gives vtkErrorMacro and a default value.

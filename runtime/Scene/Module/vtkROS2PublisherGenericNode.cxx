@@ -1,5 +1,7 @@
 #include "vtkROS2PublisherGenericNode.h"
 
+#include "vtkROS2NodeNode.h"
+
 #include "GenericMessageType.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -12,6 +14,21 @@
 
 vtkStandardNewMacro(vtkROS2PublisherGenericNode);
 
+namespace
+{
+/// What CreateAndAddPublisherNode makes for a type without a mapping rule.
+vtkROS2TopicNode* NewGeneric(const char* rosType)
+{
+  vtkROS2PublisherGenericNode* node = vtkROS2PublisherGenericNode::New();
+  if (!node->SetROSType(rosType))
+  {
+    node->Delete();
+    return nullptr;
+  }
+  return node;
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 vtkROS2PublisherGenericNode::vtkROS2PublisherGenericNode() = default;
 
@@ -21,21 +38,16 @@ vtkROS2PublisherGenericNode::~vtkROS2PublisherGenericNode() = default;
 //------------------------------------------------------------------------------
 bool vtkROS2PublisherGenericNode::SetROSType(const char* rosType)
 {
-  if (this->IsAddedToROS2Node())
-  {
-    vtkErrorMacro("SetROSType: cannot change the type while added to a ROS node");
-    return false;
-  }
-  std::string error;
-  const ros2vtk::wire::MessageTypeSupport* type = ros2vtk::scene::find_generic_type(rosType, error);
-  if (!type)
+  bool changed = false;
+  const std::string error =
+    ros2vtk::scene::assign_generic_type(rosType, this->IsAddedToROS2Node(), this->Type, changed);
+  if (!error.empty())
   {
     vtkErrorMacro("SetROSType: " << error);
     return false;
   }
-  if (type != this->Type)
+  if (changed)
   {
-    this->Type = type;
     this->Modified();
   }
   return true;
@@ -69,8 +81,8 @@ bool vtkROS2PublisherGenericNode::PublishYAML(const char* yaml)
 //------------------------------------------------------------------------------
 bool vtkROS2PublisherGenericNode::ReadXML(vtkXMLDataElement* element)
 {
-  const char* rosType = element ? element->GetAttribute("rosType") : nullptr;
-  if (rosType && *rosType && !this->SetROSType(rosType))
+  const char* rosType = ros2vtk::scene::saved_generic_type(element);
+  if (rosType && !this->SetROSType(rosType))
   {
     return false;
   }
@@ -81,4 +93,13 @@ bool vtkROS2PublisherGenericNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2PublisherGenericNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode* vtkROS2NodeNode::CreateAndAddPublisherNode(const char* type, const char* topic)
+{
+  return vtkROS2PublisherNode::SafeDownCast(this->CreateAndAddTopicNode(true, type, topic, &NewGeneric));
 }

@@ -1,5 +1,12 @@
 #include "vtkROS2PublisherNode.h"
 
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
+
+#include "vtkROS2Message.h"
+
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
 
@@ -54,29 +61,89 @@ bool vtkROS2PublisherNode::PublishMessage(const void* rosMessage)
   ++this->NumberOfCalls;
   if (!this->Internals->Publisher)
   {
-    vtkErrorMacro("Publish: not added to a ROS node (call AddToROS2Node or use "
-                  "vtkROS2NodeNode::CreateAndAddPublisherNode)");
+    this->LastPublishError = "Publish: not added to a ROS node (call AddToROS2Node or use "
+                             "vtkROS2NodeNode::CreateAndAddPublisherNode)";
+    vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
   if (!rosMessage)
   {
-    vtkErrorMacro("Publish: no message");
+    this->LastPublishError = "Publish: no message";
+    vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
   if (!this->Internals->Publisher->publish(rosMessage))
   {
-    vtkErrorMacro("Publish: DDS refused the sample on '" << this->GetTopic() << "'");
+    this->LastPublishError = "Publish: DDS refused the sample on '" + std::string(this->GetTopic()) + "'";
+    vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
+  this->LastPublishError.clear();
   ++this->NumberOfMessagesSent; // no ModifiedEvent: publishing is not a change of the node
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherNode::PublishMessageObject(vtkROS2Message* message)
+{
+  if (!message || !message->GetTypeSupport())
+  {
+    this->RecordFailedPublish("PublishMessageObject: the message object has no type");
+    return false;
+  }
+  if (!this->HasMessageTypeSupport() || message->GetTypeSupport() != &this->GetMessageTypeSupport())
+  {
+    const std::string reason = std::string("PublishMessageObject: a ") + message->GetROSType() +
+      " cannot go on a " + (this->HasMessageTypeSupport() ? this->GetMessageTypeSupport().ros_type : "(type not set)") +
+      " publisher";
+    this->RecordFailedPublish(reason.c_str());
+    return false;
+  }
+  return this->PublishMessage(message->GetRawMessage());
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
+{
+  if (!this->HasMessageTypeSupport())
+  {
+    return nullptr;
+  }
+  vtkROS2Message* message = vtkROS2Message::New();
+  message->SetROSType(this->GetMessageTypeSupport().ros_type);
+  return message;
 }
 
 //------------------------------------------------------------------------------
 void vtkROS2PublisherNode::RecordFailedPublish(const char* reason)
 {
   ++this->NumberOfCalls;
+  this->LastPublishError = reason ? reason : "failed";
   vtkErrorMacro("Publish on '" << this->GetTopic() << "': " << (reason ? reason : "failed"));
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherNode::PublishObject(vtkObject* object)
+{
+  if (auto* message = vtkROS2Message::SafeDownCast(object))
+  {
+    return this->PublishMessageObject(message) ? 1 : 0;
+  }
+  const std::string reason = std::string("PublishObject: ") + this->GetClassName() +
+    " publishes " + this->GetSlicerType() + ", not " +
+    (object ? object->GetClassName() : "a null object");
+  this->RecordFailedPublish(reason.c_str());
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherNode::PublishValue(const vtkVariant& value)
+{
+  const std::string reason = std::string("PublishValue: ") + this->GetClassName() +
+    " publishes " + this->GetSlicerType() + ", not a " +
+    (value.IsValid() ? value.GetTypeAsString() : "invalid") + " value";
+  this->RecordFailedPublish(reason.c_str());
+  return 0;
 }
 
 //------------------------------------------------------------------------------
@@ -85,4 +152,39 @@ void vtkROS2PublisherNode::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfCalls: " << this->NumberOfCalls << "\n";
   os << indent << "NumberOfMessagesSent: " << this->NumberOfMessagesSent << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2PublisherNode* vtkROS2NodeNode::GetPublisherNodeByTopic(const char* topic)
+{
+  return vtkROS2PublisherNode::SafeDownCast(this->FindChildByName(PublisherRole, topic));
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2NodeNode::GetNumberOfPublisherNodes()
+{
+  return this->GetNumberOfNodeReferences(PublisherRole);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeletePublisherNode(const char* topic)
+{
+  vtkROS2PublisherNode* node = this->GetPublisherNodeByTopic(topic);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeletePublisherNode: no publisher on '" << (topic ? topic : "(null)")
+                                                                    << "'");
+    return false;
+  }
+  node->RemoveFromROS2Node();
+  return this->Scene ? this->Scene->RemoveNode(node) : true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2PublisherNode::GetROS2NodeReferenceRole() const
+{
+  return vtkROS2NodeNode::PublisherRole;
 }

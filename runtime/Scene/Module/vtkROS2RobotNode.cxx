@@ -953,3 +953,94 @@ void vtkROS2RobotNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "State: " << internals.State << "\n";
   os << indent << "Links: " << internals.Links.size() << ", models: " << internals.Models.size() << "\n";
 }
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
+  const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach)
+{
+  if (!this->CheckReadyFor(what))
+  {
+    return nullptr;
+  }
+  if (!robotName || !*robotName)
+  {
+    vtkErrorMacro(<< what << ": a robot name is required");
+    return nullptr;
+  }
+  if (this->GetRobotNodeByName(robotName))
+  {
+    vtkErrorMacro(<< what << ": robot '" << robotName << "' exists already on this ROS node");
+    return nullptr;
+  }
+  vtkNew<vtkROS2RobotNode> robot;
+  robot->SetRobotName(robotName);
+  robot->SetFixedFrame(fixedFrame);
+  robot->SetTfPrefix(tfPrefix);
+  this->Scene->AddNode(robot);
+  this->AddChild(RobotRole, robot);
+  if (!attach(robot))
+  {
+    this->RemoveAndDeleteRobotNode(robotName);
+    return nullptr;
+  }
+  return robot;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
+  const char* parameterName, const char* fixedFrame, const char* tfPrefix)
+{
+  const std::string remote = AbsoluteNodeName(parameterNodeName);
+  const std::string parameter = parameterName && *parameterName ? parameterName : "robot_description";
+  if (remote.empty())
+  {
+    vtkErrorMacro("CreateAndAddRobotNode: the node serving the description is required "
+                  "(e.g. /robot_state_publisher)");
+    return nullptr;
+  }
+  return this->AddRobotNode("CreateAndAddRobotNode", robotName, fixedFrame, tfPrefix,
+    [&](vtkROS2RobotNode* robot) { return robot->AttachToParameter(this, remote, parameter); });
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic,
+  const char* fixedFrame, const char* tfPrefix)
+{
+  const std::string name = topic && *topic ? topic : "/robot_description";
+  return this->AddRobotNode("CreateAndAddRobotNodeFromTopic", robotName, fixedFrame, tfPrefix,
+    [&](vtkROS2RobotNode* robot) { return robot->AttachToTopic(this, name); });
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* robotName, const char* urdfFile,
+  const char* fixedFrame, const char* tfPrefix)
+{
+  if (!urdfFile || !*urdfFile)
+  {
+    vtkErrorMacro("CreateAndAddRobotNodeFromFile: a URDF file is required");
+    return nullptr;
+  }
+  return this->AddRobotNode("CreateAndAddRobotNodeFromFile", robotName, fixedFrame, tfPrefix,
+    [&](vtkROS2RobotNode* robot) { return robot->AttachToFile(this, urdfFile); });
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2NodeNode::GetRobotNodeByName(const char* robotName)
+{
+  return robotName ? vtkROS2RobotNode::SafeDownCast(this->FindChild(RobotRole, robotName)) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteRobotNode(const char* robotName)
+{
+  vtkROS2RobotNode* robot = this->GetRobotNodeByName(robotName);
+  if (!robot)
+  {
+    vtkErrorMacro("RemoveAndDeleteRobotNode: no robot '" << (robotName ? robotName : "(null)") << "'");
+    return false;
+  }
+  return this->RemoveChild(RobotRole, robot);
+}

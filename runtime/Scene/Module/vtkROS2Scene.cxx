@@ -245,6 +245,28 @@ vtkROS2SceneNode* vtkROS2Scene::CreateNodeByClass(const char* className)
 }
 
 //------------------------------------------------------------------------------
+vtkROS2SceneNode* vtkROS2Scene::AddNewNodeByClass(const char* className, const char* name)
+{
+  std::string wanted = className ? className : "";
+  const std::string slicerPrefix = "vtkMRMLROS2";
+  if (wanted.compare(0, slicerPrefix.size(), slicerPrefix) == 0)
+  {
+    wanted = "vtkROS2" + wanted.substr(slicerPrefix.size());
+  }
+  vtkSmartPointer<vtkROS2SceneNode> node;
+  node.TakeReference(this->CreateNodeByClass(wanted.c_str()));
+  if (!node)
+  {
+    return nullptr;
+  }
+  if (name && *name)
+  {
+    node->SetName(name);
+  }
+  return this->AddNode(node);
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2Scene::WriteToXMLString()
 {
   vtkNew<vtkXMLDataElement> root;

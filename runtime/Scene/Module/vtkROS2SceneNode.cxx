@@ -380,6 +380,9 @@ int vtkROS2SceneNode::OnROS2NodeSpin(vtkROS2NodeNode*)
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2SceneNode::OnROS2NodeDestroyed(vtkROS2NodeNode*) {}
+
+//------------------------------------------------------------------------------
 void vtkROS2SceneNode::ROS2NodeChildKeyChanged()
 {
   if (vtkROS2SceneNode* owner = this->GetNodeReference(ROS2NodeReferenceRole))

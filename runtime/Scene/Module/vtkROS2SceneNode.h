@@ -93,6 +93,10 @@ public:
   /// other kind; docs/architecture.md). Returns how many items it handled. Does nothing by
   /// default.
   virtual int OnROS2NodeSpin(vtkROS2NodeNode* rosNode);
+  /// Called by vtkROS2NodeNode::Destroy on each child before its participant goes: a child
+  /// whose endpoints live in the participant (topics, services) releases them here; the node
+  /// stays in the scene. Does nothing by default.
+  virtual void OnROS2NodeDestroyed(vtkROS2NodeNode* rosNode);
 
   /// The key that makes this node unique among its ROS node's children of the same role
   /// (topic, "parent<newline>child" frame pair, monitored node, robot name, service name);

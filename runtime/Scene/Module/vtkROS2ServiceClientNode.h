@@ -22,6 +22,7 @@
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
+class vtkROS2Message;
 class vtkROS2NodeNode;
 
 class ROS2VTKSCENE_EXPORT vtkROS2ServiceClientNode : public vtkROS2SceneNode
@@ -64,6 +65,10 @@ public:
   bool SetRequestField(const char* path, const char* value);
   /// Back to the blank request.
   void ResetRequest();
+  /// The request as a typed message object (docs/messages.md): copied in (its type must be
+  /// this service's request type) or out.
+  bool SetRequestObject(vtkROS2Message* request);
+  bool GetRequestObject(vtkROS2Message* request) const;
   ///@}
 
   /// Seconds a request may wait for a server and its response (default 5).
@@ -89,6 +94,8 @@ public:
   /// The newest response (blank before the first one), as YAML or one field.
   std::string GetLastResponseYAML() const;
   std::string GetResponseField(const char* path) const;
+  /// The newest response as a typed message object; false before the first.
+  bool GetLastResponseObject(vtkROS2Message* response) const;
   /// Id of the request the newest response answers.
   vtkTypeInt64 GetLastResponseRequestId() const;
   /// Requests sent and not yet answered or failed.
@@ -114,6 +121,8 @@ public:
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes responses.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessResponses(); }
+  /// Destroy hook: the wire endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
   /// Index key among the ROS node's service clients.
   std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
 

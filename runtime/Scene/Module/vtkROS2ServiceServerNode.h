@@ -22,6 +22,7 @@
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
+class vtkROS2Message;
 class vtkROS2NodeNode;
 
 class ROS2VTKSCENE_EXPORT vtkROS2ServiceServerNode : public vtkROS2SceneNode
@@ -45,6 +46,8 @@ public:
   /// The request being handled: the one whose event is firing, else the oldest pending one.
   std::string GetRequestYAML() const;
   std::string GetRequestField(const char* path) const;
+  /// The same request as a typed message object (docs/messages.md).
+  bool GetRequestObject(vtkROS2Message* request) const;
   ///@}
 
   ///@{
@@ -53,6 +56,8 @@ public:
   /// on invalid YAML / a value that does not fit, or when no request is being handled.
   bool SetResponseYAML(const char* yaml);
   bool SetResponseField(const char* path, const char* value);
+  /// The whole response from a typed message object of the service's response type.
+  bool SetResponseObject(vtkROS2Message* response);
   ///@}
 
   /// Outside the event: sends the response filled so far for the oldest pending request.
@@ -93,6 +98,8 @@ public:
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): answers requests.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
+  /// Destroy hook: the wire endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
   /// Index key among the ROS node's service servers.
   std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
 

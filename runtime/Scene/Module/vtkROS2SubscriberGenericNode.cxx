@@ -1,5 +1,7 @@
 #include "vtkROS2SubscriberGenericNode.h"
 
+#include "vtkROS2NodeNode.h"
+
 #include "GenericMessageType.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
@@ -10,6 +12,21 @@
 
 vtkStandardNewMacro(vtkROS2SubscriberGenericNode);
 
+namespace
+{
+/// What CreateAndAddSubscriberNode makes for a type without a mapping rule.
+vtkROS2TopicNode* NewGeneric(const char* rosType)
+{
+  vtkROS2SubscriberGenericNode* node = vtkROS2SubscriberGenericNode::New();
+  if (!node->SetROSType(rosType))
+  {
+    node->Delete();
+    return nullptr;
+  }
+  return node;
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 vtkROS2SubscriberGenericNode::vtkROS2SubscriberGenericNode() = default;
 
@@ -19,21 +36,16 @@ vtkROS2SubscriberGenericNode::~vtkROS2SubscriberGenericNode() = default;
 //------------------------------------------------------------------------------
 bool vtkROS2SubscriberGenericNode::SetROSType(const char* rosType)
 {
-  if (this->IsAddedToROS2Node())
-  {
-    vtkErrorMacro("SetROSType: cannot change the type while added to a ROS node");
-    return false;
-  }
-  std::string error;
-  const ros2vtk::wire::MessageTypeSupport* type = ros2vtk::scene::find_generic_type(rosType, error);
-  if (!type)
+  bool changed = false;
+  const std::string error =
+    ros2vtk::scene::assign_generic_type(rosType, this->IsAddedToROS2Node(), this->Type, changed);
+  if (!error.empty())
   {
     vtkErrorMacro("SetROSType: " << error);
     return false;
   }
-  if (type != this->Type)
+  if (changed)
   {
-    this->Type = type;
     this->Modified();
   }
   return true;
@@ -48,8 +60,8 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberGenericNode::GetMessag
 //------------------------------------------------------------------------------
 bool vtkROS2SubscriberGenericNode::ReadXML(vtkXMLDataElement* element)
 {
-  const char* rosType = element ? element->GetAttribute("rosType") : nullptr;
-  if (rosType && *rosType && !this->SetROSType(rosType))
+  const char* rosType = ros2vtk::scene::saved_generic_type(element);
+  if (rosType && !this->SetROSType(rosType))
   {
     return false;
   }
@@ -60,4 +72,13 @@ bool vtkROS2SubscriberGenericNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2SubscriberGenericNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2SubscriberNode* vtkROS2NodeNode::CreateAndAddSubscriberNode(const char* type, const char* topic)
+{
+  return vtkROS2SubscriberNode::SafeDownCast(this->CreateAndAddTopicNode(false, type, topic, &NewGeneric));
 }

@@ -12,6 +12,8 @@
 
 #include "vtkROS2TopicNode.h"
 
+class vtkROS2Message;
+
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
@@ -28,6 +30,9 @@ public:
   const char* GetLastRejectionReason() const;
   /// Publishers (local or remote) currently matched; 0 when not added.
   int GetNumberOfMatchedPublications() const;
+  /// Seconds (wall clock) since a spin last brought a message; -1 before the first. With the
+  /// matched publications, what a panel shows of a link outage while it lasts.
+  double GetSecondsSinceLastMessage() const;
   /// Publishers found on the topic whose QoS cannot match this subscriber (they send nothing
   /// here; each is reported once, as rclpy's "requesting incompatible QoS"), and the policy that
   /// kept the latest apart ("RELIABILITY", "DURABILITY", ...; empty when none).
@@ -41,6 +46,13 @@ public:
   /// (e.g. "data" of a std_msgs/String, as robot_description is). False (and `value` untouched)
   /// before the first message or when the type has no string field of that name.
   bool GetLastMessageStringField(const char* fieldName, std::string& value) const;
+
+  /// The newest message, every field, as a typed message object (header stamps, frame ids and
+  /// whatever a mapping leaves out; values as on the wire, SI units). False before the first.
+  bool GetLastMessageObject(vtkROS2Message* message) const;
+  /// Message i of those the latest spin brought (0 = oldest; see GetNumberOfNewMessages in
+  /// subclasses); false for an index out of range.
+  bool GetNewMessageObject(int i, vtkROS2Message* message) const;
 
   /// Takes the queued messages; returns how many were new. Called by vtkROS2NodeNode::Spin on
   /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.
@@ -70,7 +82,7 @@ protected:
     const ros2vtk::wire::QoS& qos, std::string* error) override;
   void DestroyEndpoint() override;
   bool HasEndpoint() const override;
-  const char* GetROS2NodeReferenceRole() const override { return "subscriber"; }
+  const char* GetROS2NodeReferenceRole() const override;
 
   vtkTypeInt64 NumberOfMessages = 0;
   vtkTypeInt64 NumberOfRejectedMessages = 0;

@@ -1,6 +1,7 @@
 #include "vtkROS2Tf2BroadcasterNode.h"
 
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
 #include "vtkROS2TransformNode.h"
 
 #include "ros2vtk/convert/RigidTransform.hpp"
@@ -158,4 +159,60 @@ void vtkROS2Tf2BroadcasterNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ChildID: " << this->ChildFrame << "\n";
   os << indent << "Static: " << this->Static << "\n";
   os << indent << "NumberOfBroadcasts: " << this->NumberOfBroadcasts << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const char* parentFrame,
+                                                                           const char* childFrame)
+{
+  if (!this->CheckReadyFor("CreateAndAddTf2BroadcasterNode"))
+  {
+    return nullptr;
+  }
+  if (!parentFrame || !*parentFrame || !childFrame || !*childFrame)
+  {
+    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: parent and child frames are required");
+    return nullptr;
+  }
+  if (this->FindChildByFrames(Tf2BroadcasterRole, parentFrame, childFrame))
+  {
+    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: " << parentFrame << " <- " << childFrame << " exists already");
+    return nullptr;
+  }
+  vtkNew<vtkROS2Tf2BroadcasterNode> node;
+  node->SetParentID(parentFrame);
+  node->SetChildID(childFrame);
+  node->SetName((std::string("ros2:tf2broadcaster:") + parentFrame + "To" + childFrame).c_str());
+  this->Scene->AddNode(node);
+  this->AddChild(Tf2BroadcasterRole, node);
+  return node;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByParentChild(const char* parentFrame,
+                                                                               const char* childFrame)
+{
+  return vtkROS2Tf2BroadcasterNode::SafeDownCast(this->FindChildByFrames(Tf2BroadcasterRole, parentFrame, childFrame));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame)
+{
+  vtkROS2Tf2BroadcasterNode* node = this->GetTf2BroadcasterNodeByParentChild(parentFrame, childFrame);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: no broadcaster " << (parentFrame ? parentFrame : "")
+                                                                       << " <- " << (childFrame ? childFrame : ""));
+    return false;
+  }
+  return this->RemoveChild(Tf2BroadcasterRole, node);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByID(const char* nodeID)
+{
+  return vtkROS2Tf2BroadcasterNode::SafeDownCast(this->FindChildByID(Tf2BroadcasterRole, nodeID));
 }

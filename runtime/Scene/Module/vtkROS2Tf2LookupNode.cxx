@@ -1,6 +1,7 @@
 #include "vtkROS2Tf2LookupNode.h"
 
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2Scene.h"
 
 #include "ros2vtk/convert/Units.hpp"
 #include "ros2vtk/tf2/BufferCore.hpp"
@@ -144,4 +145,60 @@ void vtkROS2Tf2LookupNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ParentID: " << this->ParentFrame << "\n";
   os << indent << "ChildID: " << this->ChildFrame << "\n";
   os << indent << "LookupStatus: " << this->GetLookupStatus() << "\n";
+}
+
+//------------------------------------------------------------------------------
+// vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
+// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame)
+{
+  if (!this->CheckReadyFor("CreateAndAddTf2LookupNode") || !this->GetTf2Buffer())
+  {
+    return nullptr;
+  }
+  if (!parentFrame || !*parentFrame || !childFrame || !*childFrame)
+  {
+    vtkErrorMacro("CreateAndAddTf2LookupNode: parent and child frames are required");
+    return nullptr;
+  }
+  if (this->FindChildByFrames(Tf2LookupRole, parentFrame, childFrame))
+  {
+    vtkErrorMacro("CreateAndAddTf2LookupNode: " << parentFrame << " <- " << childFrame << " exists already");
+    return nullptr;
+  }
+  vtkNew<vtkROS2Tf2LookupNode> node;
+  node->SetParentID(parentFrame);
+  node->SetChildID(childFrame);
+  node->SetName((std::string("ros2:tf2lookup:") + parentFrame + "To" + childFrame).c_str());
+  this->Scene->AddNode(node);
+  this->AddChild(Tf2LookupRole, node);
+  // A first lookup right away, so data already in the buffer shows without waiting for a spin.
+  node->UpdateFromBuffer(*this->GetTf2Buffer());
+  return node;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame)
+{
+  return vtkROS2Tf2LookupNode::SafeDownCast(this->FindChildByFrames(Tf2LookupRole, parentFrame, childFrame));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame)
+{
+  vtkROS2Tf2LookupNode* node = this->GetTf2LookupNodeByParentChild(parentFrame, childFrame);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: no lookup " << (parentFrame ? parentFrame : "") << " <- "
+                                                             << (childFrame ? childFrame : ""));
+    return false;
+  }
+  return this->RemoveChild(Tf2LookupRole, node);
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByID(const char* nodeID)
+{
+  return vtkROS2Tf2LookupNode::SafeDownCast(this->FindChildByID(Tf2LookupRole, nodeID));
 }

@@ -35,6 +35,8 @@ public:
   bool AddToROS2Node(const char* nodeID, const char* topic);
   /// Destroys the DDS endpoint; the node stays in the scene. False when it was not added.
   bool RemoveFromROS2Node();
+  /// Destroy hook: the endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->RemoveFromROS2Node(); }
   bool IsAddedToROS2Node() const;
   /// The ROS node this endpoint belongs to (nullptr when not added).
   vtkROS2NodeNode* GetROS2Node() const;

@@ -3,6 +3,7 @@
 
 #include "ShippedTypes.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_event.hpp"
+#include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/rcl_interfaces/srv/get_parameters.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Service.hpp"
@@ -61,7 +62,7 @@ public:
   void store(const std::string& name, const rcl::msg::ParameterValue& value)
   {
     auto it = values.find(name);
-    if (value.type == 0)
+    if (value.type == rcl::msg::ParameterType::PARAMETER_NOT_SET) // deleted, or never set
     {
       if (it != values.end())
       {

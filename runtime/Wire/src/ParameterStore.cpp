@@ -2,6 +2,8 @@
 // summarised in WIRE_NOTES §5.3), re-implemented over the generated rcl_interfaces types.
 #include "ros2vtk/wire/ParameterStore.hpp"
 
+#include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -12,19 +14,19 @@ namespace wire {
 
 namespace {
 
-enum : uint8_t
-{
-  kNotSet = 0,
-  kBool = 1,
-  kInteger = 2,
-  kDouble = 3,
-  kString = 4,
-  kByteArray = 5,
-  kBoolArray = 6,
-  kIntegerArray = 7,
-  kDoubleArray = 8,
-  kStringArray = 9
-};
+// rcl_interfaces/msg/ParameterType's constants (generated from its spec: the one place they
+// are defined), under the short names this file uses.
+using ParameterType = rcl::ParameterType;
+constexpr uint8_t kNotSet = ParameterType::PARAMETER_NOT_SET;
+constexpr uint8_t kBool = ParameterType::PARAMETER_BOOL;
+constexpr uint8_t kInteger = ParameterType::PARAMETER_INTEGER;
+constexpr uint8_t kDouble = ParameterType::PARAMETER_DOUBLE;
+constexpr uint8_t kString = ParameterType::PARAMETER_STRING;
+constexpr uint8_t kByteArray = ParameterType::PARAMETER_BYTE_ARRAY;
+constexpr uint8_t kBoolArray = ParameterType::PARAMETER_BOOL_ARRAY;
+constexpr uint8_t kIntegerArray = ParameterType::PARAMETER_INTEGER_ARRAY;
+constexpr uint8_t kDoubleArray = ParameterType::PARAMETER_DOUBLE_ARRAY;
+constexpr uint8_t kStringArray = ParameterType::PARAMETER_STRING_ARRAY;
 
 template <typename T, typename Format>
 std::string join(const std::vector<T>& values, Format format)

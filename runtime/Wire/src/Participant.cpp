@@ -13,6 +13,7 @@
 #include "ros2vtk/wire/Subscription.hpp"
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/rtps/attributes/ServerAttributes.h>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
@@ -237,6 +238,15 @@ ParticipantOptions ParticipantOptions::from_environment()
       start = end + 1;
     }
   }
+  if (const char* servers = std::getenv("ROS_DISCOVERY_SERVER"))
+  {
+    options.discovery_servers = servers;
+  }
+  if (const char* super_client = std::getenv("ROS_SUPER_CLIENT"))
+  {
+    const std::string value = super_client;
+    options.super_client = value == "TRUE" || value == "true" || value == "True" || value == "1";
+  }
   return options;
 }
 
@@ -326,9 +336,36 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     multicast.port = kPortBase + kDomainGain * static_cast<uint32_t>(options.domain_id);
     qos.wire_protocol().builtin.initialPeersList.push_back(multicast);
   }
+  if (!options.discovery_servers.empty())
+  {
+    // A discovery client: Fast DDS 2.9 reads ROS_DISCOVERY_SERVER itself when the participant
+    // is SIMPLE (it becomes a CLIENT of those servers). A super client (ROS_SUPER_CLIENT, read
+    // by rmw_fastrtps, not by Fast DDS 2.9) is set here from the same list.
+    if (options.super_client)
+    {
+      auto& discovery = qos.wire_protocol().builtin.discovery_config;
+      discovery.discoveryProtocol = rtps::DiscoveryProtocol_t::SUPER_CLIENT;
+      if (!eprosima::fastdds::rtps::load_environment_server_info(options.discovery_servers,
+            discovery.m_DiscoveryServers))
+      {
+        return set_error(error, "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
+                                  "' is not a list of host:port (';'-separated, position = server id)");
+      }
+    }
+    else
+    {
+      std::list<eprosima::fastdds::rtps::RemoteServerAttributes> servers;
+      if (!eprosima::fastdds::rtps::load_environment_server_info(options.discovery_servers, servers))
+      {
+        return set_error(error, "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
+                                  "' is not a list of host:port (';'-separated, position = server id)");
+      }
+    }
+  }
+  // Static peers and discovery servers name other hosts on purpose: they keep the plain transport.
   const bool loopback_only =
     (options.range == DiscoveryRange::Localhost || options.range == DiscoveryRange::Off) &&
-    options.static_peers.empty();
+    options.static_peers.empty() && options.discovery_servers.empty();
   if (loopback_only)
   {
     // Sockets bound to 127.0.0.1 only and only loopback locators announced; peers' same-host
@@ -428,10 +465,24 @@ void Participant::Impl::remove_local_endpoint(const rtps::GUID_t& guid)
 void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
                                                  rtps::ParticipantDiscoveryInfo&& info)
 {
+  const Gid gid = to_gid(info.info.m_guid);
+  if (info.status == rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT)
+  {
+    std::lock_guard<std::mutex> lock(peers_mutex);
+    remote_participants.insert(gid);
+  }
   if (info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
       info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
   {
-    graph.remove_remote_participant(to_gid(info.info.m_guid));
+    {
+      std::lock_guard<std::mutex> lock(peers_mutex);
+      if (remote_participants.erase(gid) > 0 &&
+          info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+      {
+        ++dropped_participants;
+      }
+    }
+    graph.remove_remote_participant(gid);
   }
 }
 
@@ -581,6 +632,18 @@ size_t Participant::count_subscribers(const std::string& topic) const
 {
   std::string resolved;
   return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), false) : 0;
+}
+
+size_t Participant::remote_participant_count() const
+{
+  std::lock_guard<std::mutex> lock(impl_->peers_mutex);
+  return impl_->remote_participants.size();
+}
+
+uint64_t Participant::dropped_participant_count() const
+{
+  std::lock_guard<std::mutex> lock(impl_->peers_mutex);
+  return impl_->dropped_participants;
 }
 
 std::vector<uint8_t> Participant::gid() const

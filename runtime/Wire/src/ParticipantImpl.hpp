@@ -18,6 +18,7 @@
 
 #include <map>
 #include <mutex>
+#include <set>
 #include <string>
 
 namespace ros2vtk {
@@ -63,6 +64,10 @@ public:
   eprosima::fastdds::dds::Subscriber* subscriber = nullptr;
   WakeUp wake_up;
   GraphCache graph;
+  // Link status (on_participant_discovery): remote participants alive, and lease expiries.
+  mutable std::mutex peers_mutex;
+  std::set<Gid> remote_participants;
+  uint64_t dropped_participants = 0;
 
 private:
   struct TopicEntry

@@ -1,5 +1,6 @@
 // ros2vtk — OpenIGTLink message content ↔ plain values, through Debian's OpenIGTLink 1.11 message
-// classes (their Pack/Unpack do the byte order and layout; Frame.hpp does the framing around).
+// classes (their Pack/Unpack do the byte order and layout; Frame.hpp does the framing around):
+// TRANSFORM, POSITION, POINT, STRING, IMAGE, POLYDATA, TDATA.
 // Values are what the protocol carries: millimetres, row-major 4x4 matrices, image matrices
 // with the translation at the volume centre. No VTK here; the connector node converts.
 #ifndef ros2vtk_igtl_Codec_hpp
@@ -55,6 +56,13 @@ struct Mesh
   std::vector<std::vector<std::uint32_t>> vertices;
 };
 
+/// One TDATA element (tdata.md): an instrument's name (≤ 20 bytes) and its 6D pose (mm).
+struct TrackingItem
+{
+  std::string name;
+  Matrix matrix{};
+};
+
 std::size_t scalar_size(ScalarType type);
 
 // Encoders: a complete frame (header v1) ready for encode_frame (after adding metadata, if any).
@@ -64,6 +72,9 @@ Frame encode_points(const std::string& device, const std::vector<PointItem>& poi
   std::uint64_t timestamp);
 Frame encode_image(const std::string& device, const Image& image, std::uint64_t timestamp);
 Frame encode_polydata(const std::string& device, const Mesh& mesh, std::uint64_t timestamp);
+/// TDATA: every element as a 6D instrument (Slicer makes one linear transform per name).
+Frame encode_tracking_data(const std::string& device, const std::vector<TrackingItem>& items,
+  std::uint64_t timestamp);
 
 // Decoders: false with `error` when the content is not a valid body of the frame's type.
 bool decode_transform(const Frame& frame, Matrix& matrix, std::string& error);
@@ -72,6 +83,7 @@ bool decode_position(const Frame& frame, Matrix& matrix, std::string& error);
 bool decode_string(const Frame& frame, std::string& text, std::string& error);
 bool decode_points(const Frame& frame, std::vector<PointItem>& points, std::string& error);
 bool decode_image(const Frame& frame, Image& image, std::string& error);
+bool decode_tracking_data(const Frame& frame, std::vector<TrackingItem>& items, std::string& error);
 
 } // namespace igtl
 } // namespace ros2vtk

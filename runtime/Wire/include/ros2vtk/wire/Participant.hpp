@@ -38,8 +38,16 @@ struct ParticipantOptions
   /// goes"). The kernel caps it at net.core.rmem_max / wmem_max. 0 keeps the OS default.
   /// ROS2VTK_SOCKET_BUFFER_BYTES overrides it (the benchmarks' same-run baseline uses 0).
   uint32_t socket_buffer_bytes = 4u * 1024u * 1024u;
-  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY and ROS_STATIC_PEERS
-  /// (';'-separated; rmw's limit of 32 peers).
+  /// Fast DDS discovery servers (ROS_DISCOVERY_SERVER: "host:port;host:port", the position in
+  /// the list is the server id, as Fast DDS reads it; empty: no server). The participant is
+  /// then a discovery client of them, with no multicast.
+  std::string discovery_servers;
+  /// ROS_SUPER_CLIENT=TRUE (as rmw_fastrtps): a super client, which the servers tell about the
+  /// whole graph (node and topic lists), not only about the endpoints it matches.
+  bool super_client = false;
+  /// Reads ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY, ROS_STATIC_PEERS
+  /// (';'-separated; rmw's limit of 32 peers), ROS_DISCOVERY_SERVER, ROS_SUPER_CLIENT
+  /// and ROS2VTK_SOCKET_BUFFER_BYTES.
   static ParticipantOptions from_environment();
 };
 
@@ -97,6 +105,12 @@ public:
   std::vector<TopicInfo> topic_names_and_types() const;
   size_t count_publishers(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
+
+  /// Link status: remote participants (other processes' nodes, on any host) discovered and not
+  /// yet removed, and how many of them were dropped because their lease expired (silence
+  /// beyond the lease duration, e.g. a cut network) since this participant was created.
+  size_t remote_participant_count() const;
+  uint64_t dropped_participant_count() const;
 
   /// 16-byte DDS GUID of the participant (the rmw gid).
   std::vector<uint8_t> gid() const;

@@ -31,10 +31,23 @@ struct QoS
   /// rmw_qos_profile_parameters / parameter_events: keep last 1000, reliable, volatile.
   static QoS parameters() { return QoS{ History::KeepLast, 1000, Reliability::Reliable, Durability::Volatile }; }
 
-  /// Profiles by their ROS names: "default", "sensor_data", "services_default", "parameters",
-  /// "parameter_events", "transient_local" (alias "latched"), "keep_all" (reliable, nothing
-  /// dropped by history). False for unknown names.
+  /// Profiles by their ROS names: "default" (alias "system_default"), "sensor_data" (alias
+  /// "best_effort"), "services_default" (alias "services"), "parameters", "parameter_events",
+  /// "transient_local" (alias "latched"), "keep_all" (reliable, nothing dropped by history).
+  /// False for unknown names. This table is the only list of profile names (QoS.cpp).
   static bool from_name(const std::string& name, QoS& qos);
+  /// Every name from_name accepts, comma-separated, for error messages.
+  static std::string profile_names();
+
+  /// Policy values as ROS 2 spells them ("reliable", "best_effort", "volatile",
+  /// "transient_local", "keep_last", "keep_all"), for setters, scene files and logs. Each parse
+  /// returns false (leaving `value` alone) for a null or unknown name.
+  static const char* name_of(Reliability value);
+  static const char* name_of(Durability value);
+  static const char* name_of(History value);
+  static bool parse(const char* name, Reliability& value);
+  static bool parse(const char* name, Durability& value);
+  static bool parse(const char* name, History& value);
 
   /// "reliable, volatile, keep_last(10)" — for logs and scene files.
   std::string to_string() const;

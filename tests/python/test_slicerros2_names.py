@@ -1,0 +1,58 @@
+"""SlicerROS2 spellings the wrapped API accepts (issue 14's compatibility surface): the
+Registered… names without Get, children by scene node ID, MRML's AddNewNodeByClass with
+vtkMRMLROS2… class names, and GetParameterType's "" for a parameter never seen."""
+from __future__ import annotations
+
+import ros2vtk
+
+
+def test_registered_node_classes_in_both_spellings():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    assert node.RegisteredROS2PublisherNodes() == node.GetRegisteredROS2PublisherNodes()
+    assert node.RegisteredROS2SubscriberNodes() == node.GetRegisteredROS2SubscriberNodes()
+    assert 'vtkROS2PublisherPoseNode' in node.RegisteredROS2PublisherNodes().split()
+    assert 'vtkROS2SubscriberWrenchNode' in node.RegisteredROS2SubscriberNodes().split()
+
+
+def test_children_by_scene_node_id_only_from_their_own_ros_node():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    lookup = node.CreateAndAddTf2LookupNode('world', 'tool')
+    broadcaster = node.CreateAndAddTf2BroadcasterNode('world', 'probe')
+    parameters = node.CreateAndAddParameterNode('/robot_state_publisher')
+    assert node.GetTf2LookupNodeByID(lookup.GetID()) is lookup
+    assert node.GetTf2BroadcasterNodeByID(broadcaster.GetID()) is broadcaster
+    assert node.GetParameterNodeByNodeID(parameters.GetID()) is parameters
+    # The wrong kind or an unknown ID gives None, not another node.
+    assert node.GetTf2LookupNodeByID(broadcaster.GetID()) is None
+    assert node.GetParameterNodeByNodeID('vtkROS2NoSuchNode7') is None
+
+
+def test_add_new_node_by_class_takes_the_mrml_spelling():
+    logic = ros2vtk.vtkROS2Logic()
+    scene = logic.GetScene()
+    created = scene.AddNewNodeByClass('vtkMRMLROS2NodeNode', 'planner')
+    assert created.GetClassName() == 'vtkROS2NodeNode' and created.GetName() == 'planner'
+    assert scene.GetNodeByID(created.GetID()) is created
+    transform = scene.AddNewNodeByClass('vtkROS2TransformNode')
+    assert transform.GetClassName() == 'vtkROS2TransformNode'
+    assert scene.AddNewNodeByClass('vtkMRMLROS2NoSuchNode') is None
+
+
+def test_parameter_type_of_a_parameter_never_seen_is_empty():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    parameters = node.CreateAndAddParameterNode('/nobody_here')
+    parameters.AddParameter('robot_description')
+    assert parameters.GetParameterType('robot_description') == ''
+    assert parameters.GetParameterType('never_added') == ''
+
+
+def test_empty_publisher_takes_slicerros2s_publish_with_text():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    publisher = node.CreateAndAddPublisherNode('Empty', '/slicerros2_names_empty')
+    assert publisher.Publish('') == 1
+    assert publisher.Publish() == 1
+    assert publisher.GetNumberOfMessagesSent() == 2
