@@ -56,3 +56,35 @@ def test_empty_publisher_takes_slicerros2s_publish_with_text():
     assert publisher.Publish('') == 1
     assert publisher.Publish() == 1
     assert publisher.GetNumberOfMessagesSent() == 2
+
+
+def test_spinning_state_and_its_warning():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    import vtkmodules.vtkCommonCore as core
+    assert node.GetSpinning() is False
+    window = core.vtkStringOutputWindow()
+    previous = core.vtkOutputWindow.GetInstance()
+    core.vtkOutputWindow.SetInstance(window)
+    try:
+        node.WarnIfNotSpinning('adding a subscriber')  # a VTK warning, as SlicerROS2 gives
+        logic.Spin()
+        node.WarnIfNotSpinning('adding a lookup')      # spinning now: silent
+    finally:
+        core.vtkOutputWindow.SetInstance(previous)
+    assert 'Node slicer is not spinning (yet) when adding a subscriber' in window.GetOutput()
+    assert 'adding a lookup' not in window.GetOutput()
+    assert node.GetSpinning() is True
+
+
+def test_tf2_nodes_removed_by_scene_node_id():
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    lookup = node.CreateAndAddTf2LookupNode('world', 'pointer')
+    broadcaster = node.CreateAndAddTf2BroadcasterNode('world', 'target')
+    lookup_id, broadcaster_id = lookup.GetID(), broadcaster.GetID()
+    assert not node.RemoveAndDeleteTf2LookupNode(broadcaster_id)  # not a lookup: refused
+    assert node.RemoveAndDeleteTf2LookupNode(lookup_id)
+    assert node.RemoveAndDeleteTf2BroadcasterNode(broadcaster_id)
+    assert logic.GetScene().GetNodeByID(lookup_id) is None
+    assert node.GetTf2BroadcasterNodeByParentChild('world', 'target') is None

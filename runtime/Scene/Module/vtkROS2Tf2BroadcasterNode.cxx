@@ -216,3 +216,15 @@ vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByID(const char
 {
   return vtkROS2Tf2BroadcasterNode::SafeDownCast(this->FindChildByID(Tf2BroadcasterRole, nodeID));
 }
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* nodeID)
+{
+  vtkROS2SceneNode* node = this->FindChildByID(Tf2BroadcasterRole, nodeID);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: " << (nodeID ? nodeID : "(null)") << " is not a tf2 broadcaster of this node");
+    return false;
+  }
+  return this->RemoveChild(Tf2BroadcasterRole, node);
+}

@@ -202,3 +202,15 @@ vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByID(const char* nodeID)
 {
   return vtkROS2Tf2LookupNode::SafeDownCast(this->FindChildByID(Tf2LookupRole, nodeID));
 }
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* nodeID)
+{
+  vtkROS2SceneNode* node = this->FindChildByID(Tf2LookupRole, nodeID);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: " << (nodeID ? nodeID : "(null)") << " is not a tf2 lookup of this node");
+    return false;
+  }
+  return this->RemoveChild(Tf2LookupRole, node);
+}
