@@ -88,3 +88,32 @@ def test_tf2_nodes_removed_by_scene_node_id():
     assert node.RemoveAndDeleteTf2BroadcasterNode(broadcaster_id)
     assert logic.GetScene().GetNodeByID(lookup_id) is None
     assert node.GetTf2BroadcasterNodeByParentChild('world', 'target') is None
+
+
+def test_broadcast_a_transform_node_and_look_it_up_in_the_fill_in_form():
+    import vtkmodules.vtkCommonMath as math_
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    other = logic.GetScene().AddNewNodeByClass('vtkMRMLROS2NodeNode')
+    assert other.Create('names_broadcaster')
+    lookup = node.CreateAndAddTf2LookupNode('names_world', 'names_tool')
+    lookup.SetModifiedOnLookup(True)
+    assert lookup.GetModifiedOnLookup()
+    broadcaster = other.CreateAndAddTf2BroadcasterNode('names_world', 'names_tool')
+    source = logic.GetScene().AddNewNodeByClass('vtkROS2TransformNode')
+    matrix = math_.vtkMatrix4x4()
+    matrix.SetElement(0, 3, 12.5)  # mm
+    source.SetMatrixTransformToParent(matrix)
+    modified = []
+    lookup.AddObserver('ModifiedEvent', lambda caller, event: modified.append(1))
+    assert broadcaster.Broadcast(source)
+    assert ros2vtk.spin_until(logic, lambda: lookup.GetLookupStatus() == 'ok', 10)
+    out = math_.vtkMatrix4x4()
+    lookup.GetMatrixTransformToParent(out)
+    assert abs(out.GetElement(0, 3) - 12.5) < 1e-9
+    before = len(modified)
+    import time
+    time.sleep(0.01)  # a later stamp, the same matrix
+    assert broadcaster.Broadcast(source)
+    assert ros2vtk.spin_until(logic, lambda: len(modified) > before, 10), \
+        'ModifiedOnLookup: a new stamp with the same matrix still fires ModifiedEvent'

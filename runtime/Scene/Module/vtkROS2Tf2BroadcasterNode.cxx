@@ -54,6 +54,17 @@ vtkROS2NodeNode* vtkROS2Tf2BroadcasterNode::GetROS2Node() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2Tf2BroadcasterNode::Broadcast(vtkROS2TransformNode* node)
+{
+  if (!node)
+  {
+    vtkErrorMacro("Broadcast: no transform node");
+    return false;
+  }
+  return this->Broadcast(node->GetMatrixTransformToParent());
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2Tf2BroadcasterNode::Broadcast(vtkMatrix4x4* matrix)
 {
   if (!matrix)
