@@ -106,14 +106,14 @@ def test_broadcast_a_transform_node_and_look_it_up_in_the_fill_in_form():
     source.SetMatrixTransformToParent(matrix)
     modified = []
     lookup.AddObserver('ModifiedEvent', lambda caller, event: modified.append(1))
-    assert broadcaster.Broadcast(source)
-    assert ros2vtk.spin_until(logic, lambda: lookup.GetLookupStatus() == 'ok', 10)
+    # /tf is not latched: broadcast until the lookup's subscription has matched and seen one.
+    assert ros2vtk.spin_until(
+        logic, lambda: broadcaster.Broadcast(source) and lookup.GetLookupStatus() == 'ok', 10)
     out = math_.vtkMatrix4x4()
     lookup.GetMatrixTransformToParent(out)
     assert abs(out.GetElement(0, 3) - 12.5) < 1e-9
     before = len(modified)
-    import time
-    time.sleep(0.01)  # a later stamp, the same matrix
-    assert broadcaster.Broadcast(source)
-    assert ros2vtk.spin_until(logic, lambda: len(modified) > before, 10), \
+    # Later stamps, the same matrix.
+    assert ros2vtk.spin_until(
+        logic, lambda: broadcaster.Broadcast(source) and len(modified) > before, 10), \
         'ModifiedOnLookup: a new stamp with the same matrix still fires ModifiedEvent'
