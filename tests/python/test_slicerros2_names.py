@@ -117,3 +117,23 @@ def test_broadcast_a_transform_node_and_look_it_up_in_the_fill_in_form():
     assert ros2vtk.spin_until(
         logic, lambda: broadcaster.Broadcast(source) and len(modified) > before, 10), \
         'ModifiedOnLookup: a new stamp with the same matrix still fires ModifiedEvent'
+
+
+def test_int_array_publisher_takes_narrower_vtk_arrays_with_a_range_check():
+    import vtkmodules.vtkCommonCore as core
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    publisher = node.CreateAndAddPublisherNode('IntArray', '/slicerros2_names_ints')
+    subscriber = node.CreateAndAddSubscriberNode('IntArray', '/slicerros2_names_ints')
+    assert ros2vtk.spin_until(logic, lambda: publisher.GetNumberOfMatchedSubscriptions() > 0, 10)
+    ints = core.vtkIntArray()      # SlicerROS2 scripts publish vtkIntArray
+    for value in (7, -2, 2**31 - 1):
+        ints.InsertNextValue(value)
+    assert publisher.Publish(ints) == 1
+    assert ros2vtk.spin_until(logic, lambda: subscriber.GetNumberOfMessages() == 1, 10)
+    received = subscriber.GetLastMessage()
+    assert [received.GetValue(i) for i in range(received.GetNumberOfValues())] == [7, -2, 2**31 - 1]
+    fractions = core.vtkDoubleArray()
+    fractions.InsertNextValue(1.5)
+    assert publisher.Publish(fractions) == 0
+    assert 'value 1.5 at row 0 is not a whole number that fits int64' in publisher.GetLastConversionError()
