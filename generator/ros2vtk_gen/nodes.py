@@ -113,6 +113,7 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "is_empty": kind.signature == EMPTY,
         "is_object": kind.signature == OBJECT,
         "takes_encoding": kind.takes_encoding,
+        "publish_type": kind.publish_input or rule.vtk_type,
         "roles": roles,
         "element_roles": element_roles,
         "scale": scale,

@@ -35,6 +35,7 @@
 
 #include <string>
 
+class vtkDataArray;
 class vtkDoubleArray;
 class vtkImageData;
 class vtkMatrix4x4;
@@ -148,13 +149,13 @@ bool VTKToROS2(double value, ::ros2vtk::std_msgs::msg::Float64& message,
 // IntArray: std_msgs/msg/Int64MultiArray <-> vtkTypeInt64Array (kind multiarray_array, std_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::Int64MultiArray& message, vtkTypeInt64Array* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
-bool VTKToROS2(vtkTypeInt64Array* object, ::ros2vtk::std_msgs::msg::Int64MultiArray& message,
+bool VTKToROS2(vtkDataArray* object, ::ros2vtk::std_msgs::msg::Int64MultiArray& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 // DoubleArray: std_msgs/msg/Float64MultiArray <-> vtkDoubleArray (kind multiarray_array, std_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::Float64MultiArray& message, vtkDoubleArray* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
-bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& message,
+bool VTKToROS2(vtkDataArray* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 // IntTable: std_msgs/msg/Int64MultiArray <-> vtkTable (kind multiarray_table, std_msgs.toml).

@@ -4,6 +4,7 @@
 
 #include "ros2vtk/convert/Convert.hpp"
 
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
@@ -519,7 +520,7 @@ bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::Int64MultiArray& message, vtkType
   return ::ros2vtk::convert::multi_array_to_array(layout, message.data, object, error);
 }
 
-bool VTKToROS2(vtkTypeInt64Array* object, ::ros2vtk::std_msgs::msg::Int64MultiArray& message,
+bool VTKToROS2(vtkDataArray* object, ::ros2vtk::std_msgs::msg::Int64MultiArray& message,
   double /*lengthScale*/, std::string* error)
 {
   ::ros2vtk::convert::MultiArrayLayout layout;
@@ -556,7 +557,7 @@ bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::Float64MultiArray& message, vtkDo
   return ::ros2vtk::convert::multi_array_to_array(layout, message.data, object, error);
 }
 
-bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& message,
+bool VTKToROS2(vtkDataArray* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& message,
   double /*lengthScale*/, std::string* error)
 {
   ::ros2vtk::convert::MultiArrayLayout layout;

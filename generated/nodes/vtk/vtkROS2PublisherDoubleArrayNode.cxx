@@ -9,6 +9,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkDoubleArray.h"
+#include "vtkDataArray.h"
 
 namespace
 {
@@ -36,7 +37,7 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherDoubleArrayNode::GetMes
 }
 
 //------------------------------------------------------------------------------
-int vtkROS2PublisherDoubleArrayNode::Publish(vtkDoubleArray* object)
+int vtkROS2PublisherDoubleArrayNode::Publish(vtkDataArray* object)
 {
   MessageType message;
   std::string error;
@@ -44,7 +45,7 @@ int vtkROS2PublisherDoubleArrayNode::Publish(vtkDoubleArray* object)
                                                 : ::ros2vtk::convert::kNoLengthScaling;
   if (!object)
   {
-    error = "Publish: the vtkDoubleArray is null";
+    error = "Publish: the vtkDataArray is null";
   }
   else if (!::ros2vtk::nodes::VTKToROS2(object, message, lengthScale, &error))
   {
@@ -62,7 +63,7 @@ int vtkROS2PublisherDoubleArrayNode::Publish(vtkDoubleArray* object)
 //------------------------------------------------------------------------------
 int vtkROS2PublisherDoubleArrayNode::PublishObject(vtkObject* object)
 {
-  auto* typed = vtkDoubleArray::SafeDownCast(object);
+  auto* typed = vtkDataArray::SafeDownCast(object);
   if (!typed)
   {
     return this->Superclass::PublishObject(object);

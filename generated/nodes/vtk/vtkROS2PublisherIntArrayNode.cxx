@@ -9,6 +9,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkTypeInt64Array.h"
+#include "vtkDataArray.h"
 
 namespace
 {
@@ -36,7 +37,7 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherIntArrayNode::GetMessag
 }
 
 //------------------------------------------------------------------------------
-int vtkROS2PublisherIntArrayNode::Publish(vtkTypeInt64Array* object)
+int vtkROS2PublisherIntArrayNode::Publish(vtkDataArray* object)
 {
   MessageType message;
   std::string error;
@@ -44,7 +45,7 @@ int vtkROS2PublisherIntArrayNode::Publish(vtkTypeInt64Array* object)
                                                 : ::ros2vtk::convert::kNoLengthScaling;
   if (!object)
   {
-    error = "Publish: the vtkTypeInt64Array is null";
+    error = "Publish: the vtkDataArray is null";
   }
   else if (!::ros2vtk::nodes::VTKToROS2(object, message, lengthScale, &error))
   {
@@ -62,7 +63,7 @@ int vtkROS2PublisherIntArrayNode::Publish(vtkTypeInt64Array* object)
 //------------------------------------------------------------------------------
 int vtkROS2PublisherIntArrayNode::PublishObject(vtkObject* object)
 {
-  auto* typed = vtkTypeInt64Array::SafeDownCast(object);
+  auto* typed = vtkDataArray::SafeDownCast(object);
   if (!typed)
   {
     return this->Superclass::PublishObject(object);

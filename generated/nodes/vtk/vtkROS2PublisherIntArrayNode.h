@@ -11,8 +11,9 @@
 #include <string> // for std::string
 
 class vtkTypeInt64Array;
+class vtkDataArray;
 
-/// Publishes std_msgs/msg/Int64MultiArray from vtkTypeInt64Array (mapping rule IntArray, std_msgs.toml).
+/// Publishes std_msgs/msg/Int64MultiArray from vtkDataArray (mapping rule IntArray, std_msgs.toml).
 class ROS2VTKNODES_EXPORT vtkROS2PublisherIntArrayNode : public vtkROS2PublisherNode
 {
 public:
@@ -22,9 +23,9 @@ public:
 
   /// Converts `message` and sends it. Returns the number of messages sent: 1, or 0 when it
   /// cannot be converted or sent (vtkErrorMacro says why; GetLastConversionError keeps it).
-  int Publish(vtkTypeInt64Array* message);
+  int Publish(vtkDataArray* message);
 
-  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkTypeInt64Array is
+  /// The generic path (vtkROS2PublisherNode::PublishObject): a vtkDataArray is
   /// published through Publish; any other object is refused with the reason.
   int PublishObject(vtkObject* object) override;
 

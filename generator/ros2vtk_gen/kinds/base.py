@@ -82,6 +82,9 @@ class Kind:
     scalable: Tuple[str, ...] = ()
     signature: str = OBJECT
     takes_encoding: bool = False
+    # The VTK class Publish and VTKToROS2 take when broader than what the subscriber gives
+    # (a multi-array publisher takes any vtkDataArray, values converted with a range check).
+    publish_input: str = ""
     check: Optional[Check] = None
     scalable_paths: Optional[Callable[..., Dict[str, str]]] = None
     # A `lengths` entry ending so names a place inside the bytes, not a field (pointcloud2).

@@ -29,5 +29,5 @@ def _view(rule, table):
 KINDS = (
     Kind(name="multiarray_table", vtk_types=("vtkTable",), roles=ROLES, view=_view),
     Kind(name="multiarray_array", vtk_types=tuple(ARRAY_TYPES.values()), roles=ROLES,
-         check=_check_array, view=_view),
+         check=_check_array, view=_view, publish_input="vtkDataArray"),
 )

@@ -52,6 +52,7 @@ public:
   std::string NodeName;      // as given to Create, kept for scene files after Destroy
   std::string NodeNamespace; // as given to Create
   bool CreateOnRestore = false; // read from a scene file: Create in OnSceneRestored
+  bool Spinning = false;        // Spin ran since Create (SlicerROS2's GetSpinning)
   // Own parameters, tf2: released before the participant they live in.
   std::unique_ptr<ros2vtk::wire::ParameterServer> Parameters;
   std::unique_ptr<ros2vtk::tf2::BufferCore> Tf2Buffer;
@@ -96,6 +97,7 @@ vtkROS2NodeNode::~vtkROS2NodeNode()
   // only be attached to a node of their own scene, so none can outlive the participant here.
   this->Internals->ReleaseParticipantObjects();
   this->Internals->Participant.reset();
+  this->Internals->Spinning = false;
 }
 
 //------------------------------------------------------------------------------
@@ -280,6 +282,7 @@ int vtkROS2NodeNode::Spin()
   {
     return 0;
   }
+  this->Internals->Spinning = true;
   // Clear before draining: a sample queued after this point raises the wake-up again.
   this->Internals->Participant->wake_up().clear();
   int handled = 0;
@@ -308,6 +311,22 @@ int vtkROS2NodeNode::Spin()
     }
   }
   return handled;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::GetSpinning() const
+{
+  return this->Internals->Participant && this->Internals->Spinning;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::WarnIfNotSpinning(const char* context) const
+{
+  if (!this->GetSpinning())
+  {
+    vtkWarningMacro("Node " << this->GetROS2NodeName() << " is not spinning (yet) when "
+                            << (context ? context : ""));
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -116,6 +116,10 @@ public:
   /// Processes what DDS queued for this node's subscribers, on the calling thread (each
   /// subscriber with new messages fires one ModifiedEvent). Returns the number of messages.
   int Spin();
+  /// SlicerROS2's names: true once this created node has been spun, and a warning naming
+  /// `context` ("Node slicer is not spinning (yet) when ...") while it has not.
+  bool GetSpinning() const;
+  void WarnIfNotSpinning(const char* context) const;
   /// Readable (poll POLLIN) while this node has queued data; -1 before Create. Stays open
   /// until Destroy.
   int GetWakeUpFileDescriptor();
@@ -130,11 +134,15 @@ public:
   /// By scene node ID (SlicerROS2 scripts keep IDs); nullptr unless it is this node's lookup.
   vtkROS2Tf2LookupNode* GetTf2LookupNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame);
+  /// By scene node ID (SlicerROS2's one-argument form).
+  bool RemoveAndDeleteTf2LookupNode(const char* nodeID);
   vtkROS2Tf2BroadcasterNode* CreateAndAddTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
   vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByParentChild(const char* parentFrame, const char* childFrame);
   /// By scene node ID; nullptr unless it is this node's broadcaster.
   vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
+  /// By scene node ID (SlicerROS2's one-argument form).
+  bool RemoveAndDeleteTf2BroadcasterNode(const char* nodeID);
   ///@}
 
   ///@{

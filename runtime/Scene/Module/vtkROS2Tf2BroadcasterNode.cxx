@@ -54,6 +54,17 @@ vtkROS2NodeNode* vtkROS2Tf2BroadcasterNode::GetROS2Node() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2Tf2BroadcasterNode::Broadcast(vtkROS2TransformNode* node)
+{
+  if (!node)
+  {
+    vtkErrorMacro("Broadcast: no transform node");
+    return false;
+  }
+  return this->Broadcast(node->GetMatrixTransformToParent());
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2Tf2BroadcasterNode::Broadcast(vtkMatrix4x4* matrix)
 {
   if (!matrix)
@@ -215,4 +226,16 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame,
 vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByID(const char* nodeID)
 {
   return vtkROS2Tf2BroadcasterNode::SafeDownCast(this->FindChildByID(Tf2BroadcasterRole, nodeID));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* nodeID)
+{
+  vtkROS2SceneNode* node = this->FindChildByID(Tf2BroadcasterRole, nodeID);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: " << (nodeID ? nodeID : "(null)") << " is not a tf2 broadcaster of this node");
+    return false;
+  }
+  return this->RemoveChild(Tf2BroadcasterRole, node);
 }

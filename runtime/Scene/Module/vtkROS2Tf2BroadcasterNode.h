@@ -38,6 +38,8 @@ public:
   /// Sends `matrix` (must be rigid). False with vtkErrorMacro when frames are unset, the node is
   /// not attached to a created ROS node, or the matrix is not a rigid transform.
   bool Broadcast(vtkMatrix4x4* matrix);
+  /// Sends `node`'s matrix to parent once (SlicerROS2's Broadcast(transformNode)).
+  bool Broadcast(vtkROS2TransformNode* node);
   /// Broadcasts the transform node's matrix to parent now and on each of its changes
   /// (nullptr stops observing).
   bool ObserveTransformNode(vtkROS2TransformNode* node);

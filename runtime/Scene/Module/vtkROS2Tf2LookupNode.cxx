@@ -96,6 +96,7 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
   }
   this->Status = 1;
   this->LastError.clear();
+  const bool newStamp = result.stamp != this->LastStampNanoseconds;
   this->LastStampNanoseconds = result.stamp;
   this->LastStamp = static_cast<double>(result.stamp) * 1e-9;
   const Eigen::Isometry3d isometry = result.isometry();
@@ -109,7 +110,12 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
     }
     matrix->SetElement(i, 3, isometry.translation()(i) * scale);
   }
-  return this->SetMatrixTransformToParent(matrix);
+  const bool changed = this->SetMatrixTransformToParent(matrix);
+  if (!changed && newStamp && this->ModifiedOnLookup)
+  {
+    this->Modified();
+  }
+  return changed;
 }
 
 //------------------------------------------------------------------------------
@@ -119,6 +125,7 @@ void vtkROS2Tf2LookupNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("parentFrame", this->ParentFrame.c_str());
   element->SetAttribute("childFrame", this->ChildFrame.c_str());
   element->SetIntAttribute("scaleLengths", this->ScaleLengths ? 1 : 0);
+  element->SetIntAttribute("modifiedOnLookup", this->ModifiedOnLookup ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -134,6 +141,11 @@ bool vtkROS2Tf2LookupNode::ReadXML(vtkXMLDataElement* element)
   if (element->GetScalarAttribute("scaleLengths", scale))
   {
     this->ScaleLengths = scale != 0;
+  }
+  int modifiedOnLookup = 0;
+  if (element->GetScalarAttribute("modifiedOnLookup", modifiedOnLookup))
+  {
+    this->ModifiedOnLookup = modifiedOnLookup != 0;
   }
   return true;
 }
@@ -201,4 +213,16 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, cons
 vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByID(const char* nodeID)
 {
   return vtkROS2Tf2LookupNode::SafeDownCast(this->FindChildByID(Tf2LookupRole, nodeID));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* nodeID)
+{
+  vtkROS2SceneNode* node = this->FindChildByID(Tf2LookupRole, nodeID);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: " << (nodeID ? nodeID : "(null)") << " is not a tf2 lookup of this node");
+    return false;
+  }
+  return this->RemoveChild(Tf2LookupRole, node);
 }

@@ -47,6 +47,12 @@ public:
   const char* GetLastLookupError() const { return this->LastError.c_str(); }
   /// Stamp of the transform last applied, in seconds (0 before the first success).
   double GetLastLookupTime() const { return this->LastStamp; }
+  /// Off (default): events only when the looked-up matrix changes. On (SlicerROS2's
+  /// SetModifiedOnLookup): a ModifiedEvent for every lookup that brings a new stamp, even when
+  /// the matrix is the same (e.g. to drive a per-sample observer).
+  vtkSetMacro(ModifiedOnLookup, bool);
+  vtkGetMacro(ModifiedOnLookup, bool);
+  vtkBooleanMacro(ModifiedOnLookup, bool);
   /// True when the transform stamp differs from (sec, nsec) — SlicerROS2's IsDifferentFromLast.
   bool IsDifferentFromLast(int sec, int nsec) const;
 
@@ -74,6 +80,7 @@ protected:
   std::string ParentFrame;
   std::string ChildFrame;
   bool ScaleLengths = true;
+  bool ModifiedOnLookup = false;
   int Status = 0; // 0 waiting, 1 ok, 2 failed
   std::string LastError;
   double LastStamp = 0.0;

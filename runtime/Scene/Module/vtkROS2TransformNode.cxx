@@ -30,6 +30,15 @@ vtkMatrix4x4* vtkROS2TransformNode::GetMatrixTransformToParent()
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2TransformNode::GetMatrixTransformToParent(vtkMatrix4x4* matrix)
+{
+  if (matrix)
+  {
+    matrix->DeepCopy(this->MatrixTransformToParent);
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2TransformNode::SetMatrixTransformToParent(vtkMatrix4x4* matrix)
 {
   if (!matrix)

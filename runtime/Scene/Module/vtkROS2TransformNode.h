@@ -26,6 +26,8 @@ public:
 
   /// The matrix to the parent (owned by the node; do not modify it directly, use Set...).
   vtkMatrix4x4* GetMatrixTransformToParent();
+  /// The fill-in form (SlicerROS2 and MRML): copies the matrix into `matrix`.
+  void GetMatrixTransformToParent(vtkMatrix4x4* matrix);
   /// Copies `matrix`; fires TransformModifiedEvent only when a value changed. Returns whether
   /// it changed.
   bool SetMatrixTransformToParent(vtkMatrix4x4* matrix);
