@@ -46,6 +46,14 @@ class Message:
 
     # ------------------------------------------------------------------ construction helpers
     @classmethod
+    def of(cls, vtk_message) -> 'Message':
+        """Wraps a vtkROS2Message a node handed out (a service client's CreateBlankRequest or
+        GetLastResponse) for attribute and Get<Field>/Set<Field> access; writes go to it."""
+        if vtk_message is None:
+            raise ValueError('no message object (None)')
+        return cls(_vtk=vtk_message)
+
+    @classmethod
     def last_of(cls, subscriber) -> 'Message':
         """The newest message of a subscriber node; raises LookupError before the first."""
         message = cls()

@@ -137,3 +137,67 @@ def test_int_array_publisher_takes_narrower_vtk_arrays_with_a_range_check():
     fractions.InsertNextValue(1.5)
     assert publisher.Publish(fractions) == 0
     assert 'value 1.5 at row 0 is not a whole number that fits int64' in publisher.GetLastConversionError()
+
+
+def test_a_node_whose_logic_was_garbage_collected_says_why():
+    """`node = ros2vtk.vtkROS2Logic().GetDefaultROS2Node()` loses the logic at once (SlicerROS2's
+    logic lives as long as Slicer); the node's next error names that cause, not 'add this ROS
+    node to a scene first'."""
+    import gc
+    import vtk
+
+    node = ros2vtk.vtkROS2Logic().GetDefaultROS2Node()
+    gc.collect()
+    errors = []
+
+    @vtk.calldata_type(vtk.VTK_STRING)
+    def on_error(_caller, _event, text):
+        errors.append(text)
+
+    node.AddObserver('ErrorEvent', on_error)
+    assert node.CreateAndAddPublisherNode('String', '/orphan') is None
+    assert len(errors) == 1
+    assert 'the vtkROS2Logic that owned its scene was deleted' in errors[0]
+    assert 'keep a reference to the logic' in errors[0]
+
+    never_in_a_scene = ros2vtk.vtkROS2NodeNode()
+    never_in_a_scene.AddObserver('ErrorEvent', on_error)
+    assert never_in_a_scene.CreateAndAddPublisherNode('String', '/orphan') is None
+    assert 'add this ROS node to a scene first' in errors[-1]
+
+
+def test_logic_add_robot_and_remove_robot_act_on_the_default_node():
+    logic = ros2vtk.vtkROS2Logic()
+    robot = logic.AddRobot('arm', '/robot_state_publisher', 'robot_description', 'world', '')
+    assert robot is not None and robot.GetClassName() == 'vtkROS2RobotNode'
+    assert logic.GetDefaultROS2Node().GetRobotNodeByName('arm') is robot
+    assert logic.RemoveRobot('arm') is True
+    assert logic.GetDefaultROS2Node().GetRobotNodeByName('arm') is None
+    assert logic.RemoveRobot('arm') is False
+
+
+def test_reading_a_subscriber_whose_node_never_spun_warns_once_with_the_fix():
+    """SlicerROS2 scripts have no spin of their own (Slicer spins on a timer): reading a
+    subscriber before anything spun says why nothing arrives, once."""
+    import vtk
+
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    subscriber = node.CreateAndAddSubscriberNode('String', '/never_spun')
+    warnings = []
+
+    @vtk.calldata_type(vtk.VTK_STRING)
+    def on_warning(_caller, _event, text):
+        warnings.append(text)
+
+    subscriber.AddObserver('WarningEvent', on_warning)
+    assert subscriber.GetLastMessage() == ''
+    subscriber.GetLastMessageYAML()
+    assert len(warnings) == 1
+    assert 'has never spun' in warnings[0] and 'logic.Spin()' in warnings[0]
+
+    logic.Spin()
+    spun = node.CreateAndAddSubscriberNode('String', '/spun')
+    spun.AddObserver('WarningEvent', on_warning)
+    spun.GetLastMessage()
+    assert len(warnings) == 1

@@ -2,10 +2,11 @@
 // - A scene node class written here, outside the runtime (one class plus one registration
 //   line), takes part in spin (OnROS2NodeSpin), save and load like the runtime's own kinds.
 // - Finding a child by its key goes through an index: creating N tf2 lookups visits O(N)
-//   children, not O(N^2) (counted, never timed).
+//   children, not O(N^2) (counted, never timed); loading a whole robot of N links likewise.
 #include "NodeClassRegistry.hpp"
 #include "vtkROS2Logic.h"
 #include "vtkROS2NodeNode.h"
+#include "vtkROS2RobotNode.h"
 #include "vtkROS2Scene.h"
 #include "vtkROS2Tf2LookupNode.h"
 
@@ -15,7 +16,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
 #include <string>
+
+#include "../robot/chain_urdf.hpp"
 
 namespace
 {
@@ -139,4 +145,41 @@ TEST(ChildKinds, CreatingLookupsVisitsChildrenLinearly)
   EXPECT_LE(small, 4u * 500u);
   EXPECT_LE(large, 4u * 2000u);
   EXPECT_LE(large, 5u * small); // 4x the lookups, not 16x the visits
+}
+
+namespace
+{
+// Child visits while loading a URDF chain of `links` links from a file: the robot node makes one
+// lookup (and one model) per link, each found through the index first.
+vtkTypeUInt64 VisitsToLoadChainRobot(int links)
+{
+  const std::filesystem::path file =
+    std::filesystem::temp_directory_path() / ("ros2vtk_chain_" + std::to_string(links) + "_" + std::to_string(::getpid()) + ".urdf");
+  std::ofstream(file) << ros2vtk_test::chain_urdf(links);
+  vtkNew<vtkROS2Logic> logic;
+  vtkROS2NodeNode* rosNode = logic->GetDefaultROS2Node();
+  const vtkTypeUInt64 before = rosNode->GetNumberOfChildVisits();
+  vtkROS2RobotNode* robot = rosNode->CreateAndAddRobotNodeFromFile("chain", file.string().c_str());
+  logic->Spin(); // the robot builds its links on the spin that takes the description
+  const vtkTypeUInt64 visits = rosNode->GetNumberOfChildVisits() - before;
+  EXPECT_NE(robot, nullptr);
+  if (robot)
+  {
+    EXPECT_TRUE(robot->IsLoaded()) << robot->GetLastError();
+    EXPECT_EQ(robot->GetNumberOfLinks(), links);
+  }
+  logic->GetScene()->Clear();
+  std::filesystem::remove(file);
+  return visits;
+}
+} // namespace
+
+TEST(ChildKinds, LoadingARobotVisitsChildrenLinearly)
+{
+  const vtkTypeUInt64 small = VisitsToLoadChainRobot(500);
+  const vtkTypeUInt64 large = VisitsToLoadChainRobot(4000);
+  // Lookups found by a scan would visit ~N^2/2 children (125 000 and 8 000 000).
+  EXPECT_LE(small, 8u * 500u);
+  EXPECT_LE(large, 8u * 4000u);
+  EXPECT_LE(large, 10u * small); // 8x the links, not 64x the visits
 }

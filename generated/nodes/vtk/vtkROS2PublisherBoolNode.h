@@ -25,6 +25,9 @@ public:
   /// through Publish; any other value is refused with the reason.
   int PublishValue(const vtkVariant& value) override;
 
+  /// The blank value (false), as SlicerROS2's GetBlankMessage gives it.
+  bool GetBlankMessage() const { return false; }
+
   const char* GetSlicerType() const override { return "bool"; }
 
 protected:

@@ -25,6 +25,9 @@ public:
   /// through Publish; any other value is refused with the reason.
   int PublishValue(const vtkVariant& value) override;
 
+  /// The blank value (0), as SlicerROS2's GetBlankMessage gives it.
+  double GetBlankMessage() const { return 0; }
+
   const char* GetSlicerType() const override { return "double"; }
 
 protected:

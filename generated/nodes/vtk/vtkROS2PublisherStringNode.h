@@ -25,6 +25,9 @@ public:
   /// through Publish; any other value is refused with the reason.
   int PublishValue(const vtkVariant& value) override;
 
+  /// The blank value (std::string()), as SlicerROS2's GetBlankMessage gives it.
+  std::string GetBlankMessage() const { return std::string(); }
+
   const char* GetSlicerType() const override { return "std::string"; }
 
 protected:

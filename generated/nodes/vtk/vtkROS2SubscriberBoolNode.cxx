@@ -36,6 +36,7 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberBoolNode::GetMessageTy
 //------------------------------------------------------------------------------
 bool vtkROS2SubscriberBoolNode::GetLastMessage() const
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   const auto* raw = static_cast<const MessageType*>(this->GetLastRawMessage());
   bool value = false;
   if (raw)

@@ -63,6 +63,7 @@ bool vtkROS2SubscriberDoubleArrayNode::Convert(const void* raw, vtkDoubleArray* 
 //------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2SubscriberDoubleArrayNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

@@ -36,6 +36,7 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberDoubleNode::GetMessage
 //------------------------------------------------------------------------------
 double vtkROS2SubscriberDoubleNode::GetLastMessage() const
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   const auto* raw = static_cast<const MessageType*>(this->GetLastRawMessage());
   double value = 0;
   if (raw)

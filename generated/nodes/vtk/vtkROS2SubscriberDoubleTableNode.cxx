@@ -63,6 +63,7 @@ bool vtkROS2SubscriberDoubleTableNode::Convert(const void* raw, vtkTable* messag
 //------------------------------------------------------------------------------
 vtkTable* vtkROS2SubscriberDoubleTableNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

@@ -21,6 +21,10 @@ public:
   /// Messages brought by the latest spin (0 when it brought none), oldest first.
   int GetNumberOfNewMessages() const { return this->Superclass::GetNumberOfNewMessages(); }
 
+  /// Always "": an empty message has no content (GetNumberOfMessages counts them). SlicerROS2
+  /// scripts compare GetLastMessage() with the '' they published.
+  std::string GetLastMessage() const { return std::string(); }
+
   const char* GetSlicerType() const override { return "void"; }
 
 protected:

@@ -63,6 +63,7 @@ bool vtkROS2SubscriberImageNode::Convert(const void* raw, vtkImageData* message)
 //------------------------------------------------------------------------------
 vtkImageData* vtkROS2SubscriberImageNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

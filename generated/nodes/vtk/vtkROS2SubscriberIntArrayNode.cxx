@@ -63,6 +63,7 @@ bool vtkROS2SubscriberIntArrayNode::Convert(const void* raw, vtkTypeInt64Array* 
 //------------------------------------------------------------------------------
 vtkTypeInt64Array* vtkROS2SubscriberIntArrayNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

@@ -36,6 +36,7 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberIntNode::GetMessageTyp
 //------------------------------------------------------------------------------
 vtkTypeInt64 vtkROS2SubscriberIntNode::GetLastMessage() const
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   const auto* raw = static_cast<const MessageType*>(this->GetLastRawMessage());
   vtkTypeInt64 value = 0;
   if (raw)

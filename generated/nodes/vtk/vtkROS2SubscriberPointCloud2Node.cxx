@@ -63,6 +63,7 @@ bool vtkROS2SubscriberPointCloud2Node::Convert(const void* raw, vtkPolyData* mes
 //------------------------------------------------------------------------------
 vtkPolyData* vtkROS2SubscriberPointCloud2Node::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

@@ -63,6 +63,7 @@ bool vtkROS2SubscriberPointCloudNode::Convert(const void* raw, vtkPoints* messag
 //------------------------------------------------------------------------------
 vtkPoints* vtkROS2SubscriberPointCloudNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

@@ -63,6 +63,7 @@ bool vtkROS2SubscriberPoseArrayNode::Convert(const void* raw, vtkTransformCollec
 //------------------------------------------------------------------------------
 vtkTransformCollection* vtkROS2SubscriberPoseArrayNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

@@ -63,6 +63,7 @@ bool vtkROS2SubscriberPoseStampedNode::Convert(const void* raw, vtkMatrix4x4* me
 //------------------------------------------------------------------------------
 vtkMatrix4x4* vtkROS2SubscriberPoseStampedNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

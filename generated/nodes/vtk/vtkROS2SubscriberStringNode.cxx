@@ -36,6 +36,7 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberStringNode::GetMessage
 //------------------------------------------------------------------------------
 std::string vtkROS2SubscriberStringNode::GetLastMessage() const
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   const auto* raw = static_cast<const MessageType*>(this->GetLastRawMessage());
   std::string value = std::string();
   if (raw)

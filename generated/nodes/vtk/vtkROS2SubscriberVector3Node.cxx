@@ -63,6 +63,7 @@ bool vtkROS2SubscriberVector3Node::Convert(const void* raw, vtkDoubleArray* mess
 //------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2SubscriberVector3Node::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

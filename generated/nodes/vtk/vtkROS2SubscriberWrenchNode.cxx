@@ -63,6 +63,7 @@ bool vtkROS2SubscriberWrenchNode::Convert(const void* raw, vtkDoubleArray* messa
 //------------------------------------------------------------------------------
 vtkDoubleArray* vtkROS2SubscriberWrenchNode::GetLastMessage()
 {
+  this->WarnIfNeverSpun("GetLastMessage");
   // The cache holds one conversion: redo it after a spin or when ScaleLengths changed.
   if (!this->LastMessageConverted || this->LastMessageScaled != this->ScaleLengths)
   {

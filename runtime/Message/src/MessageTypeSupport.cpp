@@ -38,6 +38,30 @@ std::string full_name(const std::string& name, const char* kind)
 
 } // namespace
 
+const char* field_type_name(FieldType type)
+{
+  switch (type)
+  {
+    case FieldType::Bool: return "bool";
+    case FieldType::Byte: return "byte";
+    case FieldType::Char: return "char";
+    case FieldType::Int8: return "int8";
+    case FieldType::UInt8: return "uint8";
+    case FieldType::Int16: return "int16";
+    case FieldType::UInt16: return "uint16";
+    case FieldType::Int32: return "int32";
+    case FieldType::UInt32: return "uint32";
+    case FieldType::Int64: return "int64";
+    case FieldType::UInt64: return "uint64";
+    case FieldType::Float32: return "float32";
+    case FieldType::Float64: return "float64";
+    case FieldType::String: return "string";
+    case FieldType::WString: return "wstring";
+    case FieldType::Message: return "message";
+  }
+  return "unknown";
+}
+
 void register_message_type(const MessageTypeSupport* type)
 {
   Registry& r = registry();

@@ -32,30 +32,6 @@ bool is_plain(const YAML::Node& node)
   return node.Tag() == "?"; // yaml-cpp tags quoted scalars "!" and plain ones "?"
 }
 
-const char* type_name(FieldType type)
-{
-  switch (type)
-  {
-    case FieldType::Bool: return "bool";
-    case FieldType::Byte: return "byte";
-    case FieldType::Char: return "char";
-    case FieldType::Int8: return "int8";
-    case FieldType::UInt8: return "uint8";
-    case FieldType::Int16: return "int16";
-    case FieldType::UInt16: return "uint16";
-    case FieldType::Int32: return "int32";
-    case FieldType::UInt32: return "uint32";
-    case FieldType::Int64: return "int64";
-    case FieldType::UInt64: return "uint64";
-    case FieldType::Float32: return "float32";
-    case FieldType::Float64: return "float64";
-    case FieldType::String: return "string";
-    case FieldType::WString: return "wstring";
-    case FieldType::Message: return "message";
-  }
-  return "?";
-}
-
 /// Decimal or 0x-hexadecimal integer literal with an optional sign.
 bool parse_integer_literal(const std::string& text, bool& negative, unsigned long long& magnitude,
                            bool& overflow)
@@ -288,7 +264,7 @@ private:
     }
     if (!node.IsSequence())
     {
-      return fail(path, std::string("expected a sequence of ") + type_name(field.type));
+      return fail(path, std::string("expected a sequence of ") + field_type_name(field.type));
     }
     const size_t count = node.size();
     if (field.container == Container::Array && count != field.array_size)
@@ -426,7 +402,7 @@ private:
     bool overflow = false;
     if (!node.IsScalar() || !is_plain(node) || !parse_float_literal(node.Scalar(), parsed, overflow))
     {
-      return fail(path, std::string("expected a number (") + type_name(type) + "), got " +
+      return fail(path, std::string("expected a number (") + field_type_name(type) + "), got " +
                     describe(node));
     }
     if (type == FieldType::Float32)
@@ -505,7 +481,7 @@ private:
   {
     if (!node.IsScalar())
     {
-      return fail(path, std::string("expected a ") + type_name(field.type) + ", got " +
+      return fail(path, std::string("expected a ") + field_type_name(field.type) + ", got " +
                     describe(node));
     }
     std::string text = scalar(node);

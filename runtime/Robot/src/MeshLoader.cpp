@@ -10,6 +10,9 @@
 // assimp reads OBJ + MTL as RViz 2 does (RViz loads every mesh through assimp).
 #include "ros2vtk/robot/MeshLoader.hpp"
 
+#include "ColladaFileCheck.hpp"
+#include "PlyFileCheck.hpp"
+
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/material.h>
@@ -210,98 +213,6 @@ bool load_stl(const std::string& path, MeshData* mesh, std::string* error)
   return finish(output, path, mesh, error);
 }
 
-// assimp 5.2's PLY loader never returns on a header cut short (found by mutating our test PLY),
-// so the header is checked against the PLY header grammar before assimp reads the file: "ply",
-// a format line, elements with counts, typed properties, printable ASCII only, up to
-// "end_header", a vertex element with x, y, z and faces through a vertex_indices list.
-bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* error);
-
-bool is_ply_type(const std::string& word)
-{
-  static const std::set<std::string> types{"char",  "uchar",  "short",   "ushort", "int",    "uint",
-                                           "float", "double", "int8",    "uint8",  "int16",  "uint16",
-                                           "int32", "uint32", "float32", "float64"};
-  return types.count(word) > 0;
-}
-
-bool check_ply_header(const std::string& path, std::string* error)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  auto fail = [&](const std::string& why) {
-    if (error)
-      *error = "PLY file '" + path + "' has a malformed header: " + why;
-    return false;
-  };
-  if (!std::getline(in, line) || (line != "ply" && line != "ply\r"))
-    return fail("the first line is not 'ply'");
-  bool has_format = false, has_vertex = false, in_element = false;
-  std::string element;               // the element whose properties follow
-  std::set<std::string> vertex_axes; // x, y, z seen on "vertex"
-  bool face_needs_indices = false;   // a "face" element without its vertex_indices list yet
-  for (int number = 2; std::getline(in, line); ++number)
-  {
-    const std::string at = "line " + std::to_string(number) + ": ";
-    if (number > 10000)
-      return fail("no end_header in the first 10000 lines");
-    if (!line.empty() && line.back() == '\r')
-      line.pop_back();
-    for (unsigned char c : line)
-      if ((c < 0x20 && c != '\t') || c > 0x7e)
-        return fail(at + "a byte that is not printable ASCII");
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    std::vector<std::string> rest;
-    for (std::string word; words >> word;)
-      rest.push_back(word);
-    if (keyword == "end_header")
-    {
-      if (!has_format)
-        return fail("no 'format' line");
-      if (!has_vertex || vertex_axes.size() != 3)
-        return fail("no 'element vertex' with properties x, y and z");
-      if (face_needs_indices)
-        return fail("the 'face' element has no 'property list <type> <type> vertex_indices'");
-      return true;
-    }
-    if (keyword == "format")
-    {
-      if (rest.size() != 2 || (rest[0] != "ascii" && rest[0] != "binary_little_endian" && rest[0] != "binary_big_endian"))
-        return fail(at + "expected 'format ascii|binary_little_endian|binary_big_endian <version>'");
-      has_format = true;
-    }
-    else if (keyword == "element")
-    {
-      if (rest.size() != 2 || rest[1].find_first_not_of("0123456789") != std::string::npos || rest[1].size() > 12)
-        return fail(at + "expected 'element <name> <count>'");
-      if (face_needs_indices)
-        return fail(at + "the 'face' element has no 'property list <type> <type> vertex_indices'");
-      element = rest[0];
-      has_vertex = has_vertex || element == "vertex";
-      face_needs_indices = element == "face";
-      in_element = true;
-    }
-    else if (keyword == "property")
-    {
-      const bool scalar = rest.size() == 2 && is_ply_type(rest[0]);
-      const bool list = rest.size() == 4 && rest[0] == "list" && is_ply_type(rest[1]) && is_ply_type(rest[2]);
-      if (!in_element || !(scalar || list))
-        return fail(at + "expected 'property <type> <name>' or 'property list <type> <type> <name>' after an element");
-      // Faces are read through a list named vertex_indices (or vertex_index).
-      if (element == "vertex" && scalar && (rest[1] == "x" || rest[1] == "y" || rest[1] == "z"))
-        vertex_axes.insert(rest[1]);
-      if (element == "face" && list && (rest[3] == "vertex_indices" || rest[3] == "vertex_index"))
-        face_needs_indices = false;
-    }
-    else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty())
-    {
-      return fail(at + "unknown keyword '" + keyword + "'");
-    }
-  }
-  return fail("no end_header");
-}
-
 // ---- assimp -------------------------------------------------------------------------------
 
 bool material_diffuse(const aiScene* scene, unsigned index, std::array<double, 4>* rgba, std::vector<std::string>* textures)
@@ -470,7 +381,7 @@ bool MeshLoader::load(const std::string& path, MeshData* mesh, std::string* erro
     if (extension == ".stl")
       return load_stl(path, mesh, error);
     if (extension == ".ply")
-      return check_ply_header(path, error) && load_with_assimp(path, mesh, error);
+      return PlyFileCheck::check(path, error) && load_with_assimp(path, mesh, error);
     if (!assimp_reads(extension))
     {
       if (error)
@@ -479,6 +390,8 @@ bool MeshLoader::load(const std::string& path, MeshData* mesh, std::string* erro
                  "assimp reads)";
       return false;
     }
+    if (extension == ".dae" && !ColladaFileCheck::check(path, error))
+      return false;
     return load_with_assimp(path, mesh, error);
   }
   catch (const std::exception& exception)

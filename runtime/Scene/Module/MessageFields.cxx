@@ -144,30 +144,6 @@ bool locate(const MessageTypeSupport& type, void* message, const std::string& pa
   }
 }
 
-const char* primitive_name(FieldType type)
-{
-  switch (type)
-  {
-    case FieldType::Bool: return "bool";
-    case FieldType::Byte: return "byte";
-    case FieldType::Char: return "char";
-    case FieldType::Int8: return "int8";
-    case FieldType::UInt8: return "uint8";
-    case FieldType::Int16: return "int16";
-    case FieldType::UInt16: return "uint16";
-    case FieldType::Int32: return "int32";
-    case FieldType::UInt32: return "uint32";
-    case FieldType::Int64: return "int64";
-    case FieldType::UInt64: return "uint64";
-    case FieldType::Float32: return "float32";
-    case FieldType::Float64: return "float64";
-    case FieldType::String: return "string";
-    case FieldType::WString: return "wstring";
-    case FieldType::Message: return "message";
-  }
-  return "unknown";
-}
-
 template <typename Int>
 bool parse_integer(const std::string& text, Int& out)
 {
@@ -341,7 +317,7 @@ bool set_field_from_text(const MessageTypeSupport& type, void* message, const st
   }
   if (!ok && error)
   {
-    *error = "'" + value + "' does not fit field '" + path + "' (" + primitive_name(field->type) + ")";
+    *error = "'" + value + "' does not fit field '" + path + "' (" + ros2vtk::wire::field_type_name(field->type) + ")";
   }
   return ok;
 }
@@ -404,7 +380,7 @@ bool describe_field(const MessageTypeSupport& type, const std::string& path, Fie
   description.name = field.name;
   description.is_message = field.type == FieldType::Message;
   description.nested = description.is_message ? field.nested() : nullptr;
-  description.element_type_name = description.is_message ? description.nested->ros_type : primitive_name(field.type);
+  description.element_type_name = description.is_message ? description.nested->ros_type : ros2vtk::wire::field_type_name(field.type);
   if (field.string_bound)
   {
     description.element_type_name += "<=" + std::to_string(field.string_bound);

@@ -115,13 +115,33 @@ vtkROS2Logic::vtkROS2Logic()
 vtkROS2Logic::~vtkROS2Logic()
 {
   this->DetachFromInteractor();
-  this->Internals->Scene->Clear(); // endpoints and participants go while the logic is intact
+  // Endpoints and participants go while the logic is intact. A script that kept a node but not
+  // its logic (`node = ros2vtk.vtkROS2Logic().GetDefaultROS2Node()`) hears why from the node.
+  this->Internals->Scene->ClearBecause(
+    "the vtkROS2Logic that owned its scene was deleted (in Python: keep a reference to the logic, "
+    "logic = ros2vtk.vtkROS2Logic(), for as long as its nodes are used)");
 }
 
 //------------------------------------------------------------------------------
 vtkROS2Scene* vtkROS2Logic::GetScene()
 {
   return this->Internals->Scene;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2RobotNode* vtkROS2Logic::AddRobot(const char* robotName, const char* parameterNodeName,
+  const char* parameterName, const char* fixedFrame, const char* tfPrefix)
+{
+  vtkROS2NodeNode* node = this->GetDefaultROS2Node();
+  return node ? node->CreateAndAddRobotNode(robotName, parameterNodeName, parameterName, fixedFrame, tfPrefix)
+              : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2Logic::RemoveRobot(const char* robotName)
+{
+  vtkROS2NodeNode* node = this->GetDefaultROS2Node();
+  return node && node->RemoveAndDeleteRobotNode(robotName);
 }
 
 //------------------------------------------------------------------------------

@@ -21,6 +21,7 @@
 class vtkROS2NodeNode;
 class vtkROS2Scene;
 class vtkRenderWindowInteractor;
+class vtkROS2RobotNode;
 
 class ROS2VTKSCENE_EXPORT vtkROS2Logic : public vtkObject
 {
@@ -35,6 +36,15 @@ public:
   /// The ROS node named "slicer" (namespace "/") of the scene, added and created on first use.
   /// nullptr (vtkErrorMacro) when DDS cannot create it.
   vtkROS2NodeNode* GetDefaultROS2Node();
+
+  ///@{
+  /// SlicerROS2's logic shortcuts: a robot on the default ROS node, described by the parameter
+  /// `parameterName` of `parameterNodeName` (CreateAndAddRobotNode), and its removal. The
+  /// robot node, or nullptr / false with vtkErrorMacro as the ROS node's methods.
+  vtkROS2RobotNode* AddRobot(const char* robotName, const char* parameterNodeName,
+    const char* parameterName = "robot_description", const char* fixedFrame = "", const char* tfPrefix = "");
+  bool RemoveRobot(const char* robotName);
+  ///@}
 
   /// Spins every vtkROS2NodeNode of the scene once; returns the number of messages handled.
   int Spin();

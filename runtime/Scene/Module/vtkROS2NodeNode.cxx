@@ -622,7 +622,14 @@ bool vtkROS2NodeNode::CheckReadyFor(const char* what)
 {
   if (!this->Scene)
   {
-    vtkErrorMacro(<< what << ": add this ROS node to a scene first");
+    if (!this->GetLeftSceneBecause().empty())
+    {
+      vtkErrorMacro(<< what << ": this ROS node is in no scene any more: " << this->GetLeftSceneBecause());
+    }
+    else
+    {
+      vtkErrorMacro(<< what << ": add this ROS node to a scene first");
+    }
     return false;
   }
   if (!this->Internals->Participant)

@@ -153,6 +153,8 @@ public:
   /// By scene node ID; nullptr unless it is this node's parameter node.
   vtkROS2ParameterNode* GetParameterNodeByNodeID(const char* nodeID);
   bool RemoveAndDeleteParameterNode(const char* monitoredNodeName);
+  /// By scene node ID (SlicerROS2's name); false unless it is this node's parameter node.
+  bool RemoveAndDeleteParameterNodeByNodeID(const char* nodeID);
   ///@}
 
   ///@{
@@ -168,6 +170,9 @@ public:
   bool RemoveAndDeleteServiceServerNode(const char* service);
   /// Space-separated ROS names of the service types that can be used.
   std::string GetRegisteredServiceTypes() const;
+  /// SlicerROS2's name for the same list (its service clients are one class per type; ours is
+  /// one class for every type, so the list names the types).
+  std::string RegisteredROS2ServiceClientNodes() const { return this->GetRegisteredServiceTypes(); }
   ///@}
 
   ///@{

@@ -389,6 +389,19 @@ bool vtkROS2NodeNode::RemoveAndDeleteParameterNode(const char* monitoredNodeName
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveAndDeleteParameterNodeByNodeID(const char* nodeID)
+{
+  vtkROS2SceneNode* node = this->FindChildByID(ParameterRole, nodeID);
+  if (!node)
+  {
+    vtkErrorMacro("RemoveAndDeleteParameterNodeByNodeID: " << (nodeID ? nodeID : "(null)")
+                                                          << " is not a parameter node of this node");
+    return false;
+  }
+  return this->RemoveChild(ParameterRole, node);
+}
+
+//------------------------------------------------------------------------------
 vtkROS2ParameterNode* vtkROS2NodeNode::GetParameterNodeByNodeID(const char* nodeID)
 {
   return vtkROS2ParameterNode::SafeDownCast(this->FindChildByID(ParameterRole, nodeID));

@@ -30,6 +30,7 @@ public:
   std::vector<vtkSmartPointer<vtkROS2SceneNode>> Nodes; // in the order they were added
   std::map<std::string, vtkROS2SceneNode*, std::less<>> ByID; // less<>: find(const char*) copies nothing
   std::map<std::string, int> NextIndexByClass; // for `<ClassName><n>` IDs
+  std::string RemovalReason; // while ClearBecause runs: why the nodes leave
 
   std::string UniqueID(const std::string& className)
   {
@@ -111,7 +112,8 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
   // Keep the node alive until observers have seen it go.
   vtkSmartPointer<vtkROS2SceneNode> keep = node;
   const std::string id = node->GetID();
-  node->SetSceneAndID(nullptr, id.c_str()); // lets it release ROS resources while the scene is intact
+  // Lets it release ROS resources while the scene is intact.
+  node->SetSceneAndID(nullptr, id.c_str(), this->Internals->RemovalReason);
   nodes.erase(std::find(nodes.begin(), nodes.end(), node));
   this->Internals->ByID.erase(id);
   for (const auto& other : nodes)
@@ -126,10 +128,18 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
 //------------------------------------------------------------------------------
 void vtkROS2Scene::Clear()
 {
+  this->ClearBecause(std::string());
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Scene::ClearBecause(const std::string& reason)
+{
+  this->Internals->RemovalReason = reason;
   while (!this->Internals->Nodes.empty())
   {
     this->RemoveNode(this->Internals->Nodes.back());
   }
+  this->Internals->RemovalReason.clear();
   this->Internals->NextIndexByClass.clear();
 }
 

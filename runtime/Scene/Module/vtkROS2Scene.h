@@ -42,6 +42,11 @@ public:
   bool RemoveNode(vtkROS2SceneNode* node);
   /// Removes every node (last added first).
   void Clear();
+#ifndef __VTK_WRAP__
+  /// Clear, telling each node why it left (vtkROS2SceneNode::GetLeftSceneBecause): the owner of
+  /// the scene is going away, so the nodes' later errors can name the cause.
+  void ClearBecause(const std::string& reason);
+#endif
 
   int GetNumberOfNodes() const;
   vtkROS2SceneNode* GetNthNode(int n) const;

@@ -255,11 +255,16 @@ void vtkROS2SceneNode::GetNodeReferenceRoleList(std::vector<std::string>& roles)
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2SceneNode::SetSceneAndID(vtkROS2Scene* scene, const char* id)
+void vtkROS2SceneNode::SetSceneAndID(vtkROS2Scene* scene, const char* id, const std::string& leftBecause)
 {
   if (!scene && this->Scene)
   {
+    this->LeftSceneBecause = leftBecause;
     this->OnRemovedFromScene();
+  }
+  else if (scene)
+  {
+    this->LeftSceneBecause.clear();
   }
   this->Scene = scene;
   this->Internals->ID = id ? id : "";

@@ -87,6 +87,8 @@ public:
   /// The ROS node this node belongs to (its ROS2NodeReferenceRole reference), or nullptr.
   /// Defined in vtkROS2NodeNode.cxx so that this base class needs no header of a subclass.
   vtkROS2NodeNode* GetROS2Node() const;
+  /// Whether it belongs to a ROS node (SlicerROS2's name, on every kind).
+  bool IsAddedToROS2Node() const { return this->GetROS2Node() != nullptr; }
 
   /// The per-spin hook: vtkROS2NodeNode::Spin calls it on each of its children, role by role in
   /// the documented order (tf lookups, subscribers, parameters, services, robots, then any
@@ -107,8 +109,12 @@ public:
   virtual const char* GetXMLTagName() { return this->GetClassName(); }
 
 #ifndef __VTK_WRAP__
-  /// Used by vtkROS2Scene only (IDs and scene membership are the scene's to assign).
-  void SetSceneAndID(vtkROS2Scene* scene, const char* id);
+  /// Used by vtkROS2Scene only (IDs and scene membership are the scene's to assign). When the
+  /// node leaves, `leftBecause` says why if it was not a plain removal (kept for error messages).
+  void SetSceneAndID(vtkROS2Scene* scene, const char* id, const std::string& leftBecause = std::string());
+  /// Why this node left its scene when that was not a plain removal ("" otherwise), e.g. the
+  /// logic that owned the scene was deleted: errors about a missing scene quote it.
+  const std::string& GetLeftSceneBecause() const { return this->LeftSceneBecause; }
   /// Used by vtkROS2Scene when a referenced node is removed: drops every reference to it.
   void ForgetReferencesTo(const char* referencedNodeID);
   /// Grows by one on every change of this node's references (or of a referenced child's key,
@@ -133,6 +139,7 @@ protected:
 
   vtkROS2Scene* Scene = nullptr;
   bool SaveWithScene = true;
+  std::string LeftSceneBecause;
   unsigned long ReferencesVersion = 0;
 
 private:

@@ -16,6 +16,7 @@
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 
 #include <poll.h>
@@ -82,6 +83,9 @@ public:
   std::string LastError;
   vtkTypeInt64 Responses = 0;
   vtkTypeInt64 Failures = 0;
+  vtkTypeInt64 Calls = 0;
+  vtkTypeInt64 RequestsSent = 0;
+  vtkSmartPointer<vtkROS2Message> LastResponseObject; // GetLastResponse's, made on first use
   bool InCall = false;
 };
 
@@ -276,6 +280,7 @@ double vtkROS2ServiceClientNode::GetTimeout() const
 vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest()
 {
   vtkInternals& internals = *this->Internals;
+  ++internals.Calls;
   if (!internals.Client)
   {
     vtkErrorMacro("SendAsyncRequest: the client is not attached to a created ROS node");
@@ -295,8 +300,59 @@ vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest()
   internals.Status = pending.Sequence >= 0 ? WaitingForResponse : WaitingForServer;
   internals.LastError.clear();
   internals.Pendings.push_back(std::move(pending));
+  ++internals.RequestsSent;
   this->Modified();
   return internals.Pendings.back().Id;
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Message* vtkROS2ServiceClientNode::CreateBlankRequest() const
+{
+  vtkROS2Message* request = vtkROS2Message::New();
+  if (this->Internals->Type)
+  {
+    request->SetROSType(this->Internals->Type->request()->ros_type);
+  }
+  return request;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest(vtkROS2Message* request)
+{
+  if (!this->SetRequestObject(request))
+  {
+    ++this->Internals->Calls;
+    return -1;
+  }
+  return this->SendAsyncRequest();
+}
+
+//------------------------------------------------------------------------------
+vtkROS2Message* vtkROS2ServiceClientNode::GetLastResponse()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.LastResponseObject)
+  {
+    internals.LastResponseObject = vtkSmartPointer<vtkROS2Message>::New();
+  }
+  if (!this->GetLastResponseObject(internals.LastResponseObject))
+  {
+    vtkWarningMacro("GetLastResponse: no response yet on " << this->GetServiceName());
+    return nullptr;
+  }
+  return internals.LastResponseObject;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::GetNumberOfCalls() const
+{
+  return this->Internals->Calls;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ServiceClientNode::GetNumberOfRequestsSent() const
+{
+  return this->Internals->RequestsSent;
 }
 
 //------------------------------------------------------------------------------

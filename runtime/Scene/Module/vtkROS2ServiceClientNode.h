@@ -17,7 +17,8 @@
 #include "ros2vtkSceneModule.h" // for export macro
 #include "vtkROS2SceneNode.h"
 
-#include "vtkCommand.h" // for vtkCommand::UserEvent
+#include "vtkCommand.h"         // for vtkCommand::UserEvent
+#include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
@@ -102,6 +103,24 @@ public:
   int GetNumberOfPendingRequests() const;
   vtkTypeInt64 GetNumberOfResponses() const;
   vtkTypeInt64 GetNumberOfFailures() const;
+
+  ///@{
+  /// SlicerROS2's spelling of the above, with requests and responses as typed message objects
+  /// (vtkROS2Message, or ros2vtk.Message(_vtk=...) in Python for Get<Field>/Set<Field>):
+  /// a blank request of this service's type (the caller owns it), sent with
+  /// SendAsyncRequest(request) (-1 when it is not of the request type), and the newest response
+  /// as an object this node owns (nullptr with a warning before the first; overwritten by the
+  /// next one). GetLastResponseStatus: whether the latest request got its response.
+  VTK_NEWINSTANCE vtkROS2Message* CreateBlankRequest() const;
+  vtkTypeInt64 SendAsyncRequest(vtkROS2Message* request);
+  vtkROS2Message* GetLastResponse();
+  bool GetLastResponseStatus() const { return this->GetStatus() == Succeeded; }
+  const char* GetService() const { return this->GetServiceName(); }
+  const char* GetROSType() const { return this->GetServiceType(); }
+  /// SendAsyncRequest calls, and those that went out (attached to a created ROS node).
+  vtkTypeInt64 GetNumberOfCalls() const;
+  vtkTypeInt64 GetNumberOfRequestsSent() const;
+  ///@}
 
 
   void WriteXML(vtkXMLDataElement* element) override;

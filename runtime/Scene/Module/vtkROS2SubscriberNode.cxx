@@ -201,8 +201,25 @@ const void* vtkROS2SubscriberNode::GetNewRawMessage(int i) const
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::WarnIfNeverSpun(const char* call) const
+{
+  vtkROS2NodeNode* node = this->GetROS2Node();
+  if (this->WarnedNeverSpun || !node || !node->GetParticipant() || node->GetSpinning())
+  {
+    return;
+  }
+  this->WarnedNeverSpun = true;
+  // vtkWarningMacro fires WarningEvent on `this`, which is not const.
+  auto* self = const_cast<vtkROS2SubscriberNode*>(this);
+  vtkWarningWithObjectMacro(self, << call << " on " << this->GetTopic() << ": ROS node "
+    << node->GetROS2NodeName() << " has never spun, so nothing is received; call logic.Spin() "
+    << "in your loop, or logic.SpinFor(seconds) / logic.AttachToInteractor(interactor)");
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2SubscriberNode::GetLastMessageYAML() const
 {
+  this->WarnIfNeverSpun("GetLastMessageYAML");
   const void* message = this->GetLastRawMessage();
   if (!message)
   {

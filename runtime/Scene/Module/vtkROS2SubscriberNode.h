@@ -66,6 +66,11 @@ protected:
   vtkROS2SubscriberNode();
   ~vtkROS2SubscriberNode() override;
 
+  /// A script that reads messages while its ROS node has never spun receives nothing: says so
+  /// once per subscriber, naming the fix (SlicerROS2 spins on a 50 Hz timer, so scripts ported
+  /// from it have no spin of their own).
+  void WarnIfNeverSpun(const char* call) const;
+
   /// Newest message received (struct of GetMessageTypeSupport()'s type); nullptr before the
   /// first. Valid until a later spin brings new messages.
   const void* GetLastRawMessage() const;
@@ -87,6 +92,7 @@ protected:
   vtkTypeInt64 NumberOfMessages = 0;
   vtkTypeInt64 NumberOfRejectedMessages = 0;
   vtkTypeInt64 NumberOfIncompatibleQoSPublishers = 0;
+  mutable bool WarnedNeverSpun = false; // WarnIfNeverSpun said it once
 
 private:
   vtkROS2SubscriberNode(const vtkROS2SubscriberNode&) = delete;

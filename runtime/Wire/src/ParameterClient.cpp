@@ -225,17 +225,16 @@ std::set<std::string> ParameterClient::process()
     const auto* event = static_cast<const rcl::msg::ParameterEvent*>(message.get());
     if (event->node != d.remote_node)
       continue;
+    // Every parameter an event reports is kept, added or not: SlicerROS2's parameter node
+    // stores them too, and its scripts wait for a parameter they never added to be set.
     for (const auto* list : { &event->new_parameters, &event->changed_parameters })
     {
       for (const auto& parameter : *list)
-      {
-        if (d.watched.count(parameter.name))
-          d.store(parameter.name, parameter.value);
-      }
+        d.store(parameter.name, parameter.value);
     }
     for (const auto& parameter : event->deleted_parameters)
     {
-      if (d.watched.count(parameter.name))
+      if (d.watched.count(parameter.name) || d.values.count(parameter.name))
         d.store(parameter.name, rcl::msg::ParameterValue());
     }
   }

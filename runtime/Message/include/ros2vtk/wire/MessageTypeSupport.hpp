@@ -41,6 +41,10 @@ enum class FieldType : uint8_t
   Message
 };
 
+/// The ROS IDL spelling of a field type ("float64", "string"; "message" for nested ones), for
+/// error messages and field descriptions.
+const char* field_type_name(FieldType type);
+
 /// How many elements a field holds: one, a fixed array T[N], T[<=N] or T[].
 enum class Container : uint8_t
 {

@@ -1,6 +1,6 @@
-// ros2vtk — reads one mesh file into vtkPolyData: STL through VTK's reader; PLY (header checked
-// first), OBJ (+ MTL colours), Collada, glTF/GLB and every other format assimp knows through
-// assimp (VTK 9.1's PLY reader crashes on malformed files and its OBJ readers get MTL colours
+// ros2vtk — reads one mesh file into vtkPolyData: STL through VTK's reader; PLY (whole file
+// checked against its header first), OBJ (+ MTL colours), Collada (arrays and counts checked
+// first), glTF/GLB and every other format assimp knows through assimp (VTK 9.1's PLY reader crashes on malformed files and its OBJ readers get MTL colours
 // wrong, see MeshLoader.cpp). Plain C++ on VTK (not wrapped); the robot loader calls it once per
 // distinct mesh file.
 #ifndef ros2vtk_robot_MeshLoader_hpp

@@ -42,7 +42,8 @@ public:
   void remove(const std::string& name);
   std::vector<std::string> watched() const;
 
-  /// The current value, nullptr when not known (not fetched yet, or not set on the node).
+  /// The current value, nullptr when not known (not fetched yet, or not set on the node). A
+  /// parameter never added is known once /parameter_events reports it (as in SlicerROS2).
   const ::ros2vtk::rcl_interfaces::msg::ParameterValue* value(const std::string& name) const;
 
   /// Sends pending requests, takes responses and events. Returns the names whose value changed
