@@ -238,6 +238,10 @@ TEST(ResourceResolver, RefusesEmptyAndIncompleteUris)
   found = resolver.resolve("package:///meshes/a.stl", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("no package name"), std::string::npos) << found.error;
+  // A folder named like the package is a package in a search path: "." and ".." are not names.
+  found = resolver.resolve("package://../surgical_arm/meshes/base.stl", "");
+  ASSERT_FALSE(found.ok);
+  EXPECT_NE(found.error.find("'..' is not a package name"), std::string::npos) << found.error;
   // A folder is not a mesh.
   found = resolver.resolve("package://ros2vtk_surgical_arm/meshes", "");
   ASSERT_FALSE(found.ok);
@@ -323,7 +327,7 @@ TEST_F(ResolverTest, ByDefaultMeshesOutsideThePackageRootsAreRefused)
   auto found = resolver.resolve("package://pkg/../../outside/x.stl", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("outside its package folder"), std::string::npos) << found.error;
-  for (const std::string uri : {"file://" + outside.string(), outside.string(), std::string("file:///etc/hostname")})
+  for (const std::string& uri : {"file://" + outside.string(), outside.string(), std::string("file:///etc/hostname")})
   {
     found = resolver.resolve(uri, "");
     ASSERT_FALSE(found.ok) << uri;

@@ -381,6 +381,10 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
     const std::string relative = slash == std::string::npos ? std::string() : rest.substr(slash + 1);
     if (package.empty())
       return fail("no package name after package://");
+    // The folder-name rule below takes <search path>/<package>: "." and ".." would name the
+    // search path itself or its parent.
+    if (package == "." || package == "..")
+      return fail(in_quotes(package) + " is not a package name");
     if (relative.empty())
       return fail("no file path after package://" + package + "/");
     PackageSearchReport report;
