@@ -61,9 +61,13 @@ def run_robot(ros, urdf: Path, source: str, *, configs: int = 3, namespace: str 
     rsp = start_rsp(rsp_host or ros, urdf, '--configs', str(configs), '--hold', str(hold), '--namespace', namespace,
                     '--frame-prefix', prefix)
     rsp_node = f'{namespace}/robot_state_publisher' if namespace else '/robot_state_publisher'
+    # --follow counts from the load. A parameter or topic source loads when robot_state_publisher
+    # is up; a file loads on our first spin, while that rclpy process may still be starting (on a
+    # loaded machine the last configuration came after an 8.5 s window), so it follows longer.
+    follow = configs * hold + 1.0 + (6.0 if source == 'file' else 0.0)
     args = ['--seconds', '30', 'robot', 'arm', '--source', source, '--rsp-node', rsp_node,
             '--topic', f'{namespace}/robot_description', '--tf-prefix', prefix,
-            '--follow', str(configs * hold + 1.0), '--urdf', str(urdf)]  # after the load
+            '--follow', str(follow), '--urdf', str(urdf)]  # after the load
     for folder in mesh_paths:
         args += ['--mesh-path', str(folder)]
     args += ['--mesh-base-folder', str(urdf.parent)]
