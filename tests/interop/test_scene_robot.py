@@ -61,9 +61,13 @@ def run_robot(ros, urdf: Path, source: str, *, configs: int = 3, namespace: str 
     rsp = start_rsp(rsp_host or ros, urdf, '--configs', str(configs), '--hold', str(hold), '--namespace', namespace,
                     '--frame-prefix', prefix)
     rsp_node = f'{namespace}/robot_state_publisher' if namespace else '/robot_state_publisher'
+    # --follow counts from the load. A parameter or topic source loads when robot_state_publisher
+    # is up; a file loads on our first spin, while that rclpy process may still be starting (on a
+    # loaded machine the last configuration came after an 8.5 s window), so it follows longer.
+    follow = configs * hold + 1.0 + (6.0 if source == 'file' else 0.0)
     args = ['--seconds', '30', 'robot', 'arm', '--source', source, '--rsp-node', rsp_node,
             '--topic', f'{namespace}/robot_description', '--tf-prefix', prefix,
-            '--follow', str(configs * hold + 1.0), '--urdf', str(urdf)]  # after the load
+            '--follow', str(follow), '--urdf', str(urdf)]  # after the load
     for folder in mesh_paths:
         args += ['--mesh-path', str(folder)]
     args += ['--mesh-base-folder', str(urdf.parent)]
@@ -212,3 +216,33 @@ def test_a_saved_scene_reopened_brings_the_robot_back_from_its_robot_state_publi
     for config in expected[1:]:  # the configurations held after the scene was reopened
         best = min(matches(s['links'], shifted(config['links'], base_y)) for s in loaded)
         assert best < TOLERANCE_MM, f"configuration {config['config']} never matched after restore (best {best})"
+
+
+def test_relative_meshes_of_a_topic_description_load_through_the_mesh_search_path(ros, tmp_path):
+    # Issue 15: a robot_description from an rclpy peer with relative meshes (meshes/x.stl,
+    # ../meshes/x.STL) has no folder of its own. With the meshes' folder added as a mesh search
+    # path every mesh loads; without it the warning says what to call.
+    stl = (ARM_PACKAGE / 'meshes' / 'base.stl').read_bytes()
+    (tmp_path / 'robot_files' / 'meshes').mkdir(parents=True)
+    (tmp_path / 'robot_files' / 'meshes' / 'a.stl').write_bytes(stl)
+    (tmp_path / 'robot_files' / 'meshes' / 'b.STL').write_bytes(stl)
+    urdf = """<robot name="relative">
+  <link name="base"><visual><geometry><mesh filename="meshes/a.stl"/></geometry></visual></link>
+  <link name="tip"><visual><geometry><mesh filename="../meshes/b.STL"/></geometry></visual></link>
+  <joint name="j" type="fixed"><parent link="base"/><child link="tip"/></joint>
+</robot>"""
+    results = {}
+    for label, extra in (('with', ['--mesh-path', str(tmp_path / 'robot_files')]), ('without', [])):
+        peer = ros.peer('pub', '/robot_description', 'std_msgs/msg/String', json.dumps({'data': urdf}),
+                        '--qos', 'latched', '--count', '1', '--linger', '15')
+        ours = ros.scene('--seconds', '12', 'robot', 'relative', '--source', 'topic', *extra, '--follow', '0.5')
+        code, out, err = ros.finish(ours, timeout=40)
+        ros.stop(peer)
+        assert code == 0, err
+        results[label] = json.loads(out.splitlines()[1])
+    loaded = results['with']
+    assert loaded['state'] == 'loaded' and loaded['models'] == 2 and loaded['placeholders'] == 0, loaded
+    missing = results['without']
+    assert missing['state'] == 'loaded' and missing['placeholders'] == 2, missing
+    assert "could not load mesh 'meshes/a.stl': no such file" in missing['warnings'], missing['warnings']
+    assert 'SetMeshBaseFolder' in missing['warnings'] and 'AddMeshSearchPath' in missing['warnings'], missing['warnings']

@@ -340,3 +340,42 @@ def test_a_urdf_file_over_the_size_limit_is_refused_without_reading_it(logic, tm
         robot.GlobalWarningDisplayOn()
     assert 'over the limit' in robot.GetRobotState(), robot.GetRobotState()
     assert not robot.IsLoaded()
+
+
+def test_relative_meshes_of_a_topic_description_use_the_mesh_search_path_and_one_line_is_logged(logic, vtk, tmp_path):
+    # Issue 15: a description from a parameter or topic has no folder of its own; its relative
+    # meshes are looked for in the mesh search paths, and a load logs one summary line, not one
+    # line per missing visual.
+    meshes = tmp_path / 'robot_files' / 'meshes'
+    meshes.mkdir(parents=True)
+    (meshes / 'arm.STL').write_bytes((ARM.parents[1] / 'meshes' / 'base.stl').read_bytes())
+    links = ''.join(f'<link name="l{i}"><visual><geometry><mesh filename="{uri}"/></geometry></visual></link>'
+                    for i, uri in enumerate(['meshes/arm.STL', '../meshes/arm.STL', 'package://ghost/a.stl',
+                                             'package://ghost/b.stl']))
+    joints = ''.join(f'<joint name="j{i}" type="fixed"><parent link="l{i - 1}"/><child link="l{i}"/></joint>'
+                     for i in range(1, 4))
+    description = f'<robot name="rel">{links}{joints}</robot>'
+    node, robot = make_robot(logic, 'rel')
+    logged = []
+
+    @vtk.calldata_type(vtk.VTK_STRING)
+    def on_warning(caller, event, text):
+        logged.append(text)
+
+    robot.AddObserver('WarningEvent', on_warning)
+    assert robot.LoadRobotDescription(description, '')
+    assert robot.GetNumberOfPlaceholders() == 4
+    assert 'SetMeshBaseFolder' in robot.GetLinkStatus('l0') and 'AddMeshSearchPath' in robot.GetLinkStatus('l0')
+    assert len(logged) == 1, logged
+    assert '4 visuals, 4 of 4 meshes missing (4 warnings, ' in logged[0], logged[0]
+    assert robot.GetLoadSummary() in logged[0]
+
+    robot.AddMeshSearchPath(str(tmp_path / 'robot_files'))
+    logged.clear()
+    assert robot.LoadRobotDescription(description, '')
+    assert robot.GetNumberOfPlaceholders() == 2, robot.GetWarnings()
+    assert robot.GetLinkStatus('l0') == 'ok' and robot.GetLinkStatus('l1') == 'ok'
+    assert robot.GetLinkStatus('l2').startswith("1 of 1 visuals are placeholders: link 'l2': could not load mesh "
+                                                "'package://ghost/a.stl': package 'ghost' not found")
+    assert robot.GetLinkStatus('no_such_link') == ''
+    assert len(logged) == 1 and robot.GetLoadSummary().startswith('4 visuals, 2 of 4 meshes missing (2 warnings, 1 cause)')

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -60,6 +61,21 @@ inline Bounds binary_stl_bounds(const std::string& path, const std::array<double
     }
   }
   return bounds;
+}
+
+/// Writes a binary STL of one triangle (0,0,0), (size,0,0), (0,size,0); creates its folders.
+inline void write_triangle_stl(const std::string& path, float size = 0.05f)
+{
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream out(path, std::ios::binary);
+  const char header[80] = "ros2vtk test triangle";
+  out.write(header, 80);
+  const std::uint32_t count = 1;
+  out.write(reinterpret_cast<const char*>(&count), 4);
+  const float record[12] = {0, 0, 1, 0, 0, 0, size, 0, 0, 0, size, 0};
+  out.write(reinterpret_cast<const char*>(record), sizeof(record));
+  const std::uint16_t attributes = 0;
+  out.write(reinterpret_cast<const char*>(&attributes), 2);
 }
 
 inline Bounds bounds_of(vtkPolyData* polydata)

@@ -96,6 +96,24 @@ TEST_P(ExampleRobotData, LoadsWithNoMissingMesh)
   EXPECT_GT(meshes_of_format, 0u) << "expected " << GetParam().mesh_format << " meshes";
 }
 
+// Issue 15: the package.xml of example-robot-data is four folders above its URDFs
+// (share/example-robot-data/robots/<x>_description/urdf/<x>.urdf); walking up from the file
+// finds it with no AMENT_PREFIX_PATH, no search path and nothing else set up.
+TEST_P(ExampleRobotData, LoadsFromItsFileAloneWithNoPackageLocationsSet)
+{
+  std::string why;
+  const std::string prefix = example_robot_data_prefix(&why);
+  ASSERT_FALSE(prefix.empty()) << why;
+  RobotLoader loader{ResourceResolver()};
+  RobotVisuals robot;
+  std::string error;
+  ASSERT_TRUE(loader.load_file(prefix + "/share/example-robot-data/robots/" + GetParam().urdf, &robot, &error)) << error;
+  EXPECT_EQ(robot.placeholder_count(), 0u) << robot.summary();
+  EXPECT_EQ(robot.visual_count(), GetParam().visuals);
+  EXPECT_EQ(robot.summary(), std::to_string(GetParam().visuals) + " visuals, all " +
+                               std::to_string(robot.mesh_visual_count()) + " meshes loaded");
+}
+
 INSTANTIATE_TEST_SUITE_P(RobotLoader, ExampleRobotData,
                          ::testing::Values(ThirdPartyRobot{"ur_description/urdf/ur5_robot.urdf", 7, ".dae"},
                                            ThirdPartyRobot{"panda_description/urdf/panda.urdf", 11, ".dae"},

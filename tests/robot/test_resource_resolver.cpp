@@ -12,6 +12,7 @@
 #include <random>
 
 namespace fs = std::filesystem;
+using ros2vtk::robot::PackageSearchReport;
 using ros2vtk::robot::ResolvedResource;
 using ros2vtk::robot::ResourceResolver;
 
@@ -84,13 +85,31 @@ TEST_F(ResolverTest, AddsThePackageHoldingAUrdfFile)
   EXPECT_EQ(found.path, mesh.string());
 }
 
-TEST_F(ResolverTest, AddsNoPackageWhenNoneHoldsTheFileWithinThreeFolders)
+// Issue 15: the walk used to stop three folders above the file.
+TEST_F(ResolverTest, FindsThePackageHoldingAUrdfFileAnyNumberOfFoldersUp)
 {
   make_package("deep", "deep");
+  const fs::path mesh = write("deep/meshes/m.stl");
   const fs::path urdf = write("deep/a/b/c/robot.urdf", "<robot name=\"r\"/>");
   ResourceResolver resolver;
-  EXPECT_EQ(resolver.add_package_of(urdf.string()), "");
   EXPECT_EQ(resolver.find_package("deep"), "");
+  EXPECT_EQ(resolver.add_package_of(urdf.string()), (root_ / "deep").string());
+  EXPECT_EQ(resolver.find_package("deep"), (root_ / "deep").string());
+  const auto found = resolver.resolve("package://deep/meshes/m.stl", "");
+  ASSERT_TRUE(found.ok) << found.error;
+  EXPECT_EQ(found.path, mesh.string());
+}
+
+TEST_F(ResolverTest, AddsNoPackageWhenNoFolderAboveTheFileHasPackageXml)
+{
+  const fs::path urdf = write("loose/a/robot.urdf", "<robot name=\"r\"/>");
+  ResourceResolver resolver;
+  EXPECT_EQ(resolver.add_package_of(urdf.string()), "");
+  PackageSearchReport report;
+  EXPECT_EQ(resolver.find_package("loose", &report), "");
+  ASSERT_EQ(report.looked_in.size(), 1u);
+  EXPECT_EQ(report.looked_in[0], "the folders above '" + urdf.string() +
+                                   "' up to the filesystem root (no package.xml there)");
 }
 
 TEST_F(ResolverTest, ReadsAmentPrefixPathFromTheEnvironment)
@@ -219,6 +238,10 @@ TEST(ResourceResolver, RefusesEmptyAndIncompleteUris)
   found = resolver.resolve("package:///meshes/a.stl", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("no package name"), std::string::npos) << found.error;
+  // A folder named like the package is a package in a search path: "." and ".." are not names.
+  found = resolver.resolve("package://../surgical_arm/meshes/base.stl", "");
+  ASSERT_FALSE(found.ok);
+  EXPECT_NE(found.error.find("'..' is not a package name"), std::string::npos) << found.error;
   // A folder is not a mesh.
   found = resolver.resolve("package://ros2vtk_surgical_arm/meshes", "");
   ASSERT_FALSE(found.ok);
@@ -304,7 +327,7 @@ TEST_F(ResolverTest, ByDefaultMeshesOutsideThePackageRootsAreRefused)
   auto found = resolver.resolve("package://pkg/../../outside/x.stl", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("outside its package folder"), std::string::npos) << found.error;
-  for (const std::string uri : {"file://" + outside.string(), outside.string(), std::string("file:///etc/hostname")})
+  for (const std::string& uri : {"file://" + outside.string(), outside.string(), std::string("file:///etc/hostname")})
   {
     found = resolver.resolve(uri, "");
     ASSERT_FALSE(found.ok) << uri;

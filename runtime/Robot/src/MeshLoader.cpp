@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -353,6 +354,40 @@ bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* erro
   return finish(polydata, path, mesh, error);
 }
 
+// Why the file is checked before a reader sees it: a reader's complaint about a file it could not
+// use ("Unable to open file", "malformed XML", "too short for a binary STL") hides the cause a
+// user can act on — no permission, an empty file, a Git LFS pointer checked out instead of the
+// mesh (common in robot repositories cloned without git-lfs).
+bool check_mesh_file(const std::string& path, const std::string& extension, std::string* error)
+{
+  auto fail = [&](const std::string& why) {
+    if (error)
+      *error = "mesh file '" + path + "' " + why;
+    return false;
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    return fail("does not exist or is not a regular file");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return fail("cannot be opened: " + std::string(errno ? std::strerror(errno) : "unknown reason"));
+  char head[64] = {};
+  in.read(head, sizeof(head));
+  const std::streamsize got = in.gcount();
+  if (in.bad())
+    return fail("cannot be read: " + std::string(errno ? std::strerror(errno) : "read error"));
+  std::string format = extension.empty() ? std::string("mesh") : extension.substr(1);
+  std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  if (got == 0)
+    return fail("is empty (0 bytes), so it holds no " + format + " mesh");
+  const std::string lfs_pointer = "version https://git-lfs.github.com/spec/";
+  if (std::string(head, static_cast<size_t>(got)).compare(0, lfs_pointer.size(), lfs_pointer) == 0)
+    return fail("is a Git LFS pointer, not the " + format +
+                " mesh itself: the repository was cloned without git-lfs (run `git lfs pull` in it)");
+  return true;
+}
+
 } // namespace
 
 std::vector<std::string> MeshLoader::vtk_extensions() { return {".stl"}; }
@@ -368,14 +403,16 @@ bool MeshLoader::load(const std::string& path, MeshData* mesh, std::string* erro
   if (!mesh)
     return false;
   *mesh = MeshData();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
+  const std::string extension = lower_extension(path);
+  if (extension.empty())
   {
     if (error)
-      *error = "mesh file '" + path + "' does not exist or is not a regular file";
+      *error = "mesh file '" + path + "' has no file extension, so its format is unknown (STL, PLY, OBJ, Collada "
+               ".dae, glTF/GLB and the other formats assimp reads are chosen by extension)";
     return false;
   }
-  const std::string extension = lower_extension(path);
+  if (!check_mesh_file(path, extension, error))
+    return false;
   try
   {
     if (extension == ".stl")

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <system_error>
 
@@ -15,12 +16,6 @@ namespace fs = std::filesystem;
 namespace ros2vtk {
 namespace robot {
 namespace {
-
-// How deep ROS_PACKAGE_PATH-style folders are searched, and how many folders at most are
-// looked at per search folder (so a search path of "/" cannot stall loading).
-constexpr int kMaxScanDepth = 4;
-constexpr int kMaxScannedFolders = 20000;
-constexpr std::uintmax_t kMaxPackageXmlBytes = 1u << 20;
 
 std::vector<std::string> split_path_list(const char* value)
 {
@@ -59,47 +54,6 @@ std::string percent_decode(const std::string& text)
     }
   }
   return out;
-}
-
-bool is_file(const fs::path& path)
-{
-  std::error_code ec;
-  return fs::is_regular_file(path, ec);
-}
-
-// The <name> of a package.xml. A regular expression, not an XML parser: the file is small, the
-// element is mandatory and flat (REP 149), and this keeps the resolver free of XML libraries.
-std::string package_xml_name(const fs::path& package_xml)
-{
-  std::error_code ec;
-  if (fs::file_size(package_xml, ec) > kMaxPackageXmlBytes || ec)
-    return {};
-  std::ifstream in(package_xml);
-  std::stringstream text;
-  text << in.rdbuf();
-  static const std::regex name_element("<name>\\s*([^<\\s]+)\\s*</name>");
-  std::smatch match;
-  const std::string content = text.str();
-  if (std::regex_search(content, match, name_element))
-    return match[1].str();
-  return {};
-}
-
-bool has_ignore_marker(const fs::path& folder)
-{
-  for (const char* marker : {"COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE"})
-    if (fs::exists(folder / marker))
-      return true;
-  return false;
-}
-
-fs::path normalised(const fs::path& path)
-{
-  std::error_code ec;
-  fs::path result = fs::weakly_canonical(path, ec);
-  if (ec)
-    return path.lexically_normal();
-  return result;
 }
 
 // True when `path` is `root` or lies inside it (both normalised), compared part by part so that
@@ -149,18 +103,12 @@ void ResourceResolver::add_search_path(const std::string& folder)
 
 std::string ResourceResolver::add_package_of(const std::string& file)
 {
-  fs::path folder = fs::path(file).parent_path();
-  for (int level = 0; level < 3 && !folder.empty(); ++level, folder = folder.parent_path())
-  {
-    if (is_file(folder / "package.xml"))
-    {
-      add_search_path(folder.string());
-      return folder.string();
-    }
-    if (folder == folder.root_path())
-      break;
-  }
-  return "";
+  // A robot reloading its file asks again: walk up once per file.
+  for (const auto& above : urdf_files_)
+    if (above.file() == file)
+      return above.nearest();
+  urdf_files_.emplace_back(file);
+  return urdf_files_.back().nearest();
 }
 
 void ResourceResolver::add_allowed_root(const std::string& folder)
@@ -175,99 +123,112 @@ std::string ResourceResolver::supported_forms()
          "to the URDF file's folder";
 }
 
-const std::map<std::string, std::string>& ResourceResolver::packages_under(const std::string& folder) const
+const PackageTree& ResourceResolver::crawled(const std::string& folder) const
 {
-  auto cached = scanned_.find(folder);
-  if (cached != scanned_.end())
-    return cached->second;
-  std::map<std::string, std::string> by_xml_name;
-  std::map<std::string, std::string> by_folder_name;
-  int visited = 0;
-  // Breadth-first, like rospack's crawl: a folder with a package.xml is a package and is not
-  // searched further (packages do not nest).
-  std::vector<std::pair<fs::path, int>> queue{{fs::path(folder), 0}};
-  for (size_t next = 0; next < queue.size() && visited < kMaxScannedFolders; ++next)
-  {
-    const fs::path current = queue[next].first;
-    const int depth = queue[next].second;
-    ++visited;
-    if (is_file(current / "package.xml"))
-    {
-      const std::string canonical = normalised(current).string();
-      const std::string xml_name = package_xml_name(current / "package.xml");
-      if (!xml_name.empty())
-        by_xml_name.emplace(xml_name, canonical);
-      by_folder_name.emplace(current.filename().string(), canonical);
-      continue;
-    }
-    if (depth >= kMaxScanDepth || has_ignore_marker(current))
-      continue;
-    std::error_code ec;
-    fs::directory_iterator it(current, fs::directory_options::skip_permission_denied, ec);
-    if (ec)
-      continue;
-    std::vector<fs::path> children;
-    for (; it != fs::directory_iterator(); it.increment(ec))
-    {
-      if (ec)
-        break;
-      const std::string child_name = it->path().filename().string();
-      std::error_code dir_ec;
-      if (!child_name.empty() && child_name[0] != '.' && it->is_directory(dir_ec))
-        children.push_back(it->path());
-    }
-    std::sort(children.begin(), children.end()); // deterministic choice between duplicates
-    for (const auto& child : children)
-      queue.emplace_back(child, depth + 1);
-  }
-  // The <name> in package.xml is the package's name; the folder name is a fallback for trees
-  // where the two differ and the URDF used the folder name.
-  for (const auto& entry : by_folder_name)
-    by_xml_name.emplace(entry.first, entry.second);
-  return scanned_.emplace(folder, std::move(by_xml_name)).first->second;
+  auto cached = crawled_.find(folder);
+  if (cached == crawled_.end())
+    cached = crawled_.emplace(folder, crawl_for_packages(folder)).first;
+  return cached->second;
 }
 
-std::string ResourceResolver::find_in_search_folder(const std::string& folder, const std::string& name) const
+// The order: a package.xml (its name or the folder's), an install prefix, a package crawled
+// below; then the folder-name rule for data shipped without package.xml (yourdfpy and pybullet
+// take a folder named like the package): the search path itself, or a folder directly inside it.
+// Only direct children count: a folder of that name deeper down is more likely a sub-folder
+// (meshes/arm/) than the package, and is reported as rejected instead.
+std::string ResourceResolver::find_in_search_folder(const std::string& folder, const std::string& name,
+                                                    PackageSearchReport* report) const
 {
   const fs::path base(folder);
-  if (is_file(base / "package.xml") &&
-      (package_xml_name(base / "package.xml") == name || normalised(base).filename() == name))
+  std::error_code ec;
+  if (has_package_xml(base) && (package_xml_name(base) == name || normalised(base).filename() == name))
     return normalised(base).string();
-  if (is_file(base / "share" / name / "package.xml"))
+  if (has_package_xml(base / "share" / name))
     return normalised(base / "share" / name).string();
-  const auto& packages = packages_under(folder);
-  auto found = packages.find(name);
-  return found == packages.end() ? std::string() : found->second;
+  const PackageTree& tree = crawled(folder);
+  auto found = tree.packages.find(name);
+  if (found != tree.packages.end())
+    return found->second;
+  if (!has_package_xml(base) && normalised(base).filename() == name && fs::is_directory(base, ec))
+    return normalised(base).string();
+  if (fs::is_directory(base / name, ec))
+    return normalised(base / name).string();
+  auto plain = tree.plain_folders.find(name);
+  if (report && plain != tree.plain_folders.end())
+    report->rejected.push_back(in_quotes(plain->second) +
+                               " is named like the package but has no package.xml and is neither a mesh search path "
+                               "nor directly inside one (add it, or the folder holding it, with AddMeshSearchPath)");
+  return {};
 }
 
-std::string ResourceResolver::find_package(const std::string& name, std::vector<std::string>* tried) const
+std::string ResourceResolver::find_package(const std::string& name, PackageSearchReport* report) const
 {
   for (const auto& folder : search_paths_)
   {
-    std::string found = find_in_search_folder(folder, name);
+    std::string found = find_in_search_folder(folder, name, report);
     if (!found.empty())
       return found;
-    if (tried)
-      tried->push_back("search path " + in_quotes(folder));
+    if (report)
+      report->looked_in.push_back("mesh search path " + in_quotes(folder));
+  }
+  for (const auto& above : urdf_files_)
+  {
+    std::string found = above.find(name);
+    if (!found.empty())
+      return found;
+    if (report)
+    {
+      std::vector<std::string> met = above.folders();
+      for (auto& folder : met)
+        folder = in_quotes(folder);
+      report->looked_in.push_back("the folders above " + in_quotes(above.file()) + " up to the filesystem root (" +
+                                  (met.empty() ? std::string("no package.xml there")
+                                               : "package.xml in " + join(met, ", ") + " names another package") +
+                                  ")");
+    }
   }
   for (const auto& prefix : ament_prefixes_)
   {
     const fs::path candidate = fs::path(prefix) / "share" / name;
-    if (is_file(candidate / "package.xml"))
+    if (has_package_xml(candidate))
       return normalised(candidate).string();
-    if (tried)
-      tried->push_back("AMENT_PREFIX_PATH " + in_quotes(candidate.string()));
+    std::error_code ec;
+    if (report && fs::is_directory(candidate, ec))
+      report->rejected.push_back(in_quotes(candidate.string()) + " has no package.xml, so it is not an installed package");
+    if (report)
+      report->looked_in.push_back("AMENT_PREFIX_PATH " + in_quotes(candidate.string()));
   }
   for (const auto& folder : ros_package_path_)
   {
-    const auto& packages = packages_under(folder);
-    auto found = packages.find(name);
-    if (found != packages.end())
+    const PackageTree& tree = crawled(folder);
+    auto found = tree.packages.find(name);
+    if (found != tree.packages.end())
       return found->second;
-    if (tried)
-      tried->push_back("ROS_PACKAGE_PATH " + in_quotes(folder));
+    auto plain = tree.plain_folders.find(name);
+    if (report && plain != tree.plain_folders.end())
+      report->rejected.push_back(in_quotes(plain->second) +
+                                 " is named like the package but has no package.xml (ROS_PACKAGE_PATH takes only "
+                                 "folders with a package.xml; add it with AddMeshSearchPath)");
+    if (report)
+      report->looked_in.push_back("ROS_PACKAGE_PATH " + in_quotes(folder));
   }
   return {};
+}
+
+std::string ResourceResolver::package_not_found(const std::string& name, const PackageSearchReport& report) const
+{
+  std::string text = "package " + in_quotes(name) + " not found";
+  if (report.looked_in.empty())
+    text += ": no package locations are set (no URDF file, AMENT_PREFIX_PATH and ROS_PACKAGE_PATH are empty and "
+            "no mesh search path was added; add the folder holding the package with AddMeshSearchPath)";
+  else
+    text += " (looked in " + join(report.looked_in, "; ") + ")";
+  // Each rejected folder once: the same crawl can be reported by more than one location.
+  std::set<std::string> said;
+  for (const auto& rejected : report.rejected)
+    if (said.insert(rejected).second)
+      text += "; " + rejected;
+  return text;
 }
 
 std::vector<std::string> ResourceResolver::allowed_roots(const std::string& base_folder) const
@@ -275,11 +236,125 @@ std::vector<std::string> ResourceResolver::allowed_roots(const std::string& base
   std::vector<std::string> roots = search_paths_;
   if (!base_folder.empty())
     roots.push_back(base_folder);
+  for (const auto& above : urdf_files_)
+  {
+    const auto folders = above.folders();
+    roots.insert(roots.end(), folders.begin(), folders.end());
+  }
   for (const auto& prefix : ament_prefixes_) // packages live in <prefix>/share, not all of /usr
     roots.push_back((fs::path(prefix) / "share").string());
   roots.insert(roots.end(), ros_package_path_.begin(), ros_package_path_.end());
   roots.insert(roots.end(), extra_roots_.begin(), extra_roots_.end());
   return roots;
+}
+
+ResolvedResource ResourceResolver::check_file(const fs::path& candidate, const std::string& base_folder,
+                                              const std::string& package_folder) const
+{
+  ResolvedResource result;
+  const fs::path resolved = normalised(candidate);
+  const std::string shown = in_quotes(candidate.lexically_normal().string());
+  std::error_code ec;
+  if (!fs::exists(resolved, ec))
+  {
+    result.error = "no such file " + shown;
+    return result;
+  }
+  if (!fs::is_regular_file(resolved, ec))
+  {
+    result.error = shown + " is not a regular file";
+    return result;
+  }
+  if (restrict_to_roots_)
+  {
+    if (!package_folder.empty() && !is_inside(resolved, fs::path(package_folder)))
+    {
+      result.error = in_quotes(resolved.string()) + " lies outside its package folder " + in_quotes(package_folder) +
+                     " (root check is on)";
+      return result;
+    }
+    const auto roots = allowed_roots(base_folder);
+    const bool inside = std::any_of(roots.begin(), roots.end(),
+                                    [&](const std::string& root) { return is_inside(resolved, normalised(root)); });
+    if (!inside)
+    {
+      result.error = in_quotes(resolved.string()) + " lies outside the allowed roots (" +
+                     (roots.empty() ? std::string("none are set") : join(roots, ", ")) +
+                     "; root check is on: add the folder as a mesh search path, or switch the check off)";
+      return result;
+    }
+  }
+  const std::uintmax_t bytes = fs::file_size(resolved, ec);
+  if (ec)
+  {
+    result.error = "cannot read the size of " + in_quotes(resolved.string()) + ": " + ec.message();
+    return result;
+  }
+  if (bytes > max_file_bytes_)
+  {
+    result.error = in_quotes(resolved.string()) + " is " + std::to_string(bytes) + " bytes, over the limit of " +
+                   std::to_string(max_file_bytes_) + " bytes";
+    return result;
+  }
+  result.ok = true;
+  result.path = resolved.string();
+  return result;
+}
+
+// A relative path has no folder of its own when the description came over the network, so the
+// candidates are, in order: the base folder (the URDF file's, or the user's SetMeshBaseFolder),
+// each search path, and with no base folder the current folder last. A leading `../` climbs out
+// of the URDF's folder, which a search path is not, so `../meshes/x.STL` is also tried as
+// `<search path>/meshes/x.STL`. Every candidate passes the same root check.
+ResolvedResource ResourceResolver::resolve_relative(const std::string& uri, const std::string& base_folder) const
+{
+  const fs::path relative(uri);
+  fs::path below_parents;
+  bool climbs = false;
+  for (const auto& part : relative.lexically_normal())
+  {
+    if (part == ".." && below_parents.empty())
+      climbs = true;
+    else
+      below_parents /= part;
+  }
+  std::vector<fs::path> candidates;
+  if (!base_folder.empty())
+    candidates.push_back(fs::path(base_folder) / relative);
+  for (const auto& folder : search_paths_)
+  {
+    candidates.push_back(fs::path(folder) / relative);
+    if (climbs && !below_parents.empty())
+      candidates.push_back(fs::path(folder) / below_parents);
+  }
+  std::error_code ec;
+  if (base_folder.empty())
+    candidates.push_back(fs::current_path(ec) / relative);
+
+  std::vector<std::string> missing;
+  ResolvedResource first_refusal;
+  for (const auto& candidate : candidates)
+  {
+    ResolvedResource checked = check_file(candidate, base_folder, "");
+    if (checked.ok)
+      return checked;
+    if (checked.error.compare(0, 13, "no such file ") == 0)
+      missing.push_back(in_quotes(candidate.lexically_normal().string()));
+    else if (first_refusal.error.empty())
+      first_refusal = checked; // a file is there but refused: that is the news, not the misses
+  }
+  ResolvedResource result;
+  if (!first_refusal.error.empty())
+  {
+    result.error = first_refusal.error;
+    return result;
+  }
+  result.error = "no such file (looked for " + join(missing, ", ") + ")";
+  if (base_folder.empty())
+    result.error += "; the description has no folder of its own (it came from a parameter or a topic): give the "
+                    "folder relative mesh paths start from with SetMeshBaseFolder, or add the folder holding the "
+                    "meshes with AddMeshSearchPath";
+  return result;
 }
 
 ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::string& base_folder) const
@@ -306,18 +381,16 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
     const std::string relative = slash == std::string::npos ? std::string() : rest.substr(slash + 1);
     if (package.empty())
       return fail("no package name after package://");
+    // The folder-name rule below takes <search path>/<package>: "." and ".." would name the
+    // search path itself or its parent.
+    if (package == "." || package == "..")
+      return fail(in_quotes(package) + " is not a package name");
     if (relative.empty())
       return fail("no file path after package://" + package + "/");
-    std::vector<std::string> tried;
-    package_folder = find_package(package, &tried);
+    PackageSearchReport report;
+    package_folder = find_package(package, &report);
     if (package_folder.empty())
-    {
-      if (tried.empty())
-        return fail("package " + in_quotes(package) +
-                    " not found: no package locations are set (AMENT_PREFIX_PATH and ROS_PACKAGE_PATH "
-                    "are empty and no search path was added)");
-      return fail("package " + in_quotes(package) + " not found (looked in " + join(tried, ", ") + ")");
-    }
+      return fail(package_not_found(package, report));
     candidate = fs::path(package_folder) / relative;
   }
   else if (starts_with(uri, "file://"))
@@ -339,43 +412,12 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
   }
   else
   {
-    std::error_code ec;
-    const fs::path base = base_folder.empty() ? fs::current_path(ec) : fs::path(base_folder);
-    candidate = base / uri;
+    const ResolvedResource relative = resolve_relative(uri, base_folder);
+    return relative.ok ? relative : fail(relative.error);
   }
 
-  const fs::path resolved = normalised(candidate);
-  const std::string shown = in_quotes(candidate.lexically_normal().string());
-  std::error_code ec;
-  if (!fs::exists(resolved, ec))
-    return fail("no such file " + shown);
-  if (!fs::is_regular_file(resolved, ec))
-    return fail(shown + " is not a regular file");
-
-  if (restrict_to_roots_)
-  {
-    if (!package_folder.empty() && !is_inside(resolved, fs::path(package_folder)))
-      return fail(in_quotes(resolved.string()) + " lies outside its package folder " + in_quotes(package_folder) +
-                  " (root check is on)");
-    const auto roots = allowed_roots(base_folder);
-    const bool inside = std::any_of(roots.begin(), roots.end(),
-                                    [&](const std::string& root) { return is_inside(resolved, normalised(root)); });
-    if (!inside)
-      return fail(in_quotes(resolved.string()) + " lies outside the allowed roots (" +
-                  (roots.empty() ? std::string("none are set") : join(roots, ", ")) +
-                  "; root check is on: add the folder as a mesh search path, or switch the check off)");
-  }
-
-  const std::uintmax_t bytes = fs::file_size(resolved, ec);
-  if (ec)
-    return fail("cannot read the size of " + in_quotes(resolved.string()) + ": " + ec.message());
-  if (bytes > max_file_bytes_)
-    return fail(in_quotes(resolved.string()) + " is " + std::to_string(bytes) + " bytes, over the limit of " +
-                std::to_string(max_file_bytes_) + " bytes");
-
-  result.ok = true;
-  result.path = resolved.string();
-  return result;
+  const ResolvedResource checked = check_file(candidate, base_folder, package_folder);
+  return checked.ok ? checked : fail(checked.error);
 }
 
 } // namespace robot

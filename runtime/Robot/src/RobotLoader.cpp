@@ -190,6 +190,68 @@ std::vector<std::string> RobotVisuals::warnings() const
   return all;
 }
 
+size_t RobotVisuals::mesh_visual_count() const
+{
+  size_t count = 0;
+  for (const auto& entry : links)
+    for (const auto& visual : entry.visuals)
+      count += visual.mesh_uri.empty() ? 0 : 1;
+  return count;
+}
+
+namespace {
+
+// The cause of a mesh warning without its link and URI ("link 'a': could not load mesh 'u': why"
+// -> "why"), so that ten visuals failing for one reason count as one cause. A path in the reason
+// (no such file '/x/a.stl') still makes causes differ per file; that is information, not noise.
+std::string cause_of(const std::string& warning)
+{
+  const std::string marker = "': ";
+  const size_t mesh = warning.find(": could not load mesh '");
+  if (mesh == std::string::npos)
+    return warning;
+  const size_t after_uri = warning.find(marker, mesh + 23);
+  return after_uri == std::string::npos ? warning : warning.substr(after_uri + marker.size());
+}
+
+} // namespace
+
+std::string LinkVisuals::status() const
+{
+  if (warnings.empty())
+    return "ok";
+  size_t placeholders = 0;
+  for (const auto& visual : visuals)
+    placeholders += visual.kind == VisualKind::Placeholder ? 1 : 0;
+  return std::to_string(placeholders) + " of " + std::to_string(visuals.size()) + " visuals are placeholders: " +
+         warnings.front();
+}
+
+std::string RobotVisuals::summary() const
+{
+  const size_t visuals = visual_count();
+  const size_t meshes = mesh_visual_count();
+  size_t missing_meshes = 0;
+  for (const auto& entry : links)
+    for (const auto& visual : entry.visuals)
+      missing_meshes += !visual.mesh_uri.empty() && visual.kind == VisualKind::Placeholder ? 1 : 0;
+  std::string line = std::to_string(visuals) + (visuals == 1 ? " visual, " : " visuals, ");
+  if (missing_meshes == 0)
+    line += meshes == 0 ? "no meshes" : "all " + std::to_string(meshes) + (meshes == 1 ? " mesh" : " meshes") + " loaded";
+  else
+    line += std::to_string(missing_meshes) + " of " + std::to_string(meshes) + (meshes == 1 ? " mesh" : " meshes") +
+            " missing";
+  const std::vector<std::string> all = warnings();
+  if (all.empty())
+    return line;
+  std::set<std::string> causes;
+  for (const auto& warning : all)
+    causes.insert(cause_of(warning));
+  line += " (" + std::to_string(all.size()) + (all.size() == 1 ? " warning" : " warnings") + ", " +
+          std::to_string(causes.size()) + (causes.size() == 1 ? " cause" : " causes") + "); first: " + all.front();
+  return line;
+}
+
 RobotLoader::RobotLoader() : resolver_(ResourceResolver::from_environment()) {}
 
 RobotLoader::RobotLoader(ResourceResolver resolver) : resolver_(std::move(resolver)) {}
@@ -421,6 +483,8 @@ bool RobotLoader::load_file(const std::string& urdf_path, RobotVisuals* robot, s
   std::string text;
   if (!read_urdf_file(urdf_path, &text, error))
     return false;
+  // Its own meshes are `package://<the package holding the file>/...`: found by walking up.
+  resolver_.add_package_of(urdf_path);
   std::error_code ec;
   if (options.base_folder.empty())
     options.base_folder = std::filesystem::absolute(urdf_path, ec).parent_path().string();

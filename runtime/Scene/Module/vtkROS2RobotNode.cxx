@@ -295,6 +295,17 @@ std::string vtkROS2RobotNode::GetWarnings() const
   return all;
 }
 
+std::string vtkROS2RobotNode::GetLoadSummary() const
+{
+  return this->Internals->Loaded ? this->Internals->Visuals.summary() : std::string();
+}
+
+std::string vtkROS2RobotNode::GetLinkStatus(const char* link) const
+{
+  const ros2vtk::robot::LinkVisuals* visuals = this->Internals->Visuals.link(link ? link : "");
+  return visuals ? visuals->status() : std::string();
+}
+
 int vtkROS2RobotNode::GetNumberOfLoads() const
 {
   return this->Internals->NumberOfLoads;
@@ -714,9 +725,12 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
       internals.Models.emplace_back(model.GetPointer());
     }
   }
-  for (const std::string& warning : internals.Visuals.warnings())
+  // One line per load, not one per visual: a description whose meshes all name an unknown
+  // package would otherwise repeat the same cause for every visual. Every warning stays in
+  // GetWarnings(), and each link's in GetLinkStatus().
+  if (!internals.Visuals.warnings().empty())
   {
-    vtkWarningMacro("robot '" << name << "': " << warning);
+    vtkWarningMacro("robot '" << name << "': " << internals.Visuals.summary());
   }
   internals.Loaded = true;
   internals.FramesChanged = false;

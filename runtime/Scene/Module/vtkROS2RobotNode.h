@@ -71,12 +71,16 @@ public:
   /// e.g. "robot1/"). Changing it after a load rebuilds the lookups on the next spin.
   void SetTfPrefix(const char* prefix);
   const char* GetTfPrefix() const;
-  /// A folder searched first for package:// and relative mesh paths (besides AMENT_PREFIX_PATH
-  /// and ROS_PACKAGE_PATH). Applies to the next load.
+  /// A folder searched first for package:// (before the package above the URDF file,
+  /// AMENT_PREFIX_PATH and ROS_PACKAGE_PATH): a package, a folder holding packages, an install
+  /// prefix, or a folder named like the package / holding one (no package.xml needed). Relative
+  /// mesh paths are looked for in it after the mesh base folder ("meshes/x.stl" as
+  /// <folder>/meshes/x.stl; "../meshes/x.STL" also as <folder>/meshes/x.STL). Applies to the
+  /// next load.
   void AddMeshSearchPath(const char* folder);
   /// The folder relative mesh paths ("../meshes/arm.stl") are taken from when the description
   /// comes over the network and so has no folder of its own: usually the URDF file's folder.
-  /// Empty (default): the current folder. Applies to the next load.
+  /// Empty (default): the mesh search paths, then the current folder. Applies to the next load.
   void SetMeshBaseFolder(const char* folder);
   const char* GetMeshBaseFolder() const;
   /// On (default): meshes are read only inside package roots, the URDF file's folder (or the
@@ -92,6 +96,13 @@ public:
   const char* GetLastError() const;
   /// Warnings of the latest load (missing meshes, urdfdom complaints), one per line.
   std::string GetWarnings() const;
+  /// The latest load in one line, as it is logged once per load: "7 visuals, 2 of 5 meshes
+  /// missing (2 warnings, 1 cause); first: link 'a': could not load mesh '…': …", or "7 visuals,
+  /// all 5 meshes loaded". Empty before the first load.
+  std::string GetLoadSummary() const;
+  /// A link's status after the latest load: "ok", "<k> of <n> visuals are placeholders: <first
+  /// warning>", or "" when there is no such link.
+  std::string GetLinkStatus(const char* link) const;
   /// Descriptions loaded so far (a reload counts again).
   int GetNumberOfLoads() const;
   /// Seconds from taking the description to every node being in the scene (latest load).

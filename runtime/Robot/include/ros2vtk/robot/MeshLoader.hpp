@@ -34,7 +34,9 @@ struct MeshData
 constexpr const char* kVertexColorArray = "Colors";
 
 /// Loads mesh files. Chooses the reader by the lower-cased extension. Never throws; errors
-/// come back as false + a message naming the file and the reader's complaint.
+/// come back as false + a message naming the file and the reason: a file that cannot be opened
+/// (the system's reason), is empty, is a Git LFS pointer, has an unknown extension, or the
+/// reader's complaint.
 class MeshLoader
 {
 public:

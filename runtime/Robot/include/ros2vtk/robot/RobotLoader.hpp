@@ -67,6 +67,10 @@ struct LinkVisuals
   std::string link;
   std::vector<LinkVisual> visuals;
   std::vector<std::string> warnings; ///< "link 'x': could not load mesh 'uri': why"
+
+  /// "ok", or "<k> of <n> visuals are placeholders: <first warning>" (the link's status for
+  /// a panel or a script; every warning stays in `warnings`).
+  std::string status() const;
 };
 
 /// A robot's visuals. Links come parents first (depth-first from the root), so the order is
@@ -86,6 +90,13 @@ struct RobotVisuals
   size_t placeholder_count() const;
   /// urdf_warnings, then every link's warnings in link order.
   std::vector<std::string> warnings() const;
+  /// Visuals that are meshes in the URDF (loaded or not).
+  size_t mesh_visual_count() const;
+  /// The one line a load reports, whatever the number of visuals:
+  ///   "7 visuals, all 5 meshes loaded"
+  ///   "7 visuals, 5 of 5 meshes missing (2 causes); first: link 'a': could not load mesh '…': …"
+  /// A description whose meshes all name an unknown package says so once, not once per visual.
+  std::string summary() const;
 };
 
 /// Options of a load.
