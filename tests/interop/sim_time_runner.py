@@ -2,13 +2,14 @@
 """Our side of the simulated-time interop test (tests/interop/test_sim_time.py): the default ROS
 node /slicer of the VTK-wrapped API, as a user's script drives it.
 
-    sim_time_runner.py [--use-sim-time] [--seconds S]
+    sim_time_runner.py [--use-sim-time] [--seconds S] [--count N]
 
 Waits until its use_sim_time is on (set here with --use-sim-time, else by another node through
 the parameter services) and a /clock time has arrived, and only then, so that any wall-clock stamp
 would be a bug, broadcasts world -> tool on /tf and publishes PoseStamped on /sim/pose at 20 Hz,
-while a lookup node follows map -> base (broadcast by the simulator in simulated time). Prints
-{"ready": true} once created, then one JSON object with what it saw.
+while a lookup node follows map -> base (broadcast by the simulator in simulated time), until it
+sent N of each and the lookup succeeded, or S seconds passed. Prints {"ready": true} once created,
+then one JSON object with what it saw.
 """
 from __future__ import annotations
 
@@ -25,6 +26,7 @@ def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument('--use-sim-time', action='store_true')
     parser.add_argument('--seconds', type=float, default=25.0)
+    parser.add_argument('--count', type=int, default=80)
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
@@ -55,6 +57,8 @@ def main() -> int:
             broadcaster.Broadcast(matrix)
             pose.Publish(matrix)
             sent += 1
+        if sent >= args.count and lookup.GetLookupStatus() == 'ok':
+            break
     print(json.dumps({'use_sim_time': node.GetUseSimTime(), 'sim_time_received': node.GetSimTimeReceived(),
                       'first_sim_time': switched_at, 'node_time': node.GetNodeTime(), 'sent': sent,
                       'parameter': node.PrintOwnParameter('use_sim_time'),

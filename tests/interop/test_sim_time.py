@@ -29,12 +29,11 @@ def start_ours(ros, *args: str):
 
 @pytest.mark.parametrize('switch', ['rclpy_set_parameters', 'python_api'])
 def test_our_stamps_follow_rclpy_clock_and_never_carry_wall_time(ros, switch):
-    ours = start_ours(ros, '--seconds', '25', *(['--use-sim-time'] if switch == 'python_api' else []))
+    ours = start_ours(ros, '--seconds', '40', '--count', '80', *(['--use-sim-time'] if switch == 'python_api' else []))
     ros.wait_ready(ours)
     peer = start_peer(ros, '/slicer', '--epoch', str(EPOCH), '--seconds', '20', '--count', '20')
     code, out, err = ros.finish(peer, timeout=60)
-    ros.stop(ours)
-    _, ours_out, ours_err = ros.finish(ours)
+    _, ours_out, ours_err = ros.finish(ours, timeout=60)
     assert code == 0, err
     seen = json.loads(out.splitlines()[-1])
     assert seen['set'] == [{'successful': True, 'reason': ''}], seen['set']
