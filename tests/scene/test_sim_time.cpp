@@ -11,8 +11,6 @@
 #include "vtkROS2Tf2BroadcasterNode.h"
 #include "vtkROS2Tf2LookupNode.h"
 
-#include "ros2vtk/tf2/BufferCore.hpp"
-
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -152,20 +150,28 @@ TEST_F(SimTimeTest, AJumpBackInTimeClearsTheTfBuffer)
   this->StartSimulator();
   ASSERT_TRUE(this->DriveClockTo(1000, 0));
   vtkROS2Tf2BroadcasterNode* broadcaster = this->Node->CreateAndAddTf2BroadcasterNode("map", "robot");
+  vtkROS2Tf2LookupNode* lookup = this->Node->CreateAndAddTf2LookupNode("map", "robot");
   ASSERT_NE(broadcaster, nullptr);
-  ros2vtk::tf2::BufferCore* buffer = this->Node->GetTf2Buffer();
-  ASSERT_NE(buffer, nullptr);
+  ASSERT_NE(lookup, nullptr);
   vtkNew<vtkMatrix4x4> matrix;
   ASSERT_TRUE(SpinUntil(this->Logic, [&] {
     broadcaster->Broadcast(matrix.GetPointer());
-    return buffer->can_transform("map", "robot", ros2vtk::tf2::kLatestTime);
+    return std::string(lookup->GetLookupStatus()) == "ok";
   }));
-  const int warningsBefore = this->Output->NumberOfWarnings;
-  // The replay restarts at 10 s: the transform stamped 1000 s must not stay the "latest".
+  EXPECT_DOUBLE_EQ(lookup->GetLastLookupTime(), 1000.0);
+  EXPECT_EQ(this->Output->Warnings.find("jumped back in time"), std::string::npos) << this->Output->Warnings;
+  SpinUntil(this->Logic, [] { return false; }, 0.3); // no broadcast in flight any more
+  // The replay restarts at 10 s: the transform stamped 1000 s must not stay the "latest" one,
+  // so the buffer forgets it and the lookup fails until a new broadcast comes.
   ASSERT_TRUE(this->DriveClockTo(10, 0));
-  EXPECT_FALSE(buffer->can_transform("map", "robot", ros2vtk::tf2::kLatestTime));
-  EXPECT_GT(this->Output->NumberOfWarnings, warningsBefore);
+  this->Logic->Spin();
+  EXPECT_STREQ(lookup->GetLookupStatus(), "failed");
   EXPECT_NE(this->Output->Warnings.find("jumped back in time"), std::string::npos) << this->Output->Warnings;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
+    broadcaster->Broadcast(matrix.GetPointer());
+    return std::string(lookup->GetLookupStatus()) == "ok";
+  }));
+  EXPECT_DOUBLE_EQ(lookup->GetLastLookupTime(), 10.0);
 }
 
 TEST_F(SimTimeTest, SetBeforeCreateAppliesAtCreateAndIsSavedInSceneFiles)
