@@ -912,5 +912,6 @@ vtkTypeInt64 vtkROS2NodeNode::GetNodeTimeNanoseconds() const
 //------------------------------------------------------------------------------
 double vtkROS2NodeNode::GetNodeTime() const
 {
-  return static_cast<double>(this->GetNodeTimeNanoseconds()) * 1e-9;
+  // Divided, not multiplied by 1e-9: the quotient is the double nearest the exact time.
+  return static_cast<double>(this->GetNodeTimeNanoseconds()) / 1e9;
 }
