@@ -63,6 +63,7 @@ def main() -> int:
                       'first_sim_time': switched_at, 'node_time': node.GetNodeTime(), 'sent': sent,
                       'parameter': node.PrintOwnParameter('use_sim_time'),
                       'lookup_status': lookup.GetLookupStatus(), 'lookup_stamp': lookup.GetLastLookupTime(),
+                      'lookup_age': lookup.GetLastLookupAge(),
                       'lookup_x_mm': lookup.GetMatrixTransformToParent().GetElement(0, 3)}), flush=True)
     return 0
 

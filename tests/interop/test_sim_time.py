@@ -61,4 +61,6 @@ def test_our_stamps_follow_rclpy_clock_and_never_carry_wall_time(ros, switch):
     # The simulator's map -> base (0.5 m in x), stamped in simulated time, found by our lookup.
     assert result['lookup_status'] == 'ok', result
     assert simulated(result['lookup_stamp']), (result, first, last)
+    # Its age, in our node's (simulated) clock: the simulator sends it at 100 Hz.
+    assert 0.0 <= result['lookup_age'] < 2.0, result
     assert result['lookup_x_mm'] == pytest.approx(500.0), result

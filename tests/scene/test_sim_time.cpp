@@ -122,6 +122,12 @@ TEST_F(SimTimeTest, ZeroUntilTheFirstClockThenFollowsItAndBroadcastsCarryIt)
   })) << remote->GetLookupStatus() << " / " << local->GetLookupStatus();
   EXPECT_DOUBLE_EQ(remote->GetLastLookupTime(), 1001.0);
   EXPECT_DOUBLE_EQ(local->GetLastLookupTime(), 1001.0);
+  // Ages compare in each node's clock: 0 s of simulated time here; the wall-clock node sees a
+  // transform from 1970 (why a node needs the simulator's time to judge its transforms).
+  EXPECT_DOUBLE_EQ(local->GetLastLookupAge(), 0.0);
+  ASSERT_TRUE(this->DriveClockTo(1003, 500000000));
+  EXPECT_DOUBLE_EQ(local->GetLastLookupAge(), 2.5);
+  EXPECT_GT(remote->GetLastLookupAge(), 1.0e9);
 }
 
 TEST_F(SimTimeTest, ASetThroughTheParameterStoreSwitchesBothWays)
