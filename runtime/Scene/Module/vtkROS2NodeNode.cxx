@@ -834,7 +834,12 @@ void vtkROS2NodeNode::StartTimeSource()
     vtkWarningMacro("Create: ROS node '" << internals.NodeName << "' has no use_sim_time: " << error);
   }
   internals.Parameters->set_clock(&internals.Clock);
-  // The switch made here happens before any tf data could arrive: nothing to clear or report.
+  // A switch made here comes before this participant's first tf data: nothing to report. A
+  // buffer kept from before a Destroy may hold the other time base, so it is cleared quietly.
+  if (internals.Tf2ClockJumps != internals.Clock.jump_count() && internals.Tf2Buffer)
+  {
+    internals.Tf2Buffer->clear();
+  }
   internals.Tf2ClockJumps = internals.Clock.jump_count();
 }
 
