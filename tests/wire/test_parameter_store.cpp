@@ -135,6 +135,30 @@ TEST(ParameterStore, ValidatorCanRefuseWithItsReason)
   EXPECT_EQ(store.get("mode")->string_value, "manual");
 }
 
+TEST(ParameterStore, PostSetCallbacksSeeEverySuccessfulSetAndNothingElse)
+{
+  // How a node follows its own use_sim_time: whatever path the set takes (its own API or the
+  // services), callbacks see the applied values, and refused or undeclared ones not at all.
+  ParameterStore store;
+  ASSERT_TRUE(store.declare("count", integer(1), nullptr));
+  ASSERT_TRUE(store.declare("other", integer(1), nullptr));
+  std::vector<std::string> seen;
+  const size_t id = store.add_post_set_callback([&](const std::vector<rcl::Parameter>& changed) {
+    std::string batch;
+    for (const auto& p : changed)
+      batch += p.name + "=" + std::to_string(p.value.integer_value) + " ";
+    seen.push_back(batch);
+  });
+  ASSERT_TRUE(store.declare("late", integer(7), nullptr)); // a declaration is not a set
+  store.set_parameters({ parameter("count", integer(2)), parameter("count", text("x")), parameter("nope", integer(3)) });
+  store.set_parameters_atomically({ parameter("count", integer(4)), parameter("other", integer(5)) });
+  store.set_parameters_atomically({ parameter("count", integer(6)), parameter("other", text("y")) }); // refused
+  EXPECT_EQ(seen, (std::vector<std::string>{ "count=2 ", "count=4 other=5 " }));
+  store.remove_post_set_callback(id);
+  store.set_parameters({ parameter("count", integer(8)) });
+  EXPECT_EQ(seen.size(), 2u);
+}
+
 TEST(ParameterStore, ListByPrefixAndDepth)
 {
   ParameterStore store;

@@ -46,6 +46,7 @@
 #include "ros2vtk/rmw_dds_common/msg/gid.hpp"
 #include "ros2vtk/rmw_dds_common/msg/node_entities_info.hpp"
 #include "ros2vtk/rmw_dds_common/msg/participant_entities_info.hpp"
+#include "ros2vtk/rosgraph_msgs/msg/clock.hpp"
 #include "ros2vtk/sensor_msgs/msg/channel_float32.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
@@ -117,6 +118,7 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rmw_dds_common::msg::Gid::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rmw_dds_common::msg::NodeEntitiesInfo::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rmw_dds_common::msg::ParticipantEntitiesInfo::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rosgraph_msgs::msg::Clock::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::ChannelFloat32::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Image::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::JointState::type_support());

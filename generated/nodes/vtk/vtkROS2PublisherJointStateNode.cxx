@@ -58,7 +58,9 @@ int vtkROS2PublisherJointStateNode::Publish(vtkTable* object)
     this->RecordFailedPublish(error.c_str());
     return 0;
   }
-  const ::ros2vtk::convert::Stamp stamp = ::ros2vtk::convert::now_stamp();
+  // The ROS node's clock: simulated time when its use_sim_time is on.
+  const ::ros2vtk::convert::Stamp stamp =
+    ::ros2vtk::convert::stamp_from_nanoseconds(this->GetStampTimeNanoseconds());
   message.header.stamp.sec = stamp.sec;
   message.header.stamp.nanosec = stamp.nanosec;
   message.header.frame_id = this->FrameID;

@@ -15,6 +15,16 @@ def nodes_of_class(scene, class_name: str):
     return [nodes.GetItemAsObject(i) for i in range(nodes.GetNumberOfItems())]
 
 
+def clock_text(node) -> str:
+    """The status line's word on time: nothing on the system clock (the usual case), the
+    simulated time while the node's use_sim_time is on, or that it still waits for /clock."""
+    if node is None or not node.GetUseSimTime():
+        return ''
+    if not node.GetSimTimeReceived():
+        return 'sim time: waiting for /clock'
+    return f'sim time {node.GetNodeTime():.3f} s'
+
+
 def robot_rows(scene):
     rows = []
     for robot in nodes_of_class(scene, 'vtkROS2RobotNode'):

@@ -312,6 +312,9 @@ class App:
                     f'{self.logic.GetMeanSpinDuration():.3f} ms mean, '
                     f'{max(total - received, 0) / elapsed:.0f} msgs/s, '
                     f'{len(s.topics)} topic nodes, {len(s.robots)} robots, {len(self.errors)} errors')
+        clock = scene_state.clock_text(self.node)
+        if clock:
+            s.status += f', {clock}'
         self.last_status = (now, self.logic.GetNumberOfSpins(), total)
 
     def render(self):

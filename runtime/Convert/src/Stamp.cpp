@@ -7,8 +7,12 @@ namespace convert {
 
 Stamp to_stamp(std::chrono::system_clock::time_point time)
 {
-  const int64_t nanoseconds =
-    std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
+  return stamp_from_nanoseconds(
+    std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count());
+}
+
+Stamp stamp_from_nanoseconds(int64_t nanoseconds)
+{
   Stamp stamp;
   if (nanoseconds < 0)
   {

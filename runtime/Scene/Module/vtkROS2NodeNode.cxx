@@ -8,6 +8,8 @@
 #include "ros2vtk/tf2_ros/TransformListener.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/wire/ParameterServer.hpp"
+#include "ros2vtk/wire/ROSClock.hpp"
+#include "ros2vtk/wire/TimeSource.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/Participant.hpp"
@@ -53,6 +55,12 @@ public:
   std::string NodeNamespace; // as given to Create
   bool CreateOnRestore = false; // read from a scene file: Create in OnSceneRestored
   bool Spinning = false;        // Spin ran since Create (SlicerROS2's GetSpinning)
+  // The node's clock outlives the participant (GetNodeTime after Destroy still answers); the
+  // time source that drives it from use_sim_time and /clock lives with the participant.
+  ros2vtk::wire::ROSClock Clock;
+  bool UseSimTimeOnCreate = false; // SetUseSimTime before Create, or read from a scene file
+  std::unique_ptr<ros2vtk::wire::TimeSource> TimeSource;
+  uint64_t Tf2ClockJumps = 0; // Clock.jump_count() when the tf buffer was last cleared
   // Own parameters, tf2: released before the participant they live in.
   std::unique_ptr<ros2vtk::wire::ParameterServer> Parameters;
   std::unique_ptr<ros2vtk::tf2::BufferCore> Tf2Buffer;
@@ -75,6 +83,8 @@ public:
 
   void ReleaseParticipantObjects()
   {
+    // The time source holds a callback in the parameter store: released first.
+    this->TimeSource.reset();
     this->Tf2Listener.reset();
     this->Tf2Broadcasters[0].reset();
     this->Tf2Broadcasters[1].reset();
@@ -151,6 +161,10 @@ bool vtkROS2NodeNode::Create(const char* nodeName, const char* nodeNamespace)
   }
   this->Internals->NodeName = nodeName;
   this->Internals->NodeNamespace = nodeNamespace ? nodeNamespace : "";
+  if (this->Internals->Parameters)
+  {
+    this->StartTimeSource();
+  }
   if (!*this->GetName())
   {
     this->SetName(nodeName);
@@ -184,6 +198,8 @@ bool vtkROS2NodeNode::Destroy()
   {
     child->OnROS2NodeDestroyed(this);
   }
+  // Kept for a later Create and for scene files, whoever switched it last (a peer may have).
+  this->Internals->UseSimTimeOnCreate = this->Internals->Clock.is_sim_time_active();
   this->Internals->ReleaseParticipantObjects();
   this->Internals->Participant.reset();
   this->Modified();
@@ -290,6 +306,11 @@ int vtkROS2NodeNode::Spin()
   {
     handled += static_cast<int>(this->Internals->Parameters->process());
   }
+  if (this->Internals->TimeSource)
+  {
+    handled += static_cast<int>(this->Internals->TimeSource->process());
+  }
+  this->ClearTf2BufferOnClockJump();
   handled += this->SpinTf2Listener();
   if (this->Internals->SpinChildrenVersion != this->GetReferencesVersion())
   {
@@ -441,6 +462,7 @@ void vtkROS2NodeNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("ros2NodeName", this->Internals->NodeName.c_str());
   element->SetAttribute("ros2NodeNamespace", this->Internals->NodeNamespace.c_str());
   element->SetIntAttribute("created", this->IsCreated() ? 1 : 0);
+  element->SetIntAttribute("useSimTime", this->GetUseSimTime() ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -463,6 +485,9 @@ bool vtkROS2NodeNode::ReadXML(vtkXMLDataElement* element)
     return false;
   }
   this->Internals->CreateOnRestore = created != 0;
+  int useSimTime = 0;
+  element->GetScalarAttribute("useSimTime", useSimTime);
+  this->Internals->UseSimTimeOnCreate = useSimTime != 0;
   return true;
 }
 
@@ -490,6 +515,7 @@ void vtkROS2NodeNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ROS2NodeName: " << this->Internals->NodeName << "\n";
   os << indent << "ROS2NodeNamespace: " << this->Internals->NodeNamespace << "\n";
   os << indent << "Created: " << this->IsCreated() << "\n";
+  os << indent << "UseSimTime: " << this->GetUseSimTime() << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -789,4 +815,115 @@ std::string vtkROS2NodeNode::GetRegisteredServiceTypes() const
     names += (names.empty() ? "" : " ") + name;
   }
   return names;
+}
+
+//------------------------------------------------------------------------------
+// Simulated time
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::StartTimeSource()
+{
+  vtkInternals& internals = *this->Internals;
+  ros2vtk::wire::ParameterStore& store = internals.Parameters->store();
+  std::string error;
+  if (internals.UseSimTimeOnCreate && !store.has(ros2vtk::wire::TimeSource::kUseSimTimeParameter))
+  {
+    // Declared with the requested value, as rclpy's parameter_overrides would: the node never
+    // stamps a wall-clock time before switching.
+    ros2vtk::rcl_interfaces::msg::ParameterValue on;
+    on.type = ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_BOOL;
+    on.bool_value = true;
+    store.declare(ros2vtk::wire::TimeSource::kUseSimTimeParameter, on, &error);
+  }
+  internals.TimeSource =
+    ros2vtk::wire::TimeSource::create(*internals.Participant, store, internals.Clock, &error);
+  if (!internals.TimeSource)
+  {
+    vtkWarningMacro("Create: ROS node '" << internals.NodeName << "' has no use_sim_time: " << error);
+  }
+  internals.Parameters->set_clock(&internals.Clock);
+  // A switch made here comes before this participant's first tf data: nothing to report. A
+  // buffer kept from before a Destroy may hold the other time base, so it is cleared quietly.
+  if (internals.Tf2ClockJumps != internals.Clock.jump_count() && internals.Tf2Buffer)
+  {
+    internals.Tf2Buffer->clear();
+  }
+  internals.Tf2ClockJumps = internals.Clock.jump_count();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::ClearTf2BufferOnClockJump()
+{
+  vtkInternals& internals = *this->Internals;
+  const uint64_t jumps = internals.Clock.jump_count();
+  if (jumps == internals.Tf2ClockJumps)
+  {
+    return;
+  }
+  internals.Tf2ClockJumps = jumps;
+  // tf2_ros::Buffer clears itself on a change of time source or a jump back: transforms
+  // stamped in the other time base (or before a replay restarted) would otherwise win every
+  // "latest" lookup. Static transforms survive (StaticCache::clear).
+  if (internals.Tf2Buffer)
+  {
+    internals.Tf2Buffer->clear();
+    vtkWarningMacro("tf2: the ROS clock of node " << internals.NodeName
+                                                  << " changed source or jumped back in time: tf buffer cleared");
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::SetUseSimTime(bool useSimTime)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Participant)
+  {
+    internals.UseSimTimeOnCreate = useSimTime;
+    this->Modified();
+    return true;
+  }
+  if (!internals.TimeSource)
+  {
+    vtkErrorMacro("SetUseSimTime: ROS node '" << internals.NodeName << "' has no use_sim_time parameter");
+    return false;
+  }
+  // Through the parameter store, so the switch is the same as one made by another node through
+  // the parameter services (a parameter event is published, the time source follows).
+  if (!this->SetParameterAsBool(ros2vtk::wire::TimeSource::kUseSimTimeParameter, useSimTime))
+  {
+    return false;
+  }
+  if (!internals.TimeSource->last_error().empty())
+  {
+    vtkErrorMacro("SetUseSimTime: " << internals.TimeSource->last_error());
+    return false;
+  }
+  internals.UseSimTimeOnCreate = useSimTime;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::GetUseSimTime() const
+{
+  return this->Internals->Participant ? this->Internals->Clock.is_sim_time_active()
+                                      : this->Internals->UseSimTimeOnCreate;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::GetSimTimeReceived() const
+{
+  return this->Internals->Clock.has_sim_time();
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2NodeNode::GetNodeTimeNanoseconds() const
+{
+  return static_cast<vtkTypeInt64>(this->Internals->Clock.now());
+}
+
+//------------------------------------------------------------------------------
+double vtkROS2NodeNode::GetNodeTime() const
+{
+  // Divided, not multiplied by 1e-9: the quotient is the double nearest the exact time.
+  return static_cast<double>(this->GetNodeTimeNanoseconds()) / 1e9;
 }

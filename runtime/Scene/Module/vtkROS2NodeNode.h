@@ -229,6 +229,26 @@ public:
   ///@}
 
   ///@{
+  /// Simulated time (rclpy's `use_sim_time` parameter, declared on every created node, default
+  /// false; ros2 param and rclpy's SetParameters switch it too). While it is on, the node's
+  /// clock follows rosgraph_msgs/msg/Clock on /clock (taken on Spin) instead of the system
+  /// clock, and everything the node stamps uses it: publishers' headers, tf broadcasts,
+  /// parameter events. Before the first /clock message the time is 0, as in rclpy. Switching
+  /// it, or /clock going backwards, clears the tf buffer (tf2_ros does the same).
+  /// SetUseSimTime before Create applies at Create (and is saved in scene files). False
+  /// (vtkErrorMacro) when the set was refused.
+  bool SetUseSimTime(bool useSimTime);
+  /// Whether the node's time is simulated (the parameter's value once created).
+  bool GetUseSimTime() const;
+  /// Whether a /clock time has arrived since Create (a status line shows "waiting for /clock").
+  bool GetSimTimeReceived() const;
+  /// The node's current ROS time: seconds since the epoch of its source (the Unix epoch, or the
+  /// simulator's), and the same in nanoseconds, what header stamps carry.
+  double GetNodeTime() const;
+  vtkTypeInt64 GetNodeTimeNanoseconds() const;
+  ///@}
+
+  ///@{
   /// Severity from which this node's warnings and errors are published on /rosout, with
   /// rcl_interfaces/msg/Log's values (10 debug, 20 info (rcl's default), 30 warn, 40 error,
   /// 50 fatal). False (vtkErrorMacro) before Create or for another value.
@@ -305,6 +325,10 @@ private:
     const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach);
 #endif
   int SpinTf2Listener();
+  /// Makes the time source (declares use_sim_time) once the parameter server exists.
+  void StartTimeSource();
+  /// Clears the tf buffer when the clock changed source or went back since the last spin.
+  void ClearTf2BufferOnClockJump();
   void CollectSpinChildren();
 
   class vtkInternals;

@@ -115,6 +115,13 @@ vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
 }
 
 //------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2PublisherNode::GetStampTimeNanoseconds() const
+{
+  const vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  return rosNode ? rosNode->GetNodeTimeNanoseconds() : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2PublisherNode::RecordFailedPublish(const char* reason)
 {
   ++this->NumberOfCalls;

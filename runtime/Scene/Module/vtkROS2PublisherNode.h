@@ -62,6 +62,10 @@ protected:
   /// For subclasses whose conversion failed before a message existed: counts the call and
   /// reports `reason` with vtkErrorMacro.
   void RecordFailedPublish(const char* reason);
+  /// The time a header published now carries, in nanoseconds: the ROS node's clock
+  /// (vtkROS2NodeNode::GetNodeTimeNanoseconds, simulated time when use_sim_time is on). 0 when
+  /// not attached to a ROS node (PublishMessage refuses to send then anyway).
+  vtkTypeInt64 GetStampTimeNanoseconds() const;
 
   bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
     const ros2vtk::wire::QoS& qos, std::string* error) override;

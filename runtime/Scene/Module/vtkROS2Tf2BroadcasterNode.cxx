@@ -97,7 +97,9 @@ bool vtkROS2Tf2BroadcasterNode::Broadcast(vtkMatrix4x4* matrix)
   ros2vtk::tf2::TransformStamped transform;
   transform.frame_id = this->ParentFrame;
   transform.child_frame_id = this->ChildFrame;
-  transform.stamp = ros2vtk::tf2_ros::now();
+  // The ROS node's clock: simulated time when its use_sim_time is on (tf2_ros stamps with the
+  // node clock too), so lookups by peers in the same time base succeed.
+  transform.stamp = rosNode->GetNodeTimeNanoseconds();
   transform.transform.translation = Eigen::Vector3d(pose.translation[0], pose.translation[1], pose.translation[2]);
   transform.transform.rotation =
     Eigen::Quaterniond(pose.rotation[3], pose.rotation[0], pose.rotation[1], pose.rotation[2]);

@@ -66,6 +66,17 @@ bool vtkROS2Tf2LookupNode::IsDifferentFromLast(int sec, int nsec) const
 }
 
 //------------------------------------------------------------------------------
+double vtkROS2Tf2LookupNode::GetLastLookupAge() const
+{
+  const vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (!rosNode || this->Status == 0)
+  {
+    return -1.0;
+  }
+  return static_cast<double>(rosNode->GetNodeTimeNanoseconds() - this->LastStampNanoseconds) / 1e9;
+}
+
+//------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2Tf2LookupNode::GetROS2Node() const
 {
   return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));

@@ -47,6 +47,10 @@ public:
   const char* GetLastLookupError() const { return this->LastError.c_str(); }
   /// Stamp of the transform last applied, in seconds (0 before the first success).
   double GetLastLookupTime() const { return this->LastStamp; }
+  /// How old that transform is now, in seconds of the ROS node's clock (simulated time when
+  /// its use_sim_time is on, so a simulator's transforms are not 1.7e9 s old): node time minus
+  /// stamp. -1 before the first success or without a ROS node.
+  double GetLastLookupAge() const;
   /// Off (default): events only when the looked-up matrix changes. On (SlicerROS2's
   /// SetModifiedOnLookup): a ModifiedEvent for every lookup that brings a new stamp, even when
   /// the matrix is the same (e.g. to drive a per-sample observer).

@@ -10,6 +10,7 @@
 #include "ros2vtk/rcl_interfaces/srv/set_parameters_atomically.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
+#include "ros2vtk/wire/ROSClock.hpp"
 #include "ros2vtk/wire/Service.hpp"
 
 #include <chrono>
@@ -35,6 +36,7 @@ public:
   std::string node_name;
   std::vector<Endpoint> endpoints;
   std::unique_ptr<Publisher> events;
+  const ROSClock* clock = nullptr; // the node's clock for event stamps; system time without one
 };
 
 namespace {
@@ -114,6 +116,11 @@ ParameterStore& ParameterServer::store()
   return impl_->store;
 }
 
+void ParameterServer::set_clock(const ROSClock* clock)
+{
+  impl_->clock = clock;
+}
+
 size_t ParameterServer::process()
 {
   size_t answered = 0;
@@ -137,8 +144,10 @@ size_t ParameterServer::process()
   {
     return answered; // the usual spin: no clock read
   }
-  const auto now = std::chrono::system_clock::now().time_since_epoch();
-  const auto nanoseconds = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count();
+  // rclpy stamps parameter events with the node's clock (simulated time when it is on).
+  const int64_t nanoseconds = impl_->clock
+    ? impl_->clock->now()
+    : std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
   for (auto& event : events)
   {
     event.stamp.sec = static_cast<int32_t>(nanoseconds / 1000000000);

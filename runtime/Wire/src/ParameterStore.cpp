@@ -268,6 +268,30 @@ std::string ParameterStore::check(const rcl::Parameter& parameter) const
   return std::string();
 }
 
+size_t ParameterStore::add_post_set_callback(PostSetCallback callback)
+{
+  const size_t id = next_callback_id_++;
+  post_set_callbacks_.emplace_back(id, std::move(callback));
+  return id;
+}
+
+void ParameterStore::remove_post_set_callback(size_t id)
+{
+  post_set_callbacks_.erase(std::remove_if(post_set_callbacks_.begin(), post_set_callbacks_.end(),
+                                           [id](const auto& entry) { return entry.first == id; }),
+                            post_set_callbacks_.end());
+}
+
+void ParameterStore::notify_post_set(const std::vector<rcl::Parameter>& changed)
+{
+  if (changed.empty())
+    return;
+  // A copy: a callback may add or remove callbacks.
+  const auto callbacks = post_set_callbacks_;
+  for (const auto& entry : callbacks)
+    entry.second(changed);
+}
+
 std::vector<rcl::SetParametersResult> ParameterStore::set_parameters(const std::vector<rcl::Parameter>& parameters)
 {
   std::vector<rcl::SetParametersResult> results;
@@ -282,6 +306,8 @@ std::vector<rcl::SetParametersResult> ParameterStore::set_parameters(const std::
       rcl::ParameterEvent event;
       event.changed_parameters.push_back(parameter);
       events_.push_back(event);
+      // Per parameter, as rclpy's set_parameters sets them one by one.
+      notify_post_set({ parameter });
     }
     results.push_back(result);
   }
@@ -316,6 +342,7 @@ rcl::SetParametersResult ParameterStore::set_parameters_atomically(const std::ve
   if (!parameters.empty())
     events_.push_back(event);
   result.successful = true;
+  notify_post_set(parameters);
   return result;
 }
 

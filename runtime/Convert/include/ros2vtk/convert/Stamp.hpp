@@ -20,7 +20,12 @@ struct Stamp
 };
 
 /// The system clock now (what rclcpp's default ROS clock gives when sim time is off).
+/// Nodes stamp with their own clock instead (vtkROS2NodeNode::GetNodeTimeNanoseconds), which
+/// follows simulated time.
 Stamp now_stamp();
+
+/// ROS time in nanoseconds (a node clock's reading) as a stamp, clamped like to_stamp.
+Stamp stamp_from_nanoseconds(int64_t nanoseconds);
 
 /// A system-clock time point as a stamp; times before the epoch or after 2038 (int32 seconds)
 /// are clamped to the representable range.

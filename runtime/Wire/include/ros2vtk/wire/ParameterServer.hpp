@@ -13,6 +13,7 @@ namespace ros2vtk {
 namespace wire {
 
 class Participant;
+class ROSClock;
 
 class ParameterServer
 {
@@ -24,6 +25,10 @@ public:
   ParameterServer& operator=(const ParameterServer&) = delete;
 
   ParameterStore& store();
+
+  /// The clock that stamps parameter events (the node's, so they follow simulated time as
+  /// rclpy's do); nullptr: the system clock. It must outlive the server or be unset first.
+  void set_clock(const ROSClock* clock);
 
   /// Answers every queued request and publishes pending parameter events. Call it from the
   /// thread that owns the store (the spin). Returns the number of requests answered.

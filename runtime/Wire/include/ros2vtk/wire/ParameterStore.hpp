@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ros2vtk {
@@ -47,6 +48,14 @@ public:
 
   void set_validator(Validator validator) { validator_ = std::move(validator); }
 
+  /// Called after a set succeeded, with the parameters it changed (rclpy's post-set parameters
+  /// callbacks): how a node follows its own parameters (use_sim_time) whether the set came from
+  /// its own code or from another node through the services. Not called for declarations: who
+  /// declares reads the value. Returns an id for remove_post_set_callback.
+  using PostSetCallback = std::function<void(const std::vector<rcl::Parameter>&)>;
+  size_t add_post_set_callback(PostSetCallback callback);
+  void remove_post_set_callback(size_t id);
+
   /// Largest value (parameter_value_size) a set may bring; bigger ones are refused with a reason
   /// naming both sizes. Other nodes set our parameters through the services, so this bounds what
   /// they can make us keep. Declarations (our own code) are not bounded.
@@ -76,7 +85,11 @@ private:
     rcl::ParameterDescriptor descriptor;
   };
   std::map<std::string, Entry> parameters_;
+  void notify_post_set(const std::vector<rcl::Parameter>& changed);
+
   Validator validator_;
+  std::vector<std::pair<size_t, PostSetCallback>> post_set_callbacks_;
+  size_t next_callback_id_ = 1;
   size_t value_size_limit_ = kDefaultValueSizeLimit;
   std::vector<rcl::ParameterEvent> events_;
 };
