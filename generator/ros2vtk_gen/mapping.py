@@ -34,7 +34,7 @@ BAD_LENGTHS = MAPPING_BAD_LENGTHS
 
 SHORT_NAME_RE = re.compile(r"^[A-Z][A-Za-z0-9]*$")
 RULE_KEYS = ("short_name", "aliases", "ros_type", "vtk_type", "kind", "fields", "header",
-             "lengths")
+             "child_frame", "lengths")
 HEADER_TYPE = "std_msgs/msg/Header"
 
 class MappingError(GeneratorError):
@@ -80,6 +80,7 @@ class Rule:
     source: str                     # mapping file as given
     line: int
     mapping_file: str = field(default="", compare=False)  # file name for banners
+    child_frame: Optional[ResolvedField] = None  # a string the publisher fills (child_frame_id)
 
 
 # ---------------------------------------------------------------- locating lines
@@ -269,6 +270,20 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
         if header.field.type.ros_name() != HEADER_TYPE or header.field.container != SCALAR:
             raise fail("header", f"header '{raw['header']}' is not a {HEADER_TYPE}", BAD_FIELD)
 
+    child_frame = None
+    if "child_frame" in raw:
+        if not isinstance(raw["child_frame"], str) or not raw["child_frame"]:
+            raise fail("child_frame", "'child_frame' must be a field path string", BAD_KEY)
+        if header is None:
+            raise fail("child_frame", "'child_frame' needs a 'header' (it names the child of the header's frame)",
+                       BAD_KEY)
+        try:
+            child_frame = resolve_path(message, raw["child_frame"], table)
+        except ValueError as error:
+            raise fail("child_frame", f"child_frame: {error}", BAD_FIELD) from None
+        if child_frame.field.type.ros_name() != "string" or child_frame.field.container != SCALAR:
+            raise fail("child_frame", f"child_frame '{raw['child_frame']}' is not a string", BAD_FIELD)
+
     lengths = raw.get("lengths", [])
     if not isinstance(lengths, list) or not all(isinstance(p, str) for p in lengths):
         raise fail("lengths", "'lengths' must be a list of field paths", BAD_KEY)
@@ -278,7 +293,8 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
     return Rule(short_name=short_name, aliases=tuple(aliases), ros_type=ros_type,
                 vtk_type=vtk_type, kind=kind_name, message=message, roles=roles,
                 element_roles=element_roles, header=header, scaled_roles=scaled, source=path,
-                line=line, mapping_file=path.replace("\\", "/").rsplit("/", 1)[-1])
+                line=line, mapping_file=path.replace("\\", "/").rsplit("/", 1)[-1],
+                child_frame=child_frame)
 
 
 def _normalise_ros_type(text: str) -> str:

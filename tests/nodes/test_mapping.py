@@ -74,6 +74,8 @@ def test_shipped_rules_load_with_their_kinds_and_scaling(table):
     assert rules["Image"].aliases == ("UInt8Image",)
     assert rules["Image"].header is not None and rules["Image"].header.path == "header"
     assert rules["String"].header is None
+    assert rules["TransformStamped"].child_frame.path == "child_frame_id"
+    assert rules["PoseStamped"].child_frame is None
 
 
 def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
@@ -106,6 +108,12 @@ def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
      "'pose stamped' is not a valid short name", "R2V202"),
     (('kind = "rigid_transform"', 'kind = "rigid_transform"\ncolour = "red"'), 6,
      "unknown key(s) colour", "R2V202"),
+    (('header = "header"', 'header = "header"\nchild_frame = "header.frame_id.x"'), 8,
+     "child_frame", "R2V205"),
+    (('header = "header"', 'header = "header"\nchild_frame = "pose"'), 8,
+     "child_frame 'pose' is not a string", "R2V205"),
+    (('header = "header"', 'child_frame = "header.frame_id"'), 7,
+     "'child_frame' needs a 'header'", "R2V202"),
 ])
 def test_each_mistake_names_file_line_and_reason(tmp_path, table, change, line, fragment, code):
     old, new = change

@@ -162,7 +162,7 @@ ROS_TYPES = {
     'Double': 'std_msgs/msg/Float64', 'IntArray': 'std_msgs/msg/Int64MultiArray',
     'DoubleArray': 'std_msgs/msg/Float64MultiArray', 'WrenchStamped': 'geometry_msgs/msg/WrenchStamped',
     'PoseArray': 'geometry_msgs/msg/PoseArray', 'IntTable': 'std_msgs/msg/Int64MultiArray',
-    'DoubleTable': 'std_msgs/msg/Float64MultiArray',
+    'DoubleTable': 'std_msgs/msg/Float64MultiArray', 'TransformStamped': 'geometry_msgs/msg/TransformStamped',
 }
 
 
@@ -345,9 +345,10 @@ class TestCreateAndAddPubSub(unittest.TestCase):
 
         initSubMessageCount = self.testSub.GetNumberOfMessages()
         # SlicerROS2's blank PoseArray carries its header; ours is a vtkTransformCollection and
-        # the header's frame is the publisher's FrameID.
+        # the header is the publisher's (SetFrameID, SetHeaderStamp).
         samplePubMessage = self.testPub.GetBlankMessage()
         self.testPub.SetFrameID("test_frame")
+        self.testPub.SetHeaderStamp(123, 456)
 
         pose1 = vtk.vtkMatrix4x4()
         pose1.SetElement(0, 3, 1.0)
@@ -388,6 +389,7 @@ class TestCreateAndAddPubSub(unittest.TestCase):
 
         receivedPoseArray = self.testSub.GetLastMessage()
         self.assertEqual(self.testSub.GetLastMessageFrameID(), "test_frame", "Incorrect frame_id in header")
+        self.assertAlmostEqual(self.testSub.GetLastMessageTime(), 123.000000456, places=9, msg="Incorrect timestamp in header")
         self.assertEqual(receivedPoseArray.GetNumberOfItems(), 3, "Incorrect number of poses received")
         for i, sentPose in enumerate(poses):
             receivedPose = receivedPoseArray.GetItemAsObject(i).GetMatrix()
@@ -398,9 +400,30 @@ class TestCreateAndAddPubSub(unittest.TestCase):
                                            places=3,
                                            msg=f"Mismatch in pose {i}, element ({row}, {col})")
         message = self.rclpy_message()
-        self.assertEqual(message['header']['frame_id'], 'test_frame')
+        self.assertEqual(message['header'], {'frame_id': 'test_frame', 'stamp': {'sec': 123, 'nanosec': 456}})
         self.assertEqual([round(p['position']['x'] * 1000, 9) for p in message['poses']], [1.0, 4.0, 7.0])
 
+        self.delete_pub_sub()
+
+    def test_transform_stamped_child_frame_and_stamp(self):
+        # Added (issue 14): SlicerROS2 scripts fill TransformStamped's child_frame_id and stamp;
+        # rclpy must receive both.
+        self.create_pub_sub("TransformStamped")
+        self.testPub.SetFrameID("world")
+        self.testPub.SetChildFrameID("needle_tip")
+        self.testPub.SetHeaderStamp(1700000000, 5)
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        sentMatrix = vtk.vtkMatrix4x4()
+        sentMatrix.SetElement(0, 3, 12.5)
+        self.testPub.Publish(sentMatrix)
+        self.generic_assertions(initSubMessageCount)
+        self.assertEqual(self.testSub.GetLastMessageChildFrameID(), "needle_tip")
+        message = self.rclpy_message()
+        self.assertEqual((message['header']['frame_id'], message['child_frame_id']), ('world', 'needle_tip'))
+        self.assertEqual(message['header']['stamp'], {'sec': 1700000000, 'nanosec': 5})
+        self.assertAlmostEqual(message['transform']['translation']['x'], 0.0125, places=12)
+        self.testPub.UseNodeClockForHeaderStamp()
+        self.assertFalse(self.testPub.GetHeaderStampIsFixed())
         self.delete_pub_sub()
 
     def check_table(self, type, makeArray, column1, column2):

@@ -39,7 +39,7 @@ public:
   void SetEncoding(const char* encoding);
   const char* GetEncoding() const { return this->Encoding.c_str(); }
 
-  /// frame_id written into the header of every message (its stamp is the current time).
+  /// frame_id written into the header of every message (its stamp: see SetHeaderStamp).
   void SetFrameID(const char* frameID);
   const char* GetFrameID() const { return this->FrameID.c_str(); }
 

@@ -35,7 +35,7 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
-  /// frame_id written into the header of every message (its stamp is the current time).
+  /// frame_id written into the header of every message (its stamp: see SetHeaderStamp).
   void SetFrameID(const char* frameID);
   const char* GetFrameID() const { return this->FrameID.c_str(); }
 

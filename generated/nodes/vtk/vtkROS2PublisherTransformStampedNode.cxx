@@ -29,6 +29,7 @@ void vtkROS2PublisherTransformStampedNode::PrintSelf(ostream& os, vtkIndent inde
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FrameID: " << this->FrameID << "\n";
+  os << indent << "ChildFrameID: " << this->ChildFrameID << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -64,6 +65,7 @@ int vtkROS2PublisherTransformStampedNode::Publish(vtkMatrix4x4* object)
   message.header.stamp.sec = stamp.sec;
   message.header.stamp.nanosec = stamp.nanosec;
   message.header.frame_id = this->FrameID;
+  message.child_frame_id = this->ChildFrameID;
   return this->PublishMessage(&message) ? 1 : 0;
 }
 
@@ -96,10 +98,22 @@ void vtkROS2PublisherTransformStampedNode::SetFrameID(const char* frameID)
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2PublisherTransformStampedNode::SetChildFrameID(const char* childFrameID)
+{
+  const std::string value = childFrameID ? childFrameID : "";
+  if (value != this->ChildFrameID)
+  {
+    this->ChildFrameID = value;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2PublisherTransformStampedNode::WriteXML(vtkXMLDataElement* element)
 {
   this->Superclass::WriteXML(element);
   element->SetAttribute("FrameID", this->FrameID.c_str());
+  element->SetAttribute("ChildFrameID", this->ChildFrameID.c_str());
 }
 
 //------------------------------------------------------------------------------
@@ -112,6 +126,10 @@ bool vtkROS2PublisherTransformStampedNode::ReadXML(vtkXMLDataElement* element)
   if (const char* frameID = element->GetAttribute("FrameID"))
   {
     this->FrameID = frameID;
+  }
+  if (const char* childFrameID = element->GetAttribute("ChildFrameID"))
+  {
+    this->ChildFrameID = childFrameID;
   }
   return true;
 }

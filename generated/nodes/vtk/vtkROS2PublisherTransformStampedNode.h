@@ -35,9 +35,12 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
-  /// frame_id written into the header of every message (its stamp is the current time).
+  /// frame_id written into the header of every message (its stamp: see SetHeaderStamp).
   void SetFrameID(const char* frameID);
   const char* GetFrameID() const { return this->FrameID.c_str(); }
+  /// The child frame written into every message (the frame whose pose it carries).
+  void SetChildFrameID(const char* childFrameID);
+  const char* GetChildFrameID() const { return this->ChildFrameID.c_str(); }
 
   const char* GetSlicerType() const override { return "vtkMatrix4x4"; }
 
@@ -51,6 +54,7 @@ protected:
   const ros2vtk::wire::MessageTypeSupport& GetMessageTypeSupport() const override;
 
   std::string FrameID;
+  std::string ChildFrameID;
   std::string LastConversionError;
 
 private:

@@ -137,3 +137,10 @@ double vtkROS2SubscriberTransformStampedNode::GetLastMessageTime() const
   const auto* raw = static_cast<const MessageType*>(this->GetLastRawMessage());
   return raw ? raw->header.stamp.sec + 1e-9 * raw->header.stamp.nanosec : 0.0;
 }
+
+//------------------------------------------------------------------------------
+std::string vtkROS2SubscriberTransformStampedNode::GetLastMessageChildFrameID() const
+{
+  const auto* raw = static_cast<const MessageType*>(this->GetLastRawMessage());
+  return raw ? raw->child_frame_id : std::string();
+}

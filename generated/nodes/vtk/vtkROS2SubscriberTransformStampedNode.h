@@ -46,6 +46,8 @@ public:
   /// before the first message.
   std::string GetLastMessageFrameID() const;
   double GetLastMessageTime() const;
+  /// The child frame of the newest message ("" before the first).
+  std::string GetLastMessageChildFrameID() const;
 
   const char* GetSlicerType() const override { return "vtkMatrix4x4"; }
 

@@ -115,8 +115,35 @@ vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2PublisherNode::SetHeaderStamp(int sec, unsigned int nanosec)
+{
+  if (nanosec >= 1000000000u)
+  {
+    vtkErrorMacro("SetHeaderStamp: nanosec " << nanosec << " is not below 1e9");
+    return;
+  }
+  this->HeaderStampIsFixed = true;
+  this->FixedHeaderStampNanoseconds = static_cast<vtkTypeInt64>(sec) * 1000000000 + nanosec;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2PublisherNode::UseNodeClockForHeaderStamp()
+{
+  if (this->HeaderStampIsFixed)
+  {
+    this->HeaderStampIsFixed = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkTypeInt64 vtkROS2PublisherNode::GetStampTimeNanoseconds() const
 {
+  if (this->HeaderStampIsFixed)
+  {
+    return this->FixedHeaderStampNanoseconds;
+  }
   const vtkROS2NodeNode* rosNode = this->GetROS2Node();
   return rosNode ? rosNode->GetNodeTimeNanoseconds() : 0;
 }

@@ -52,6 +52,16 @@ public:
   /// Why the latest PublishObject / PublishValue / Publish failed ("" after a success).
   const char* GetLastPublishError() const { return this->LastPublishError.c_str(); }
 
+  ///@{
+  /// The stamp in the header of mapped messages that have one (PoseStamped, TransformStamped,
+  /// PoseArray, WrenchStamped, Image, ...): the ROS node's clock at each Publish by default.
+  /// SetHeaderStamp fixes it (data replayed with its recorded time, or SlicerROS2 code that set
+  /// header.stamp itself) until UseNodeClockForHeaderStamp. `nanosec` must be < 1e9.
+  void SetHeaderStamp(int sec, unsigned int nanosec);
+  void UseNodeClockForHeaderStamp();
+  bool GetHeaderStampIsFixed() const { return this->HeaderStampIsFixed; }
+  ///@}
+
 protected:
   vtkROS2PublisherNode();
   ~vtkROS2PublisherNode() override;
@@ -62,9 +72,10 @@ protected:
   /// For subclasses whose conversion failed before a message existed: counts the call and
   /// reports `reason` with vtkErrorMacro.
   void RecordFailedPublish(const char* reason);
-  /// The time a header published now carries, in nanoseconds: the ROS node's clock
-  /// (vtkROS2NodeNode::GetNodeTimeNanoseconds, simulated time when use_sim_time is on). 0 when
-  /// not attached to a ROS node (PublishMessage refuses to send then anyway).
+  /// The time a header published now carries, in nanoseconds: the stamp fixed by
+  /// SetHeaderStamp, else the ROS node's clock (vtkROS2NodeNode::GetNodeTimeNanoseconds,
+  /// simulated time when use_sim_time is on). 0 when not attached to a ROS node
+  /// (PublishMessage refuses to send then anyway).
   vtkTypeInt64 GetStampTimeNanoseconds() const;
 
   bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
@@ -76,6 +87,8 @@ protected:
   vtkTypeInt64 NumberOfCalls = 0;
   vtkTypeInt64 NumberOfMessagesSent = 0;
   std::string LastPublishError;
+  bool HeaderStampIsFixed = false;
+  vtkTypeInt64 FixedHeaderStampNanoseconds = 0;
 
 private:
   vtkROS2PublisherNode(const vtkROS2PublisherNode&) = delete;
