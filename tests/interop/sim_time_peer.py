@@ -10,6 +10,7 @@
   as `ros2 param set TARGET use_sim_time true` does.
 - Records the stamps of what TARGET sends: /tf transforms with child frame `tool`, and
   geometry_msgs/PoseStamped on /sim/pose, until it has N of each or S seconds passed.
+- Records TARGET's parameter events (the use_sim_time change among them) with their stamps.
 Prints one JSON object: the set result, use_sim_time read back, the simulated time range
 published, and every stamp received (seconds as floats).
 """
@@ -26,6 +27,7 @@ from builtin_interfaces.msg import Time
 from geometry_msgs.msg import PoseStamped, TransformStamped
 from rclpy.parameter import Parameter, parameter_value_to_python
 from rclpy.qos import QoSProfile, ReliabilityPolicy
+from rcl_interfaces.msg import ParameterEvent
 from rosgraph_msgs.msg import Clock
 from tf2_msgs.msg import TFMessage
 
@@ -76,6 +78,13 @@ def main() -> int:
 
     node.create_subscription(TFMessage, '/tf', on_tf, QoSProfile(depth=100))
     node.create_subscription(PoseStamped, '/sim/pose', lambda m: pose_stamps.append(to_seconds(m.header.stamp)), 10)
+    events: list = []  # TARGET's parameter events: (changed names, stamp)
+
+    def on_event(event: ParameterEvent) -> None:
+        if event.node == args.target:
+            events.append({'changed': [p.name for p in event.changed_parameters], 'stamp': to_seconds(event.stamp)})
+
+    node.create_subscription(ParameterEvent, '/parameter_events', on_event, QoSProfile(depth=1000))
 
     result: dict = {}
     client = rclpy.parameter_client.AsyncParameterClient(node, args.target)
@@ -96,7 +105,7 @@ def main() -> int:
     while time.monotonic() < end and (len(tf_stamps) < args.count or len(pose_stamps) < args.count):
         rclpy.spin_once(node, timeout_sec=0.05)
     result.update({'clock_first': published['first'], 'clock_last': published['last'],
-                   'tf_stamps': tf_stamps, 'pose_stamps': pose_stamps})
+                   'tf_stamps': tf_stamps, 'pose_stamps': pose_stamps, 'events': events})
     print(json.dumps(result), flush=True)
     node.destroy_node()
     rclpy.try_shutdown()

@@ -52,6 +52,12 @@ def test_our_stamps_follow_rclpy_clock_and_never_carry_wall_time(ros, switch):
         outside = [s for s in stamps if not simulated(s)]
         assert not outside, f'{name}: stamps outside the simulated time [{first}, {last}]: {outside[:5]}'
         assert stamps == sorted(stamps), f'{name} went backwards: {stamps}'
+    if switch == 'rclpy_set_parameters':
+        # The change event is stamped with our node's clock, already simulated when it is sent
+        # (0 if no /clock had arrived yet, as rclpy's would be): never a wall-clock time.
+        changes = [e for e in seen['events'] if 'use_sim_time' in e['changed']]
+        assert len(changes) == 1, seen['events']
+        assert changes[0]['stamp'] == 0.0 or simulated(changes[0]['stamp']), changes
     result = json.loads(ours_out.splitlines()[-1])
     assert result['use_sim_time'] is True and result['sim_time_received'] is True, result
     assert result['parameter'] == 'use_sim_time (bool): true', result
