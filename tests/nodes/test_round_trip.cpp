@@ -97,7 +97,14 @@ TEST_F(NodesRoundTrip, PoseStampedMillimetresStampAndFrame)
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&events);
   observer->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-  sub->AddObserver(vtkCommand::ModifiedEvent, observer);
+  // `events` lives on this test's stack: the observer must go before the fixture's teardown
+  // spins and removes `sub` (it fired into a dead stack frame there and corrupted it).
+  struct RemoveObserverAtExit
+  {
+    vtkObject* Subject;
+    unsigned long Tag;
+    ~RemoveObserverAtExit() { this->Subject->RemoveObserver(this->Tag); }
+  } removeAtExit{ sub, sub->AddObserver(vtkCommand::ModifiedEvent, observer) };
 
   const double before = static_cast<double>(std::time(nullptr));
   EXPECT_EQ(pub->Publish(matrix), 1);
