@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+"""Our side of the introspection parity test (tests/interop/test_introspection.py): the default
+ROS node of the VTK-wrapped API (/slicer) with one endpoint of each kind `ros2 node info` lists,
+the same kinds, names and types as introspection_peer.py's rclpy node:
+
+    publisher   /introspect/chatter  std_msgs/msg/String
+    subscriber  /introspect/pose     geometry_msgs/msg/PoseStamped
+    service     /introspect/enable   std_srvs/srv/SetBool
+    client      /introspect/trigger  std_srvs/srv/Trigger
+
+    introspection_runner.py [--seconds S]
+
+Prints {"ready": true, ...} once everything is created, then spins for S seconds.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+
+import ros2vtk
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument('--seconds', type=float, default=40.0)
+    args = parser.parse_args()
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    created = {
+        'publisher': node.CreateAndAddPublisherNode('String', '/introspect/chatter'),
+        'subscriber': node.CreateAndAddSubscriberNode('PoseStamped', '/introspect/pose'),
+        'server': node.CreateAndAddServiceServerNode('std_srvs/srv/SetBool', '/introspect/enable'),
+        'client': node.CreateAndAddServiceClientNode('std_srvs/srv/Trigger', '/introspect/trigger'),
+    }
+    missing = [kind for kind, endpoint in created.items() if endpoint is None]
+    print(json.dumps({'ready': not missing, 'missing': missing, 'node': node.GetROS2NodeName(),
+                      'namespace': node.GetROS2NodeNamespace()}), flush=True)
+    if missing:
+        return 1
+    end = time.monotonic() + args.seconds
+    while time.monotonic() < end:
+        logic.SpinOnWakeUp(0.05)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
