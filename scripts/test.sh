@@ -22,4 +22,6 @@ cmake --build "$BUILD" -j "$JOBS"
 echo "[test] running tests"
 cd "$BUILD"
 # Default for tests without their own TIMEOUT (gtests have 120 s, interop and demo more).
-ctest --output-on-failure --timeout 300 "$@"
+# Two at a time: most ROS tests wait on discovery and peers; tests that share a ROS domain share a
+# RESOURCE_LOCK, and the app test runs alone (RUN_SERIAL).
+ctest --output-on-failure --timeout 300 -j "${ROS2VTK_TEST_JOBS:-2}" "$@"

@@ -19,12 +19,14 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
 VENV_PYTHON = Path(os.environ.get('ROS2VTK_VENV_PYTHON', REPO / '.venv' / 'bin' / 'python'))
-# One domain per test, reused in turn after 80 tests (the tests run one after another and each
-# kills its processes): ROS domain IDs stop at 232 (UDP ports), and test_other_domain_sees_nothing
-# goes 50 above its own: counting up without end fails ('port number is too high') as soon as
-# ~80 tests sort before that one (61 today) or the suite passes 132 tests.
+# One domain per test, reused in turn after ROS2VTK_TEST_DOMAIN_COUNT (80) tests (the tests of
+# one shard run one after another and each kills its processes): ROS domain IDs stop at 232 (UDP
+# ports), and test_other_domain_sees_nothing goes 50 above its own: counting up without end fails
+# ('port number is too high') as soon as ~80 tests sort before that one or a shard passes 132
+# tests. Shards that run at the same time (tests/interop/CMakeLists.txt) get disjoint ranges.
 _DOMAIN_BASE = int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '100'))
-_domains = (_DOMAIN_BASE + n % 80 for n in itertools.count())
+_DOMAIN_COUNT = int(os.environ.get('ROS2VTK_TEST_DOMAIN_COUNT', '80'))
+_domains = (_DOMAIN_BASE + n % _DOMAIN_COUNT for n in itertools.count())
 TF2_MSGS_INSTALL = Path(os.environ.get('ROS2VTK_FIXTURES_BUILD_DIR', REPO / 'build-fixtures')) / 'tf2_msgs' / 'install'
 
 
