@@ -38,6 +38,9 @@ public:
   /// frame_id written into the header of every message (its stamp: see SetHeaderStamp).
   void SetFrameID(const char* frameID);
   const char* GetFrameID() const { return this->FrameID.c_str(); }
+  /// SlicerROS2's spelling of SetFrameID / GetFrameID.
+  void SetFrameId(const char* frameID) { this->SetFrameID(frameID); }
+  const char* GetFrameId() const { return this->GetFrameID(); }
 
   const char* GetSlicerType() const override { return "vtkPoints"; }
 

@@ -55,6 +55,8 @@ protected:
 
   const ros2vtk::wire::MessageTypeSupport& GetMessageTypeSupport() const override;
   void OnNewMessages() override;
+  /// For the target node (SetTargetNodeID): the converted newest message.
+  vtkObject* GetLastMessageAsObject() override { return this->GetLastMessage(); }
 
   /// Converts raw message `raw` (of this node's type) into `message`; records the error.
   bool Convert(const void* raw, vtkMatrix4x4* message);

@@ -70,6 +70,7 @@ void vtkROS2ModelDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtkProp*
   mapper->SetScalarVisibility(model->GetScalarVisibility() && !IsPlaceholder(node));
   vtkProperty* property = actor->GetProperty();
   property->SetOpacity(model->GetOpacity());
+  property->SetPointSize(model->GetPointSize());
   property->SetRepresentation(IsPlaceholder(node) ? VTK_WIREFRAME : model->GetRepresentation());
   property->SetLineWidth(IsPlaceholder(node) ? 2.0 : 1.0);
   actor->SetVisibility(model->GetVisibility() && model->GetPolyData() != nullptr);

@@ -96,6 +96,20 @@ void vtkROS2ModelNode::GetMatrixModelToWorld(vtkMatrix4x4* matrix)
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2ModelNode::CopyContentFrom(vtkObject* data, std::string* error)
+{
+  auto* polyData = vtkPolyData::SafeDownCast(data);
+  if (!polyData)
+  {
+    return this->Superclass::CopyContentFrom(data, error);
+  }
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(polyData);
+  this->SetPolyData(copy);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2ModelNode::WriteXML(vtkXMLDataElement* element)
 {
   this->Superclass::WriteXML(element);
@@ -104,6 +118,7 @@ void vtkROS2ModelNode::WriteXML(vtkXMLDataElement* element)
   element->SetIntAttribute("visibility", this->Visibility ? 1 : 0);
   element->SetIntAttribute("scalarVisibility", this->ScalarVisibility ? 1 : 0);
   element->SetIntAttribute("representation", this->Representation);
+  element->SetDoubleAttribute("pointSize", this->PointSize);
   std::ostringstream values;
   values.precision(17);
   for (int k = 0; k < 16; ++k)
@@ -143,6 +158,16 @@ bool vtkROS2ModelNode::ReadXML(vtkXMLDataElement* element)
     }
     this->Representation = representation;
   }
+  double pointSize = 1.0;
+  if (element->GetScalarAttribute("pointSize", pointSize))
+  {
+    if (!(pointSize >= 1.0 && pointSize <= 100.0))
+    {
+      vtkErrorMacro("ReadXML: pointSize must be within 1..100 pixels, not " << pointSize);
+      return false;
+    }
+    this->PointSize = pointSize;
+  }
   if (const char* text = element->GetAttribute("matrixModelToParent"))
   {
     std::istringstream values(text);
@@ -169,5 +194,6 @@ void vtkROS2ModelNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Visibility: " << this->Visibility << "\n";
   os << indent << "ScalarVisibility: " << this->ScalarVisibility << "\n";
   os << indent << "Representation: " << this->Representation << "\n";
+  os << indent << "PointSize: " << this->PointSize << "\n";
   os << indent << "PolyData: " << this->PolyData << "\n";
 }

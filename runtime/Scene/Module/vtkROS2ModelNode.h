@@ -21,6 +21,8 @@ public:
   /// The surface (reference counted, not copied).
   void SetPolyData(vtkPolyData* polyData);
   vtkPolyData* GetPolyData() const { return this->PolyData; }
+  /// MRML's name for SetPolyData (Slicer scripts call it on model nodes).
+  void SetAndObservePolyData(vtkPolyData* polyData) { this->SetPolyData(polyData); }
 
   /// Model -> parent transform node (owned; use SetMatrixModelToParent to change it).
   vtkMatrix4x4* GetMatrixModelToParent() { return this->MatrixModelToParent; }
@@ -57,6 +59,18 @@ public:
   };
   vtkSetClampMacro(Representation, int, Points, Surface);
   vtkGetMacro(Representation, int);
+  /// Size of drawn points in pixels (point clouds, the Points representation), as vtkProperty.
+  vtkSetClampMacro(PointSize, double, 1.0, 100.0);
+  vtkGetMacro(PointSize, double);
+
+  /// Slicer keeps display properties in a separate display node; here the model node holds
+  /// them itself. These two let Slicer scripts (`CreateDefaultDisplayNodes()`,
+  /// `GetDisplayNode().SetColor(...)`) run unchanged: the display node is the model node.
+  void CreateDefaultDisplayNodes() {}
+  vtkROS2ModelNode* GetDisplayNode() { return this; }
+
+  /// A subscriber's vtkPolyData (a deep copy: the subscriber reuses its object every spin).
+  bool CopyContentFrom(vtkObject* data, std::string* error) override;
 
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
@@ -72,6 +86,7 @@ protected:
   bool Visibility = true;
   bool ScalarVisibility = false;
   int Representation = Surface;
+  double PointSize = 1.0;
 
 private:
   vtkROS2ModelNode(const vtkROS2ModelNode&) = delete;

@@ -263,6 +263,15 @@ vtkROS2SceneNode* vtkROS2Scene::AddNewNodeByClass(const char* className, const c
   {
     wanted = "vtkROS2" + wanted.substr(slicerPrefix.size());
   }
+  // Slicer's core classes that Slicer scripts add next to ROS nodes, as our equivalents.
+  else if (wanted == "vtkMRMLModelNode")
+  {
+    wanted = "vtkROS2ModelNode";
+  }
+  else if (wanted == "vtkMRMLLinearTransformNode" || wanted == "vtkMRMLTransformNode")
+  {
+    wanted = "vtkROS2TransformNode";
+  }
   vtkSmartPointer<vtkROS2SceneNode> node;
   node.TakeReference(this->CreateNodeByClass(wanted.c_str()));
   if (!node)

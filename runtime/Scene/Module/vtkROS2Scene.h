@@ -61,8 +61,10 @@ public:
   /// Creates a node of a registered class by class name (not added to the scene).
   /// nullptr (vtkErrorMacro listing the known classes) for an unknown name.
   VTK_NEWINSTANCE vtkROS2SceneNode* CreateNodeByClass(const char* className);
-  /// MRML's AddNewNodeByClass: creates the node (class names as registered, or SlicerROS2's
-  /// vtkMRMLROS2… spelling), names it `name` when given, adds it; the scene holds it. nullptr
+  /// MRML's AddNewNodeByClass: creates the node (class names as registered, SlicerROS2's
+  /// vtkMRMLROS2… spelling, or Slicer's vtkMRMLModelNode / vtkMRMLLinearTransformNode /
+  /// vtkMRMLTransformNode for our model and transform nodes), names it `name` when given, adds
+  /// it; the scene holds it. nullptr
   /// (error listing the known classes) for an unknown class.
   vtkROS2SceneNode* AddNewNodeByClass(const char* className, const char* name = "");
 

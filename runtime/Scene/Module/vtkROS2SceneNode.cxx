@@ -416,3 +416,15 @@ void vtkROS2SceneNode::PrintSelf(ostream& os, vtkIndent indent)
     os << "\n";
   }
 }
+
+//------------------------------------------------------------------------------
+bool vtkROS2SceneNode::CopyContentFrom(vtkObject* data, std::string* error)
+{
+  if (error)
+  {
+    *error = std::string(this->GetClassName()) + " cannot take the content of a " +
+      (data ? data->GetClassName() : "null object") +
+      " (a model node takes vtkPolyData, a transform node vtkMatrix4x4)";
+  }
+  return false;
+}

@@ -105,6 +105,11 @@ public:
   /// empty for nodes that are not looked up by key. The ROS node indexes its children by it.
   virtual std::string GetROS2NodeChildKey() const { return std::string(); }
 
+  /// Takes the content of a received message (a subscriber's target node, SlicerROS2's
+  /// SetTargetNodeID): a model node copies a vtkPolyData, a transform node a vtkMatrix4x4.
+  /// False with `error` saying what this kind accepts, by default.
+  virtual bool CopyContentFrom(vtkObject* data, std::string* error);
+
   /// The tag used in scene files: the class name by default.
   virtual const char* GetXMLTagName() { return this->GetClassName(); }
 

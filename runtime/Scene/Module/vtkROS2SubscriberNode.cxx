@@ -37,6 +37,7 @@ public:
   std::string LastRejectionReason;
   uint64_t IncompatibleSeen = 0; // incompatible_qos_count() of the current subscription reported
   std::string LastIncompatibleQoSPolicy;
+  std::string LastTargetError; // reported once per distinct reason
   ros2vtk::scene::RateLimitedReport RejectionReport{ RejectionReportInterval };
 };
 
@@ -80,6 +81,55 @@ int vtkROS2SubscriberNode::GetNumberOfMatchedPublications() const
     : 0;
 }
 
+const char* const vtkROS2SubscriberNode::TargetNodeReferenceRole = "target";
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::SetTargetNodeID(const char* nodeID)
+{
+  this->SetNodeReferenceID(TargetNodeReferenceRole, nodeID && *nodeID ? nodeID : nullptr);
+  this->Internals->LastTargetError.clear();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2SubscriberNode::GetTargetNodeID() const
+{
+  return this->GetNodeReferenceID(TargetNodeReferenceRole);
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberNode::UpdateTargetNode()
+{
+  const char* targetID = this->GetTargetNodeID();
+  if (!targetID)
+  {
+    return;
+  }
+  std::string error;
+  vtkROS2SceneNode* target = this->GetNodeReference(TargetNodeReferenceRole);
+  if (!target)
+  {
+    error = std::string("target node '") + targetID + "' is not in the scene";
+  }
+  else if (vtkObject* message = this->GetLastMessageAsObject())
+  {
+    if (target->CopyContentFrom(message, &error))
+    {
+      this->Internals->LastTargetError.clear();
+      return;
+    }
+  }
+  else
+  {
+    error = std::string("a ") + this->GetSlicerType() +
+      " subscriber has no VTK object to copy into target node '" + targetID + "'";
+  }
+  if (error != this->Internals->LastTargetError) // once per reason, not once per spin
+  {
+    this->Internals->LastTargetError = error;
+    vtkErrorMacro("subscriber on '" << this->GetTopic() << "': " << error);
+  }
+}
+
 //------------------------------------------------------------------------------
 int vtkROS2SubscriberNode::ProcessIncomingMessages()
 {
@@ -103,6 +153,7 @@ int vtkROS2SubscriberNode::ProcessIncomingMessages()
   internals.HasMessage = true;
   this->NumberOfMessages += internals.NumberOfNewMessages;
   this->OnNewMessages();
+  this->UpdateTargetNode();
 
   // One event per spin, with the count: MTime is bumped by hand because vtkObject::Modified()
   // would fire its own ModifiedEvent without call data.

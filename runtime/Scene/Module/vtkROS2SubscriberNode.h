@@ -54,6 +54,15 @@ public:
   /// subclasses); false for an index out of range.
   bool GetNewMessageObject(int i, vtkROS2Message* message) const;
 
+  /// SlicerROS2's target node: after every spin that brought messages, the newest one is copied
+  /// into this scene node before ModifiedEvent fires (a model node takes a vtkPolyData, a
+  /// transform node a vtkMatrix4x4; vtkROS2SceneNode::CopyContentFrom). nullptr/"" = none.
+  /// A target that cannot take this subscriber's type is reported once per reason.
+  void SetTargetNodeID(const char* nodeID);
+  const char* GetTargetNodeID() const;
+  /// The reference role of the target node in scene files.
+  static const char* const TargetNodeReferenceRole;
+
   /// Takes the queued messages; returns how many were new. Called by vtkROS2NodeNode::Spin on
   /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.
   int ProcessIncomingMessages();
@@ -70,6 +79,12 @@ protected:
   /// once per subscriber, naming the fix (SlicerROS2 spins on a 50 Hz timer, so scripts ported
   /// from it have no spin of their own).
   void WarnIfNeverSpun(const char* call) const;
+  /// Copies the newest message into the target node, if there is one (SetTargetNodeID).
+  void UpdateTargetNode();
+
+  /// The newest message as the VTK object a target node takes (generated subscribers whose
+  /// conversion gives a VTK object return it); nullptr by default and before the first message.
+  virtual vtkObject* GetLastMessageAsObject() { return nullptr; }
 
   /// Newest message received (struct of GetMessageTypeSupport()'s type); nullptr before the
   /// first. Valid until a later spin brings new messages.

@@ -267,6 +267,68 @@ int vtkROS2TopicNode::GetHistoryDepth() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2TopicNode::SetQoSReliability(int reliability)
+{
+  using Reliability = ros2vtk::wire::QoS::Reliability;
+  ros2vtk::wire::QoS qos = this->Internals->QoS;
+  switch (reliability)
+  {
+    case ReliabilitySystemDefault:
+      qos.reliability = ros2vtk::wire::QoS::default_profile().reliability;
+      break;
+    case Reliable:
+      qos.reliability = Reliability::Reliable;
+      break;
+    case BestEffort:
+      qos.reliability = Reliability::BestEffort;
+      break;
+    default:
+      vtkErrorMacro("SetQoSReliability: unknown value " << reliability
+        << "; use ReliabilitySystemDefault (0), Reliable (1) or BestEffort (2)");
+      return false;
+  }
+  return this->SetQoS(qos);
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2TopicNode::GetQoSReliability() const
+{
+  return this->Internals->QoS.reliability == ros2vtk::wire::QoS::Reliability::BestEffort
+    ? BestEffort : Reliable;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2TopicNode::SetQoSDurability(int durability)
+{
+  using Durability = ros2vtk::wire::QoS::Durability;
+  ros2vtk::wire::QoS qos = this->Internals->QoS;
+  switch (durability)
+  {
+    case DurabilitySystemDefault:
+      qos.durability = ros2vtk::wire::QoS::default_profile().durability;
+      break;
+    case TransientLocal:
+      qos.durability = Durability::TransientLocal;
+      break;
+    case Volatile:
+      qos.durability = Durability::Volatile;
+      break;
+    default:
+      vtkErrorMacro("SetQoSDurability: unknown value " << durability
+        << "; use DurabilitySystemDefault (0), TransientLocal (1) or Volatile (2)");
+      return false;
+  }
+  return this->SetQoS(qos);
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2TopicNode::GetQoSDurability() const
+{
+  return this->Internals->QoS.durability == ros2vtk::wire::QoS::Durability::TransientLocal
+    ? TransientLocal : Volatile;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2TopicNode::GetQoSDescription() const
 {
   return this->Internals->QoS.to_string();

@@ -64,6 +64,28 @@ public:
   /// "reliable, volatile, keep_last(10)".
   std::string GetQoSDescription() const;
 
+  /// SlicerROS2's QoS setters and their enum values (`pub.SetQoSReliability(pub.Reliable)`), so
+  /// its scripts run unchanged; the string setters above are the same settings. The system
+  /// defaults are the rmw defaults (reliable, volatile); getters report the policy in effect.
+  enum QoSReliabilityValue
+  {
+    ReliabilitySystemDefault = 0,
+    Reliable = 1,
+    BestEffort = 2
+  };
+  enum QoSDurabilityValue
+  {
+    DurabilitySystemDefault = 0,
+    TransientLocal = 1,
+    Volatile = 2
+  };
+  bool SetQoSHistoryDepth(int depth) { return this->SetHistoryDepth(depth); }
+  int GetQoSHistoryDepth() const { return this->GetHistoryDepth(); }
+  bool SetQoSReliability(int reliability);
+  int GetQoSReliability() const;
+  bool SetQoSDurability(int durability);
+  int GetQoSDurability() const;
+
   /// Units policy (msg_specs/mappings/README.md): ROS lengths are metres, VTK lengths millimetres; when on (the
   /// default) subclasses scale lengths x1000 into VTK and /1000 out of it.
   vtkSetMacro(ScaleLengths, bool);

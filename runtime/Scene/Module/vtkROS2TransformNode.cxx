@@ -39,6 +39,18 @@ void vtkROS2TransformNode::GetMatrixTransformToParent(vtkMatrix4x4* matrix)
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2TransformNode::CopyContentFrom(vtkObject* data, std::string* error)
+{
+  auto* matrix = vtkMatrix4x4::SafeDownCast(data);
+  if (!matrix)
+  {
+    return this->Superclass::CopyContentFrom(data, error);
+  }
+  this->SetMatrixTransformToParent(matrix);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2TransformNode::SetMatrixTransformToParent(vtkMatrix4x4* matrix)
 {
   if (!matrix)

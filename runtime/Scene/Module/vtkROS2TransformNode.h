@@ -32,6 +32,9 @@ public:
   /// it changed.
   bool SetMatrixTransformToParent(vtkMatrix4x4* matrix);
 
+  /// A subscriber's vtkMatrix4x4 (SetMatrixTransformToParent).
+  bool CopyContentFrom(vtkObject* data, std::string* error) override;
+
   /// The parent transform node (the "transform" reference); nullptr = world.
   void SetParentTransformNodeID(const char* id);
   const char* GetParentTransformNodeID() const;
