@@ -259,8 +259,11 @@ function(ros2vtk_generate_messages target)
   target_link_libraries(${target} PUBLIC ros2vtk::Message ${_r2v_DEPENDENCIES})
   target_compile_features(${target} PUBLIC cxx_std_17)
   # Linked into shared VTK modules (ros2vtk_generate_nodes), so position-independent whatever
-  # the calling project's CMAKE_POSITION_INDEPENDENT_CODE.
-  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  # the calling project's CMAKE_POSITION_INDEPENDENT_CODE. Compiled as unity batches: two small
+  # files per type that parse the same headers (the common interfaces are ~500 files); the
+  # templates keep each type's helpers in its own namespace for this.
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON
+    UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 32)
   if(COMMAND _ros2vtk_target_warnings)
     _ros2vtk_target_warnings(${target})
   endif()

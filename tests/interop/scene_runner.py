@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import time
 
@@ -197,6 +198,9 @@ def vtk_table(columns):
     return table
 
 
+S = math.sqrt(0.5)
+
+
 def vtk_sample(short: str):
     """What a user would publish for each mapped type (lengths in mm)."""
     def matrix(rows):
@@ -206,9 +210,22 @@ def vtk_sample(short: str):
                 m.SetElement(i, j, v)
         return m
     pose = matrix([[0, -1, 0, 100], [1, 0, 0, -250], [0, 0, 1, 1500], [0, 0, 0, 1]])
-    if short in ('PoseStamped', 'TransformStamped', 'Pose', 'Transform'):
+    if short in ('PoseStamped', 'TransformStamped', 'Pose', 'Transform', 'Odometry', 'PoseWithCovarianceStamped'):
         return pose
-    if short == 'PoseArray':
+    if short in ('Twist', 'TwistStamped'):
+        return vtk_array(vtk.vtkDoubleArray, (0.25, 0.0, -0.5, 0.0, 0.1, 1.5))
+    if short == 'Imu':
+        return vtk_array(vtk.vtkDoubleArray, (0.0, 0.0, S, S, 0.01, -0.02, 0.03, 0.0, 0.0, 9.81))
+    if short == 'PointStamped':
+        p = vtk.vtkPoints()
+        p.InsertNextPoint(12.5, -40.0, 300.0)
+        return p
+    if short == 'PolygonStamped':
+        p = vtk.vtkPoints()
+        for point in ((0.0, 0.0, 0.0), (125.0, 0.0, 0.0), (125.0, 62.5, 0.0)):
+            p.InsertNextPoint(*point)
+        return p
+    if short in ('PoseArray', 'Path'):
         collection = vtk.vtkTransformCollection()
         for m in (pose, matrix([[1, 0, 0, -200], [0, 1, 0, 0], [0, 0, 1, 300], [0, 0, 0, 1]])):
             t = vtk.vtkTransform()

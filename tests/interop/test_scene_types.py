@@ -9,7 +9,7 @@ import struct
 
 import pytest
 
-from samples import SAMPLES
+from samples import HEADER, POSE, SAMPLES
 from test_wire_topics import assert_matches
 
 S = math.sqrt(0.5)
@@ -65,6 +65,17 @@ INCOMING = [
     ('Transform', 'geometry_msgs/msg/Transform', rigid([[1, 0, 0], [0, 1, 0], [0, 0, 1]], [10.0, 20.0, -300.0])),
     ('Wrench', 'geometry_msgs/msg/Wrench', [1.0, -2.0, 9.81, 0.1, 0.0, -0.05]),
     ('Vector3', 'geometry_msgs/msg/Vector3', [0.5, -1.5, 2.25]),  # any unit: never scaled
+    # the common interfaces shipped with issue 13
+    ('Twist', 'geometry_msgs/msg/Twist', [0.25, 0.0, -0.5, 0.0, 0.1, 1.5]),  # m/s, rad/s: never scaled
+    ('TwistStamped', 'geometry_msgs/msg/TwistStamped', [0.25, 0.0, -0.5, 0.0, 0.1, 1.5]),
+    ('PointStamped', 'geometry_msgs/msg/PointStamped', [[12.5, -40.0, 300.0]]),
+    ('PoseWithCovarianceStamped', 'geometry_msgs/msg/PoseWithCovarianceStamped',
+     rigid(ROT_Z90, [100.0, -250.0, 1500.0])),
+    ('PolygonStamped', 'geometry_msgs/msg/PolygonStamped', [[0.0, 0.0, 0.0], [125.0, 0.0, 0.0], [125.0, 62.5, 0.0]]),
+    ('Odometry', 'nav_msgs/msg/Odometry', rigid(ROT_Z90, [100.0, -250.0, 1500.0])),
+    ('Path', 'nav_msgs/msg/Path',
+     [rigid(ROT_Z90, [100.0, -250.0, 1500.0]), rigid([[1, 0, 0], [0, -1, 0], [0, 0, -1]], [-200.0, 0.0, 300.0])]),
+    ('Imu', 'sensor_msgs/msg/Imu', [0.0, 0.0, S, S, 0.01, -0.02, 0.03, 0.0, 0.0, 9.81]),  # SI, never scaled
 ]
 # messages sent instead of SAMPLES[ros_type]
 INCOMING_MESSAGES = {
@@ -72,6 +83,23 @@ INCOMING_MESSAGES = {
     'Transform': SAMPLES['geometry_msgs/msg/TransformStamped']['transform'],
     'Wrench': SAMPLES['geometry_msgs/msg/WrenchStamped']['wrench'],
     'Vector3': {'x': 0.5, 'y': -1.5, 'z': 2.25},
+    'Twist': {'linear': {'x': 0.25, 'y': 0.0, 'z': -0.5}, 'angular': {'x': 0.0, 'y': 0.1, 'z': 1.5}},
+    'TwistStamped': {'header': HEADER, 'twist': {'linear': {'x': 0.25, 'y': 0.0, 'z': -0.5},
+                                                 'angular': {'x': 0.0, 'y': 0.1, 'z': 1.5}}},
+    'PointStamped': {'header': HEADER, 'point': {'x': 0.0125, 'y': -0.04, 'z': 0.3}},
+    'PoseWithCovarianceStamped': {'header': HEADER, 'pose': {'pose': POSE, 'covariance': [0.01] * 36}},
+    'PolygonStamped': {'header': HEADER, 'polygon': {'points': [{'x': 0.0, 'y': 0.0, 'z': 0.0},
+                                                                {'x': 0.125, 'y': 0.0, 'z': 0.0},
+                                                                {'x': 0.125, 'y': 0.0625, 'z': 0.0}]}},
+    'Odometry': {'header': HEADER, 'child_frame_id': 'base_link', 'pose': {'pose': POSE, 'covariance': [0.0] * 36},
+                 'twist': {'twist': {'linear': {'x': 1.0}}, 'covariance': [0.0] * 36}},
+    'Path': {'header': HEADER, 'poses': [
+        {'header': HEADER, 'pose': POSE},
+        {'header': HEADER, 'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3},
+                                    'orientation': {'x': 1.0, 'y': 0.0, 'z': 0.0, 'w': 0.0}}}]},
+    'Imu': {'header': HEADER, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S},
+            'angular_velocity': {'x': 0.01, 'y': -0.02, 'z': 0.03},
+            'linear_acceleration': {'x': 0.0, 'y': 0.0, 'z': 9.81}},
     'DoubleTable': {'layout': {'dim': [{'label': 'rows', 'size': 2, 'stride': 4},
                                        {'label': '', 'size': 2, 'stride': 2}], 'data_offset': 0},
                     'data': [0.5, -1.25, 1e-9, 12345.678]},
@@ -160,6 +188,25 @@ OUTGOING = [
     ('Wrench', 'geometry_msgs/msg/Wrench',
      {'force': {'x': 1.0, 'y': -2.0, 'z': 9.81}, 'torque': {'x': 0.1, 'y': 0.0, 'z': -0.05}}),
     ('Vector3', 'geometry_msgs/msg/Vector3', {'x': 0.5, 'y': -1.5, 'z': 2.25}),
+    ('Twist', 'geometry_msgs/msg/Twist',
+     {'linear': {'x': 0.25, 'y': 0.0, 'z': -0.5}, 'angular': {'x': 0.0, 'y': 0.1, 'z': 1.5}}),
+    ('TwistStamped', 'geometry_msgs/msg/TwistStamped',
+     {'header': {'frame_id': 'ct_scanner'},
+      'twist': {'linear': {'x': 0.25, 'y': 0.0, 'z': -0.5}, 'angular': {'x': 0.0, 'y': 0.1, 'z': 1.5}}}),
+    ('PointStamped', 'geometry_msgs/msg/PointStamped',
+     {'header': {'frame_id': 'ct_scanner'}, 'point': {'x': 0.0125, 'y': -0.04, 'z': 0.3}}),
+    ('PoseWithCovarianceStamped', 'geometry_msgs/msg/PoseWithCovarianceStamped',
+     {'header': {'frame_id': 'ct_scanner'}, 'pose': {'pose': POSE_WIRE}}),
+    ('PolygonStamped', 'geometry_msgs/msg/PolygonStamped',
+     {'polygon': {'points': [{'x': 0.0, 'y': 0.0, 'z': 0.0}, {'x': 0.125, 'y': 0.0, 'z': 0.0},
+                             {'x': 0.125, 'y': 0.0625, 'z': 0.0}]}}),
+    ('Odometry', 'nav_msgs/msg/Odometry', {'header': {'frame_id': 'ct_scanner'}, 'pose': {'pose': POSE_WIRE}}),
+    ('Path', 'nav_msgs/msg/Path',
+     {'header': {'frame_id': 'ct_scanner'},
+      'poses': [{'pose': POSE_WIRE}, {'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3}}}]}),
+    ('Imu', 'sensor_msgs/msg/Imu',
+     {'header': {'frame_id': 'ct_scanner'}, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S},
+      'angular_velocity': {'x': 0.01, 'y': -0.02, 'z': 0.03}, 'linear_acceleration': {'x': 0.0, 'y': 0.0, 'z': 9.81}}),
 ]
 
 

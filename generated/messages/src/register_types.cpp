@@ -2,32 +2,108 @@
 // and spec the specs of target ros2vtkMessages. Do not edit: change the spec or the template and regenerate.
 #include "ros2vtk/ros2vtkMessagesRegister.hpp"
 
+#include "ros2vtk/action_msgs/msg/goal_info.hpp"
+#include "ros2vtk/action_msgs/msg/goal_status.hpp"
+#include "ros2vtk/action_msgs/msg/goal_status_array.hpp"
+#include "ros2vtk/action_msgs/srv/cancel_goal.hpp"
+#include "ros2vtk/action_msgs/srv/cancel_goal__request.hpp"
+#include "ros2vtk/action_msgs/srv/cancel_goal__response.hpp"
 #include "ros2vtk/builtin_interfaces/msg/duration.hpp"
 #include "ros2vtk/builtin_interfaces/msg/time.hpp"
+#include "ros2vtk/diagnostic_msgs/msg/diagnostic_array.hpp"
+#include "ros2vtk/diagnostic_msgs/msg/diagnostic_status.hpp"
+#include "ros2vtk/diagnostic_msgs/msg/key_value.hpp"
+#include "ros2vtk/diagnostic_msgs/srv/add_diagnostics.hpp"
+#include "ros2vtk/diagnostic_msgs/srv/add_diagnostics__request.hpp"
+#include "ros2vtk/diagnostic_msgs/srv/add_diagnostics__response.hpp"
+#include "ros2vtk/diagnostic_msgs/srv/self_test.hpp"
+#include "ros2vtk/diagnostic_msgs/srv/self_test__request.hpp"
+#include "ros2vtk/diagnostic_msgs/srv/self_test__response.hpp"
+#include "ros2vtk/geometry_msgs/msg/accel.hpp"
+#include "ros2vtk/geometry_msgs/msg/accel_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/accel_with_covariance.hpp"
+#include "ros2vtk/geometry_msgs/msg/accel_with_covariance_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/inertia.hpp"
+#include "ros2vtk/geometry_msgs/msg/inertia_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/point.hpp"
 #include "ros2vtk/geometry_msgs/msg/point32.hpp"
+#include "ros2vtk/geometry_msgs/msg/point_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/polygon.hpp"
+#include "ros2vtk/geometry_msgs/msg/polygon_instance.hpp"
+#include "ros2vtk/geometry_msgs/msg/polygon_instance_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/polygon_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose.hpp"
+#include "ros2vtk/geometry_msgs/msg/pose2_d.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose_array.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/pose_with_covariance.hpp"
+#include "ros2vtk/geometry_msgs/msg/pose_with_covariance_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/quaternion.hpp"
+#include "ros2vtk/geometry_msgs/msg/quaternion_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/transform.hpp"
 #include "ros2vtk/geometry_msgs/msg/transform_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/twist.hpp"
+#include "ros2vtk/geometry_msgs/msg/twist_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/twist_with_covariance.hpp"
+#include "ros2vtk/geometry_msgs/msg/twist_with_covariance_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/vector3.hpp"
+#include "ros2vtk/geometry_msgs/msg/vector3_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/velocity_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/wrench.hpp"
 #include "ros2vtk/geometry_msgs/msg/wrench_stamped.hpp"
+#include "ros2vtk/lifecycle_msgs/msg/state.hpp"
+#include "ros2vtk/lifecycle_msgs/msg/transition.hpp"
+#include "ros2vtk/lifecycle_msgs/msg/transition_description.hpp"
+#include "ros2vtk/lifecycle_msgs/msg/transition_event.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/change_state.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/change_state__request.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/change_state__response.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_available_states.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_available_states__request.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_available_states__response.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_available_transitions.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_available_transitions__request.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_available_transitions__response.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_state.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_state__request.hpp"
+#include "ros2vtk/lifecycle_msgs/srv/get_state__response.hpp"
+#include "ros2vtk/nav_msgs/msg/goals.hpp"
+#include "ros2vtk/nav_msgs/msg/grid_cells.hpp"
+#include "ros2vtk/nav_msgs/msg/map_meta_data.hpp"
+#include "ros2vtk/nav_msgs/msg/occupancy_grid.hpp"
+#include "ros2vtk/nav_msgs/msg/odometry.hpp"
+#include "ros2vtk/nav_msgs/msg/path.hpp"
+#include "ros2vtk/nav_msgs/srv/get_map.hpp"
+#include "ros2vtk/nav_msgs/srv/get_map__request.hpp"
+#include "ros2vtk/nav_msgs/srv/get_map__response.hpp"
+#include "ros2vtk/nav_msgs/srv/get_plan.hpp"
+#include "ros2vtk/nav_msgs/srv/get_plan__request.hpp"
+#include "ros2vtk/nav_msgs/srv/get_plan__response.hpp"
+#include "ros2vtk/nav_msgs/srv/load_map.hpp"
+#include "ros2vtk/nav_msgs/srv/load_map__request.hpp"
+#include "ros2vtk/nav_msgs/srv/load_map__response.hpp"
+#include "ros2vtk/nav_msgs/srv/set_map.hpp"
+#include "ros2vtk/nav_msgs/srv/set_map__request.hpp"
+#include "ros2vtk/nav_msgs/srv/set_map__response.hpp"
 #include "ros2vtk/rcl_interfaces/msg/floating_point_range.hpp"
 #include "ros2vtk/rcl_interfaces/msg/integer_range.hpp"
 #include "ros2vtk/rcl_interfaces/msg/list_parameters_result.hpp"
 #include "ros2vtk/rcl_interfaces/msg/log.hpp"
+#include "ros2vtk/rcl_interfaces/msg/logger_level.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_descriptor.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_event.hpp"
+#include "ros2vtk/rcl_interfaces/msg/parameter_event_descriptors.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_value.hpp"
+#include "ros2vtk/rcl_interfaces/msg/set_logger_levels_result.hpp"
 #include "ros2vtk/rcl_interfaces/msg/set_parameters_result.hpp"
 #include "ros2vtk/rcl_interfaces/srv/describe_parameters.hpp"
 #include "ros2vtk/rcl_interfaces/srv/describe_parameters__request.hpp"
 #include "ros2vtk/rcl_interfaces/srv/describe_parameters__response.hpp"
+#include "ros2vtk/rcl_interfaces/srv/get_logger_levels.hpp"
+#include "ros2vtk/rcl_interfaces/srv/get_logger_levels__request.hpp"
+#include "ros2vtk/rcl_interfaces/srv/get_logger_levels__response.hpp"
 #include "ros2vtk/rcl_interfaces/srv/get_parameter_types.hpp"
 #include "ros2vtk/rcl_interfaces/srv/get_parameter_types__request.hpp"
 #include "ros2vtk/rcl_interfaces/srv/get_parameter_types__response.hpp"
@@ -37,6 +113,9 @@
 #include "ros2vtk/rcl_interfaces/srv/list_parameters.hpp"
 #include "ros2vtk/rcl_interfaces/srv/list_parameters__request.hpp"
 #include "ros2vtk/rcl_interfaces/srv/list_parameters__response.hpp"
+#include "ros2vtk/rcl_interfaces/srv/set_logger_levels.hpp"
+#include "ros2vtk/rcl_interfaces/srv/set_logger_levels__request.hpp"
+#include "ros2vtk/rcl_interfaces/srv/set_logger_levels__response.hpp"
 #include "ros2vtk/rcl_interfaces/srv/set_parameters.hpp"
 #include "ros2vtk/rcl_interfaces/srv/set_parameters__request.hpp"
 #include "ros2vtk/rcl_interfaces/srv/set_parameters__response.hpp"
@@ -47,22 +126,70 @@
 #include "ros2vtk/rmw_dds_common/msg/node_entities_info.hpp"
 #include "ros2vtk/rmw_dds_common/msg/participant_entities_info.hpp"
 #include "ros2vtk/rosgraph_msgs/msg/clock.hpp"
+#include "ros2vtk/sensor_msgs/msg/battery_state.hpp"
+#include "ros2vtk/sensor_msgs/msg/camera_info.hpp"
 #include "ros2vtk/sensor_msgs/msg/channel_float32.hpp"
+#include "ros2vtk/sensor_msgs/msg/compressed_image.hpp"
+#include "ros2vtk/sensor_msgs/msg/fluid_pressure.hpp"
+#include "ros2vtk/sensor_msgs/msg/illuminance.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
+#include "ros2vtk/sensor_msgs/msg/imu.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
+#include "ros2vtk/sensor_msgs/msg/joy.hpp"
+#include "ros2vtk/sensor_msgs/msg/joy_feedback.hpp"
+#include "ros2vtk/sensor_msgs/msg/joy_feedback_array.hpp"
+#include "ros2vtk/sensor_msgs/msg/laser_echo.hpp"
+#include "ros2vtk/sensor_msgs/msg/laser_scan.hpp"
+#include "ros2vtk/sensor_msgs/msg/magnetic_field.hpp"
+#include "ros2vtk/sensor_msgs/msg/multi_dof_joint_state.hpp"
+#include "ros2vtk/sensor_msgs/msg/multi_echo_laser_scan.hpp"
+#include "ros2vtk/sensor_msgs/msg/nav_sat_fix.hpp"
+#include "ros2vtk/sensor_msgs/msg/nav_sat_status.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud2.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_field.hpp"
+#include "ros2vtk/sensor_msgs/msg/range.hpp"
+#include "ros2vtk/sensor_msgs/msg/region_of_interest.hpp"
+#include "ros2vtk/sensor_msgs/msg/relative_humidity.hpp"
+#include "ros2vtk/sensor_msgs/msg/temperature.hpp"
+#include "ros2vtk/sensor_msgs/msg/time_reference.hpp"
+#include "ros2vtk/sensor_msgs/srv/set_camera_info.hpp"
+#include "ros2vtk/sensor_msgs/srv/set_camera_info__request.hpp"
+#include "ros2vtk/sensor_msgs/srv/set_camera_info__response.hpp"
+#include "ros2vtk/shape_msgs/msg/mesh.hpp"
+#include "ros2vtk/shape_msgs/msg/mesh_triangle.hpp"
+#include "ros2vtk/shape_msgs/msg/plane.hpp"
+#include "ros2vtk/shape_msgs/msg/solid_primitive.hpp"
 #include "ros2vtk/std_msgs/msg/bool.hpp"
+#include "ros2vtk/std_msgs/msg/byte.hpp"
+#include "ros2vtk/std_msgs/msg/byte_multi_array.hpp"
+#include "ros2vtk/std_msgs/msg/char.hpp"
+#include "ros2vtk/std_msgs/msg/color_rgba.hpp"
 #include "ros2vtk/std_msgs/msg/empty.hpp"
+#include "ros2vtk/std_msgs/msg/float32.hpp"
+#include "ros2vtk/std_msgs/msg/float32_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/float64.hpp"
 #include "ros2vtk/std_msgs/msg/float64_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/header.hpp"
+#include "ros2vtk/std_msgs/msg/int16.hpp"
+#include "ros2vtk/std_msgs/msg/int16_multi_array.hpp"
+#include "ros2vtk/std_msgs/msg/int32.hpp"
+#include "ros2vtk/std_msgs/msg/int32_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/int64.hpp"
 #include "ros2vtk/std_msgs/msg/int64_multi_array.hpp"
+#include "ros2vtk/std_msgs/msg/int8.hpp"
+#include "ros2vtk/std_msgs/msg/int8_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/multi_array_dimension.hpp"
 #include "ros2vtk/std_msgs/msg/multi_array_layout.hpp"
 #include "ros2vtk/std_msgs/msg/string.hpp"
+#include "ros2vtk/std_msgs/msg/u_int16.hpp"
+#include "ros2vtk/std_msgs/msg/u_int16_multi_array.hpp"
+#include "ros2vtk/std_msgs/msg/u_int32.hpp"
+#include "ros2vtk/std_msgs/msg/u_int32_multi_array.hpp"
+#include "ros2vtk/std_msgs/msg/u_int64.hpp"
+#include "ros2vtk/std_msgs/msg/u_int64_multi_array.hpp"
+#include "ros2vtk/std_msgs/msg/u_int8.hpp"
+#include "ros2vtk/std_msgs/msg/u_int8_multi_array.hpp"
 #include "ros2vtk/std_srvs/srv/empty.hpp"
 #include "ros2vtk/std_srvs/srv/empty__request.hpp"
 #include "ros2vtk/std_srvs/srv/empty__response.hpp"
@@ -72,7 +199,50 @@
 #include "ros2vtk/std_srvs/srv/trigger.hpp"
 #include "ros2vtk/std_srvs/srv/trigger__request.hpp"
 #include "ros2vtk/std_srvs/srv/trigger__response.hpp"
+#include "ros2vtk/stereo_msgs/msg/disparity_image.hpp"
+#include "ros2vtk/test_msgs/msg/arrays.hpp"
+#include "ros2vtk/test_msgs/msg/basic_types.hpp"
+#include "ros2vtk/test_msgs/msg/bounded_plain_sequences.hpp"
+#include "ros2vtk/test_msgs/msg/bounded_sequences.hpp"
+#include "ros2vtk/test_msgs/msg/builtins.hpp"
+#include "ros2vtk/test_msgs/msg/constants.hpp"
+#include "ros2vtk/test_msgs/msg/defaults.hpp"
+#include "ros2vtk/test_msgs/msg/empty.hpp"
+#include "ros2vtk/test_msgs/msg/multi_nested.hpp"
+#include "ros2vtk/test_msgs/msg/nested.hpp"
+#include "ros2vtk/test_msgs/msg/strings.hpp"
+#include "ros2vtk/test_msgs/msg/unbounded_sequences.hpp"
+#include "ros2vtk/test_msgs/msg/w_strings.hpp"
+#include "ros2vtk/test_msgs/srv/arrays.hpp"
+#include "ros2vtk/test_msgs/srv/arrays__request.hpp"
+#include "ros2vtk/test_msgs/srv/arrays__response.hpp"
+#include "ros2vtk/test_msgs/srv/basic_types.hpp"
+#include "ros2vtk/test_msgs/srv/basic_types__request.hpp"
+#include "ros2vtk/test_msgs/srv/basic_types__response.hpp"
+#include "ros2vtk/test_msgs/srv/empty.hpp"
+#include "ros2vtk/test_msgs/srv/empty__request.hpp"
+#include "ros2vtk/test_msgs/srv/empty__response.hpp"
 #include "ros2vtk/tf2_msgs/msg/tf_message.hpp"
+#include "ros2vtk/trajectory_msgs/msg/joint_trajectory.hpp"
+#include "ros2vtk/trajectory_msgs/msg/joint_trajectory_point.hpp"
+#include "ros2vtk/trajectory_msgs/msg/multi_dof_joint_trajectory.hpp"
+#include "ros2vtk/trajectory_msgs/msg/multi_dof_joint_trajectory_point.hpp"
+#include "ros2vtk/unique_identifier_msgs/msg/uuid.hpp"
+#include "ros2vtk/visualization_msgs/msg/image_marker.hpp"
+#include "ros2vtk/visualization_msgs/msg/interactive_marker.hpp"
+#include "ros2vtk/visualization_msgs/msg/interactive_marker_control.hpp"
+#include "ros2vtk/visualization_msgs/msg/interactive_marker_feedback.hpp"
+#include "ros2vtk/visualization_msgs/msg/interactive_marker_init.hpp"
+#include "ros2vtk/visualization_msgs/msg/interactive_marker_pose.hpp"
+#include "ros2vtk/visualization_msgs/msg/interactive_marker_update.hpp"
+#include "ros2vtk/visualization_msgs/msg/marker.hpp"
+#include "ros2vtk/visualization_msgs/msg/marker_array.hpp"
+#include "ros2vtk/visualization_msgs/msg/menu_entry.hpp"
+#include "ros2vtk/visualization_msgs/msg/mesh_file.hpp"
+#include "ros2vtk/visualization_msgs/msg/uv_coordinate.hpp"
+#include "ros2vtk/visualization_msgs/srv/get_interactive_markers.hpp"
+#include "ros2vtk/visualization_msgs/srv/get_interactive_markers__request.hpp"
+#include "ros2vtk/visualization_msgs/srv/get_interactive_markers__response.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
@@ -80,37 +250,103 @@
 /// Registers every message and service type of this library; safe to call more than once.
 extern "C" void ros2vtk_register_ros2vtkMessages_types()
 {
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::action_msgs::msg::GoalInfo::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::action_msgs::msg::GoalStatus::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::action_msgs::msg::GoalStatusArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::action_msgs::srv::CancelGoal_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::action_msgs::srv::CancelGoal_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::builtin_interfaces::msg::Duration::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::builtin_interfaces::msg::Time::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::msg::DiagnosticArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::msg::DiagnosticStatus::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::msg::KeyValue::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::srv::AddDiagnostics_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::srv::AddDiagnostics_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::srv::SelfTest_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::diagnostic_msgs::srv::SelfTest_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Accel::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::AccelStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::AccelWithCovariance::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::AccelWithCovarianceStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Inertia::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::InertiaStamped::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Point::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Point32::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PointStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Polygon::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PolygonInstance::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PolygonInstanceStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PolygonStamped::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Pose::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Pose2D::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PoseArray::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PoseStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PoseWithCovariance::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::PoseWithCovarianceStamped::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Quaternion::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::QuaternionStamped::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Transform::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::TransformStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Twist::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::TwistStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::TwistWithCovariance::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::TwistWithCovarianceStamped::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Vector3::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Vector3Stamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::VelocityStamped::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::Wrench::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::geometry_msgs::msg::WrenchStamped::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::msg::State::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::msg::Transition::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::msg::TransitionDescription::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::msg::TransitionEvent::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::ChangeState_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::ChangeState_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::GetAvailableStates_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::GetAvailableStates_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::GetAvailableTransitions_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::GetAvailableTransitions_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::GetState_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::lifecycle_msgs::srv::GetState_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::msg::Goals::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::msg::GridCells::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::msg::MapMetaData::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::msg::OccupancyGrid::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::msg::Odometry::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::msg::Path::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::GetMap_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::GetMap_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::GetPlan_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::GetPlan_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::LoadMap_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::LoadMap_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::SetMap_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::nav_msgs::srv::SetMap_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::FloatingPointRange::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::IntegerRange::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::ListParametersResult::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::Log::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::LoggerLevel::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::Parameter::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::ParameterDescriptor::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::ParameterEvent::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::ParameterEventDescriptors::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::ParameterType::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::ParameterValue::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::SetLoggerLevelsResult::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::msg::SetParametersResult::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::DescribeParameters_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::DescribeParameters_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::GetLoggerLevels_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::GetLoggerLevels_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::GetParameterTypes_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::GetParameterTypes_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::GetParameters_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::GetParameters_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::ListParameters_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::ListParameters_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::SetLoggerLevels_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::SetLoggerLevels_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::SetParametersAtomically_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::SetParametersAtomically_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rcl_interfaces::srv::SetParameters_Request::type_support());
@@ -119,36 +355,140 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rmw_dds_common::msg::NodeEntitiesInfo::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rmw_dds_common::msg::ParticipantEntitiesInfo::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::rosgraph_msgs::msg::Clock::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::BatteryState::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::CameraInfo::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::ChannelFloat32::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::CompressedImage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::FluidPressure::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Illuminance::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Image::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Imu::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::JointState::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Joy::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::JoyFeedback::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::JoyFeedbackArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::LaserEcho::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::LaserScan::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::MagneticField::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::MultiDOFJointState::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::MultiEchoLaserScan::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::NavSatFix::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::NavSatStatus::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::PointCloud::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::PointCloud2::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::PointField::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Range::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::RegionOfInterest::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::RelativeHumidity::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::Temperature::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::TimeReference::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::srv::SetCameraInfo_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::srv::SetCameraInfo_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::Mesh::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::MeshTriangle::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::Plane::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::SolidPrimitive::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Bool::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Byte::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::ByteMultiArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Char::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::ColorRGBA::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Empty::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Float32::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Float32MultiArray::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Float64::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Float64MultiArray::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Header::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int16::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int16MultiArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int32::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int32MultiArray::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int64::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int64MultiArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int8::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::Int8MultiArray::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::MultiArrayDimension::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::MultiArrayLayout::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::String::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt16::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt16MultiArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt32::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt32MultiArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt64::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt64MultiArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt8::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::std_msgs::msg::UInt8MultiArray::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Empty_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Empty_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::SetBool_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::SetBool_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::stereo_msgs::msg::DisparityImage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Arrays::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::BasicTypes::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::BoundedPlainSequences::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::BoundedSequences::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Builtins::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Constants::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Defaults::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Empty::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::MultiNested::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Nested::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Strings::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::UnboundedSequences::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::WStrings::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::srv::Arrays_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::srv::Arrays_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::srv::BasicTypes_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::srv::BasicTypes_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::srv::Empty_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::srv::Empty_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::tf2_msgs::msg::TFMessage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::JointTrajectory::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::JointTrajectoryPoint::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::MultiDOFJointTrajectory::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::MultiDOFJointTrajectoryPoint::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::unique_identifier_msgs::msg::UUID::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::ImageMarker::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarker::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarkerControl::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarkerFeedback::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarkerInit::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarkerPose::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarkerUpdate::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::Marker::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::MarkerArray::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::MenuEntry::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::MeshFile::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::UVCoordinate::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::srv::GetInteractiveMarkers_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::srv::GetInteractiveMarkers_Response::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::action_msgs::srv::CancelGoal::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::diagnostic_msgs::srv::AddDiagnostics::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::diagnostic_msgs::srv::SelfTest::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::lifecycle_msgs::srv::ChangeState::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::lifecycle_msgs::srv::GetAvailableStates::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::lifecycle_msgs::srv::GetAvailableTransitions::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::lifecycle_msgs::srv::GetState::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::nav_msgs::srv::GetMap::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::nav_msgs::srv::GetPlan::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::nav_msgs::srv::LoadMap::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::nav_msgs::srv::SetMap::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::DescribeParameters::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::GetLoggerLevels::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::GetParameterTypes::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::GetParameters::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::ListParameters::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::SetLoggerLevels::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::SetParameters::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::SetParametersAtomically::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::sensor_msgs::srv::SetCameraInfo::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Empty::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::SetBool::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Trigger::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::Arrays::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::BasicTypes::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::Empty::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::visualization_msgs::srv::GetInteractiveMarkers::type_support());
 }

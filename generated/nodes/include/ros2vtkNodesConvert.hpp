@@ -13,15 +13,23 @@
 
 #include "vtkType.h" // for vtkTypeInt64
 
+#include "ros2vtk/geometry_msgs/msg/point_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/polygon_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose_array.hpp"
 #include "ros2vtk/geometry_msgs/msg/pose_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/pose_with_covariance_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/transform.hpp"
 #include "ros2vtk/geometry_msgs/msg/transform_stamped.hpp"
+#include "ros2vtk/geometry_msgs/msg/twist.hpp"
+#include "ros2vtk/geometry_msgs/msg/twist_stamped.hpp"
 #include "ros2vtk/geometry_msgs/msg/vector3.hpp"
 #include "ros2vtk/geometry_msgs/msg/wrench.hpp"
 #include "ros2vtk/geometry_msgs/msg/wrench_stamped.hpp"
+#include "ros2vtk/nav_msgs/msg/odometry.hpp"
+#include "ros2vtk/nav_msgs/msg/path.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
+#include "ros2vtk/sensor_msgs/msg/imu.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud2.hpp"
@@ -96,6 +104,48 @@ bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Vector3& message, vtkDoubleA
 bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Vector3& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
+// Twist: geometry_msgs/msg/Twist <-> vtkDoubleArray (kind vector_array, geometry_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Twist& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Twist& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// TwistStamped: geometry_msgs/msg/TwistStamped <-> vtkDoubleArray (kind vector_array, geometry_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::TwistStamped& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::TwistStamped& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// PointStamped: geometry_msgs/msg/PointStamped <-> vtkPoints (kind point, geometry_msgs.toml; lengths: point).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::PointStamped& message, vtkPoints* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkPoints* object, ::ros2vtk::geometry_msgs::msg::PointStamped& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// PoseWithCovarianceStamped: geometry_msgs/msg/PoseWithCovarianceStamped <-> vtkMatrix4x4 (kind rigid_transform, geometry_msgs.toml; lengths: translation).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::PoseWithCovarianceStamped& message, vtkMatrix4x4* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::geometry_msgs::msg::PoseWithCovarianceStamped& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// PolygonStamped: geometry_msgs/msg/PolygonStamped <-> vtkPoints (kind points, geometry_msgs.toml; lengths: sequence).
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::PolygonStamped& message, vtkPoints* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkPoints* object, ::ros2vtk::geometry_msgs::msg::PolygonStamped& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Odometry: nav_msgs/msg/Odometry <-> vtkMatrix4x4 (kind rigid_transform, nav_msgs.toml; lengths: translation).
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Odometry& message, vtkMatrix4x4* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::nav_msgs::msg::Odometry& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Path: nav_msgs/msg/Path <-> vtkTransformCollection (kind rigid_transform_collection, nav_msgs.toml; lengths: translation).
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkTransformCollection* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkTransformCollection* object, ::ros2vtk::nav_msgs::msg::Path& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image, sensor_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Image& message, vtkImageData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
@@ -120,6 +170,12 @@ bool VTKToROS2(vtkPolyData* object, ::ros2vtk::sensor_msgs::msg::PointCloud2& me
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::JointState& message, vtkTable* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkTable* object, ::ros2vtk::sensor_msgs::msg::JointState& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Imu: sensor_msgs/msg/Imu <-> vtkDoubleArray (kind vector_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Imu& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::Imu& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 // String: std_msgs/msg/String <-> std::string (kind value, std_msgs.toml).

@@ -270,6 +270,235 @@ bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Vector3& m
 }
 
 //------------------------------------------------------------------------------
+// Twist: geometry_msgs/msg/Twist <-> vtkDoubleArray (kind vector_array)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::Twist& message, vtkDoubleArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const double values[6] = {
+    static_cast<double>(message.linear.x),
+    static_cast<double>(message.linear.y),
+    static_cast<double>(message.linear.z),
+    static_cast<double>(message.angular.x),
+    static_cast<double>(message.angular.y),
+    static_cast<double>(message.angular.z),
+  };
+  return ::ros2vtk::convert::values_to_array(values, 6, object, error);
+}
+
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::Twist& message,
+  double /*lengthScale*/, std::string* error)
+{
+  double values[6] = {};
+  if (!::ros2vtk::convert::array_to_values(object, 6, values, error))
+  {
+    return false;
+  }
+  message.linear.x = static_cast<double>(values[0]);
+  message.linear.y = static_cast<double>(values[1]);
+  message.linear.z = static_cast<double>(values[2]);
+  message.angular.x = static_cast<double>(values[3]);
+  message.angular.y = static_cast<double>(values[4]);
+  message.angular.z = static_cast<double>(values[5]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// TwistStamped: geometry_msgs/msg/TwistStamped <-> vtkDoubleArray (kind vector_array)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::TwistStamped& message, vtkDoubleArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const double values[6] = {
+    static_cast<double>(message.twist.linear.x),
+    static_cast<double>(message.twist.linear.y),
+    static_cast<double>(message.twist.linear.z),
+    static_cast<double>(message.twist.angular.x),
+    static_cast<double>(message.twist.angular.y),
+    static_cast<double>(message.twist.angular.z),
+  };
+  return ::ros2vtk::convert::values_to_array(values, 6, object, error);
+}
+
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::geometry_msgs::msg::TwistStamped& message,
+  double /*lengthScale*/, std::string* error)
+{
+  double values[6] = {};
+  if (!::ros2vtk::convert::array_to_values(object, 6, values, error))
+  {
+    return false;
+  }
+  message.twist.linear.x = static_cast<double>(values[0]);
+  message.twist.linear.y = static_cast<double>(values[1]);
+  message.twist.linear.z = static_cast<double>(values[2]);
+  message.twist.angular.x = static_cast<double>(values[3]);
+  message.twist.angular.y = static_cast<double>(values[4]);
+  message.twist.angular.z = static_cast<double>(values[5]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// PointStamped: geometry_msgs/msg/PointStamped <-> vtkPoints (kind point)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::PointStamped& message, vtkPoints* object,
+  double lengthScale, std::string* error)
+{
+  const double xyz[3] = { message.point.x, message.point.y, message.point.z };
+  return ::ros2vtk::convert::xyz_to_points(xyz, 1, lengthScale, ::ros2vtk::convert::NonFinitePoints::Keep, object, error);
+}
+
+bool VTKToROS2(vtkPoints* object, ::ros2vtk::geometry_msgs::msg::PointStamped& message,
+  double lengthScale, std::string* error)
+{
+  std::vector<double> xyz;
+  if (!::ros2vtk::convert::points_to_xyz(object, lengthScale, &xyz, error))
+  {
+    return false;
+  }
+  if (xyz.size() != 3)
+  {
+    if (error)
+    {
+      *error = "VTKToROS2(geometry_msgs/msg/PointStamped): message.point takes exactly one point, the "
+        "vtkPoints holds " + std::to_string(xyz.size() / 3);
+    }
+    return false;
+  }
+  message.point.x = xyz[0];
+  message.point.y = xyz[1];
+  message.point.z = xyz[2];
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// PoseWithCovarianceStamped: geometry_msgs/msg/PoseWithCovarianceStamped <-> vtkMatrix4x4 (kind rigid_transform)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::PoseWithCovarianceStamped& message, vtkMatrix4x4* object,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  pose.translation = { { message.pose.pose.position.x, message.pose.pose.position.y, message.pose.pose.position.z } };
+  pose.rotation = { { message.pose.pose.orientation.x, message.pose.pose.orientation.y, message.pose.pose.orientation.z, message.pose.pose.orientation.w } };
+  return ::ros2vtk::convert::pose_to_matrix(pose, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::geometry_msgs::msg::PoseWithCovarianceStamped& message,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  if (!::ros2vtk::convert::matrix_to_pose(object, lengthScale, &pose, error))
+  {
+    return false;
+  }
+  message.pose.pose.position.x = pose.translation[0];
+  message.pose.pose.position.y = pose.translation[1];
+  message.pose.pose.position.z = pose.translation[2];
+  message.pose.pose.orientation.x = pose.rotation[0];
+  message.pose.pose.orientation.y = pose.rotation[1];
+  message.pose.pose.orientation.z = pose.rotation[2];
+  message.pose.pose.orientation.w = pose.rotation[3];
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// PolygonStamped: geometry_msgs/msg/PolygonStamped <-> vtkPoints (kind points)
+bool ROS2ToVTK(const ::ros2vtk::geometry_msgs::msg::PolygonStamped& message, vtkPoints* object,
+  double lengthScale, std::string* error)
+{
+  std::vector<float> xyz;
+  xyz.reserve(3 * message.polygon.points.size());
+  for (const auto& element : message.polygon.points)
+  {
+    xyz.push_back(element.x);
+    xyz.push_back(element.y);
+    xyz.push_back(element.z);
+  }
+  return ::ros2vtk::convert::xyz_to_points(xyz, lengthScale, ::ros2vtk::convert::NonFinitePoints::Keep, object, error);
+}
+
+bool VTKToROS2(vtkPoints* object, ::ros2vtk::geometry_msgs::msg::PolygonStamped& message,
+  double lengthScale, std::string* error)
+{
+  std::vector<float> xyz;
+  if (!::ros2vtk::convert::points_to_xyz(object, lengthScale, &xyz, error))
+  {
+    return false;
+  }
+  message.polygon.points.resize(xyz.size() / 3);
+  for (size_t i = 0; i < message.polygon.points.size(); ++i)
+  {
+    auto& element = message.polygon.points[i];
+    element.x = xyz[3 * i];
+    element.y = xyz[3 * i + 1];
+    element.z = xyz[3 * i + 2];
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Odometry: nav_msgs/msg/Odometry <-> vtkMatrix4x4 (kind rigid_transform)
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Odometry& message, vtkMatrix4x4* object,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  pose.translation = { { message.pose.pose.position.x, message.pose.pose.position.y, message.pose.pose.position.z } };
+  pose.rotation = { { message.pose.pose.orientation.x, message.pose.pose.orientation.y, message.pose.pose.orientation.z, message.pose.pose.orientation.w } };
+  return ::ros2vtk::convert::pose_to_matrix(pose, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkMatrix4x4* object, ::ros2vtk::nav_msgs::msg::Odometry& message,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::RigidPose pose;
+  if (!::ros2vtk::convert::matrix_to_pose(object, lengthScale, &pose, error))
+  {
+    return false;
+  }
+  message.pose.pose.position.x = pose.translation[0];
+  message.pose.pose.position.y = pose.translation[1];
+  message.pose.pose.position.z = pose.translation[2];
+  message.pose.pose.orientation.x = pose.rotation[0];
+  message.pose.pose.orientation.y = pose.rotation[1];
+  message.pose.pose.orientation.z = pose.rotation[2];
+  message.pose.pose.orientation.w = pose.rotation[3];
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Path: nav_msgs/msg/Path <-> vtkTransformCollection (kind rigid_transform_collection)
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkTransformCollection* object,
+  double lengthScale, std::string* error)
+{
+  std::vector<::ros2vtk::convert::RigidPose> poses(message.poses.size());
+  for (size_t i = 0; i < poses.size(); ++i)
+  {
+    const auto& element = message.poses[i];
+    poses[i].translation = { { element.pose.position.x, element.pose.position.y, element.pose.position.z } };
+    poses[i].rotation = { { element.pose.orientation.x, element.pose.orientation.y, element.pose.orientation.z, element.pose.orientation.w } };
+  }
+  return ::ros2vtk::convert::poses_to_transform_collection(poses, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkTransformCollection* object, ::ros2vtk::nav_msgs::msg::Path& message,
+  double lengthScale, std::string* error)
+{
+  std::vector<::ros2vtk::convert::RigidPose> poses;
+  if (!::ros2vtk::convert::transform_collection_to_poses(object, lengthScale, &poses, error))
+  {
+    return false;
+  }
+  message.poses.resize(poses.size());
+  for (size_t i = 0; i < poses.size(); ++i)
+  {
+    auto& element = message.poses[i];
+    element.pose.position.x = poses[i].translation[0];
+    element.pose.position.y = poses[i].translation[1];
+    element.pose.position.z = poses[i].translation[2];
+    element.pose.orientation.x = poses[i].rotation[0];
+    element.pose.orientation.y = poses[i].rotation[1];
+    element.pose.orientation.z = poses[i].rotation[2];
+    element.pose.orientation.w = poses[i].rotation[3];
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image)
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Image& message, vtkImageData* object,
   double /*lengthScale*/, std::string* error)
@@ -406,6 +635,47 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::sensor_msgs::msg::JointState& messag
   message.position = std::move(arrays.position);
   message.velocity = std::move(arrays.velocity);
   message.effort = std::move(arrays.effort);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Imu: sensor_msgs/msg/Imu <-> vtkDoubleArray (kind vector_array)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Imu& message, vtkDoubleArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const double values[10] = {
+    static_cast<double>(message.orientation.x),
+    static_cast<double>(message.orientation.y),
+    static_cast<double>(message.orientation.z),
+    static_cast<double>(message.orientation.w),
+    static_cast<double>(message.angular_velocity.x),
+    static_cast<double>(message.angular_velocity.y),
+    static_cast<double>(message.angular_velocity.z),
+    static_cast<double>(message.linear_acceleration.x),
+    static_cast<double>(message.linear_acceleration.y),
+    static_cast<double>(message.linear_acceleration.z),
+  };
+  return ::ros2vtk::convert::values_to_array(values, 10, object, error);
+}
+
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::Imu& message,
+  double /*lengthScale*/, std::string* error)
+{
+  double values[10] = {};
+  if (!::ros2vtk::convert::array_to_values(object, 10, values, error))
+  {
+    return false;
+  }
+  message.orientation.x = static_cast<double>(values[0]);
+  message.orientation.y = static_cast<double>(values[1]);
+  message.orientation.z = static_cast<double>(values[2]);
+  message.orientation.w = static_cast<double>(values[3]);
+  message.angular_velocity.x = static_cast<double>(values[4]);
+  message.angular_velocity.y = static_cast<double>(values[5]);
+  message.angular_velocity.z = static_cast<double>(values[6]);
+  message.linear_acceleration.x = static_cast<double>(values[7]);
+  message.linear_acceleration.y = static_cast<double>(values[8]);
+  message.linear_acceleration.z = static_cast<double>(values[9]);
   return true;
 }
 

@@ -20,6 +20,20 @@
 #include "vtkROS2SubscriberWrenchNode.h"
 #include "vtkROS2PublisherVector3Node.h"
 #include "vtkROS2SubscriberVector3Node.h"
+#include "vtkROS2PublisherTwistNode.h"
+#include "vtkROS2SubscriberTwistNode.h"
+#include "vtkROS2PublisherTwistStampedNode.h"
+#include "vtkROS2SubscriberTwistStampedNode.h"
+#include "vtkROS2PublisherPointStampedNode.h"
+#include "vtkROS2SubscriberPointStampedNode.h"
+#include "vtkROS2PublisherPoseWithCovarianceStampedNode.h"
+#include "vtkROS2SubscriberPoseWithCovarianceStampedNode.h"
+#include "vtkROS2PublisherPolygonStampedNode.h"
+#include "vtkROS2SubscriberPolygonStampedNode.h"
+#include "vtkROS2PublisherOdometryNode.h"
+#include "vtkROS2SubscriberOdometryNode.h"
+#include "vtkROS2PublisherPathNode.h"
+#include "vtkROS2SubscriberPathNode.h"
 #include "vtkROS2PublisherImageNode.h"
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2PublisherPointCloudNode.h"
@@ -28,6 +42,8 @@
 #include "vtkROS2SubscriberPointCloud2Node.h"
 #include "vtkROS2PublisherJointStateNode.h"
 #include "vtkROS2SubscriberJointStateNode.h"
+#include "vtkROS2PublisherImuNode.h"
+#include "vtkROS2SubscriberImuNode.h"
 #include "vtkROS2PublisherStringNode.h"
 #include "vtkROS2SubscriberStringNode.h"
 #include "vtkROS2PublisherBoolNode.h"
@@ -105,6 +121,34 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherVector3Node> },
     { "Vector3", "vtkROS2SubscriberVector3Node", "geometry_msgs/msg/Vector3", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberVector3Node> },
+    { "Twist", "vtkROS2PublisherTwistNode", "geometry_msgs/msg/Twist", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherTwistNode> },
+    { "Twist", "vtkROS2SubscriberTwistNode", "geometry_msgs/msg/Twist", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberTwistNode> },
+    { "TwistStamped", "vtkROS2PublisherTwistStampedNode", "geometry_msgs/msg/TwistStamped", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherTwistStampedNode> },
+    { "TwistStamped", "vtkROS2SubscriberTwistStampedNode", "geometry_msgs/msg/TwistStamped", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberTwistStampedNode> },
+    { "PointStamped", "vtkROS2PublisherPointStampedNode", "geometry_msgs/msg/PointStamped", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherPointStampedNode> },
+    { "PointStamped", "vtkROS2SubscriberPointStampedNode", "geometry_msgs/msg/PointStamped", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberPointStampedNode> },
+    { "PoseWithCovarianceStamped", "vtkROS2PublisherPoseWithCovarianceStampedNode", "geometry_msgs/msg/PoseWithCovarianceStamped", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherPoseWithCovarianceStampedNode> },
+    { "PoseWithCovarianceStamped", "vtkROS2SubscriberPoseWithCovarianceStampedNode", "geometry_msgs/msg/PoseWithCovarianceStamped", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberPoseWithCovarianceStampedNode> },
+    { "PolygonStamped", "vtkROS2PublisherPolygonStampedNode", "geometry_msgs/msg/PolygonStamped", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherPolygonStampedNode> },
+    { "PolygonStamped", "vtkROS2SubscriberPolygonStampedNode", "geometry_msgs/msg/PolygonStamped", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberPolygonStampedNode> },
+    { "Odometry", "vtkROS2PublisherOdometryNode", "nav_msgs/msg/Odometry", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherOdometryNode> },
+    { "Odometry", "vtkROS2SubscriberOdometryNode", "nav_msgs/msg/Odometry", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberOdometryNode> },
+    { "Path", "vtkROS2PublisherPathNode", "nav_msgs/msg/Path", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherPathNode> },
+    { "Path", "vtkROS2SubscriberPathNode", "nav_msgs/msg/Path", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberPathNode> },
     { "Image", "vtkROS2PublisherImageNode", "sensor_msgs/msg/Image", NodeDirection::Publisher,
       &CreateNode<vtkROS2PublisherImageNode> },
     { "Image", "vtkROS2SubscriberImageNode", "sensor_msgs/msg/Image", NodeDirection::Subscriber,
@@ -129,6 +173,10 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherJointStateNode> },
     { "JointState", "vtkROS2SubscriberJointStateNode", "sensor_msgs/msg/JointState", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberJointStateNode> },
+    { "Imu", "vtkROS2PublisherImuNode", "sensor_msgs/msg/Imu", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherImuNode> },
+    { "Imu", "vtkROS2SubscriberImuNode", "sensor_msgs/msg/Imu", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberImuNode> },
     { "String", "vtkROS2PublisherStringNode", "std_msgs/msg/String", NodeDirection::Publisher,
       &CreateNode<vtkROS2PublisherStringNode> },
     { "String", "vtkROS2SubscriberStringNode", "std_msgs/msg/String", NodeDirection::Subscriber,

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::builtin_interfaces::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Duration& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -42,9 +33,9 @@ bool cdr_deserialize(Duration& message, ::ros2vtk::wire::CdrReader& reader)
 size_t cdr_serialized_size([[maybe_unused]] const Duration& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
   return offset;
 }
 

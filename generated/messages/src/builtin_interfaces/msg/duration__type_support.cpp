@@ -8,6 +8,8 @@
 
 namespace ros2vtk::builtin_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Duration_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Duration;
@@ -81,11 +83,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Duration_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Duration::type_support()
 {
-  return kTypeSupport;
+  return Duration_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::builtin_interfaces::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::geometry_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Point& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -49,11 +40,11 @@ bool cdr_deserialize(Point& message, ::ros2vtk::wire::CdrReader& reader)
 size_t cdr_serialized_size([[maybe_unused]] const Point& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 8) + 8;
+  offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8;
 
-  offset = align(offset, 8) + 8;
+  offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8;
 
-  offset = align(offset, 8) + 8;
+  offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8;
   return offset;
 }
 

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Point_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Point;
@@ -84,11 +86,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Point_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Point::type_support()
 {
-  return kTypeSupport;
+  return Point_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

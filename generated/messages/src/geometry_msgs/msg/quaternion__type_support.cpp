@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Quaternion_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Quaternion;
@@ -87,11 +89,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Quaternion_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Quaternion::type_support()
 {
-  return kTypeSupport;
+  return Quaternion_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Transform_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Transform;
@@ -91,11 +93,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Transform_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Transform::type_support()
 {
-  return kTypeSupport;
+  return Transform_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::geometry_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const TransformStamped& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -51,7 +42,7 @@ size_t cdr_serialized_size([[maybe_unused]] const TransformStamped& message, siz
   size_t offset = body_offset;
   offset = cdr_serialized_size(message.header, offset);
 
-  offset = align(offset, 4) + 4 + message.child_frame_id.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.child_frame_id.size() + 1;
 
   offset = cdr_serialized_size(message.transform, offset);
   return offset;

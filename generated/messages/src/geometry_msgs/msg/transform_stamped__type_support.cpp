@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace TransformStamped_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = TransformStamped;
@@ -94,11 +96,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace TransformStamped_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& TransformStamped::type_support()
 {
-  return kTypeSupport;
+  return TransformStamped_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

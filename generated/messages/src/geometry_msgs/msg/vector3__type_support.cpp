@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Vector3_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Vector3;
@@ -84,11 +86,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Vector3_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Vector3::type_support()
 {
-  return kTypeSupport;
+  return Vector3_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

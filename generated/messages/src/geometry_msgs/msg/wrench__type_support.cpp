@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Wrench_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Wrench;
@@ -86,11 +88,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Wrench_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Wrench::type_support()
 {
-  return kTypeSupport;
+  return Wrench_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::geometry_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace WrenchStamped_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = WrenchStamped;
@@ -91,11 +93,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace WrenchStamped_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& WrenchStamped::type_support()
 {
-  return kTypeSupport;
+  return WrenchStamped_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::geometry_msgs::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace FloatingPointRange_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = FloatingPointRange;
@@ -84,11 +86,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace FloatingPointRange_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& FloatingPointRange::type_support()
 {
-  return kTypeSupport;
+  return FloatingPointRange_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

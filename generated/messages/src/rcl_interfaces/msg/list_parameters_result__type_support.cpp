@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ListParametersResult_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ListParametersResult;
@@ -87,11 +89,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ListParametersResult_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ListParametersResult::type_support()
 {
-  return kTypeSupport;
+  return ListParametersResult_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

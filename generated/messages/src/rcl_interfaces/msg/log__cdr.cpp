@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Log& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -81,15 +72,15 @@ size_t cdr_serialized_size([[maybe_unused]] const Log& message, size_t body_offs
 
   offset += 1;
 
-  offset = align(offset, 4) + 4 + message.name.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.name.size() + 1;
 
-  offset = align(offset, 4) + 4 + message.msg.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.msg.size() + 1;
 
-  offset = align(offset, 4) + 4 + message.file.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.file.size() + 1;
 
-  offset = align(offset, 4) + 4 + message.function.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.function.size() + 1;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
   return offset;
 }
 

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Parameter& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -42,7 +33,7 @@ bool cdr_deserialize(Parameter& message, ::ros2vtk::wire::CdrReader& reader)
 size_t cdr_serialized_size([[maybe_unused]] const Parameter& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 4) + 4 + message.name.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.name.size() + 1;
 
   offset = cdr_serialized_size(message.value, offset);
   return offset;

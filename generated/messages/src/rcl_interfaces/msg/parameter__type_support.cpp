@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Parameter_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Parameter;
@@ -86,11 +88,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Parameter_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Parameter::type_support()
 {
-  return kTypeSupport;
+  return Parameter_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

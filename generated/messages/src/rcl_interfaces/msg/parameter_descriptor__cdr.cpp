@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const ParameterDescriptor& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -120,13 +111,13 @@ bool cdr_deserialize(ParameterDescriptor& message, ::ros2vtk::wire::CdrReader& r
 size_t cdr_serialized_size([[maybe_unused]] const ParameterDescriptor& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 4) + 4 + message.name.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.name.size() + 1;
 
   offset += 1;
 
-  offset = align(offset, 4) + 4 + message.description.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.description.size() + 1;
 
-  offset = align(offset, 4) + 4 + message.additional_constraints.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.additional_constraints.size() + 1;
 
   offset += 1;
 
@@ -134,7 +125,7 @@ size_t cdr_serialized_size([[maybe_unused]] const ParameterDescriptor& message, 
 
   {
     const size_t count = ::std::min<size_t>(message.floating_point_range.size(), 1);
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.floating_point_range[i], offset);
@@ -143,7 +134,7 @@ size_t cdr_serialized_size([[maybe_unused]] const ParameterDescriptor& message, 
 
   {
     const size_t count = ::std::min<size_t>(message.integer_range.size(), 1);
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.integer_range[i], offset);

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ParameterDescriptor_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ParameterDescriptor;
@@ -115,11 +117,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ParameterDescriptor_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ParameterDescriptor::type_support()
 {
-  return kTypeSupport;
+  return ParameterDescriptor_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

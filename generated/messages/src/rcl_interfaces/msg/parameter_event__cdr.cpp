@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const ParameterEvent& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -119,11 +110,11 @@ size_t cdr_serialized_size([[maybe_unused]] const ParameterEvent& message, size_
   size_t offset = body_offset;
   offset = cdr_serialized_size(message.stamp, offset);
 
-  offset = align(offset, 4) + 4 + message.node.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.node.size() + 1;
 
   {
     const size_t count = message.new_parameters.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.new_parameters[i], offset);
@@ -132,7 +123,7 @@ size_t cdr_serialized_size([[maybe_unused]] const ParameterEvent& message, size_
 
   {
     const size_t count = message.changed_parameters.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.changed_parameters[i], offset);
@@ -141,7 +132,7 @@ size_t cdr_serialized_size([[maybe_unused]] const ParameterEvent& message, size_
 
   {
     const size_t count = message.deleted_parameters.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.deleted_parameters[i], offset);

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ParameterEvent_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ParameterEvent;
@@ -109,11 +111,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ParameterEvent_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ParameterEvent::type_support()
 {
-  return kTypeSupport;
+  return ParameterEvent_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ParameterType_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ParameterType;
@@ -91,11 +93,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ParameterType_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ParameterType::type_support()
 {
-  return kTypeSupport;
+  return ParameterType_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const ParameterValue& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -176,54 +167,54 @@ size_t cdr_serialized_size([[maybe_unused]] const ParameterValue& message, size_
 
   offset += 1;
 
-  offset = align(offset, 8) + 8;
+  offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8;
 
-  offset = align(offset, 8) + 8;
+  offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8;
 
-  offset = align(offset, 4) + 4 + message.string_value.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.string_value.size() + 1;
 
   {
     const size_t count = message.byte_array_value.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 1) + 1 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 1) + 1 * count;
     }
   }
 
   {
     const size_t count = message.bool_array_value.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 1) + 1 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 1) + 1 * count;
     }
   }
 
   {
     const size_t count = message.integer_array_value.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 8) + 8 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8 * count;
     }
   }
 
   {
     const size_t count = message.double_array_value.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 8) + 8 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8 * count;
     }
   }
 
   {
     const size_t count = message.string_array_value.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
-      offset = align(offset, 4) + 4 + message.string_array_value[i].size() + 1;
+      offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.string_array_value[i].size() + 1;
     }
   }
   return offset;

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ParameterValue_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ParameterValue;
@@ -120,11 +122,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ParameterValue_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ParameterValue::type_support()
 {
-  return kTypeSupport;
+  return ParameterValue_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

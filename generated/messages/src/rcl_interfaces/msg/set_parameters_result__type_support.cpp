@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace SetParametersResult_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = SetParametersResult;
@@ -81,11 +83,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace SetParametersResult_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& SetParametersResult::type_support()
 {
-  return kTypeSupport;
+  return SetParametersResult_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::msg

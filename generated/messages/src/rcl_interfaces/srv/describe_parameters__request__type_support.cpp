@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace DescribeParameters_Request_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = DescribeParameters_Request;
@@ -81,11 +83,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace DescribeParameters_Request_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& DescribeParameters_Request::type_support()
 {
-  return kTypeSupport;
+  return DescribeParameters_Request_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::srv

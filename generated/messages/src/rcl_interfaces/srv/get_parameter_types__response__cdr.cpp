@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::srv {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const GetParameterTypes_Response& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -49,10 +40,10 @@ size_t cdr_serialized_size([[maybe_unused]] const GetParameterTypes_Response& me
   size_t offset = body_offset;
   {
     const size_t count = message.types.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 1) + 1 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 1) + 1 * count;
     }
   }
   return offset;

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::srv {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const GetParameters_Request& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -55,10 +46,10 @@ size_t cdr_serialized_size([[maybe_unused]] const GetParameters_Request& message
   size_t offset = body_offset;
   {
     const size_t count = message.names.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
-      offset = align(offset, 4) + 4 + message.names[i].size() + 1;
+      offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.names[i].size() + 1;
     }
   }
   return offset;

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ListParameters_Request_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ListParameters_Request;
@@ -88,11 +90,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ListParameters_Request_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ListParameters_Request::type_support()
 {
-  return kTypeSupport;
+  return ListParameters_Request_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::srv

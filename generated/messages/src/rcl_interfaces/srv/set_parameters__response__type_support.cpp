@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace SetParameters_Response_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = SetParameters_Response;
@@ -86,11 +88,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace SetParameters_Response_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& SetParameters_Response::type_support()
 {
-  return kTypeSupport;
+  return SetParameters_Response_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::srv

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rcl_interfaces::srv {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const SetParametersAtomically_Request& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -55,7 +46,7 @@ size_t cdr_serialized_size([[maybe_unused]] const SetParametersAtomically_Reques
   size_t offset = body_offset;
   {
     const size_t count = message.parameters.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.parameters[i], offset);

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace SetParametersAtomically_Request_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = SetParametersAtomically_Request;
@@ -86,11 +88,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace SetParametersAtomically_Request_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& SetParametersAtomically_Request::type_support()
 {
-  return kTypeSupport;
+  return SetParametersAtomically_Request_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::srv

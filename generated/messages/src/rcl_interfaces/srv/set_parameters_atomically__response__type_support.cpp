@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rcl_interfaces::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace SetParametersAtomically_Response_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = SetParametersAtomically_Response;
@@ -83,11 +85,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace SetParametersAtomically_Response_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& SetParametersAtomically_Response::type_support()
 {
-  return kTypeSupport;
+  return SetParametersAtomically_Response_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rcl_interfaces::srv

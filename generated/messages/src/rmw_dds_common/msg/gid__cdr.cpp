@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rmw_dds_common::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Gid& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -35,7 +26,7 @@ bool cdr_deserialize(Gid& message, ::ros2vtk::wire::CdrReader& reader)
 size_t cdr_serialized_size([[maybe_unused]] const Gid& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 1) + 16;
+  offset = ::ros2vtk::wire::cdr_align(offset, 1) + 16;
   return offset;
 }
 

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rmw_dds_common::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Gid_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Gid;
@@ -81,11 +83,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Gid_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Gid::type_support()
 {
-  return kTypeSupport;
+  return Gid_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rmw_dds_common::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::rmw_dds_common::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const NodeEntitiesInfo& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -92,13 +83,13 @@ bool cdr_deserialize(NodeEntitiesInfo& message, ::ros2vtk::wire::CdrReader& read
 size_t cdr_serialized_size([[maybe_unused]] const NodeEntitiesInfo& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 4) + 4 + ::std::min<size_t>(message.node_namespace.size(), 256) + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + ::std::min<size_t>(message.node_namespace.size(), 256) + 1;
 
-  offset = align(offset, 4) + 4 + ::std::min<size_t>(message.node_name.size(), 256) + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + ::std::min<size_t>(message.node_name.size(), 256) + 1;
 
   {
     const size_t count = message.reader_gid_seq.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.reader_gid_seq[i], offset);
@@ -107,7 +98,7 @@ size_t cdr_serialized_size([[maybe_unused]] const NodeEntitiesInfo& message, siz
 
   {
     const size_t count = message.writer_gid_seq.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.writer_gid_seq[i], offset);

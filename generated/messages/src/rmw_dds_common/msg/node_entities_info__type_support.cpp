@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rmw_dds_common::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace NodeEntitiesInfo_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = NodeEntitiesInfo;
@@ -98,11 +100,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace NodeEntitiesInfo_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& NodeEntitiesInfo::type_support()
 {
-  return kTypeSupport;
+  return NodeEntitiesInfo_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rmw_dds_common::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rmw_dds_common::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ParticipantEntitiesInfo_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ParticipantEntitiesInfo;
@@ -94,11 +96,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ParticipantEntitiesInfo_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ParticipantEntitiesInfo::type_support()
 {
-  return kTypeSupport;
+  return ParticipantEntitiesInfo_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rmw_dds_common::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::rosgraph_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Clock_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Clock;
@@ -83,11 +85,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Clock_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Clock::type_support()
 {
-  return kTypeSupport;
+  return Clock_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::rosgraph_msgs::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::sensor_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const ChannelFloat32& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -54,14 +45,14 @@ bool cdr_deserialize(ChannelFloat32& message, ::ros2vtk::wire::CdrReader& reader
 size_t cdr_serialized_size([[maybe_unused]] const ChannelFloat32& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 4) + 4 + message.name.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.name.size() + 1;
 
   {
     const size_t count = message.values.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 4) + 4 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 * count;
     }
   }
   return offset;

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::sensor_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace ChannelFloat32_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = ChannelFloat32;
@@ -84,11 +86,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace ChannelFloat32_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& ChannelFloat32::type_support()
 {
-  return kTypeSupport;
+  return ChannelFloat32_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::sensor_msgs::msg

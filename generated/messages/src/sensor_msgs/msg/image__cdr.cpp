@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::sensor_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Image& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -91,22 +82,22 @@ size_t cdr_serialized_size([[maybe_unused]] const Image& message, size_t body_of
   size_t offset = body_offset;
   offset = cdr_serialized_size(message.header, offset);
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
-  offset = align(offset, 4) + 4 + message.encoding.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.encoding.size() + 1;
 
   offset += 1;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
   {
     const size_t count = message.data.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 1) + 1 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 1) + 1 * count;
     }
   }
   return offset;

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::sensor_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Image_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Image;
@@ -104,11 +106,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Image_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Image::type_support()
 {
-  return kTypeSupport;
+  return Image_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::sensor_msgs::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::sensor_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const JointState& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -121,37 +112,37 @@ size_t cdr_serialized_size([[maybe_unused]] const JointState& message, size_t bo
 
   {
     const size_t count = message.name.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
-      offset = align(offset, 4) + 4 + message.name[i].size() + 1;
+      offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.name[i].size() + 1;
     }
   }
 
   {
     const size_t count = message.position.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 8) + 8 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8 * count;
     }
   }
 
   {
     const size_t count = message.velocity.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 8) + 8 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8 * count;
     }
   }
 
   {
     const size_t count = message.effort.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 8) + 8 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8 * count;
     }
   }
   return offset;

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::sensor_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace JointState_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = JointState;
@@ -107,11 +109,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace JointState_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& JointState::type_support()
 {
-  return kTypeSupport;
+  return JointState_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::sensor_msgs::msg

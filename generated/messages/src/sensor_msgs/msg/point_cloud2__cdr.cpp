@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::sensor_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const PointCloud2& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -123,13 +114,13 @@ size_t cdr_serialized_size([[maybe_unused]] const PointCloud2& message, size_t b
   size_t offset = body_offset;
   offset = cdr_serialized_size(message.header, offset);
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
   {
     const size_t count = message.fields.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.fields[i], offset);
@@ -138,16 +129,16 @@ size_t cdr_serialized_size([[maybe_unused]] const PointCloud2& message, size_t b
 
   offset += 1;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
-  offset = align(offset, 4) + 4;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
 
   {
     const size_t count = message.data.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 1) + 1 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 1) + 1 * count;
     }
   }
 

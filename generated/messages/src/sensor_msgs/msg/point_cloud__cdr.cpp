@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::sensor_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const PointCloud& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -89,7 +80,7 @@ size_t cdr_serialized_size([[maybe_unused]] const PointCloud& message, size_t bo
 
   {
     const size_t count = message.points.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.points[i], offset);
@@ -98,7 +89,7 @@ size_t cdr_serialized_size([[maybe_unused]] const PointCloud& message, size_t bo
 
   {
     const size_t count = message.channels.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     for (size_t i = 0; i < count; ++i)
     {
       offset = cdr_serialized_size(message.channels[i], offset);

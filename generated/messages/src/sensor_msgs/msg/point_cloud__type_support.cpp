@@ -8,6 +8,8 @@
 
 namespace ros2vtk::sensor_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace PointCloud_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = PointCloud;
@@ -105,11 +107,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace PointCloud_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& PointCloud::type_support()
 {
-  return kTypeSupport;
+  return PointCloud_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::sensor_msgs::msg

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::sensor_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace PointField_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = PointField;
@@ -98,11 +100,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace PointField_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& PointField::type_support()
 {
-  return kTypeSupport;
+  return PointField_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::sensor_msgs::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::std_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Float64MultiArray& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -58,10 +49,10 @@ size_t cdr_serialized_size([[maybe_unused]] const Float64MultiArray& message, si
 
   {
     const size_t count = message.data.size();
-    offset = align(offset, 4) + 4;
+    offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4;
     if (count > 0)
     {
-      offset = align(offset, 8) + 8 * count;
+      offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8 * count;
     }
   }
   return offset;

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Float64MultiArray_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Float64MultiArray;
@@ -89,11 +91,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Float64MultiArray_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Float64MultiArray::type_support()
 {
-  return kTypeSupport;
+  return Float64MultiArray_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_msgs::msg

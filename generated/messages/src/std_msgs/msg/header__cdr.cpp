@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::std_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Header& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -44,7 +35,7 @@ size_t cdr_serialized_size([[maybe_unused]] const Header& message, size_t body_o
   size_t offset = body_offset;
   offset = cdr_serialized_size(message.stamp, offset);
 
-  offset = align(offset, 4) + 4 + message.frame_id.size() + 1;
+  offset = ::ros2vtk::wire::cdr_align(offset, 4) + 4 + message.frame_id.size() + 1;
   return offset;
 }
 

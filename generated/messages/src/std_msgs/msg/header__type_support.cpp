@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Header_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Header;
@@ -86,11 +88,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Header_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Header::type_support()
 {
-  return kTypeSupport;
+  return Header_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_msgs::msg

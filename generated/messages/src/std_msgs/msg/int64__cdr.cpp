@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::std_msgs::msg {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const Int64& message, ::ros2vtk::wire::CdrWriter& writer)
 {
@@ -35,7 +26,7 @@ bool cdr_deserialize(Int64& message, ::ros2vtk::wire::CdrReader& reader)
 size_t cdr_serialized_size([[maybe_unused]] const Int64& message, size_t body_offset)
 {
   size_t offset = body_offset;
-  offset = align(offset, 8) + 8;
+  offset = ::ros2vtk::wire::cdr_align(offset, 8) + 8;
   return offset;
 }
 

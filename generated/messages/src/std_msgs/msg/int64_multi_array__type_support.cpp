@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Int64MultiArray_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Int64MultiArray;
@@ -89,11 +91,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Int64MultiArray_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Int64MultiArray::type_support()
 {
-  return kTypeSupport;
+  return Int64MultiArray_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_msgs::msg

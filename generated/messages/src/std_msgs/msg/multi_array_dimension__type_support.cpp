@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace MultiArrayDimension_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = MultiArrayDimension;
@@ -84,11 +86,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace MultiArrayDimension_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& MultiArrayDimension::type_support()
 {
-  return kTypeSupport;
+  return MultiArrayDimension_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_msgs::msg

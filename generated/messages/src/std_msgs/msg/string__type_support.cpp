@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace String_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = String;
@@ -78,11 +80,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace String_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& String::type_support()
 {
-  return kTypeSupport;
+  return String_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_msgs::msg

@@ -8,15 +8,6 @@
 #include <algorithm>
 
 namespace ros2vtk::std_srvs::srv {
-namespace {
-
-// Next multiple of `alignment` (body offsets, WIRE_NOTES §7.2).
-[[maybe_unused]] size_t align(size_t offset, size_t alignment)
-{
-  return (offset + alignment - 1) / alignment * alignment;
-}
-
-} // namespace
 
 void cdr_serialize(const SetBool_Request& message, ::ros2vtk::wire::CdrWriter& writer)
 {

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_srvs::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace SetBool_Request_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = SetBool_Request;
@@ -78,11 +80,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace SetBool_Request_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& SetBool_Request::type_support()
 {
-  return kTypeSupport;
+  return SetBool_Request_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_srvs::srv

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::std_srvs::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Trigger_Response_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = Trigger_Response;
@@ -81,11 +83,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Trigger_Response_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& Trigger_Response::type_support()
 {
-  return kTypeSupport;
+  return Trigger_Response_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::std_srvs::srv

@@ -4,6 +4,8 @@
 
 namespace ros2vtk::std_srvs::srv {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace Trigger_service_type_support {
 
 namespace wire = ::ros2vtk::wire;
 
@@ -30,11 +32,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace Trigger_service_type_support
 } // namespace
 
 const ::ros2vtk::wire::ServiceTypeSupport& Trigger::type_support()
 {
-  return kServiceTypeSupport;
+  return Trigger_service_type_support::kServiceTypeSupport;
 }
 
 } // namespace ros2vtk::std_srvs::srv

@@ -8,6 +8,8 @@
 
 namespace ros2vtk::tf2_msgs::msg {
 namespace {
+// One namespace per type: generated files may be compiled together (unity builds).
+namespace TFMessage_type_support {
 
 namespace wire = ::ros2vtk::wire;
 using Message = TFMessage;
@@ -86,11 +88,12 @@ struct Registrar
 };
 const Registrar registrar;
 
+} // namespace TFMessage_type_support
 } // namespace
 
 const ::ros2vtk::wire::MessageTypeSupport& TFMessage::type_support()
 {
-  return kTypeSupport;
+  return TFMessage_type_support::kTypeSupport;
 }
 
 } // namespace ros2vtk::tf2_msgs::msg

@@ -117,6 +117,13 @@ private:
   std::vector<uint8_t>& buffer_;
 };
 
+/// Next multiple of `alignment` (CDR body offsets, docs/wire-notes.md): what the generated
+/// payload_size() functions add up, shared so that generated files can be compiled together.
+constexpr size_t cdr_align(size_t offset, size_t alignment)
+{
+  return (offset + alignment - 1) / alignment * alignment;
+}
+
 } // namespace wire
 } // namespace ros2vtk
 
