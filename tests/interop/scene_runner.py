@@ -303,6 +303,10 @@ def cmd_robot(args, logic, node) -> int:
     for folder in args.mesh_path:
         robot.AddMeshSearchPath(folder)
     robot.SetMeshBaseFolder(args.mesh_base_folder)
+    if args.joint_states and not robot.SetJointStatesTopic(args.joint_states):
+        print(json.dumps({'error': f'SetJointStatesTopic({args.joint_states}) failed'}), flush=True)
+        return 1
+    robot.SetPublishTf(args.publish_tf)
     others = {}
     for spec in args.also:  # NAME=TOPIC=PREFIX: more robots in the same scene
         name, topic, prefix = spec.split('=')
@@ -362,6 +366,8 @@ def cmd_robot(args, logic, node) -> int:
                               'loads': robot.GetNumberOfLoads(), 'restored': restored,
                               'state': robot.GetRobotState(), 'models': robot.GetNumberOfModelNodes(),
                               'placeholders': robot.GetNumberOfPlaceholders(),
+                              'pose_status': {l: robot.GetLinkPoseStatus(l) for l in robot.GetLinkNames().split()},
+                              'joint_states': robot.GetNumberOfJointStatesApplied(),
                               'others': {n: world(o) for n, o in others.items()}}), flush=True)
     return 0
 
@@ -416,6 +422,8 @@ def main() -> int:
     robot.add_argument('--loads', type=int, default=1, help='--follow counts from this many loads')
     robot.add_argument('--restore-after', type=float, default=0.0,
                        help='save and reopen the scene this many seconds into following')
+    robot.add_argument('--joint-states', default='', help='SetJointStatesTopic: links from joint states (no tf)')
+    robot.add_argument('--publish-tf', action='store_true', help='SetPublishTf(True)')
     robot.add_argument('--base-y', type=float, default=0.0, help='mm: place the robot with its base transform')
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
