@@ -52,7 +52,8 @@ def scene_robot(ros, urdf: Path, follow: float, *args: str):
                              '--follow', str(follow), '--every', '0.1', *args)
 
 
-def peer_env(ros) -> dict:
+def tf_peer_env(ros) -> dict:
+    """The environment of an rclpy peer that imports tf2_msgs (built for the tests)."""
     env = dict(ros.env)
     for key, value in tf2_msgs_env().items():
         env[key] = os.pathsep.join(filter(None, [value, env.get(key)]))
@@ -86,7 +87,7 @@ def test_joint_states_only_drive_the_robot_like_independent_forward_kinematics(r
     # The peer waits for our subscriber; --follow counts from the load (first spin).
     ours = scene_robot(ros, urdf, len(CONFIGS) * hold + 8.0, '--joint-states', '/joint_states')
     peer = ros.start([str(VENV_PYTHON), str(HERE / 'joint_states_peer.py'), str(urdf), json.dumps(CONFIGS),
-                      '--hold', str(hold)], peer_env(ros))
+                      '--hold', str(hold)], dict(ros.env))
     code, out, err = ros.finish(ours, timeout=len(CONFIGS) * hold + 60)
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     assert code == 0, err
@@ -121,9 +122,9 @@ def test_publish_tf_lets_an_rclpy_listener_see_the_links(ros, tmp_path):
     ours = scene_robot(ros, urdf, len(within_limits) * hold + 10.0, '--joint-states', '/joint_states',
                        '--publish-tf')
     checker = ros.start([str(VENV_PYTHON), str(HERE / 'tf_fk_peer.py'), str(urdf),
-                         '--seconds', str(len(within_limits) * hold + 6.0)], peer_env(ros))
+                         '--seconds', str(len(within_limits) * hold + 6.0)], tf_peer_env(ros))
     peer = ros.start([str(VENV_PYTHON), str(HERE / 'joint_states_peer.py'), str(urdf), json.dumps(within_limits),
-                      '--hold', str(hold)], peer_env(ros))
+                      '--hold', str(hold)], tf_peer_env(ros))
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     check_code, check_out, check_err = ros.finish(checker, timeout=60)
     code, out, err = ros.finish(ours, timeout=60)
