@@ -119,12 +119,16 @@ def test_publish_tf_lets_an_rclpy_listener_see_the_links(ros, tmp_path):
     urdf.write_text(URDF)
     hold = 1.5
     within_limits = [{'insert': 0.05, 'roll': 2.5, 'jaw': 0.4}, {'insert': 0.03, 'roll': -1.0, 'jaw': -0.1}]
-    ours = scene_robot(ros, urdf, len(within_limits) * hold + 10.0, '--joint-states', '/joint_states',
-                       '--publish-tf')
+    # Few snapshots (--every 5): the peers are read first, and our output must fit the pipe's
+    # buffer meanwhile or our process blocks on print and stops spinning.
+    ours = scene_robot(ros, urdf, len(within_limits) * hold + 20.0, '--joint-states', '/joint_states',
+                       '--publish-tf', '--every', '5')
     checker = ros.start([str(VENV_PYTHON), str(HERE / 'tf_fk_peer.py'), str(urdf),
-                         '--seconds', str(len(within_limits) * hold + 6.0)], tf_peer_env(ros))
+                         '--seconds', str(len(within_limits) * hold + 14.0)], tf_peer_env(ros))
+    # The peer waits for both joint-state subscribers (ours, the checker's), then a little more,
+    # so the checker's /tf subscription matches our broadcaster too.
     peer = ros.start([str(VENV_PYTHON), str(HERE / 'joint_states_peer.py'), str(urdf), json.dumps(within_limits),
-                      '--hold', str(hold)], tf_peer_env(ros))
+                      '--hold', str(hold), '--subscribers', '2', '--settle', '3'], dict(ros.env))
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     check_code, check_out, check_err = ros.finish(checker, timeout=60)
     code, out, err = ros.finish(ours, timeout=60)
