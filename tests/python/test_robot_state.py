@@ -170,3 +170,24 @@ def test_joint_states_topic_and_publish_tf_are_saved_with_the_scene(logic, tmp_p
     assert robot.SetJointStatesTopic('/saved/joint_states')
     xml = logic.GetScene().WriteToXMLString()
     assert 'jointStatesTopic="/saved/joint_states"' in xml and 'publishTf="1"' in xml
+    assert logic.GetScene().ReadFromXMLString(xml)
+    node = logic.GetDefaultROS2Node()
+    robot = node.GetRobotNodeByName('state')
+    assert spin_until(logic, lambda: robot.IsLoaded() and robot.GetLinkPoseStatus('jaw') != '')
+    assert robot.GetJointStatesTopic() == '/saved/joint_states' and robot.GetPublishTf()
+    assert node.GetSubscriberNodeByTopic('/saved/joint_states') is not None
+    # The restored subscriber is still the robot's: it goes when the robot stops following.
+    assert robot.SetJointStatesTopic('')
+    assert node.GetSubscriberNodeByTopic('/saved/joint_states') is None
+
+
+def test_joint_states_topic_of_another_type_or_a_bad_name_is_refused(logic, tmp_path):
+    node, robot = load(logic, tmp_path)
+    errors = []
+    robot.AddObserver('ErrorEvent', lambda caller, event: errors.append(event))
+    assert node.CreateAndAddSubscriberNode('String', '/busy') is not None
+    assert not robot.SetJointStatesTopic('/busy')
+    assert not robot.SetJointStatesTopic('not a topic name')
+    assert len(errors) == 2
+    assert robot.GetJointStatesTopic() == ''
+    assert node.GetSubscriberNodeByTopic('/busy') is not None  # a script's subscriber stays

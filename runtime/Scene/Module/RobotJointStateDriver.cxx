@@ -24,6 +24,7 @@ namespace ros2vtk {
 namespace scene {
 namespace {
 const char* const JointStateType = "sensor_msgs/msg/JointState";
+const char* const OwnerAttribute = "ros2vtk.jointStatesOfRobot";
 
 std::string JoinNames(const std::vector<std::string>& names)
 {
@@ -150,8 +151,10 @@ void RobotJointStateDriver::ResetJointPositions()
 }
 
 //------------------------------------------------------------------------------
-bool RobotJointStateDriver::SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic, std::string* error)
+bool RobotJointStateDriver::SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic,
+                                                const std::string& owner, std::string* error)
 {
+  this->Owner = owner;
   if (topic == this->Topic && (topic.empty() || this->Subscriber))
   {
     return true;
@@ -178,14 +181,16 @@ bool RobotJointStateDriver::SetJointStatesTopic(vtkROS2NodeNode* rosNode, const 
       *error = "could not subscribe to '" + topic + "' (see the error above)";
       return false;
     }
+    subscriber->SetAttribute(OwnerAttribute, owner.c_str());
   }
   else if (std::string(subscriber->GetROSType()) != JointStateType)
   {
     *error = "'" + topic + "' is subscribed already with type " + subscriber->GetROSType() + ", not " + JointStateType;
     return false;
   }
+  const char* tag = subscriber->GetAttribute(OwnerAttribute);
   this->Subscriber = subscriber;
-  this->OwnsSubscriber = owns;
+  this->OwnsSubscriber = owns || (tag && !owner.empty() && owner == tag); // ours, restored with the scene
   this->MessagesSeen = subscriber->GetNumberOfMessages();
   this->Topic = subscriber->GetTopic();
   return true;
@@ -223,7 +228,7 @@ void RobotJointStateDriver::ReadJointStates(vtkROS2NodeNode* rosNode)
     const std::string topic = this->Topic;
     this->Topic.clear();
     std::string error;
-    if (!this->SetJointStatesTopic(rosNode, topic, &error))
+    if (!this->SetJointStatesTopic(rosNode, topic, this->Owner, &error))
     {
       this->Topic = topic;
       return;

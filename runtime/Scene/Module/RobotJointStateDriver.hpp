@@ -71,8 +71,10 @@ public:
   void ResetJointPositions();
 
   /// Follows sensor_msgs/JointState on `topic` ("" stops). The subscriber is the ROS node's
-  /// own (shared with a script's subscriber of the same topic, created when there is none).
-  bool SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic, std::string* error);
+  /// own (shared with a script's subscriber of the same topic, created when there is none and
+  /// then tagged with `owner`, so that it is still known as ours after a scene is restored).
+  bool SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic, const std::string& owner,
+                           std::string* error);
   const std::string& GetJointStatesTopic() const { return this->Topic; }
   /// Drops the subscriber this driver created (the robot leaves the scene).
   void ReleaseJointStatesTopic(vtkROS2NodeNode* rosNode);
@@ -110,6 +112,7 @@ private:
   vtkNew<vtkMatrix4x4> Scratch;
 
   std::string Topic;
+  std::string Owner; // tag of the subscriber this driver created
   vtkWeakPointer<vtkROS2SubscriberNode> Subscriber;
   bool OwnsSubscriber = false;
   std::int64_t MessagesSeen = 0;

@@ -395,7 +395,7 @@ bool vtkROS2RobotNode::SetJointStatesTopic(const char* topic)
   vtkInternals& internals = *this->Internals;
   const std::string value = topic ? topic : "";
   std::string error;
-  if (!internals.JointStates.SetJointStatesTopic(this->GetROS2Node(), value, &error))
+  if (!internals.JointStates.SetJointStatesTopic(this->GetROS2Node(), value, internals.RobotName, &error))
   {
     vtkErrorMacro("robot '" << internals.RobotName << "': SetJointStatesTopic('" << value << "'): " << error);
     return false;
@@ -496,7 +496,12 @@ int vtkROS2RobotNode::UpdateLinkPoses()
   {
     // Asked before the ROS node could subscribe (a restored scene): subscribe now.
     std::string error;
-    internals.JointStates.SetJointStatesTopic(rosNode, internals.JointStatesTopic, &error);
+    if (!internals.JointStates.SetJointStatesTopic(rosNode, internals.JointStatesTopic, internals.RobotName, &error))
+    {
+      vtkErrorMacro("robot '" << internals.RobotName << "': joint states topic '" << internals.JointStatesTopic
+                              << "': " << error);
+      internals.JointStatesTopic.clear(); // said once
+    }
   }
   ros2vtk::scene::RobotJointStateDriver::LinkNodes links;
   links.reserve(internals.Links.size());
