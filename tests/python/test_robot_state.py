@@ -63,6 +63,7 @@ def test_file_robot_without_tf_shows_its_zero_configuration(logic, tmp_path, vtk
     for link in ('column', 'arm', 'slider', 'jaw'):
         assert robot.GetLinkPoseStatus(link) == 'zero configuration (no tf)'
     assert robot.GetLinkPoseStatus('nope') == ''
+    assert robot.GetLinkPoseSummary() == '5 links: 1 fixed frame, 4 zero configuration (no tf)'
     # insertion's range [0.05, 0.2] excludes 0: it starts at 0.05 (clamped zero).
     assert robot.GetJointPosition('insertion') == 0.05
     assert_pose(world(robot, 'column', vtk), (0, 0, 100))
@@ -161,6 +162,7 @@ def test_tf_wins_where_it_arrives(logic, tmp_path, vtk):
     assert_pose(world(robot, 'arm', vtk), (0, -70, 0))
     assert robot.GetLinkPoseStatus('slider') == 'zero configuration (no tf)'
     assert_pose(world(robot, 'slider', vtk), (550, 0, 100))
+    assert robot.GetLinkPoseSummary() == '5 links: 1 tf, 1 fixed frame, 3 zero configuration (no tf)'
 
 
 def test_joint_states_topic_and_publish_tf_are_saved_with_the_scene(logic, tmp_path):

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -459,6 +460,39 @@ bool vtkROS2RobotNode::GetPublishTf() const
 std::string vtkROS2RobotNode::GetLinkPoseStatus(const char* link) const
 {
   return this->Internals->JointStates.GetLinkPoseStatus(link ? link : "");
+}
+
+std::string vtkROS2RobotNode::GetLinkPoseSummary() const
+{
+  using Status = ros2vtk::scene::LinkPoseStatus;
+  const char* const order[] = { Status::Tf, Status::FixedFrame, Status::JointPositions, Status::ZeroConfiguration };
+  std::map<std::string, int> counts;
+  int links = 0;
+  for (const vtkInternals::LinkNode& entry : this->Internals->Links)
+  {
+    const std::string status = this->Internals->JointStates.GetLinkPoseStatus(entry.Link);
+    if (!status.empty())
+    {
+      ++counts[status];
+      ++links;
+    }
+  }
+  if (links == 0)
+  {
+    return std::string();
+  }
+  std::string summary = std::to_string(links) + (links == 1 ? " link:" : " links:");
+  const char* separator = " ";
+  for (const char* status : order)
+  {
+    auto it = counts.find(status);
+    if (it != counts.end())
+    {
+      summary += separator + std::to_string(it->second) + " " + status;
+      separator = ", ";
+    }
+  }
+  return summary;
 }
 
 vtkTypeInt64 vtkROS2RobotNode::GetNumberOfJointStatesApplied() const

@@ -158,6 +158,10 @@ public:
   /// the fixed frame), "zero configuration (no tf)", "joint positions (no tf)"; "" for no such
   /// link or before the first spin after a load.
   std::string GetLinkPoseStatus(const char* link) const;
+  /// Where the links' poses come from, in one line, e.g. "6 links: 1 fixed frame, 5 zero
+  /// configuration (no tf)" (counts per GetLinkPoseStatus word, in the table's order); "" before
+  /// the first spin after a load. What a panel shows next to "loaded".
+  std::string GetLinkPoseSummary() const;
   /// Joint state messages applied so far, and refused ones with the latest reason.
   vtkTypeInt64 GetNumberOfJointStatesApplied() const;
   vtkTypeInt64 GetNumberOfJointStatesRefused() const;
