@@ -25,6 +25,7 @@ namespace scene {
 namespace {
 const char* const JointStateType = "sensor_msgs/msg/JointState";
 const char* const OwnerAttribute = "ros2vtk.jointStatesOfRobot";
+const char* const LinkPoseAttribute = "ros2vtk.linkPose"; // a LinkPoseStatus word, read by the display
 
 std::string JoinNames(const std::vector<std::string>& names)
 {
@@ -354,25 +355,26 @@ void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string
     vtkROS2TransformNode* node = entry.second;
     auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
     auto matrix = this->LinkMatricesMillimetres.find(entry.first);
-    const char* status = placed;
     if (!node)
     {
       continue;
     }
-    if (!lookup)
+    const bool tracked = lookup && std::strcmp(lookup->GetLookupStatus(), "ok") == 0;
+    const char* status = !lookup ? LinkPoseStatus::FixedFrame : tracked ? LinkPoseStatus::Tf : placed;
+    this->LinkStatus[entry.first] = status;
+    // The display draws a link whose lookup is not "ok" as untracked, unless it is posed from
+    // joint positions (the zero configuration stays "untracked": nothing arrived). Set before
+    // the matrix, whose change makes the display look again.
+    const char* current = lookup ? lookup->GetAttribute(LinkPoseAttribute) : nullptr;
+    if (lookup && (!current || std::strcmp(current, status) != 0))
     {
-      status = LinkPoseStatus::FixedFrame;
+      lookup->SetAttribute(LinkPoseAttribute, status);
     }
-    else if (std::strcmp(lookup->GetLookupStatus(), "ok") == 0)
+    if (lookup && !tracked && matrix != this->LinkMatricesMillimetres.end())
     {
-      status = LinkPoseStatus::Tf; // tf wins over our kinematics
-    }
-    else if (matrix != this->LinkMatricesMillimetres.end())
-    {
-      this->Scratch->DeepCopy(matrix->second.data());
+      this->Scratch->DeepCopy(matrix->second.data()); // tf wins: only links tf does not place
       *changed = node->SetMatrixTransformToParent(this->Scratch) || *changed;
     }
-    this->LinkStatus[entry.first] = status;
   }
 }
 
