@@ -343,6 +343,7 @@ def cmd_robot(args, logic, node) -> int:
     end = start + args.follow if robot.GetNumberOfLoads() >= args.loads else start + args.seconds + args.follow
     next_snapshot = start
     restored = False
+    applied, applied_at = 0, start  # --joint-states-quiet: when the joint states stopped coming
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.02)
         now = time.monotonic()
@@ -360,6 +361,10 @@ def cmd_robot(args, logic, node) -> int:
                               'models_in_file': xml.count('vtkROS2ModelNode')}), flush=True)
         if robot.GetNumberOfLoads() >= args.loads and end > now + args.follow:
             end = now + args.follow
+        if args.joint_states_quiet and robot.GetNumberOfJointStatesApplied() != applied:
+            applied, applied_at = robot.GetNumberOfJointStatesApplied(), now
+        if args.joint_states_quiet and applied and now - applied_at > args.joint_states_quiet:
+            end = now  # the publisher is done: stop early (--follow is then only the upper bound)
         if now >= next_snapshot:
             next_snapshot += args.every
             print(json.dumps({'tracked': robot.GetNumberOfLinksTracked(), 'links': world(robot),
@@ -424,6 +429,8 @@ def main() -> int:
                        help='save and reopen the scene this many seconds into following')
     robot.add_argument('--joint-states', default='', help='SetJointStatesTopic: links from joint states (no tf)')
     robot.add_argument('--publish-tf', action='store_true', help='SetPublishTf(True)')
+    robot.add_argument('--joint-states-quiet', type=float, default=0.0,
+                       help='stop once joint states came and then none for this many seconds')
     robot.add_argument('--base-y', type=float, default=0.0, help='mm: place the robot with its base transform')
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()

@@ -84,11 +84,12 @@ def test_joint_states_only_drive_the_robot_like_independent_forward_kinematics(r
     urdf = tmp_path / 'jaws.urdf'
     urdf.write_text(URDF)
     hold = 2.0
-    # The peer waits for our subscriber; --follow counts from the load (first spin).
-    ours = scene_robot(ros, urdf, len(CONFIGS) * hold + 8.0, '--joint-states', '/joint_states')
+    # The peer waits for our subscriber; we follow until its joint states stop (3 s without one;
+    # it publishes at 20 Hz), --follow (from the load) being only an upper bound.
+    ours = scene_robot(ros, urdf, 60.0, '--joint-states', '/joint_states', '--joint-states-quiet', '3')
     peer = ros.start([str(VENV_PYTHON), str(HERE / 'joint_states_peer.py'), str(urdf), json.dumps(CONFIGS),
                       '--hold', str(hold)], dict(ros.env))
-    code, out, err = ros.finish(ours, timeout=len(CONFIGS) * hold + 60)
+    code, out, err = ros.finish(ours, timeout=120)
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     assert code == 0, err
     assert peer_code == 0, peer_err + peer_out
@@ -121,8 +122,8 @@ def test_publish_tf_lets_an_rclpy_listener_see_the_links(ros, tmp_path):
     within_limits = [{'insert': 0.05, 'roll': 2.5, 'jaw': 0.4}, {'insert': 0.03, 'roll': -1.0, 'jaw': -0.1}]
     # Few snapshots (--every 5): the peers are read first, and our output must fit the pipe's
     # buffer meanwhile or our process blocks on print and stops spinning.
-    ours = scene_robot(ros, urdf, len(within_limits) * hold + 20.0, '--joint-states', '/joint_states',
-                       '--publish-tf', '--every', '5')
+    ours = scene_robot(ros, urdf, 60.0, '--joint-states', '/joint_states', '--publish-tf', '--every', '5',
+                       '--joint-states-quiet', '3')
     checker = ros.start([str(VENV_PYTHON), str(HERE / 'tf_fk_peer.py'), str(urdf),
                          '--seconds', str(len(within_limits) * hold + 14.0)], tf_peer_env(ros))
     # The peer waits for both joint-state subscribers (ours, the checker's), then a little more,
@@ -131,7 +132,7 @@ def test_publish_tf_lets_an_rclpy_listener_see_the_links(ros, tmp_path):
                       '--hold', str(hold), '--subscribers', '2', '--settle', '3'], dict(ros.env))
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     check_code, check_out, check_err = ros.finish(checker, timeout=60)
-    code, out, err = ros.finish(ours, timeout=60)
+    code, out, err = ros.finish(ours, timeout=90)
     assert code == 0, err
     assert peer_code == 0, peer_err + peer_out
     assert check_code == 0, check_err
