@@ -36,6 +36,10 @@ CONFIGS = [
     {'jaw': -0.1},                                                 # a partial message
 ]
 LINKS = ['base', 'shaft', 'wrist', 'jaw_a', 'jaw_b', 'tip']
+# A namespace and a frame prefix of their own: the sim robot's tests use the same joint names.
+NAMESPACE = '/jsfk'
+TOPIC = f'{NAMESPACE}/joint_states'
+PREFIX = 'jsfk/'
 
 
 def zero_configuration(urdf: Path) -> dict:
@@ -86,9 +90,9 @@ def test_joint_states_only_drive_the_robot_like_independent_forward_kinematics(r
     hold = 2.0
     # The peer waits for our subscriber; we follow until its joint states stop (3 s without one;
     # it publishes at 20 Hz), --follow (from the load) being only an upper bound.
-    ours = scene_robot(ros, urdf, 60.0, '--joint-states', '/joint_states', '--joint-states-quiet', '3')
+    ours = scene_robot(ros, urdf, 60.0, '--joint-states', TOPIC, '--joint-states-quiet', '3')
     peer = ros.start([str(VENV_PYTHON), str(HERE / 'joint_states_peer.py'), str(urdf), json.dumps(CONFIGS),
-                      '--hold', str(hold)], dict(ros.env))
+                      '--hold', str(hold), '--topic', TOPIC], dict(ros.env))
     code, out, err = ros.finish(ours, timeout=120)
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     assert code == 0, err
@@ -122,14 +126,15 @@ def test_publish_tf_lets_an_rclpy_listener_see_the_links(ros, tmp_path):
     within_limits = [{'insert': 0.05, 'roll': 2.5, 'jaw': 0.4}, {'insert': 0.03, 'roll': -1.0, 'jaw': -0.1}]
     # Few snapshots (--every 5): the peers are read first, and our output must fit the pipe's
     # buffer meanwhile or our process blocks on print and stops spinning.
-    ours = scene_robot(ros, urdf, 60.0, '--joint-states', '/joint_states', '--publish-tf', '--every', '5',
-                       '--joint-states-quiet', '3')
-    checker = ros.start([str(VENV_PYTHON), str(HERE / 'tf_fk_peer.py'), str(urdf),
-                         '--seconds', str(len(within_limits) * hold + 14.0)], tf_peer_env(ros))
+    ours = scene_robot(ros, urdf, 60.0, '--joint-states', TOPIC, '--publish-tf', '--every', '5',
+                       '--joint-states-quiet', '3', '--tf-prefix', PREFIX)
+    checker = ros.start([str(VENV_PYTHON), str(HERE / 'tf_fk_peer.py'), str(urdf), '--namespace', NAMESPACE,
+                         '--frame-prefix', PREFIX, '--seconds', str(len(within_limits) * hold + 14.0)],
+                        tf_peer_env(ros))
     # The peer waits for both joint-state subscribers (ours, the checker's), then a little more,
     # so the checker's /tf subscription matches our broadcaster too.
     peer = ros.start([str(VENV_PYTHON), str(HERE / 'joint_states_peer.py'), str(urdf), json.dumps(within_limits),
-                      '--hold', str(hold), '--subscribers', '2', '--settle', '3'], dict(ros.env))
+                      '--hold', str(hold), '--subscribers', '2', '--settle', '3', '--topic', TOPIC], dict(ros.env))
     peer_code, peer_out, peer_err = ros.finish(peer, timeout=60)
     check_code, check_out, check_err = ros.finish(checker, timeout=60)
     code, out, err = ros.finish(ours, timeout=90)
@@ -137,7 +142,8 @@ def test_publish_tf_lets_an_rclpy_listener_see_the_links(ros, tmp_path):
     assert peer_code == 0, peer_err + peer_out
     assert check_code == 0, check_err
     result = json.loads(check_out.splitlines()[-1])
-    assert result['static_children'] == ['tip']
-    assert result['dynamic_children'] == ['jaw_a', 'jaw_b', 'shaft', 'wrist']
+    assert [c for c in result['static_children'] if c.startswith(PREFIX)] == [PREFIX + 'tip']
+    assert [c for c in result['dynamic_children'] if c.startswith(PREFIX)] == [
+        PREFIX + link for link in ('jaw_a', 'jaw_b', 'shaft', 'wrist')]
     assert result['compared'] >= 5, result
     assert result['worst'] < 1e-6, result
