@@ -48,7 +48,7 @@ class RobotJointStateDriver
 {
 public:
   /// A link and the transform node that places it (a tf2 lookup, or the fixed frame's identity).
-  using LinkNodes = std::vector<std::pair<std::string, vtkROS2TransformNode*>>;
+  using LinkNodes = std::vector<std::pair<std::string, vtkWeakPointer<vtkROS2TransformNode>>>;
 
   RobotJointStateDriver();
   ~RobotJointStateDriver();

@@ -116,6 +116,7 @@ public:
 
   // Joint positions -> link poses where tf does not place the links (issue 15).
   ros2vtk::scene::RobotJointStateDriver JointStates;
+  ros2vtk::scene::RobotJointStateDriver::LinkNodes DriverLinks; // Links as the driver takes them
   bool PublishTf = false;
   std::string JointStatesTopic; // as asked (kept when the subscriber cannot be made yet)
 
@@ -537,11 +538,21 @@ int vtkROS2RobotNode::UpdateLinkPoses()
       internals.JointStatesTopic.clear(); // said once
     }
   }
-  ros2vtk::scene::RobotJointStateDriver::LinkNodes links;
-  links.reserve(internals.Links.size());
-  for (const vtkInternals::LinkNode& entry : internals.Links)
+  // The driver's list of link nodes is rebuilt only when the links changed (a load, a restore):
+  // a spin allocates nothing.
+  ros2vtk::scene::RobotJointStateDriver::LinkNodes& links = internals.DriverLinks;
+  bool same = links.size() == internals.Links.size();
+  for (size_t i = 0; same && i < links.size(); ++i)
   {
-    links.emplace_back(entry.Link, entry.Node.GetPointer());
+    same = links[i].second.GetPointer() == internals.Links[i].Node.GetPointer();
+  }
+  if (!same)
+  {
+    links.clear();
+    for (const vtkInternals::LinkNode& entry : internals.Links)
+    {
+      links.emplace_back(entry.Link, entry.Node);
+    }
   }
   const bool changed =
     internals.JointStates.Update(rosNode, links, internals.EffectiveFixedFrame(), internals.TfPrefix);
