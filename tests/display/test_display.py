@@ -303,6 +303,45 @@ def test_robot_link_untracked_then_follows_tf_from_an_rclpy_peer(ros2vtk, logic,
     assert positions[0] - positions[1] > 150  # 270 mm to the left, on a 400 mm / 300 px view
 
 
+# A grey base box and a blue tool sphere (80 mm above its frame) on a prismatic joint along x whose
+# range [0.1, 0.2] m excludes 0: its zero configuration puts the tool at x = 100 mm.
+FILE_ROBOT = """<robot name="fk">
+  <material name="grey"><color rgba="0.5 0.5 0.5 1"/></material>
+  <material name="blue"><color rgba="0 0 1 1"/></material>
+  <link name="base"><visual><geometry><box size="0.05 0.05 0.05"/></geometry><material name="grey"/></visual></link>
+  <link name="tool"><visual><origin xyz="0 0 0.08"/><geometry><sphere radius="0.02"/></geometry>
+    <material name="blue"/></visual></link>
+  <joint name="slide" type="prismatic"><parent link="base"/><child link="tool"/><axis xyz="1 0 0"/>
+    <limit lower="0.1" upper="0.2" effort="1" velocity="1"/></joint>
+</robot>"""
+
+
+def test_file_robot_without_tf_drawn_at_its_zero_configuration_then_at_joint_positions(ros2vtk, logic, vtk,
+                                                                                       tmp_path):
+    view = View(vtk)
+    view.top_down()
+    dm = make_display(ros2vtk, logic, view)
+    urdf = tmp_path / 'fk.urdf'
+    urdf.write_text(FILE_ROBOT)
+    robot = logic.GetDefaultROS2Node().CreateAndAddRobotNodeFromFile('fk', str(urdf), '', '')
+    assert spin_until(logic, lambda: robot.GetLinkPoseStatus('tool') != '')
+    assert robot.GetLinkPoseStatus('tool') == 'zero configuration (no tf)'
+    dm.Update()
+    rgb = view.pixels('robot_file_zero_configuration')
+    # Not at the origin: at the clamped zero (100 mm), in the untracked colour (nothing arrived).
+    red = centroid(mask(rgb, 'red'))
+    assert red is not None and mask(rgb, 'blue').sum() == 0
+    assert abs(red[0] - view.display_point(100.0, 0, 80)[0]) < 3
+    # Driven by a script (as by /joint_states): its own colour, where the joint puts it.
+    assert robot.SetJointPosition('slide', 0.15)
+    assert spin_until(logic, lambda: robot.GetLinkPoseStatus('tool') == 'joint positions (no tf)')
+    dm.Update()
+    rgb = view.pixels('robot_file_joint_position')
+    blue = centroid(mask(rgb, 'blue'))
+    assert blue is not None and mask(rgb, 'red').sum() == 0
+    assert abs(blue[0] - view.display_point(150.0, 0, 80)[0]) < 3
+
+
 def image_message(width=64, height=48):
     # Left half 40, right half 220: mono8, one byte per pixel.
     data = [40 if col < width // 2 else 220 for row in range(height) for col in range(width)]

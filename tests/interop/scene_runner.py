@@ -320,6 +320,10 @@ def cmd_robot(args, logic, node) -> int:
     for folder in args.mesh_path:
         robot.AddMeshSearchPath(folder)
     robot.SetMeshBaseFolder(args.mesh_base_folder)
+    if args.joint_states and not robot.SetJointStatesTopic(args.joint_states):
+        print(json.dumps({'error': f'SetJointStatesTopic({args.joint_states}) failed'}), flush=True)
+        return 1
+    robot.SetPublishTf(args.publish_tf)
     others = {}
     for spec in args.also:  # NAME=TOPIC=PREFIX: more robots in the same scene
         name, topic, prefix = spec.split('=')
@@ -356,6 +360,7 @@ def cmd_robot(args, logic, node) -> int:
     end = start + args.follow if robot.GetNumberOfLoads() >= args.loads else start + args.seconds + args.follow
     next_snapshot = start
     restored = False
+    applied, applied_at = 0, start  # --joint-states-quiet: when the joint states stopped coming
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.02)
         now = time.monotonic()
@@ -373,12 +378,18 @@ def cmd_robot(args, logic, node) -> int:
                               'models_in_file': xml.count('vtkROS2ModelNode')}), flush=True)
         if robot.GetNumberOfLoads() >= args.loads and end > now + args.follow:
             end = now + args.follow
+        if args.joint_states_quiet and robot.GetNumberOfJointStatesApplied() != applied:
+            applied, applied_at = robot.GetNumberOfJointStatesApplied(), now
+        if args.joint_states_quiet and applied and now - applied_at > args.joint_states_quiet:
+            end = now  # the publisher is done: stop early (--follow is then only the upper bound)
         if now >= next_snapshot:
             next_snapshot += args.every
             print(json.dumps({'tracked': robot.GetNumberOfLinksTracked(), 'links': world(robot),
                               'loads': robot.GetNumberOfLoads(), 'restored': restored,
                               'state': robot.GetRobotState(), 'models': robot.GetNumberOfModelNodes(),
                               'placeholders': robot.GetNumberOfPlaceholders(),
+                              'pose_status': {l: robot.GetLinkPoseStatus(l) for l in robot.GetLinkNames().split()},
+                              'joint_states': robot.GetNumberOfJointStatesApplied(),
                               'others': {n: world(o) for n, o in others.items()}}), flush=True)
     return 0
 
@@ -433,6 +444,10 @@ def main() -> int:
     robot.add_argument('--loads', type=int, default=1, help='--follow counts from this many loads')
     robot.add_argument('--restore-after', type=float, default=0.0,
                        help='save and reopen the scene this many seconds into following')
+    robot.add_argument('--joint-states', default='', help='SetJointStatesTopic: links from joint states (no tf)')
+    robot.add_argument('--publish-tf', action='store_true', help='SetPublishTf(True)')
+    robot.add_argument('--joint-states-quiet', type=float, default=0.0,
+                       help='stop once joint states came and then none for this many seconds')
     robot.add_argument('--base-y', type=float, default=0.0, help='mm: place the robot with its base transform')
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()

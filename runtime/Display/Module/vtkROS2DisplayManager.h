@@ -63,8 +63,9 @@ public:
   void SetPointSize(double size);
   vtkGetMacro(PointSize, double);
 
-  /// Colour of a model whose transform is an untracked tf lookup (it failed, or never worked).
-  /// Default red (1, 0.1, 0.1).
+  /// Colour of a model whose transform is an untracked tf lookup (it failed, or never worked),
+  /// unless its robot places the link from joint positions (a robot at its zero configuration is
+  /// still untracked). Default red (1, 0.1, 0.1).
   void SetUntrackedColor(double r, double g, double b);
   vtkGetVector3Macro(UntrackedColor, double);
   /// Colour of a placeholder (a robot visual whose mesh did not load); drawn as a wireframe.

@@ -32,7 +32,10 @@ bool vtkROS2ModelDisplayableManager::IsUntracked(vtkROS2SceneNode* node)
        transform && depth < 1000; transform = transform->GetParentTransformNode(), ++depth)
   {
     auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(transform);
-    if (lookup && std::strcmp(lookup->GetLookupStatus(), "ok") != 0)
+    // A robot link its robot posed from joint positions (docs/robot-state.md) is not untracked.
+    const char* pose = lookup ? lookup->GetAttribute("ros2vtk.linkPose") : nullptr;
+    const bool posedByJoints = pose && std::strcmp(pose, "joint positions (no tf)") == 0;
+    if (lookup && std::strcmp(lookup->GetLookupStatus(), "ok") != 0 && !posedByJoints)
     {
       return true;
     }

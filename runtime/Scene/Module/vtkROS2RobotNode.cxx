@@ -1,5 +1,7 @@
 #include "vtkROS2RobotNode.h"
 
+#include "RobotJointStateDriver.hpp"
+
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2ParameterNode.h"
@@ -22,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -110,6 +113,12 @@ public:
   };
   std::vector<LinkNode> Links;
   std::vector<vtkWeakPointer<vtkROS2ModelNode>> Models;
+
+  // Joint positions -> link poses where tf does not place the links (issue 15).
+  ros2vtk::scene::RobotJointStateDriver JointStates;
+  ros2vtk::scene::RobotJointStateDriver::LinkNodes DriverLinks; // Links as the driver takes them
+  bool PublishTf = false;
+  std::string JointStatesTopic; // as asked (kept when the subscriber cannot be made yet)
 
   /// The loader, made on first use with the mesh search paths (and, for the file source, the
   /// package holding the file).
@@ -382,6 +391,179 @@ int vtkROS2RobotNode::GetNumberOfPlaceholders() const
   return this->Internals->Loaded ? static_cast<int>(this->Internals->Visuals.placeholder_count()) : 0;
 }
 
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::SetJointStatesTopic(const char* topic)
+{
+  vtkInternals& internals = *this->Internals;
+  const std::string value = topic ? topic : "";
+  std::string error;
+  if (!internals.JointStates.SetJointStatesTopic(this->GetROS2Node(), value, internals.RobotName, &error))
+  {
+    vtkErrorMacro("robot '" << internals.RobotName << "': SetJointStatesTopic('" << value << "'): " << error);
+    return false;
+  }
+  internals.JointStatesTopic = internals.JointStates.GetJointStatesTopic();
+  this->Modified();
+  return true;
+}
+
+const char* vtkROS2RobotNode::GetJointStatesTopic() const
+{
+  return this->Internals->JointStatesTopic.c_str();
+}
+
+bool vtkROS2RobotNode::SetJointPosition(const char* joint, double value)
+{
+  std::string why;
+  if (!this->Internals->JointStates.SetJointPosition(joint ? joint : "", value, &why))
+  {
+    vtkErrorMacro("robot '" << this->Internals->RobotName << "': SetJointPosition: " << why);
+    return false;
+  }
+  return true;
+}
+
+double vtkROS2RobotNode::GetJointPosition(const char* joint) const
+{
+  return this->Internals->JointStates.GetJointPosition(joint ? joint : "");
+}
+
+std::string vtkROS2RobotNode::GetJointNames() const
+{
+  std::string names;
+  for (const std::string& joint : this->Internals->JointStates.GetJointNames())
+  {
+    names += (names.empty() ? "" : " ") + joint;
+  }
+  return names;
+}
+
+void vtkROS2RobotNode::ResetJointPositions()
+{
+  this->Internals->JointStates.ResetJointPositions();
+}
+
+void vtkROS2RobotNode::SetPublishTf(bool on)
+{
+  if (on != this->Internals->PublishTf)
+  {
+    this->Internals->PublishTf = on;
+    this->Internals->JointStates.SetPublishTf(on);
+    this->Modified();
+  }
+}
+
+bool vtkROS2RobotNode::GetPublishTf() const
+{
+  return this->Internals->PublishTf;
+}
+
+std::string vtkROS2RobotNode::GetLinkPoseStatus(const char* link) const
+{
+  return this->Internals->JointStates.GetLinkPoseStatus(link ? link : "");
+}
+
+std::string vtkROS2RobotNode::GetLinkPoseSummary() const
+{
+  using Status = ros2vtk::scene::LinkPoseStatus;
+  const char* const order[] = { Status::Tf, Status::FixedFrame, Status::JointPositions, Status::ZeroConfiguration };
+  std::map<std::string, int> counts;
+  int links = 0;
+  for (const vtkInternals::LinkNode& entry : this->Internals->Links)
+  {
+    const std::string status = this->Internals->JointStates.GetLinkPoseStatus(entry.Link);
+    if (!status.empty())
+    {
+      ++counts[status];
+      ++links;
+    }
+  }
+  if (links == 0)
+  {
+    return std::string();
+  }
+  std::string summary = std::to_string(links) + (links == 1 ? " link:" : " links:");
+  const char* separator = " ";
+  for (const char* status : order)
+  {
+    auto it = counts.find(status);
+    if (it != counts.end())
+    {
+      summary += separator + std::to_string(it->second) + " " + status;
+      separator = ", ";
+    }
+  }
+  return summary;
+}
+
+vtkTypeInt64 vtkROS2RobotNode::GetNumberOfJointStatesApplied() const
+{
+  return this->Internals->JointStates.GetNumberOfJointStatesApplied();
+}
+
+vtkTypeInt64 vtkROS2RobotNode::GetNumberOfJointStatesRefused() const
+{
+  return this->Internals->JointStates.GetNumberOfJointStatesRefused();
+}
+
+const char* vtkROS2RobotNode::GetLastJointStateError() const
+{
+  return this->Internals->JointStates.GetLastJointStateError().c_str();
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2RobotNode::OnROS2NodeSpin(vtkROS2NodeNode*)
+{
+  const int loaded = this->CheckForNewDescription();
+  return loaded + this->UpdateLinkPoses();
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2RobotNode::UpdateLinkPoses()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Loaded)
+  {
+    return 0;
+  }
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  if (!internals.JointStatesTopic.empty() && internals.JointStates.GetJointStatesTopic().empty())
+  {
+    // Asked before the ROS node could subscribe (a restored scene): subscribe now.
+    std::string error;
+    if (!internals.JointStates.SetJointStatesTopic(rosNode, internals.JointStatesTopic, internals.RobotName, &error))
+    {
+      vtkErrorMacro("robot '" << internals.RobotName << "': joint states topic '" << internals.JointStatesTopic
+                              << "': " << error);
+      internals.JointStatesTopic.clear(); // said once
+    }
+  }
+  // The driver's list of link nodes is rebuilt only when the links changed (a load, a restore):
+  // a spin allocates nothing.
+  ros2vtk::scene::RobotJointStateDriver::LinkNodes& links = internals.DriverLinks;
+  bool same = links.size() == internals.Links.size();
+  for (size_t i = 0; same && i < links.size(); ++i)
+  {
+    same = links[i].second.GetPointer() == internals.Links[i].Node.GetPointer();
+  }
+  if (!same)
+  {
+    links.clear();
+    for (const vtkInternals::LinkNode& entry : internals.Links)
+    {
+      links.emplace_back(entry.Link, entry.Node);
+    }
+  }
+  const bool changed =
+    internals.JointStates.Update(rosNode, links, internals.EffectiveFixedFrame(), internals.TfPrefix);
+  for (const std::string& warning : internals.JointStates.TakeWarnings())
+  {
+    vtkWarningMacro("robot '" << internals.RobotName << "': " << warning);
+  }
+  return changed ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
 vtkROS2NodeNode* vtkROS2RobotNode::GetROS2Node() const
 {
   return vtkROS2NodeNode::SafeDownCast(this->GetNodeReference(ROS2NodeReferenceRole));
@@ -603,6 +785,13 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
     this->Modified();
     return false;
   }
+  std::string kinematicsError;
+  if (!internals.JointStates.Load(description, &kinematicsError))
+  {
+    // urdfdom accepted the visuals, so this should not happen; the robot still shows, at tf only.
+    vtkWarningMacro("robot '" << internals.RobotName << "': no kinematics: " << kinematicsError);
+    internals.JointStates.Unload();
+  }
   this->RemoveModels();
   internals.Visuals = std::move(visuals);
   internals.LoadedDescription = description;
@@ -799,6 +988,7 @@ void vtkROS2RobotNode::Unload()
     }
   }
   internals.Base = nullptr;
+  internals.JointStates.Unload();
   internals.Loaded = false;
   internals.State = "waiting for robot_description";
 }
@@ -833,6 +1023,7 @@ void vtkROS2RobotNode::OnRemovedFromScene()
 {
   // Everything this robot built goes with it (RemoveAndDeleteRobotNode, or the scene closing).
   this->Unload();
+  this->Internals->JointStates.ReleaseJointStatesTopic(this->GetROS2Node());
   this->ReleaseSource();
   this->Superclass::OnRemovedFromScene();
 }
@@ -852,6 +1043,8 @@ void vtkROS2RobotNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("fixedFrame", internals.FixedFrame.c_str());
   element->SetAttribute("tfPrefix", internals.TfPrefix.c_str());
   element->SetAttribute("meshBaseFolder", internals.MeshBaseFolder.c_str());
+  element->SetAttribute("jointStatesTopic", internals.JointStatesTopic.c_str());
+  element->SetIntAttribute("publishTf", internals.PublishTf ? 1 : 0);
   for (const std::string& folder : internals.SearchPaths)
   {
     vtkNew<vtkXMLDataElement> path; // one element each: folders may hold spaces
@@ -882,6 +1075,11 @@ bool vtkROS2RobotNode::ReadXML(vtkXMLDataElement* element)
   internals.FixedFrame = text("fixedFrame");
   internals.TfPrefix = text("tfPrefix");
   internals.MeshBaseFolder = text("meshBaseFolder");
+  internals.JointStatesTopic = text("jointStatesTopic"); // subscribed on the first spin after the load
+  int publishTf = 0;
+  element->GetScalarAttribute("publishTf", publishTf);
+  internals.PublishTf = publishTf != 0;
+  internals.JointStates.SetPublishTf(internals.PublishTf);
   int owns = 0;
   element->GetScalarAttribute("ownsSource", owns);
   internals.OwnsSourceNode = owns != 0;
@@ -965,6 +1163,8 @@ void vtkROS2RobotNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FixedFrame: " << internals.FixedFrame << "\n";
   os << indent << "TfPrefix: " << internals.TfPrefix << "\n";
   os << indent << "State: " << internals.State << "\n";
+  os << indent << "JointStatesTopic: " << internals.JointStatesTopic << "\n";
+  os << indent << "PublishTf: " << (internals.PublishTf ? "on" : "off") << "\n";
   os << indent << "Links: " << internals.Links.size() << ", models: " << internals.Models.size() << "\n";
 }
 

@@ -15,6 +15,9 @@
 //   * one model node per URDF <visual> under its link's node: meshes (STL, OBJ, PLY, DAE, glTF)
 //     and primitives, placed by the visual origin and mesh scale, coloured from the URDF material
 //     or the mesh file.
+// Links that tf does not place (no robot_state_publisher: a robot from a file) are placed by the
+// robot's own forward kinematics: the zero configuration, or joint positions from a JointState
+// topic or SetJointPosition (docs/robot-state.md).
 // Lengths follow the toolkit's units policy: the scene is in millimetres. A new description
 // (robot_state_publisher restarted with another URDF) reloads the robot; a missing mesh is a
 // warning and a placeholder; a broken URDF is a state (GetRobotState) and one error message.
@@ -125,6 +128,46 @@ public:
   /// Visuals whose mesh could not be loaded (a placeholder cube stands in for each).
   int GetNumberOfPlaceholders() const;
 
+  ///@{
+  /// Joint positions without a robot_state_publisher (docs/robot-state.md). Links whose tf lookup
+  /// does not succeed are placed by forward kinematics from these positions: the zero
+  /// configuration (0 clamped into each joint's limits) until positions arrive from the joint
+  /// states topic or SetJointPosition. Where tf for a link arrives, tf wins.
+  ///
+  /// Follows sensor_msgs/JointState on `topic` (e.g. "/joint_states"), applied on the ROS node's
+  /// spin; "" (default) stops. False (and an error) when it cannot subscribe.
+  bool SetJointStatesTopic(const char* topic);
+  const char* GetJointStatesTopic() const;
+  /// Sets an actuated joint (radians or metres; revolute and prismatic joints are clamped into
+  /// their limits, continuous ones are not). False (and an error) for an unknown, fixed or mimic
+  /// joint or a non-finite value. Before the robot is loaded the value is kept for the load.
+  bool SetJointPosition(const char* joint, double value);
+  /// The joint's position (mimic joints: multiplier * leader + offset); NaN for no such joint.
+  double GetJointPosition(const char* joint) const;
+  /// Joints that take a position (moving, not mimic), URDF tree order, space-separated.
+  std::string GetJointNames() const;
+  /// Every joint back to the zero configuration.
+  void ResetJointPositions();
+  /// Off (default): the computed poses only move our scene. On: they are also broadcast as
+  /// robot_state_publisher would (moving joints on /tf stamped with the joint state's stamp, or
+  /// the node clock; fixed joints on /tf_static; frames prefixed with the tf prefix), so other
+  /// ROS nodes see the robot.
+  void SetPublishTf(bool on);
+  bool GetPublishTf() const;
+  /// Where a link's pose comes from: "tf" (its tf lookup succeeds), "fixed frame" (the link is
+  /// the fixed frame), "zero configuration (no tf)", "joint positions (no tf)"; "" for no such
+  /// link or before the first spin after a load.
+  std::string GetLinkPoseStatus(const char* link) const;
+  /// Where the links' poses come from, in one line, e.g. "6 links: 1 fixed frame, 5 zero
+  /// configuration (no tf)" (counts per GetLinkPoseStatus word, in the table's order); "" before
+  /// the first spin after a load. What a panel shows next to "loaded".
+  std::string GetLinkPoseSummary() const;
+  /// Joint state messages applied so far, and refused ones with the latest reason.
+  vtkTypeInt64 GetNumberOfJointStatesApplied() const;
+  vtkTypeInt64 GetNumberOfJointStatesRefused() const;
+  const char* GetLastJointStateError() const;
+  ///@}
+
   /// Builds the robot from URDF text right away (besides the automatic load from the source),
   /// with relative mesh paths taken from `baseFolder`. False (state "failed") on a broken URDF.
   bool LoadRobotDescription(const char* urdfXml, const char* baseFolder = "");
@@ -149,8 +192,9 @@ public:
   void OnSceneRestored() override;
 
 
-  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): loads a new description.
-  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->CheckForNewDescription(); }
+  /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): loads a new description, then places the
+  /// links tf does not place from the joint positions.
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override;
   /// Index key among the ROS node's robots.
   std::string GetROS2NodeChildKey() const override { return this->GetRobotName(); }
 
@@ -172,6 +216,8 @@ private:
   bool ReadDescriptionFile(std::string& description);
   /// Spin callback: loads a new description when the source brought one.
   int CheckForNewDescription();
+  /// Spin callback: joint states in, link poses out (RobotJointStateDriver).
+  int UpdateLinkPoses();
   /// Removes everything this robot built (models, its own link nodes, the base).
   void Unload();
   void RemoveModels();
