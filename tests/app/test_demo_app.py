@@ -44,6 +44,22 @@ def orange_pixels(png: bytes) -> int:
     return sum(1 for r, g, b in pixels if r > 100 and 0.38 < g / r < 0.6 and b / r < 0.2)
 
 
+def phantom_pixels(png: bytes) -> dict[str, int]:
+    """Grey pixels of the phantom in a slice pane at W400/L40: gel (10 HU -> ~108), tissue
+    (60 HU -> ~140), tumour (160 HU -> ~204); air is black. JPEG and the noise blur the levels, so
+    each is counted within +-14 of its grey value; coloured pixels (model intersections, the
+    label) are left out."""
+    counts = {'gel': 0, 'tissue': 0, 'tumour': 0}
+    levels = {'gel': 108, 'tissue': 140, 'tumour': 204}
+    for r, g, b in Image.open(io.BytesIO(png)).convert('RGB').get_flattened_data():
+        if max(r, g, b) - min(r, g, b) > 12:
+            continue
+        for name, level in levels.items():
+            if abs(g - level) <= 14:
+                counts[name] += 1
+    return counts
+
+
 def test_demo_serves_the_app_with_robot_and_phantom():
     ARTIFACTS.mkdir(parents=True, exist_ok=True)
     env = dict(os.environ, ROS_DOMAIN_ID=str(int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '185')) + 3),
@@ -81,6 +97,15 @@ def test_demo_serves_the_app_with_robot_and_phantom():
             'loaded' in r.text and '8/8' in r.text for r in driver.find_elements(By.ID, 'robot-robot')))
         orange = wait_for('the robot orange in the view', lambda: (lambda n: n > 100 and n)(
             orange_pixels(driver.find_element(By.ID, 'view').screenshot_as_png)))
+        # The three slice panes show the phantom through the tip once it is placed there.
+        wait_for('the phantom placed at the tip', lambda: driver.find_elements(By.ID, 'slice_axial'))
+        slices = {}
+        for orientation in ('axial', 'sagittal', 'coronal'):
+            slices[orientation] = wait_for(f'phantom tissue in the {orientation} pane', lambda o=orientation: (
+                lambda c: c['gel'] > 2000 and c['tissue'] > 300 and c)(
+                phantom_pixels(driver.find_element(By.ID, f'slice_{o}').screenshot_as_png)))
+            (ARTIFACTS / f'demo-slice-{orientation}.png').write_bytes(
+                driver.find_element(By.ID, f'slice_{orientation}').screenshot_as_png)
         driver.save_screenshot(str(ARTIFACTS / 'demo-app.png'))
         output, _ = demo.communicate(timeout=90)  # --duration 45 ends it
     finally:
@@ -92,4 +117,4 @@ def test_demo_serves_the_app_with_robot_and_phantom():
     assert demo.returncode == 0, output
     assert 'phantom placed at the needle tip' in output, output
     assert '[demo] stopped' in output, output
-    print(f'view: {orange} orange pixels')
+    print(f'view: {orange} orange pixels; slice panes (gel/tissue/tumour pixels): {slices}')
