@@ -38,8 +38,8 @@ def build(app, title):
                 else:  # the 3D view above, the three slice panes in a row below
                     with html.Div(style='display: flex; flex-direction: column; width: 100%; height: 100%;'):
                         view = rca.RemoteControlledArea(name='view', display='image',
-                                                        style='width: 100%; flex: 3 1 0; min-height: 0;', id='view')
-                        with html.Div(style='display: flex; flex: 2 1 0; min-height: 0; gap: 2px; '
+                                                        style='width: 100%; flex: 2 1 0; min-height: 0;', id='view')
+                        with html.Div(style='display: flex; flex: 1 1 0; min-height: 0; gap: 2px; '
                                             'background: #000;'):
                             for orientation in app.slices.ORIENTATIONS:
                                 with html.Div(style='flex: 1 1 0; position: relative; min-width: 0;'):
@@ -164,7 +164,7 @@ def _tf(v3, html, ctrl):
                 with html.Tbody():
                     with html.Tr(v_for='f in tf_frames', key='f.frame', id=("'tf-frame-' + f.frame",)):
                         html.Td('{{ f.depth ? "\u2514 " : "" }}{{ f.frame }}',
-                                style=("{paddingLeft: (8 + 16 * f.depth) + 'px'}",))
+                                style=("{paddingLeft: (8 + 16 * f.depth) + 'px', whiteSpace: 'nowrap'}",))
                         html.Td('{{ f.parent }}')
                         html.Td('{{ f.age }}')
                         html.Td('{{ f.rate }}')

@@ -159,7 +159,7 @@ def tf_frame_rows(ros_node) -> list[dict]:
             age, rate = 'static', ''
         else:
             delay = float(info.get('transform_delay', 'nan'))
-            age, rate = f'{max(delay, 0.0):.2f} s', info.get('rate', '')
+            age, rate = f'{max(delay, 0.0):.3f} s', info.get('rate', '')
         authority = info.get('broadcaster', '')
         rows.append({'frame': frame, 'depth': depth, 'parent': info.get('parent', ''), 'age': age,
                      'rate': rate, 'static': static,

@@ -25,6 +25,7 @@ from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make
 
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
+SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
 
 
 def _short_names(class_names: str, prefix: str):
@@ -77,7 +78,7 @@ class App:
         self.slices = SlicePanes(self.scene) if slices and hasattr(ros2vtk, 'vtkROS2SliceView') else None
         self.slice_widgets, self.slice_handlers = {}, {}
         self.framed = 0
-        self.next_frame = self.next_refresh = self.frame_again_at = 0.0
+        self.next_frame = self.next_refresh = self.next_slices = self.frame_again_at = 0.0
         self.errors = []
         self.spin_callbacks = []
         self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
@@ -444,8 +445,8 @@ class App:
         self.spin_callbacks.append(callback)
 
     def _spin_once_and_show(self):
-        """One spin, the display layer updated, a frame every FRAME_SECONDS, the panels every
-        REFRESH_SECONDS."""
+        """One spin, the display layer updated, a frame every FRAME_SECONDS, the slice panes (when
+        shown) every SLICE_SECONDS, the panels every REFRESH_SECONDS."""
         self.logic.Spin()
         for callback in self.spin_callbacks:
             callback()
@@ -454,10 +455,12 @@ class App:
         if now >= self.next_frame:
             self._frame_once_loaded()
             self.render()
-            if self.slices is not None and self.slices.update():
+            self.next_frame = now + FRAME_SECONDS
+        if self.slices is not None and now >= self.next_slices:
+            self.next_slices = now + SLICE_SECONDS
+            if self.slices.update():
                 for handler in self.slice_handlers.values():
                     handler.schedule_render()
-            self.next_frame = now + FRAME_SECONDS
         if now >= self.next_refresh:
             stray = self.messages.take()  # errors from spinning (e.g. a failed reload)
             with self.state:
@@ -499,7 +502,7 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
     the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
     network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks).
     `slices`: axial, sagittal and coronal panes of the scene's first vtkROS2VolumeNode below the
-    3D view (app.slices.set_center(x, y, z) moves them)."""
+    3D view (app.slices.set_point(x, y, z) moves their planes)."""
     from .view import ensure_x_display
     if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
         raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
