@@ -329,3 +329,22 @@ def test_7_publish_yaml_on_a_mapped_posestamped_publisher(world):
     assert received['pose']['orientation'] == {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}, received
     wait_for('the outcome line', lambda: 'Published on /pose_from_app' in driver.find_element(By.ID, 'message').text)
     print(f'prefilled YAML {prefilled!r}; rclpy received {received}')
+
+
+def test_8_icon_font_is_served_by_the_app(world):
+    """The Material Design Icons font comes from the app server itself (trame-vuetify ships it),
+    so icons are glyphs, not boxes, on a machine with no internet."""
+    driver = world['driver']
+    loaded = driver.execute_async_script(
+        'const done = arguments[arguments.length - 1];'
+        'document.fonts.load(\'24px "Material Design Icons"\').then('
+        '  faces => done(faces.map(f => f.status)), error => done(String(error)));')
+    assert loaded and all(status == 'loaded' for status in loaded), loaded
+    sources = driver.execute_script(
+        "return performance.getEntriesByType('resource').map(e => e.name).filter(n => n.includes('materialdesignicons'))")
+    assert sources and all(s.startswith(world['url']) for s in sources), sources
+    # A chevron of the expansion panels is drawn with that font (its ::before glyph).
+    chevron = driver.find_element(By.CSS_SELECTOR, '.v-expansion-panel-title__icon .mdi')
+    family = driver.execute_script("return getComputedStyle(arguments[0], '::before').fontFamily", chevron)
+    assert 'Material Design Icons' in family, family
+    print(f'icon font faces {loaded}, from {sources}')

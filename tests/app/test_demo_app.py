@@ -123,6 +123,9 @@ def test_demo_serves_the_app_with_robot_and_phantom():
                 (ARTIFACTS / f'demo-slice-{orientation}.png').write_bytes(png)
             print(f'slice panes, last look: phantom {last.get("phantom")}, needle {last.get("needle")}')
         driver.save_screenshot(str(ARTIFACTS / 'demo-app.png'))
+        # To look at, not asserted: the panes later, after the phantom was placed at the tip.
+        time.sleep(20)
+        driver.save_screenshot(str(ARTIFACTS / 'demo-app-later.png'))
         output, _ = demo.communicate(timeout=120)  # --duration 60 ends it
     finally:
         driver.quit()
