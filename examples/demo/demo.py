@@ -422,17 +422,31 @@ def run_app(demo: Demo, args, duration: float) -> int:
 
     def setup(app):
         phantom = PhantomView(app.renderer, demo.image, demo.registration)
+        # The 2D panes show the phantom as a volume node under the registration; hidden in the 3D
+        # view, where PhantomView draws its three slices and the pseudotumour.
+        volume = getattr(ros2vtk, 'vtkROS2VolumeNode', None)
+        if volume is not None and app.slices is not None:
+            volume = volume()
+            volume.SetName('phantom')
+            volume.SetImageData(demo.image)
+            volume.SetWindow(400.0)
+            volume.SetLevel(40.0)
+            volume.SetVisibility(False)
+            demo.scene.AddNode(volume)
+            volume.SetParentTransformNodeID(demo.registration.GetID())
 
         def after_spin():
             if demo.after_spin():
                 app.framed = -1  # re-frame: the robot whole and the phantom
             if demo.tip is not None:
                 phantom.follow(demo.tip)
+                if phantom.tip_inside and app.slices is not None:
+                    app.slices.set_point(*demo.tip)  # the slice planes follow the tip, as in --window
         app.add_spin_callback(after_spin)
         app.state.robot_selected = demo.first.GetRobotName()
     print('[demo] starting the app (Ctrl-C stops it)', flush=True)
     ros2vtk.app.serve(demo.logic, port=args.port, title='ros2vtk demo', on_app=setup,
-                      duration=duration if duration > 0 else None)
+                      duration=duration if duration > 0 else None, slices=True)
     print('[demo] stopped', flush=True)
     return 0
 

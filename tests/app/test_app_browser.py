@@ -239,3 +239,112 @@ def test_4_save_reload_page_load_scene(world, tmp_path):
         driver.find_elements(By.CSS_SELECTOR, '[id="topic-subscriber-/chatter"] td')))
     wait_for('the robot orange in the view again', lambda: orange_pixels(view_png(driver)) > 200, seconds=60)
     step_shot(driver, '4-scene-loaded')
+
+
+def cells(driver, row_id: str) -> list[str]:
+    return [cell.text for cell in driver.find_elements(By.CSS_SELECTOR, f'[id="{row_id}"] td')]
+
+
+def test_5_tf_frame_tree_shows_the_robots_frames_with_ages(world):
+    """The tf section lists every frame of our node's buffer as a tree (parent before child,
+    indented by depth), each with the age of its newest transform, 'static' for /tf_static."""
+    driver = world['driver']
+    chain = ['base_link', 'column_link', 'upper_arm_link', 'forearm_link', 'wrist_link', 'instrument_link',
+             'needle_guide_link', 'needle_tip']
+    wait_for('every frame of the arm in the tf tree',
+             lambda: all(driver.find_elements(By.ID, f'tf-frame-{frame}') for frame in chain))
+    order = [row.get_attribute('id')[len('tf-frame-'):]
+             for row in driver.find_elements(By.CSS_SELECTOR, '[id^="tf-frame-"]')]
+    assert [frame for frame in order if frame in chain] == chain, order
+    indents = [int(driver.find_element(By.CSS_SELECTOR, f'[id="tf-frame-{frame}"] td').value_of_css_property(
+        'padding-left').rstrip('px').split('.')[0]) for frame in chain]
+    assert indents == sorted(indents) and len(set(indents)) == len(chain), indents  # one level deeper each
+    root = cells(driver, 'tf-frame-base_link')
+    assert root[2] == '(root)', root
+    column = cells(driver, 'tf-frame-column_link')
+    assert column[1] == 'base_link', column
+    age = float(column[2].removesuffix(' s'))  # a number of seconds: a moving joint on /tf
+    assert age >= 0.0, column
+    tip = cells(driver, 'tf-frame-needle_tip')
+    assert tip[1] == 'needle_guide_link' and tip[2] == 'static', tip  # a fixed joint on /tf_static
+    driver.execute_script('arguments[0].scrollIntoView({block: "start"})', driver.find_element(By.ID, 'tf_frames'))
+    step_shot(driver, '5-tf-tree')
+    print(f'tf tree order {order}; column_link {column}; needle_tip {tip}')
+
+
+def test_6_set_a_remote_rclpy_nodes_parameter_from_the_form(world):
+    """Parameters: set `gain` of an rclpy node (its own process) through its set_parameters
+    service; the node reports the new value; a refused value shows the node's reason."""
+    driver = world['driver']
+    peer = world['start']([VENV_PYTHON, REPO / 'tests' / 'app' / 'param_peer.py', '--node', 'tuner'],
+                          stdout=subprocess.PIPE)
+    assert json.loads(peer.stdout.readline()) == {'ready': True}
+    type_into(driver, 'param_node', '/tuner')
+    type_into(driver, 'param_names', 'gain')
+    click(driver, 'param_watch')
+    wait_for('the watched gain 0.5', lambda: '0.5' in driver.find_element(By.ID, 'parameters').text
+             if driver.find_elements(By.ID, 'parameters') else False)
+    type_into(driver, 'remote_param_node', '/tuner')
+    type_into(driver, 'remote_param_name', 'gain')
+    type_into(driver, 'remote_param_value', '1.75')  # the type select's default is double
+    click(driver, 'remote_param_set')
+    assert json.loads(peer.stdout.readline()) == {'gain': 1.75}  # the rclpy node's own report
+    wait_for('the answer shown', lambda: 'gain = 1.75: set' in driver.find_element(By.ID, 'remote_param_result').text)
+    wait_for('the watched value following', lambda: '1.75' in driver.find_element(By.ID, 'parameters').text)
+    type_into(driver, 'remote_param_value', '-1')
+    click(driver, 'remote_param_set')
+    result = wait_for('the refusal shown', lambda: (lambda t: 'refused' in t and t)(
+        driver.find_element(By.ID, 'remote_param_result').text))
+    step_shot(driver, '6-remote-parameter')
+    assert 'gain must be >= 0' in result, result
+    assert 'gain must be >= 0' in driver.find_element(By.ID, 'message').text
+    print(f'remote parameter: {result!r}')
+
+
+def test_7_publish_yaml_on_a_mapped_posestamped_publisher(world):
+    """A publisher added by short name (PoseStamped: a mapped node, no PublishYAML) publishes
+    the form's YAML as a typed message: rclpy receives exactly the values, in metres."""
+    driver = world['driver']
+    listener = world['start']([VENV_PYTHON, REPO / 'tests' / 'interop' / 'ros_peer.py', '--node', 'pose_listener',
+                               'echo', '/pose_from_app', 'geometry_msgs/msg/PoseStamped', '--count', '1',
+                               '--timeout', '60'], stdout=subprocess.PIPE)
+    assert json.loads(listener.stdout.readline()) == {'ready': True}
+    click(driver, 'topic_direction_publisher')
+    type_into(driver, 'topic_type', 'PoseStamped')
+    type_into(driver, 'topic_name', '/pose_from_app')
+    click(driver, 'topic_add')
+    row_id = 'topic-publisher-/pose_from_app'
+    wait_for('the rclpy subscriber matched', lambda: (lambda c: len(c) > 4 and c[4] not in ('', '0'))(
+        cells(driver, row_id)))
+    assert 'geometry_msgs/msg/PoseStamped' in row_text(driver, row_id)
+    prefilled = wait_for('the blank message in the YAML box', lambda: (lambda v: 'position' in v and v)(
+        driver.find_element(By.ID, 'publish_yaml').get_attribute('value')))
+    type_into(driver, 'publish_yaml', '{header: {frame_id: base_link}, pose: {position: {x: 0.125, y: -0.25, '
+                                      'z: 0.5}, orientation: {x: 0.0, y: 0.0, z: 0.0, w: 1.0}}}')
+    click(driver, 'publish')
+    received = json.loads(listener.stdout.readline())
+    step_shot(driver, '7-posestamped-published')
+    assert received['header']['frame_id'] == 'base_link', received
+    assert received['pose']['position'] == {'x': 0.125, 'y': -0.25, 'z': 0.5}, received
+    assert received['pose']['orientation'] == {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}, received
+    wait_for('the outcome line', lambda: 'Published on /pose_from_app' in driver.find_element(By.ID, 'message').text)
+    print(f'prefilled YAML {prefilled!r}; rclpy received {received}')
+
+
+def test_8_icon_font_is_served_by_the_app(world):
+    """The Material Design Icons font comes from the app server itself (trame-vuetify ships it),
+    so icons are glyphs, not boxes, on a machine with no internet."""
+    driver = world['driver']
+    loaded = driver.execute_async_script(
+        'const done = arguments[arguments.length - 1];'
+        'document.fonts.load(\'24px "Material Design Icons"\').then('
+        '  faces => done(faces.map(f => f.status)), error => done(String(error)));')
+    assert loaded and all(status == 'loaded' for status in loaded), loaded
+    sources = driver.execute_script(
+        "return performance.getEntriesByType('resource').map(e => e.name).filter(n => n.includes('materialdesignicons'))")
+    assert sources and all(s.startswith(world['url']) for s in sources), sources
+    # A chevron of the expansion panels is drawn with that font (its ::before glyph).
+    chevron = driver.find_element(By.CSS_SELECTOR, '.v-expansion-panel-title__icon .mdi')
+    family = driver.execute_script("return getComputedStyle(arguments[0], '::before').fontFamily", chevron)
+    assert 'Material Design Icons' in family, family
+    print(f'icon font faces {loaded}, from {sources}')

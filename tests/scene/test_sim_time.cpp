@@ -202,3 +202,41 @@ TEST_F(SimTimeTest, SetBeforeCreateAppliesAtCreateAndIsSavedInSceneFiles)
   // Never a wall-clock time: 0 until a simulator speaks.
   EXPECT_EQ(restored->GetNodeTimeNanoseconds(), 0);
 }
+
+TEST_F(SimTimeTest, TfFramesAsYAMLListsEveryFrameWithItsDelayToTheNodeClock)
+{
+  vtkNew<vtkROS2NodeNode> notCreated;
+  EXPECT_EQ(notCreated->GetTf2FramesAsYAML(), "");
+  ASSERT_TRUE(this->Node->SetUseSimTime(true));
+  this->StartSimulator();
+  ASSERT_TRUE(this->DriveClockTo(1000, 0));
+  EXPECT_EQ(this->Node->GetTf2FramesAsYAML(), "[]");
+  vtkROS2Tf2BroadcasterNode* moving = this->Node->CreateAndAddTf2BroadcasterNode("map", "robot");
+  vtkROS2Tf2BroadcasterNode* fixed = this->Node->CreateAndAddTf2BroadcasterNode("map", "camera");
+  ASSERT_NE(moving, nullptr);
+  ASSERT_NE(fixed, nullptr);
+  fixed->SetStatic(true);
+  vtkNew<vtkMatrix4x4> matrix;
+  std::string yaml;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
+    moving->Broadcast(matrix.GetPointer());
+    fixed->Broadcast(matrix.GetPointer());
+    yaml = this->Node->GetTf2FramesAsYAML();
+    return yaml.find("robot:") != std::string::npos && yaml.find("camera:") != std::string::npos;
+  })) << yaml;
+  // The moving frame was stamped 1000 s by the node's clock; the clock moves on 2.5 s.
+  ASSERT_TRUE(this->DriveClockTo(1002, 500000000));
+  yaml = this->Node->GetTf2FramesAsYAML();
+  const std::size_t robot = yaml.find("robot:\n");
+  const std::size_t camera = yaml.find("camera:\n");
+  ASSERT_NE(robot, std::string::npos) << yaml;
+  ASSERT_NE(camera, std::string::npos) << yaml;
+  const std::string robotEntry = yaml.substr(robot, yaml.find("buffer_length", robot) - robot);
+  const std::string cameraEntry = yaml.substr(camera, yaml.find("buffer_length", camera) - camera);
+  EXPECT_NE(robotEntry.find("parent: 'map'"), std::string::npos) << yaml;
+  EXPECT_NE(robotEntry.find("most_recent_transform: 1000.000000"), std::string::npos) << yaml;
+  EXPECT_NE(robotEntry.find("transform_delay: 2.500"), std::string::npos) << yaml;
+  // A static frame has no stamp: 0.
+  EXPECT_NE(cameraEntry.find("parent: 'map'"), std::string::npos) << yaml;
+  EXPECT_NE(cameraEntry.find("most_recent_transform: 0.000000"), std::string::npos) << yaml;
+}

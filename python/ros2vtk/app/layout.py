@@ -29,22 +29,39 @@ def build(app, title):
                 _parameters(v3, html, ctrl)
                 _scene(v3, html, ctrl)
 
+        slices = {}
         with layout.content:
             with v3.VContainer(fluid=True, classes='pa-0 fill-height'):
-                view = rca.RemoteControlledArea(name='view', display='image', style='width: 100%; height: 100%;',
-                                                id='view')
+                if app.slices is None:
+                    view = rca.RemoteControlledArea(name='view', display='image',
+                                                    style='width: 100%; height: 100%;', id='view')
+                else:  # the 3D view above, the three slice panes in a row below
+                    with html.Div(style='display: flex; flex-direction: column; width: 100%; height: 100%;'):
+                        view = rca.RemoteControlledArea(name='view', display='image',
+                                                        style='width: 100%; flex: 2 1 0; min-height: 0;', id='view')
+                        with html.Div(style='display: flex; flex: 1 1 0; min-height: 0; gap: 2px; '
+                                            'background: #000;'):
+                            for orientation in app.slices.ORIENTATIONS:
+                                with html.Div(style='flex: 1 1 0; position: relative; min-width: 0;'):
+                                    slices[orientation] = rca.RemoteControlledArea(
+                                        name=f'slice_{orientation}', display='image',
+                                        style='width: 100%; height: 100%;', id=f'slice_{orientation}')
+                                    html.Span(orientation, classes='text-caption',
+                                              style='position: absolute; left: 6px; top: 2px; color: '
+                                                    + {'axial': '#f44336', 'sagittal': '#ffeb3b',
+                                                       'coronal': '#4caf50'}[orientation])
 
         with layout.footer:
             html.Span('{{ status }}', id='status', classes='text-caption')
             v3.VSpacer()
             html.Span('{{ message }}', id='message', classes='text-caption',
                       style=("{color: message_kind == 'error' ? '#c62828' : '#2e7d32'}",))
-    return view
+    return view, slices
 
 
-def _table(v3, html, headers, rows, item, cells, selected=None, key='id', row_id=None):
+def _table(v3, html, headers, rows, item, cells, selected=None, key='id', row_id=None, table_id=None):
     """A compact table; clicking a row selects it (`selected` state name) when given."""
-    with v3.VTable(density='compact', classes='text-caption'):
+    with v3.VTable(density='compact', classes='text-caption', **({'id': table_id} if table_id else {})):
         with html.Thead():
             with html.Tr():
                 for header in headers:
@@ -138,6 +155,19 @@ def _topics(v3, html, ctrl):
 def _tf(v3, html, ctrl):
     with v3.VExpansionPanel(title='tf'):
         with v3.VExpansionPanelText():
+            html.Div('Frames ({{ tf_frames.length }}): age of the newest transform', classes='text-subtitle-2')
+            with v3.VTable(density='compact', classes='text-caption', id='tf_frames'):
+                with html.Thead():
+                    with html.Tr():
+                        for header in ('frame', 'parent', 'age', 'rate/s'):
+                            html.Th(header)
+                with html.Tbody():
+                    with html.Tr(v_for='f in tf_frames', key='f.frame', id=("'tf-frame-' + f.frame",)):
+                        html.Td('{{ f.depth ? "\u2514 " : "" }}{{ f.frame }}',
+                                style=("{paddingLeft: (8 + 16 * f.depth) + 'px', whiteSpace: 'nowrap'}",))
+                        html.Td('{{ f.parent }}')
+                        html.Td('{{ f.age }}')
+                        html.Td('{{ f.rate }}')
             html.Div('Lookups', classes='text-subtitle-2')
             _table(v3, html, ['parent', 'child', 'status'], 'tf_lookups', 'x', ['x.parent', 'x.child', 'x.status'])
             html.Div('Broadcasters', classes='text-subtitle-2')
@@ -156,7 +186,7 @@ def _parameters(v3, html, ctrl):
     with v3.VExpansionPanel(title='Parameters'):
         with v3.VExpansionPanelText():
             _table(v3, html, ['node', 'name', 'type', 'value'], 'parameters', 'p',
-                   ['p.node', 'p.name', 'p.type', 'p.value'], key='name')
+                   ['p.node', 'p.name', 'p.type', 'p.value'], key='name', table_id='parameters')
             with html.Div(classes='d-flex ga-2 mt-2'):
                 v3.VTextField(label='node', v_model=('param_node',), density='compact', id='param_node')
                 v3.VTextField(label='parameter names', v_model=('param_names',), density='compact', id='param_names')
@@ -168,6 +198,17 @@ def _parameters(v3, html, ctrl):
                            density='compact')
                 v3.VTextField(label='value', v_model=('own_param_value',), density='compact', id='own_param_value')
             v3.VBtn('Set', click=(ctrl.set_own_parameter, "[{own_param_name: own_param_name, own_param_type: own_param_type, own_param_value: own_param_value}]"), size='small', id='own_param_set')
+            html.Div("Set a parameter of another node (its set_parameters service)", classes='text-subtitle-2 mt-2')
+            with html.Div(classes='d-flex ga-2'):
+                v3.VTextField(label='node', v_model=('remote_param_node',), density='compact', id='remote_param_node')
+                v3.VTextField(label='name', v_model=('remote_param_name',), density='compact', id='remote_param_name')
+            with html.Div(classes='d-flex ga-2'):
+                v3.VSelect(label='type', v_model=('remote_param_type',),
+                           items=(['bool', 'integer', 'double', 'string'],), density='compact')
+                v3.VTextField(label='value', v_model=('remote_param_value',), density='compact',
+                              id='remote_param_value')
+            v3.VBtn('Set on node', click=(ctrl.set_remote_parameter, "[{remote_param_node: remote_param_node, remote_param_name: remote_param_name, remote_param_type: remote_param_type, remote_param_value: remote_param_value}]"), size='small', id='remote_param_set')
+            html.Div('{{ remote_param_result }}', classes='text-caption', id='remote_param_result')
 
 
 def _scene(v3, html, ctrl):

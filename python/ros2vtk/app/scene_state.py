@@ -119,3 +119,60 @@ def graph(ros_node, text_filter: str):
         nodes = [n for n in nodes if wanted in n.lower()]
         topics = [t for t in topics if wanted in t['topic'].lower() or wanted in t['types'].lower()]
     return nodes, topics
+
+
+def parse_frames_yaml(text: str) -> dict[str, dict[str, str]]:
+    """tf2's allFramesAsYAML (vtkROS2NodeNode.GetTf2FramesAsYAML) -> {frame: {key: value}}:
+    one unindented 'frame:' line per frame, then indented 'key: value' lines (quotes dropped)."""
+    frames: dict[str, dict[str, str]] = {}
+    current = None
+    for line in (text or '').splitlines():
+        if not line.strip() or line.strip() == '[]':
+            continue
+        if not line.startswith(' ') and line.endswith(':'):
+            current = frames.setdefault(line[:-1], {})
+        elif current is not None and ':' in line:
+            key, value = line.strip().split(':', 1)
+            current[key] = value.strip().strip("'")
+    return frames
+
+
+def tf_frame_rows(ros_node) -> list[dict]:
+    """Every frame the node's tf buffer knows, as a depth-first tree (parent before its children,
+    siblings by name): depth, parent, the age of its newest transform ('static' for /tf_static
+    frames) and its rate. Roots (frames that are only parents) head their trees."""
+    if ros_node is None or not hasattr(ros_node, 'GetTf2FramesAsYAML'):
+        return []
+    frames = parse_frames_yaml(ros_node.GetTf2FramesAsYAML())
+    children: dict[str, list[str]] = {}
+    for frame, info in frames.items():
+        children.setdefault(info.get('parent', ''), []).append(frame)
+    roots = sorted({info.get('parent', '') for info in frames.values()} - set(frames) - {''})
+    rows: list[dict] = []
+
+    def add(frame: str, depth: int, seen: set) -> None:
+        info = frames.get(frame, {})
+        static = info.get('most_recent_transform', '') in ('0.000000', '0')
+        if not info:
+            age, rate = '(root)', ''
+        elif static:
+            age, rate = 'static', ''
+        else:
+            delay = float(info.get('transform_delay', 'nan'))
+            age, rate = f'{max(delay, 0.0):.3f} s', info.get('rate', '')
+        authority = info.get('broadcaster', '')
+        rows.append({'frame': frame, 'depth': depth, 'parent': info.get('parent', ''), 'age': age,
+                     'rate': rate, 'static': static,
+                     'authority': '' if authority in ('ros2vtk_tf_listener', 'no recorded authority') else authority})
+        for child in sorted(children.get(frame, [])):
+            if child not in seen:  # a loop in a broken tree must not recurse forever
+                seen.add(child)
+                add(child, depth + 1, seen)
+    seen: set = set(roots)
+    for root in roots:
+        add(root, 0, seen)
+    for frame in sorted(frames):  # frames of a loop (no root above them)
+        if frame not in seen:
+            seen.add(frame)
+            add(frame, 0, seen)
+    return rows

@@ -21,10 +21,11 @@ import time
 import vtk
 
 from . import scene_state
-from .view import RenderWindowArea, frame_camera, make_display, make_render_window
+from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make_render_window
 
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
+SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
 
 
 def _short_names(class_names: str, prefix: str):
@@ -59,7 +60,7 @@ class VTKMessages:
 class App:
     """One app over one logic: state, controllers, layout, the spin task."""
 
-    def __init__(self, logic, server=None, title='ros2vtk'):
+    def __init__(self, logic, server=None, title='ros2vtk', slices: bool = False):
         from trame.app import get_server
         self.logic = logic
         self.scene = logic.GetScene()
@@ -72,10 +73,15 @@ class App:
         self.display = make_display(logic, self.renderer)
         self.area = RenderWindowArea(self.window)
         self.view_handler = None
+        # 2D panes of the scene's first volume node (vtkROS2SliceView: needs the Display module).
+        import ros2vtk
+        self.slices = SlicePanes(self.scene) if slices and hasattr(ros2vtk, 'vtkROS2SliceView') else None
+        self.slice_widgets, self.slice_handlers = {}, {}
         self.framed = 0
-        self.next_frame = self.next_refresh = self.frame_again_at = 0.0
+        self.next_frame = self.next_refresh = self.next_slices = self.frame_again_at = 0.0
         self.errors = []
         self.spin_callbacks = []
+        self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
         self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
         self._init_state(title)
         self._bind_controllers()
@@ -94,9 +100,11 @@ class App:
             'topics': [], 'topic_selected': '', 'topic_yaml': '', 'topic_direction': 'subscriber',
             'topic_type': 'String', 'topic_name': '/chatter', 'publish_yaml': "{data: 'hello'}",
             'graph_filter': '', 'graph_nodes': [], 'graph_topics': [],
-            'tf_lookups': [], 'tf_broadcasters': [], 'tf_parent': 'world', 'tf_child': 'base_link',
+            'tf_frames': [], 'tf_lookups': [], 'tf_broadcasters': [], 'tf_parent': 'world', 'tf_child': 'base_link',
             'tf_static': False,
             'parameters': [], 'param_node': '/robot_state_publisher', 'param_names': 'robot_description',
+            'remote_param_node': '/robot_state_publisher', 'remote_param_name': 'publish_frequency',
+            'remote_param_type': 'double', 'remote_param_value': '20.0', 'remote_param_result': '',
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
             'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4],
@@ -135,10 +143,22 @@ class App:
         c.add_broadcaster = self.add_broadcaster
         c.watch_parameters = self.watch_parameters
         c.set_own_parameter = self.set_own_parameter
+        c.set_remote_parameter = self.set_remote_parameter
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
         self.state.change('robot_selected', 'topic_selected')(lambda **_: self.refresh())
+        self.state.change('topic_selected')(self._prefill_publish_yaml)
+
+    def _prefill_publish_yaml(self, topic_selected='', **_):
+        """Selecting a publisher of a mapped type fills the YAML box with its message's fields
+        (blank values), so the form shows what there is to publish."""
+        node = self.scene.GetNodeByID(topic_selected) if topic_selected else None
+        if node is None or not node.IsA('vtkROS2PublisherNode') or hasattr(node, 'PublishYAML'):
+            return
+        message = node.CreateMessageObject()
+        if message is not None:
+            self.state.publish_yaml = message.GetYAML()
 
     def add_robot(self, form=None):
         self._apply(form)
@@ -219,10 +239,15 @@ class App:
     def publish(self, form=None):
         self._apply(form)
         node = self.scene.GetNodeByID(self.state.topic_selected)
-        if node is None or not hasattr(node, 'PublishYAML'):
-            return self._report(False, '', 'Publish: select a YAML publisher (add one with a full ROS type, '
-                                'e.g. std_msgs/msg/String)')
-        ok = node.PublishYAML(self.state.publish_yaml)
+        if node is None or not node.IsA('vtkROS2PublisherNode'):
+            return self._report(False, '', 'Publish: select a publisher')
+        if hasattr(node, 'PublishYAML'):
+            ok = node.PublishYAML(self.state.publish_yaml)
+        else:
+            # A mapped publisher (PoseStamped, ...): the YAML fills a typed message object of its
+            # type, published as it is (SI units, no stamping: docs/messages.md).
+            message = node.CreateMessageObject()
+            ok = message is not None and message.SetYAML(self.state.publish_yaml) and node.PublishMessageObject(message)
         return self._report(ok, f'Published on {node.GetTopic()} ({node.GetNumberOfMessagesSent()} sent)',
                             f'Publish on {node.GetTopic()} failed')
 
@@ -269,6 +294,73 @@ class App:
             ok = False
         return self._report(ok, f'{self.node.GetROS2NodeName()}: {name} = {text}', f'Set parameter {name} failed')
 
+    PARAMETER_TYPES = {'bool': (1, 'bool_value'), 'integer': (2, 'integer_value'), 'double': (3, 'double_value'),
+                       'string': (4, 'string_value')}
+
+    def set_remote_parameter(self, form=None):
+        """Sends one SetParameters request to another node's `<node>/set_parameters` service (a
+        service client node, removed once answered); the node's answer (successful, reason)
+        is shown when it arrives."""
+        self._apply(form)
+        s = self.state
+        target, name, kind, text = s.remote_param_node.strip(), s.remote_param_name.strip(), s.remote_param_type, \
+            s.remote_param_value
+        type_id, field = self.PARAMETER_TYPES.get(kind, (0, ''))
+        try:
+            if not target or not name or not field:
+                raise ValueError('a node, a name and a type are required')
+            if kind == 'bool':
+                value = 'true' if text.strip().lower() in ('1', 'true', 'yes', 'on') else 'false'
+            elif kind == 'integer':
+                value = str(int(text))
+            elif kind == 'double':
+                value = repr(float(text))
+            else:
+                value = text
+        except ValueError as error:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
+            return self._report(False, '', f'Set {target} {name} failed')
+        service = target.rstrip('/') + '/set_parameters'
+        if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a set on {target} still waits for its answer\n')
+            return self._report(False, '', f'Set {target} {name} failed')
+        client = self.node.GetServiceClientNodeByService(service) or \
+            self.node.CreateAndAddServiceClientNode('rcl_interfaces/srv/SetParameters', service)
+        ok = client is not None
+        if ok:
+            request = client.CreateBlankRequest()
+            ok = (request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name)
+                  and request.SetField('parameters[0].value.type', str(type_id))
+                  and request.SetField(f'parameters[0].value.{field}', value)
+                  and client.SendAsyncRequest(request) > 0)
+        if ok:
+            description = f'{target}: {name} = {text}'
+            self.parameter_sets.append((client, description))
+            s.remote_param_result = f'{description}: sent, waiting for the answer'
+        return self._report(ok, f'Set request sent to {service}', f'Set {target} {name} failed')
+
+    def _take_parameter_answers(self):
+        """Shows the answers of set_parameters requests that arrived; drops their clients."""
+        pending = []
+        for client, description in self.parameter_sets:
+            status = client.GetStatusAsString()
+            if status in ('waiting for server', 'waiting for response'):
+                pending.append((client, description))
+                continue
+            if status == 'succeeded':
+                ok = client.GetResponseField('results[0].successful') == 'true'
+                reason = client.GetResponseField('results[0].reason')
+                text = f'{description}: ' + ('set' if ok else 'refused') + (f' ({reason})' if reason else '')
+            else:
+                ok, text = False, f'{description}: {status} ({client.GetLastError()})'
+            self.node.RemoveAndDeleteServiceClientNode(client.GetServiceName())
+            self.state.remote_param_result = text
+            self.state.message, self.state.message_kind = text, 'success' if ok else 'error'
+            if not ok:
+                self.errors = (self.errors + [text])[-20:]
+                self.state.errors = list(self.errors)
+        self.parameter_sets = pending
+
     def save_scene(self, form=None):
         self._apply(form)
         path = self.state.scene_file
@@ -304,6 +396,9 @@ class App:
             selected, 'GetLastMessageYAML') else ''
         s.graph_nodes, s.graph_topics = scene_state.graph(self.node, s.graph_filter)
         s.tf_lookups, s.tf_broadcasters = scene_state.tf_rows(self.scene)
+        s.tf_frames = scene_state.tf_frame_rows(self.node)
+        if self.parameter_sets:
+            self._take_parameter_answers()
         s.parameters = scene_state.parameter_rows(self.scene)
         then, spins, received = self.last_status
         total = sum(t['count'] for t in s.topics if t['direction'] == 'subscriber')
@@ -350,8 +445,8 @@ class App:
         self.spin_callbacks.append(callback)
 
     def _spin_once_and_show(self):
-        """One spin, the display layer updated, a frame every FRAME_SECONDS, the panels every
-        REFRESH_SECONDS."""
+        """One spin, the display layer updated, a frame every FRAME_SECONDS, the slice panes (when
+        shown) every SLICE_SECONDS, the panels every REFRESH_SECONDS."""
         self.logic.Spin()
         for callback in self.spin_callbacks:
             callback()
@@ -361,6 +456,11 @@ class App:
             self._frame_once_loaded()
             self.render()
             self.next_frame = now + FRAME_SECONDS
+        if self.slices is not None and now >= self.next_slices:
+            self.next_slices = now + SLICE_SECONDS
+            if self.slices.update():
+                for handler in self.slice_handlers.values():
+                    handler.schedule_render()
         if now >= self.next_refresh:
             stray = self.messages.take()  # errors from spinning (e.g. a failed reload)
             with self.state:
@@ -380,6 +480,9 @@ class App:
 
     def _on_ready(self, **_):
         self.view_handler = self.view_widget.create_view_handler(self.area, encoder='jpeg', target_fps=20)
+        for orientation, widget in self.slice_widgets.items():
+            self.slice_handlers[orientation] = widget.create_view_handler(
+                self.slices.areas[orientation], encoder='jpeg', target_fps=10)
         loop = asyncio.get_event_loop()
         wake_up = self.logic.GetWakeUpFileDescriptor()
         if wake_up >= 0:
@@ -389,21 +492,24 @@ class App:
     # ------------------------------------------------------------------ layout
     def _build_layout(self, title):
         from .layout import build
-        self.view_widget = build(self, title)
+        self.view_widget, self.slice_widgets = build(self, title)
 
 
 def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
-          open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None) -> None:
+          open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None,
+          slices: bool = False) -> None:
     """Serves the app on `logic` until interrupted, or for `duration` seconds (blocking). Binds
     the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
-    network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks)."""
+    network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks).
+    `slices`: axial, sagittal and coronal panes of the scene's first vtkROS2VolumeNode below the
+    3D view (app.slices.set_point(x, y, z) moves their planes)."""
     from .view import ensure_x_display
     if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
         raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
     if host not in ('127.0.0.1', 'localhost', '::1'):
         print(f'[app] WARNING: serving on {host}: anyone who reaches this port controls the ROS node', flush=True)
     xvfb = ensure_x_display()
-    app = App(logic, title=title)
+    app = App(logic, title=title, slices=slices)
     if on_app is not None:
         on_app(app)
     if duration:

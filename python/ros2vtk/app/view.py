@@ -104,12 +104,13 @@ class ModelActors:
 class RenderWindowArea:
     """trame-rca's remote controlled area over a plain vtkRenderWindow (no vtkWebCore)."""
 
-    def __init__(self, render_window: vtk.vtkRenderWindow):
+    def __init__(self, render_window: vtk.vtkRenderWindow, style: vtk.vtkInteractorStyle | None = None):
         self.window = render_window
         self.window.SetOffScreenRendering(1)
         self.interactor = vtk.vtkRenderWindowInteractor()
         self.interactor.SetRenderWindow(render_window)
-        self.interactor.SetInteractorStyle(vtk.vtkInteractorStyleTrackballCamera())
+        self.style = style or vtk.vtkInteractorStyleTrackballCamera()
+        self.interactor.SetInteractorStyle(self.style)
         self.interactor.EnableRenderOff()  # frames are rendered when trame-rca asks for one
         self.grab = vtk.vtkWindowToImageFilter()
         self.grab.SetInput(render_window)
@@ -182,3 +183,93 @@ def frame_camera(renderer) -> None:
     renderer.ResetCamera()
     camera.Zoom(0.8)  # a margin for the robot's motion
     renderer.ResetCameraClippingRange()
+
+
+class SlicePanes:
+    """Axial, sagittal and coronal 2D views (Slicer's red, yellow and green) of the scene's first
+    vtkROS2VolumeNode, each a vtkROS2SliceView in its own offscreen window streamed as the 3D
+    view is (`areas`, one RenderWindowArea per orientation). The models cut by each slice plane
+    (a robot's needle) are drawn on it in their colours. As in Slicer, each pane stays centred
+    on the volume and only its plane moves: through `point` (world mm) once a script calls
+    set_point (the demo follows the tool tip), through the volume's centre until then."""
+
+    ORIENTATIONS = ('axial', 'sagittal', 'coronal')
+    NORMAL_AXIS = {'axial': 2, 'sagittal': 0, 'coronal': 1}
+
+    def __init__(self, scene, size=(360, 300)):
+        import ros2vtk
+        self.scene = scene
+        self.views, self.windows, self.areas, self.centers = {}, {}, {}, {}
+        for orientation in self.ORIENTATIONS:
+            window, renderer = make_render_window(size)
+            renderer.GradientBackgroundOff()
+            renderer.SetBackground(0.0, 0.0, 0.0)
+            view = ros2vtk.vtkROS2SliceView()
+            view.SetRenderer(renderer)
+            view.SetScene(scene)
+            view.SetOrientation(orientation)
+            # Image-style mouse: left drag window/level, right drag zoom, middle pan; no rotation.
+            self.areas[orientation] = RenderWindowArea(window, vtk.vtkInteractorStyleImage())
+            self.views[orientation], self.windows[orientation] = view, window
+        self.volume = None
+        self.point: tuple[float, float, float] | None = None
+
+    def set_point(self, x: float, y: float, z: float) -> None:
+        """The point (world mm) the three slice planes go through (applied on the next update)."""
+        self.point = (float(x), float(y), float(z))
+
+    def _image_to_world(self) -> vtk.vtkMatrix4x4:
+        matrix = vtk.vtkMatrix4x4()
+        parent = self.volume.GetParentTransformNode() if self.volume is not None else None
+        if parent is not None:
+            parent.GetMatrixTransformToWorld(matrix)
+        return matrix
+
+    def volume_center(self) -> tuple[float, float, float] | None:
+        """The centre of the shown volume in world mm (under its parent transform)."""
+        image = self.volume.GetImageData() if self.volume is not None else None
+        if image is None:
+            return None
+        b = image.GetBounds()
+        local = [(b[2 * i] + b[2 * i + 1]) / 2 for i in range(3)] + [1.0]
+        return tuple(self._image_to_world().MultiplyPoint(local)[:3])
+
+    def clamped_point(self) -> tuple[float, float, float] | None:
+        """The point kept one voxel inside the volume (a plane on or beyond its faces would show
+        nothing), in world mm."""
+        image = self.volume.GetImageData() if self.volume is not None else None
+        if image is None or self.point is None:
+            return self.point
+        to_world = self._image_to_world()
+        to_image = vtk.vtkMatrix4x4()
+        vtk.vtkMatrix4x4.Invert(to_world, to_image)
+        local = to_image.MultiplyPoint((*self.point, 1.0))
+        b, spacing = image.GetBounds(), image.GetSpacing()
+        inside = [min(max(local[i], b[2 * i] + spacing[i]), b[2 * i + 1] - spacing[i])
+                  if b[2 * i + 1] - b[2 * i] > 2 * spacing[i] else (b[2 * i] + b[2 * i + 1]) / 2 for i in range(3)]
+        return tuple(to_world.MultiplyPoint((*inside, 1.0))[:3])
+
+    def update(self) -> bool:
+        """Follows the scene's first volume node and the point; returns whether a pane changed
+        (render then)."""
+        volumes = vtk.vtkCollection()
+        self.scene.GetNodesByClass('vtkROS2VolumeNode', volumes)
+        volume = volumes.GetItemAsObject(0) if volumes.GetNumberOfItems() else None
+        if volume is not self.volume:
+            self.volume = volume
+            for view in self.views.values():
+                view.SetVolumeNode(volume)
+                if volume is not None and volume.GetWindow() > 0:
+                    view.SetWindowLevel(volume.GetWindow(), volume.GetLevel())
+        middle, point = self.volume_center() or self.point, self.clamped_point()
+        if middle is not None:
+            for orientation, view in self.views.items():
+                center = list(middle)
+                if point is not None:
+                    axis = self.NORMAL_AXIS[orientation]
+                    center[axis] = point[axis]
+                if self.centers.get(orientation) != center:  # a new centre re-renders the pane
+                    self.centers[orientation] = center
+                    view.SetSliceCenter(*center)
+        changed = [view.Update() for view in self.views.values()]  # every view, no short-circuit
+        return any(changed)

@@ -807,6 +807,19 @@ std::string vtkROS2NodeNode::GetTopicNamesAndTypes()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetTf2FramesAsYAML()
+{
+  ros2vtk::tf2::BufferCore* buffer = this->GetTf2Buffer();
+  if (!buffer)
+  {
+    return std::string();
+  }
+  // The delay is measured to the node's clock (kLatestTime, 0, would leave it out).
+  const ros2vtk::tf2::TimePoint now = this->GetNodeTimeNanoseconds();
+  return buffer->all_frames_as_yaml(now != ros2vtk::tf2::kLatestTime ? now : 1);
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2NodeNode::GetRegisteredServiceTypes() const
 {
   std::string names;

@@ -202,6 +202,13 @@ public:
   std::string GetTopicNamesAndTypes();
   ///@}
 
+  /// Every frame of this node's tf buffer that has a transform, as tf2's allFramesAsYAML
+  /// (`ros2 run tf2_tools view_frames`): per frame its parent, broadcaster (authority), rate,
+  /// newest and oldest stamp, buffer length, and the delay of the newest transform to the
+  /// node's current time. Static frames have stamp 0. "[]" when the buffer holds nothing,
+  /// "" before Create. Subscribes to /tf and /tf_static on first use, as lookups do.
+  std::string GetTf2FramesAsYAML();
+
   ///@{
   /// Link status, for a panel: other ROS processes' participants this node currently sees (on
   /// any host), how many were dropped because they fell silent beyond the DDS lease (20 s: a

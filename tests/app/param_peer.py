@@ -1,0 +1,42 @@
+"""An rclpy node for the app's remote-parameter test, in its own process: declares `gain`
+(double, 0.5) and refuses negative values with a reason; prints one JSON line per accepted
+change ({"gain": value}) and {"ready": true} once up. Runs until terminated."""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+import rclpy
+from rcl_interfaces.msg import SetParametersResult
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument('--node', default='tuner')
+    args = parser.parse_args()
+    rclpy.init()
+    node = rclpy.create_node(args.node)
+    node.declare_parameter('gain', 0.5)
+
+    def check(parameters) -> SetParametersResult:
+        for parameter in parameters:
+            if parameter.name == 'gain' and parameter.value < 0:
+                return SetParametersResult(successful=False, reason='gain must be >= 0')
+        return SetParametersResult(successful=True)
+
+    def report(parameters) -> None:
+        for parameter in parameters:
+            print(json.dumps({parameter.name: parameter.value}), flush=True)
+    node.add_on_set_parameters_callback(check)
+    node.add_post_set_parameters_callback(report)
+    print(json.dumps({'ready': True}), flush=True)
+    try:
+        rclpy.spin(node)
+    except (KeyboardInterrupt, rclpy.executors.ExternalShutdownException):
+        pass
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
