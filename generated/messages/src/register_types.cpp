@@ -73,6 +73,15 @@
 #include "ros2vtk/std_srvs/srv/trigger__request.hpp"
 #include "ros2vtk/std_srvs/srv/trigger__response.hpp"
 #include "ros2vtk/tf2_msgs/msg/tf_message.hpp"
+#include "ros2vtk/type_description_interfaces/msg/field.hpp"
+#include "ros2vtk/type_description_interfaces/msg/field_type.hpp"
+#include "ros2vtk/type_description_interfaces/msg/individual_type_description.hpp"
+#include "ros2vtk/type_description_interfaces/msg/key_value.hpp"
+#include "ros2vtk/type_description_interfaces/msg/type_description.hpp"
+#include "ros2vtk/type_description_interfaces/msg/type_source.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description__request.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description__response.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
@@ -142,6 +151,14 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::tf2_msgs::msg::TFMessage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::Field::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::FieldType::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::IndividualTypeDescription::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::KeyValue::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::TypeDescription::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::TypeSource::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Response::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::DescribeParameters::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::GetParameterTypes::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::rcl_interfaces::srv::GetParameters::type_support());
@@ -151,4 +168,5 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Empty::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::SetBool::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Trigger::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription::type_support());
 }
