@@ -12,7 +12,7 @@
         "clients": ...}}.
     introspection_peer.py describe NODE [NODE ...] --types TYPE [TYPE ...] [--wait S]
         calls each NODE's ~/get_type_description (REP 2011) for each TYPE with the hash rosidl
-        made for it (share/<pkg>/<msg|srv>/<Type>.json of the installed wheels), then with a
+        made for it (share/<pkg>/<msg|srv>/<Type>.json of the venv's wheels), then with a
         well-formed hash of no type and with a malformed one. Prints one JSON object
         {node: {"available": bool, "services": [names], "types": {TYPE: response},
         "unknown": response, "malformed": response}}; a response is the message as plain JSON
@@ -23,11 +23,11 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 
 import rclpy
-from ament_index_python.packages import get_package_share_directory
 from geometry_msgs.msg import PoseStamped
 from rosidl_generator_type_description import calculate_type_hash
 from sensor_msgs.msg import Image
@@ -103,7 +103,10 @@ def cmd_query(args: argparse.Namespace) -> int:
 def rosidl_hash(ros_type: str) -> str:
     """The RIHS01 hash rosidl generated for `ros_type` (pkg/msg/Type or pkg/srv/Type)."""
     package, kind, name = ros_type.split('/')
-    path = f'{get_package_share_directory(package)}/{kind}/{name}.json'
+    # The wheels install share/ into the venv; a sourced ROS install lists its prefixes.
+    prefixes = [sys.prefix] + os.environ.get('AMENT_PREFIX_PATH', '').split(os.pathsep)
+    path = next(p for p in (os.path.join(prefix, 'share', package, kind, name + '.json') for prefix in prefixes)
+                if os.path.exists(p))
     with open(path) as stream:
         hashes = json.load(stream)['type_hashes']
     return next(h['hash_string'] for h in hashes if h['type_name'] == ros_type)
@@ -150,7 +153,10 @@ def cmd_describe(args: argparse.Namespace) -> int:
                 break
         time.sleep(1.0)  # the rest of its services (announced together) settle
         rclpy.spin_once(node, timeout_sec=0.1)
-        services = sorted(n for n, _ in node.get_service_names_and_types_by_node(name, namespace or '/'))
+        try:
+            services = sorted(n for n, _ in node.get_service_names_and_types_by_node(name, namespace or '/'))
+        except Exception:  # never discovered
+            services = []
         client = node.create_client(GetTypeDescription, target + '/get_type_description')
         available = target + '/get_type_description' in services and client.wait_for_service(timeout_sec=10)
         entry = {'available': available, 'services': services}
