@@ -473,6 +473,11 @@ void vtkROS2NodeNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("ros2NodeNamespace", this->Internals->NodeNamespace.c_str());
   element->SetIntAttribute("created", this->IsCreated() ? 1 : 0);
   element->SetIntAttribute("useSimTime", this->GetUseSimTime() ? 1 : 0);
+  if (!this->Internals->StartTypeDescriptionServiceOnCreate)
+  {
+    // Written only when off, so files of nodes with the default stay as they were.
+    element->SetIntAttribute("startTypeDescriptionService", 0);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -498,6 +503,9 @@ bool vtkROS2NodeNode::ReadXML(vtkXMLDataElement* element)
   int useSimTime = 0;
   element->GetScalarAttribute("useSimTime", useSimTime);
   this->Internals->UseSimTimeOnCreate = useSimTime != 0;
+  int startTypeDescriptionService = 1;
+  element->GetScalarAttribute("startTypeDescriptionService", startTypeDescriptionService);
+  this->Internals->StartTypeDescriptionServiceOnCreate = startTypeDescriptionService != 0;
   return true;
 }
 

@@ -253,6 +253,7 @@ public:
   /// nodes serve (tools learn the types our endpoints use from it), switched by the read-only
   /// parameter `start_type_description_service` (default true), declared at Create with the
   /// value set here. Set it before Create; after Create the set is refused (vtkErrorMacro, false).
+  /// Saved in scene files (attribute startTypeDescriptionService="0", written only when off).
   /// Get: whether the node serves it (once created), or will at Create.
   bool SetStartTypeDescriptionService(bool start);
   bool GetStartTypeDescriptionService() const;
