@@ -42,7 +42,9 @@ def split(info: dict, node: str) -> tuple[dict, dict]:
 
 @pytest.fixture(scope='module')
 def graph():
-    """Both nodes up, one query of the graph for both: {node: {kind: {name: [types]}}}."""
+    """Both nodes up (and our /slicer_quiet), one query of the graph for both:
+    {node: {kind: {name: [types]}}}, and under 'descriptions' what the `describe` query got
+    from each node's ~/get_type_description (introspection_peer.py)."""
     ros = Ros(next(_domains))
     try:
         ours = ros.start(['/usr/bin/python3', str(HERE / 'introspection_runner.py'), '--seconds', '120'],
