@@ -193,6 +193,26 @@ def field_view(item: Field, owner: str, table: Dict[str, Message]) -> dict:
     }
 
 
+def description_view(description: dict) -> dict:
+    """A TypeDescription (typehash.message_description / service_description) as the
+    templates write it into a constant table: C++ literals, the type first, then the
+    referenced types in order."""
+    def individual(item: dict) -> dict:
+        return {
+            "type_name": cpp_string_literal(item["type_name"]),
+            "fields": [{
+                "name": cpp_string_literal(f["name"]),
+                "type_id": f["type"]["type_id"],
+                "capacity": f["type"]["capacity"],
+                "string_capacity": f["type"]["string_capacity"],
+                "nested_type_name": cpp_string_literal(f["type"]["nested_type_name"]),
+                "default_value": cpp_string_literal(f["default_value"]),
+            } for f in item["fields"]],
+        }
+    return {"type": individual(description["type_description"]),
+            "referenced": [individual(item) for item in description["referenced_type_descriptions"]]}
+
+
 def message_view(message: Message, table: Dict[str, Message]) -> dict:
     qualified = "::" + naming.cpp_qualified_name(message)
     fields = list(message.fields) if message.fields else [EMPTY_MEMBER]
@@ -219,6 +239,7 @@ def message_view(message: Message, table: Dict[str, Message]) -> dict:
         "ros_type": message.ros_type,
         "dds_type_name": naming.dds_type_name(message),
         "type_hash": typehash.type_hash(message, table),
+        "description": description_view(typehash.message_description(message, table)),
         "namespace": naming.cpp_namespace(message.package, message.kind),
         "qualified": qualified,
         "header": header,
@@ -303,7 +324,7 @@ def plan(config: Config) -> List[Artefact]:
             for template, path in _message_paths(message.package, message.kind, message.name):
                 artefacts.append(Artefact(template, path, message.spec, {"message": view}))
         if isinstance(spec, Service):
-            artefacts.extend(_service_artefacts(spec))
+            artefacts.extend(_service_artefacts(spec, table))
             registered_services.append("::" + naming.cpp_namespace(spec.package, "srv") + "::"
                                        + spec.name)
     headers = sorted({a.path[len("include/"):] for a in artefacts if a.path.startswith("include/")})
@@ -337,11 +358,13 @@ def plan(config: Config) -> List[Artefact]:
     return artefacts
 
 
-def _service_artefacts(service: Service) -> List[Artefact]:
+def _service_artefacts(service: Service, table: Dict[str, Message]) -> List[Artefact]:
     header = naming.service_header(service)
     view = {
         "name": service.name,
         "ros_type": service.ros_type,
+        "type_hash": typehash.type_hash(service, table),
+        "description": description_view(typehash.service_description(service, table)),
         "namespace": naming.cpp_namespace(service.package, "srv"),
         "header": header,
         "guard": naming.include_guard(header),

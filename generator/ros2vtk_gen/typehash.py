@@ -1,16 +1,23 @@
-"""RIHS01 type hashes, computed as rosidl_generator_type_description does (WIRE_NOTES §2.6).
+"""REP 2011 type descriptions and RIHS01 type hashes, as rosidl_generator_type_description
+makes them (WIRE_NOTES §2.6).
 
-The hashed text is the JSON of the type description (the type and every type it references,
-sorted by name, default values left out), dumped with separators (', ', ': ') and ASCII escapes;
-the hash is SHA-256 of that text.
+A type description is the type's IndividualTypeDescription plus every type it references,
+sorted by name (type_description_interfaces/msg/TypeDescription). A node serves it on
+~/get_type_description, default values included (as rosidl's Python str() of the value).
+The hashed text is the JSON of the same description with the default values left out, dumped
+with separators (', ', ': ') and ASCII escapes; the hash is SHA-256 of that text.
+
+A service's description is synthesized as rosidl does: the service type with the fields
+request_message, response_message and event_message, and its `<Srv>_Event` message (info,
+request[<=1], response[<=1]) referencing service_msgs/msg/ServiceEventInfo.
 """
 from __future__ import annotations
 
 import hashlib
 import json
-from typing import Dict, List
+from typing import Dict, List, Optional, Union
 
-from .model import ARRAY, BOUNDED_SEQUENCE, SEQUENCE, Field, Message
+from .model import ARRAY, BOUNDED_SEQUENCE, SEQUENCE, Field, Message, Service, Value
 
 # type_description_interfaces/msg/FieldType ids.
 FIELD_TYPE_NESTED = 1
@@ -24,6 +31,41 @@ BOUNDED_STRING = 21
 BOUNDED_WSTRING = 22
 CONTAINER_OFFSET = {ARRAY: 48, BOUNDED_SEQUENCE: 96, SEQUENCE: 144}
 EMPTY_MESSAGE_MEMBER = "structure_needs_at_least_one_member"
+
+# service_msgs/msg/ServiceEventInfo and the builtin_interfaces/msg/Time it nests: every service
+# description references them (REP 2011 / service introspection), whether or not the packages
+# being generated ship service_msgs.
+_TIME = "builtin_interfaces/msg/Time"
+_SERVICE_EVENT_INFO = "service_msgs/msg/ServiceEventInfo"
+
+
+def _plain_field(name: str, type_id: int, capacity: int = 0, nested: str = "") -> dict:
+    return {"name": name,
+            "type": {"type_id": type_id, "capacity": capacity, "string_capacity": 0,
+                     "nested_type_name": nested},
+            "default_value": ""}
+
+
+_FIXED_DESCRIPTIONS = {
+    _TIME: {"type_name": _TIME, "fields": [
+        _plain_field("sec", FIELD_TYPE_IDS["int32"]),
+        _plain_field("nanosec", FIELD_TYPE_IDS["uint32"])]},
+    _SERVICE_EVENT_INFO: {"type_name": _SERVICE_EVENT_INFO, "fields": [
+        _plain_field("event_type", FIELD_TYPE_IDS["uint8"]),
+        _plain_field("stamp", FIELD_TYPE_NESTED, nested=_TIME),
+        _plain_field("client_gid", FIELD_TYPE_IDS["char"] + CONTAINER_OFFSET[ARRAY], capacity=16),
+        _plain_field("sequence_number", FIELD_TYPE_IDS["int64"])]},
+}
+
+
+def default_value_text(value: Optional[Value]) -> str:
+    """A default as rosidl writes it into a type description: Python's str() of the value
+    ('1.0', 'True', '-2'), arrays as lists; '' when there is none."""
+    if value is None:
+        return ""
+    if isinstance(value, tuple):
+        return str(list(value))
+    return str(value)
 
 
 def _field_description(item: Field) -> dict:
@@ -46,6 +88,7 @@ def _field_description(item: Field) -> dict:
             "string_capacity": element.string_bound,
             "nested_type_name": nested,
         },
+        "default_value": default_value_text(item.default),
     }
 
 
@@ -53,7 +96,8 @@ def _individual_description(message: Message) -> dict:
     if message.is_empty:
         fields = [{"name": EMPTY_MESSAGE_MEMBER,
                    "type": {"type_id": FIELD_TYPE_IDS["uint8"], "capacity": 0,
-                            "string_capacity": 0, "nested_type_name": ""}}]
+                            "string_capacity": 0, "nested_type_name": ""},
+                   "default_value": ""}]
     else:
         fields = [_field_description(item) for item in message.fields]
     return {"type_name": message.ros_type, "fields": fields}
@@ -68,16 +112,70 @@ def _referenced(message: Message, table: Dict[str, Message], found: Dict[str, Me
                 _referenced(table[name], table, found)
 
 
-def hashable_description(message: Message, table: Dict[str, Message]) -> dict:
+def _references(messages: List[Message], table: Dict[str, Message]) -> Dict[str, dict]:
     found: Dict[str, Message] = {}
-    _referenced(message, table, found)
-    references: List[dict] = [_individual_description(found[name]) for name in sorted(found)]
+    for message in messages:
+        _referenced(message, table, found)
+    return {name: _individual_description(found[name]) for name in found}
+
+
+def message_description(message: Message, table: Dict[str, Message]) -> dict:
+    """The TypeDescription of `message` (default values included); `table` resolves nested
+    types by ROS name."""
+    references = _references([message], table)
     return {"type_description": _individual_description(message),
-            "referenced_type_descriptions": references}
+            "referenced_type_descriptions": [references[name] for name in sorted(references)]}
 
 
-def type_hash(message: Message, table: Dict[str, Message]) -> str:
-    """`RIHS01_<64 hex>` of `message`; `table` resolves nested types by ROS name."""
-    text = json.dumps(hashable_description(message, table), separators=(", ", ": "),
+def service_description(service: Service, table: Dict[str, Message]) -> dict:
+    """The TypeDescription of a service type, as rosidl synthesizes it (module docstring)."""
+    request, response = service.request.ros_type, service.response.ros_type
+    event = f"{service.ros_type}_Event"
+    references = _references([service.request, service.response], table)
+    references.update({
+        request: _individual_description(service.request),
+        response: _individual_description(service.response),
+        event: {"type_name": event, "fields": [
+            _plain_field("info", FIELD_TYPE_NESTED, nested=_SERVICE_EVENT_INFO),
+            _plain_field("request", FIELD_TYPE_NESTED + CONTAINER_OFFSET[BOUNDED_SEQUENCE], 1,
+                         request),
+            _plain_field("response", FIELD_TYPE_NESTED + CONTAINER_OFFSET[BOUNDED_SEQUENCE], 1,
+                         response)]},
+    })
+    for name, fixed in _FIXED_DESCRIPTIONS.items():
+        references.setdefault(name, fixed)
+    return {"type_description": {"type_name": service.ros_type, "fields": [
+                _plain_field("request_message", FIELD_TYPE_NESTED, nested=request),
+                _plain_field("response_message", FIELD_TYPE_NESTED, nested=response),
+                _plain_field("event_message", FIELD_TYPE_NESTED, nested=event)]},
+            "referenced_type_descriptions": [references[name] for name in sorted(references)]}
+
+
+def _without_defaults(individual: dict) -> dict:
+    return {"type_name": individual["type_name"],
+            "fields": [{"name": f["name"], "type": f["type"]} for f in individual["fields"]]}
+
+
+def hashable(description: dict) -> dict:
+    """`description` as it is hashed: default values left out."""
+    return {"type_description": _without_defaults(description["type_description"]),
+            "referenced_type_descriptions": [_without_defaults(individual) for individual in
+                                             description["referenced_type_descriptions"]]}
+
+
+def hashable_description(message: Message, table: Dict[str, Message]) -> dict:
+    return hashable(message_description(message, table))
+
+
+def description_hash(description: dict) -> str:
+    """`RIHS01_<64 hex>` of a TypeDescription (message_description, service_description)."""
+    text = json.dumps(hashable(description), separators=(", ", ": "),
                       ensure_ascii=True, sort_keys=False)
     return "RIHS01_" + hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def type_hash(message_or_service: Union[Message, Service], table: Dict[str, Message]) -> str:
+    """`RIHS01_<64 hex>` of a message or service; `table` resolves nested types by ROS name."""
+    if isinstance(message_or_service, Service):
+        return description_hash(service_description(message_or_service, table))
+    return description_hash(message_description(message_or_service, table))

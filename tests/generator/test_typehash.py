@@ -6,7 +6,9 @@ import pytest
 
 from conftest import FIXTURES, MSG_SPECS, SHIPPED_PACKAGES
 from ros2vtk_gen.msg_parser import parse_spec_file, resolve
-from ros2vtk_gen.typehash import hashable_description, type_hash
+from ros2vtk_gen.model import Service
+from ros2vtk_gen.typehash import (hashable_description, message_description, service_description,
+                                  type_hash)
 
 EXPECTED = {
     "builtin_interfaces/msg/Time":
@@ -117,6 +119,35 @@ EXPECTED = {
 }
 
 
+# Service types, from share/<pkg>/srv/<Srv>.json of the Kilted wheels (rosidl's own; Jazzy's
+# are the same): the hash of the synthesized service description (request_message,
+# response_message, event_message).
+EXPECTED_SERVICES = {
+    "std_srvs/srv/SetBool": "abe9e4bb6b41b40e6789712c00ec8871923e089af3f667a79992a428cff2da0a",
+    "std_srvs/srv/Trigger": "eeff2cd6fa5ad9d27cdf4dec64818317839b62f212a91e6b5304b634b2062c5f",
+    "std_srvs/srv/Empty": "5888399dedec5ccc85ea6451949fd2c9f97bfdf963f9a588821639fcd31b5d19",
+    "rcl_interfaces/srv/GetParameters":
+        "bf9803d5c74cf989a5de3e0c2e99444599a627c7ff75f97b8c05b01003675cbc",
+    "rcl_interfaces/srv/SetParametersAtomically":
+        "0e192ef259c07fc3c07a13191d27002222e65e00ccec653ca05e856f79285fcd",
+    "type_description_interfaces/srv/GetTypeDescription":
+        "69b9c19c1021405984cc60dbbb1edceb147a6538b411d812ba6afabeed962cd5",
+}
+
+
+@pytest.fixture(scope="module")
+def services():
+    found = {}
+    for package in SHIPPED_PACKAGES:
+        folder = os.path.join(MSG_SPECS, package, "srv")
+        if os.path.isdir(folder):
+            for name in sorted(os.listdir(folder)):
+                spec = parse_spec_file(os.path.join(folder, name))
+                assert isinstance(spec, Service)
+                found[spec.ros_type] = spec
+    return found
+
+
 @pytest.fixture(scope="module")
 def table():
     paths = []
@@ -155,3 +186,42 @@ def test_empty_message_hashes_its_dummy_member(table):
     description = hashable_description(table["std_msgs/msg/Empty"], table)
     assert description["type_description"]["fields"][0]["name"] == \
         "structure_needs_at_least_one_member"
+
+
+@pytest.mark.parametrize("ros_type", sorted(EXPECTED_SERVICES))
+def test_service_type_hash_matches_rosidl(table, services, ros_type):
+    assert type_hash(services[ros_type], table) == "RIHS01_" + EXPECTED_SERVICES[ros_type]
+
+
+def test_service_description_as_rosidl_synthesizes_it(table, services):
+    # As share/std_srvs/srv/SetBool.json (type_description_msg) writes it.
+    description = service_description(services["std_srvs/srv/SetBool"], table)
+    assert [(f["name"], f["type"]["nested_type_name"])
+            for f in description["type_description"]["fields"]] == [
+        ("request_message", "std_srvs/srv/SetBool_Request"),
+        ("response_message", "std_srvs/srv/SetBool_Response"),
+        ("event_message", "std_srvs/srv/SetBool_Event")]
+    referenced = {d["type_name"]: d for d in description["referenced_type_descriptions"]}
+    assert list(referenced) == ["builtin_interfaces/msg/Time", "service_msgs/msg/ServiceEventInfo",
+                                "std_srvs/srv/SetBool_Event", "std_srvs/srv/SetBool_Request",
+                                "std_srvs/srv/SetBool_Response"]
+    assert [(f["name"], f["type"]["type_id"], f["type"]["capacity"])
+            for f in referenced["std_srvs/srv/SetBool_Event"]["fields"]] == [
+        ("info", 1, 0), ("request", 97, 1), ("response", 97, 1)]
+    assert [(f["name"], f["type"]["type_id"], f["type"]["capacity"])
+            for f in referenced["service_msgs/msg/ServiceEventInfo"]["fields"]] == [
+        ("event_type", 3, 0), ("stamp", 1, 0), ("client_gid", 51, 16), ("sequence_number", 8, 0)]
+
+
+def test_served_description_keeps_default_values_as_rosidl_writes_them(table):
+    # share/geometry_msgs/msg/Quaternion.json, rcl_interfaces/msg/ParameterDescriptor.json,
+    # type_description_interfaces/srv/GetTypeDescription.json: Python's str() of the value.
+    quaternion = message_description(table["geometry_msgs/msg/Quaternion"], table)
+    assert [f["default_value"] for f in quaternion["type_description"]["fields"]] == \
+        ["0.0", "0.0", "0.0", "1.0"]
+    descriptor = message_description(table["rcl_interfaces/msg/ParameterDescriptor"], table)
+    assert {f["name"]: f["default_value"] for f in descriptor["type_description"]["fields"]
+            }["read_only"] == "False"
+    request = message_description(
+        table["type_description_interfaces/srv/GetTypeDescription_Request"], table)
+    assert request["type_description"]["fields"][2]["default_value"] == "True"

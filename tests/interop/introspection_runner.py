@@ -5,10 +5,14 @@ the same kinds, names and types as introspection_peer.py's rclpy node:
 
     publisher   /introspect/chatter  std_msgs/msg/String
     subscriber  /introspect/pose     geometry_msgs/msg/PoseStamped
+    subscriber  /introspect/image    sensor_msgs/msg/Image
     service     /introspect/enable   std_srvs/srv/SetBool
     client      /introspect/trigger  std_srvs/srv/Trigger
 
     introspection_runner.py [--seconds S]
+
+and a second node, /slicer_quiet, created with start_type_description_service false (so it
+serves no ~/get_type_description), publishing std_msgs/msg/String on /introspect/quiet.
 
 Prints {"ready": true, ...} once everything is created, then spins for S seconds.
 """
@@ -31,9 +35,15 @@ def main() -> int:
     created = {
         'publisher': node.CreateAndAddPublisherNode('String', '/introspect/chatter'),
         'subscriber': node.CreateAndAddSubscriberNode('PoseStamped', '/introspect/pose'),
+        'image': node.CreateAndAddSubscriberNode('Image', '/introspect/image'),
         'server': node.CreateAndAddServiceServerNode('std_srvs/srv/SetBool', '/introspect/enable'),
         'client': node.CreateAndAddServiceClientNode('std_srvs/srv/Trigger', '/introspect/trigger'),
     }
+    quiet = ros2vtk.vtkROS2NodeNode()
+    logic.GetScene().AddNode(quiet)
+    created['quiet_switch'] = quiet if quiet.SetStartTypeDescriptionService(False) else None
+    created['quiet_node'] = quiet if quiet.Create('slicer_quiet') else None
+    created['quiet_publisher'] = quiet.CreateAndAddPublisherNode('String', '/introspect/quiet')
     missing = [kind for kind, endpoint in created.items() if endpoint is None]
     print(json.dumps({'ready': not missing, 'missing': missing, 'node': node.GetROS2NodeName(),
                       'namespace': node.GetROS2NodeNamespace()}), flush=True)

@@ -1,4 +1,4 @@
-"""Introspection parity (issue 19, graph half): what `ros2 node info` shows for an rclpy node —
+"""Introspection parity (issue 19): what `ros2 node info` shows for an rclpy node —
 publishers, subscribers, service servers and clients with their types, read through rclpy's
 graph API (get_*_names_and_types_by_node) — comes out the same for our node.
 
@@ -7,6 +7,10 @@ Our node (introspection_runner.py: the VTK-wrapped API's default node /slicer) a
 for both and the lists are compared: first the endpoints we created, then the ones every rclpy
 node has by default (/rosout, /parameter_events, the parameter services), with the node's own
 name replaced by `~` so /slicer/get_parameters compares with /rclpy_introspect/get_parameters.
+
+Then the REP 2011 type description service both serve (~/get_type_description): the same rclpy
+process asks both nodes for every type they use, with the hash rosidl made for it, and our
+answers must equal rclpy's and hash (rosidl's calculate_type_hash) to rosidl's hash.
 """
 from __future__ import annotations
 
@@ -17,6 +21,7 @@ import pytest
 from conftest import BUILD, HERE, VENV_PYTHON, Ros, _domains
 
 OURS = '/slicer'
+QUIET = '/slicer_quiet'  # ours, created with start_type_description_service false
 RCLPY = '/rclpy_introspect'
 KINDS = ('publishers', 'subscribers', 'services', 'clients')
 
@@ -37,14 +42,16 @@ def split(info: dict, node: str) -> tuple[dict, dict]:
 
 @pytest.fixture(scope='module')
 def graph():
-    """Both nodes up, one query of the graph for both: {node: {kind: {name: [types]}}}."""
+    """Both nodes up (and our /slicer_quiet), one query of the graph for both:
+    {node: {kind: {name: [types]}}}, and under 'descriptions' what the `describe` query got
+    from each node's ~/get_type_description (introspection_peer.py)."""
     ros = Ros(next(_domains))
     try:
-        ours = ros.start(['/usr/bin/python3', str(HERE / 'introspection_runner.py'), '--seconds', '60'],
+        ours = ros.start(['/usr/bin/python3', str(HERE / 'introspection_runner.py'), '--seconds', '120'],
                          dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
         ros.wait_ready(ours)
         peer = ros.start([str(VENV_PYTHON), str(HERE / 'introspection_peer.py'), '--node', RCLPY[1:], 'node',
-                          '--seconds', '60'])
+                          '--seconds', '120'])
         ros.wait_ready(peer)
         query = ros.start([str(VENV_PYTHON), str(HERE / 'introspection_peer.py'), 'query', OURS, RCLPY,
                            '--wait', '30', '--settle', '3'])
@@ -53,6 +60,11 @@ def graph():
         result = json.loads(out.strip().splitlines()[-1])
         for node in (OURS, RCLPY):
             assert 'error' not in result[node], f'{node}: {result[node]}'
+        query = ros.start([str(VENV_PYTHON), str(HERE / 'introspection_peer.py'), 'describe', OURS, RCLPY, QUIET,
+                           '--types', *DESCRIBED])
+        code, out, err = ros.finish(query, timeout=120)
+        assert code == 0 and out.strip(), err
+        result['descriptions'] = json.loads(out.strip().splitlines()[-1])
         yield result
     finally:
         ros.close()
@@ -62,7 +74,8 @@ def test_rclpy_reference_node_shows_what_it_created(graph):
     theirs, _ = split(graph[RCLPY], RCLPY)
     assert theirs == {
         'publishers': {'/introspect/chatter': ['std_msgs/msg/String']},
-        'subscribers': {'/introspect/pose': ['geometry_msgs/msg/PoseStamped']},
+        'subscribers': {'/introspect/pose': ['geometry_msgs/msg/PoseStamped'],
+                        '/introspect/image': ['sensor_msgs/msg/Image']},
         'services': {'/introspect/enable': ['std_srvs/srv/SetBool']},
         'clients': {'/introspect/trigger': ['std_srvs/srv/Trigger']},
     }
@@ -76,28 +89,66 @@ def test_created_endpoints_match_rclpy(graph, kind):
 
 
 # The REP 2011 type description service rclpy nodes serve (start_type_description_service,
-# default true, on Kilted and Jazzy). Ours has none yet: the other half of issue 19's
-# "Introspection parity", a real service to write, not a missing announcement.
+# default true, on Kilted and Jazzy).
 TYPE_DESCRIPTION = '~/get_type_description'
+# Every type both nodes use: what they created, then what every node has (/rosout,
+# /parameter_events, the parameter and type description services).
+DESCRIBED = (
+    'std_msgs/msg/String', 'geometry_msgs/msg/PoseStamped', 'sensor_msgs/msg/Image',
+    'std_srvs/srv/SetBool', 'std_srvs/srv/Trigger',
+    'rcl_interfaces/msg/Log', 'rcl_interfaces/msg/ParameterEvent', 'rcl_interfaces/srv/GetParameters',
+    'rcl_interfaces/srv/SetParameters', 'type_description_interfaces/srv/GetTypeDescription',
+)
 
 
 @pytest.mark.parametrize('kind', KINDS)
 def test_default_endpoints_match_rclpy(graph, kind):
-    """/rosout, /parameter_events and the parameter services, as rclpy shows them (the type
-    description service apart: test_type_description_service_like_rclpy)."""
+    """/rosout, /parameter_events, the parameter and type description services, as rclpy shows them."""
     _, ours = split(graph[OURS], OURS)
     _, theirs = split(graph[RCLPY], RCLPY)
-    ours[kind].pop(TYPE_DESCRIPTION, None)
-    theirs[kind].pop(TYPE_DESCRIPTION, None)
     assert ours[kind] == theirs[kind], (
         f'missing on ours: {sorted(set(theirs[kind]) - set(ours[kind]))}; '
         f'extra on ours: {sorted(set(ours[kind]) - set(theirs[kind]))}')
 
 
-@pytest.mark.xfail(strict=True, reason='issue 19: our nodes do not serve the REP 2011 type description '
-                   'service (~/get_type_description) yet; remove this mark with the service')
 def test_type_description_service_like_rclpy(graph):
     _, ours = split(graph[OURS], OURS)
     _, theirs = split(graph[RCLPY], RCLPY)
     assert theirs['services'].get(TYPE_DESCRIPTION) == ['type_description_interfaces/srv/GetTypeDescription']
     assert ours['services'].get(TYPE_DESCRIPTION) == theirs['services'][TYPE_DESCRIPTION]
+
+
+@pytest.mark.parametrize('ros_type', DESCRIBED)
+def test_our_type_description_equals_rclpys(graph, ros_type):
+    """Our node's answer for a type it uses is rclpy's answer for the same type, field for field
+    (nested types, their references sorted by name, default values), and rosidl's
+    calculate_type_hash of it is rosidl's hash of the type."""
+    descriptions = graph['descriptions']
+    assert descriptions[RCLPY]['available'] and descriptions[OURS]['available'], descriptions
+    theirs = descriptions[RCLPY]['types'][ros_type]
+    ours = descriptions[OURS]['types'][ros_type]
+    assert theirs['successful'], theirs  # the reference itself knows the type
+    assert ours['successful'], ours['failure_reason']
+    assert ours['type_description'] == theirs['type_description']
+    assert ours['rclpy_hash'] == theirs['rclpy_hash'] == ours['asked_hash']
+    assert ours['type_description']['type_description']['type_name'] == ros_type
+    # type_sources were not asked for (include_type_sources false): empty on both.
+    assert ours['type_sources'] == theirs['type_sources'] == []
+    assert ours['extra_information'] == theirs['extra_information']
+
+
+@pytest.mark.parametrize('request_kind', ['unknown', 'malformed'])
+def test_unknown_or_malformed_hash_fails_like_rclpy(graph, request_kind):
+    ours = graph['descriptions'][OURS][request_kind]
+    theirs = graph['descriptions'][RCLPY][request_kind]
+    assert theirs['successful'] is False and theirs['failure_reason']
+    assert ours['successful'] is False
+    assert ours['failure_reason'] == theirs['failure_reason']
+    assert ours['type_description'] == theirs['type_description']
+
+
+def test_no_service_when_start_type_description_service_is_false(graph):
+    quiet = graph['descriptions'][QUIET]
+    assert QUIET + '/get_parameters' in quiet['services'], quiet
+    assert not quiet['available']
+    assert QUIET + '/get_type_description' not in quiet['services']

@@ -258,3 +258,31 @@ def test_scene_file_of_the_previous_version_loads(logic, ros2vtk, tmp_path):
     assert parameters.GetParameterNames() == 'robot_description'
     written = scene.WriteToXMLString()
     assert 'role="ROS2Node"' not in written and written.count('role="ros2Node"') == 5
+
+
+def test_type_description_service_switch_is_read_only_and_saved(logic, ros2vtk):
+    # rclpy's start_type_description_service: default true, read-only once the node exists.
+    import vtk
+    node = ros2vtk.vtkROS2NodeNode()
+    assert node.GetStartTypeDescriptionService()
+    default = vtk.vtkXMLDataElement()
+    node.WriteXML(default)
+    assert default.GetAttribute('startTypeDescriptionService') is None  # old files unchanged
+    assert node.SetStartTypeDescriptionService(False)
+    off = vtk.vtkXMLDataElement()
+    node.WriteXML(off)
+    assert off.GetAttribute('startTypeDescriptionService') == '0'
+    restored = ros2vtk.vtkROS2NodeNode()
+    assert restored.ReadXML(off) and not restored.GetStartTypeDescriptionService()
+
+    logic.GetScene().AddNode(node)
+    assert node.Create('no_type_descriptions_py')
+    assert not node.GetStartTypeDescriptionService()
+    assert node.PrintOwnParameter('start_type_description_service') == \
+        'start_type_description_service (bool): false'
+    assert not node.SetStartTypeDescriptionService(True)  # read-only after Create
+    assert not node.SetParameterAsBool('start_type_description_service', True)
+    served = logic.GetDefaultROS2Node()
+    assert served.GetStartTypeDescriptionService()
+    assert served.PrintOwnParameter('start_type_description_service') == \
+        'start_type_description_service (bool): true'

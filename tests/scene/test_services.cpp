@@ -122,7 +122,7 @@ TEST_F(ServiceTest, MalformedRequestsAreRejectedWithAReasonAndTheServerKeepsAnsw
   };
   static const ros2vtk::wire::ServiceTypeSupport hostile{ "std_srvs/srv/SetBool",
     [] { return static_cast<const ros2vtk::wire::MessageTypeSupport*>(&hostileRequest); },
-    [] { return realResponse; } };
+    [] { return realResponse; }, setBool->type_hash, setBool->description };
   auto rawClient = raw->create_service_client(hostile, "/hostile", ros2vtk::wire::QoS::services(), &error);
   ASSERT_TRUE(rawClient) << error;
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return rawClient->is_server_available(); }));

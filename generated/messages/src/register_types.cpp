@@ -227,6 +227,15 @@
 #include "ros2vtk/trajectory_msgs/msg/joint_trajectory_point.hpp"
 #include "ros2vtk/trajectory_msgs/msg/multi_dof_joint_trajectory.hpp"
 #include "ros2vtk/trajectory_msgs/msg/multi_dof_joint_trajectory_point.hpp"
+#include "ros2vtk/type_description_interfaces/msg/field.hpp"
+#include "ros2vtk/type_description_interfaces/msg/field_type.hpp"
+#include "ros2vtk/type_description_interfaces/msg/individual_type_description.hpp"
+#include "ros2vtk/type_description_interfaces/msg/key_value.hpp"
+#include "ros2vtk/type_description_interfaces/msg/type_description.hpp"
+#include "ros2vtk/type_description_interfaces/msg/type_source.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description__request.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description__response.hpp"
 #include "ros2vtk/unique_identifier_msgs/msg/uuid.hpp"
 #include "ros2vtk/visualization_msgs/msg/image_marker.hpp"
 #include "ros2vtk/visualization_msgs/msg/interactive_marker.hpp"
@@ -449,6 +458,14 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::JointTrajectoryPoint::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::MultiDOFJointTrajectory::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::trajectory_msgs::msg::MultiDOFJointTrajectoryPoint::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::Field::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::FieldType::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::IndividualTypeDescription::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::KeyValue::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::TypeDescription::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::msg::TypeSource::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::unique_identifier_msgs::msg::UUID::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::ImageMarker::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::visualization_msgs::msg::InteractiveMarker::type_support());
@@ -490,5 +507,6 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::Arrays::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::BasicTypes::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::Empty::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::visualization_msgs::srv::GetInteractiveMarkers::type_support());
 }

@@ -10,6 +10,7 @@
 #include "ros2vtk/wire/ParameterServer.hpp"
 #include "ros2vtk/wire/ROSClock.hpp"
 #include "ros2vtk/wire/TimeSource.hpp"
+#include "ros2vtk/wire/TypeDescriptionService.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/Participant.hpp"
@@ -63,6 +64,9 @@ public:
   uint64_t Tf2ClockJumps = 0; // Clock.jump_count() when the tf buffer was last cleared
   // Own parameters, tf2: released before the participant they live in.
   std::unique_ptr<ros2vtk::wire::ParameterServer> Parameters;
+  // REP 2011 ~/get_type_description; start_type_description_service's value at Create.
+  std::unique_ptr<ros2vtk::wire::TypeDescriptionService> TypeDescriptions;
+  bool StartTypeDescriptionServiceOnCreate = true;
   std::unique_ptr<ros2vtk::tf2::BufferCore> Tf2Buffer;
   std::unique_ptr<ros2vtk::tf2_ros::TransformListener> Tf2Listener;
   std::unique_ptr<ros2vtk::tf2_ros::TransformBroadcaster> Tf2Broadcasters[2]; // dynamic, static
@@ -85,6 +89,7 @@ public:
   {
     // The time source holds a callback in the parameter store: released first.
     this->TimeSource.reset();
+    this->TypeDescriptions.reset();
     this->Tf2Listener.reset();
     this->Tf2Broadcasters[0].reset();
     this->Tf2Broadcasters[1].reset();
@@ -165,6 +170,7 @@ bool vtkROS2NodeNode::Create(const char* nodeName, const char* nodeNamespace)
   {
     this->StartTimeSource();
   }
+  this->StartTypeDescriptionService();
   if (!*this->GetName())
   {
     this->SetName(nodeName);
@@ -309,6 +315,10 @@ int vtkROS2NodeNode::Spin()
   if (this->Internals->TimeSource)
   {
     handled += static_cast<int>(this->Internals->TimeSource->process());
+  }
+  if (this->Internals->TypeDescriptions)
+  {
+    handled += static_cast<int>(this->Internals->TypeDescriptions->process());
   }
   this->ClearTf2BufferOnClockJump();
   handled += this->SpinTf2Listener();
@@ -463,6 +473,11 @@ void vtkROS2NodeNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("ros2NodeNamespace", this->Internals->NodeNamespace.c_str());
   element->SetIntAttribute("created", this->IsCreated() ? 1 : 0);
   element->SetIntAttribute("useSimTime", this->GetUseSimTime() ? 1 : 0);
+  if (!this->Internals->StartTypeDescriptionServiceOnCreate)
+  {
+    // Written only when off, so files of nodes with the default stay as they were.
+    element->SetIntAttribute("startTypeDescriptionService", 0);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -488,6 +503,9 @@ bool vtkROS2NodeNode::ReadXML(vtkXMLDataElement* element)
   int useSimTime = 0;
   element->GetScalarAttribute("useSimTime", useSimTime);
   this->Internals->UseSimTimeOnCreate = useSimTime != 0;
+  int startTypeDescriptionService = 1;
+  element->GetScalarAttribute("startTypeDescriptionService", startTypeDescriptionService);
+  this->Internals->StartTypeDescriptionServiceOnCreate = startTypeDescriptionService != 0;
   return true;
 }
 
@@ -939,4 +957,54 @@ double vtkROS2NodeNode::GetNodeTime() const
 {
   // Divided, not multiplied by 1e-9: the quotient is the double nearest the exact time.
   return static_cast<double>(this->GetNodeTimeNanoseconds()) / 1e9;
+}
+
+//------------------------------------------------------------------------------
+// Type description service (REP 2011)
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::StartTypeDescriptionService()
+{
+  vtkInternals& internals = *this->Internals;
+  std::string error;
+  // As rclpy: the read-only parameter decides, declared with the value asked for before Create.
+  const bool enabled = internals.Parameters
+    ? ros2vtk::wire::TypeDescriptionService::enabled(
+        internals.Parameters->store(), internals.StartTypeDescriptionServiceOnCreate, &error)
+    : internals.StartTypeDescriptionServiceOnCreate;
+  if (!error.empty())
+  {
+    vtkWarningMacro("Create: ROS node '" << internals.NodeName << "': " << error);
+  }
+  if (!enabled)
+  {
+    return;
+  }
+  internals.TypeDescriptions = ros2vtk::wire::TypeDescriptionService::create(*internals.Participant, &error);
+  if (!internals.TypeDescriptions)
+  {
+    vtkWarningMacro("Create: ROS node '" << internals.NodeName
+                                         << "' serves no ~/get_type_description: " << error);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::SetStartTypeDescriptionService(bool start)
+{
+  if (this->Internals->Participant)
+  {
+    vtkErrorMacro("SetStartTypeDescriptionService: parameter "
+                  << ros2vtk::wire::TypeDescriptionService::kEnableParameter
+                  << " is read-only once ROS node '" << this->Internals->NodeName << "' is created");
+    return false;
+  }
+  this->Internals->StartTypeDescriptionServiceOnCreate = start;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::GetStartTypeDescriptionService() const
+{
+  return this->Internals->Participant ? this->Internals->TypeDescriptions != nullptr
+                                      : this->Internals->StartTypeDescriptionServiceOnCreate;
 }

@@ -256,6 +256,17 @@ public:
   ///@}
 
   ///@{
+  /// The REP 2011 type description service `~/get_type_description` that rclpy and rclcpp
+  /// nodes serve (tools learn the types our endpoints use from it), switched by the read-only
+  /// parameter `start_type_description_service` (default true), declared at Create with the
+  /// value set here. Set it before Create; after Create the set is refused (vtkErrorMacro, false).
+  /// Saved in scene files (attribute startTypeDescriptionService="0", written only when off).
+  /// Get: whether the node serves it (once created), or will at Create.
+  bool SetStartTypeDescriptionService(bool start);
+  bool GetStartTypeDescriptionService() const;
+  ///@}
+
+  ///@{
   /// Severity from which this node's warnings and errors are published on /rosout, with
   /// rcl_interfaces/msg/Log's values (10 debug, 20 info (rcl's default), 30 warn, 40 error,
   /// 50 fatal). False (vtkErrorMacro) before Create or for another value.
@@ -334,6 +345,8 @@ private:
   int SpinTf2Listener();
   /// Makes the time source (declares use_sim_time) once the parameter server exists.
   void StartTimeSource();
+  /// Declares start_type_description_service and, when it is true, serves ~/get_type_description.
+  void StartTypeDescriptionService();
   /// Clears the tf buffer when the clock changed source or went back since the last spin.
   void ClearTf2BufferOnClockJump();
   void CollectSpinChildren();

@@ -587,6 +587,7 @@ std::unique_ptr<Publisher> Participant::create_publisher(const MessageTypeSuppor
   {
     return nullptr;
   }
+  impl->type_registration = impl_->types.add(type.type_hash, type.description);
   return std::unique_ptr<Publisher>(new Publisher(std::move(impl)));
 }
 
@@ -604,7 +605,13 @@ std::unique_ptr<Subscription> Participant::create_subscription(const MessageType
   {
     return nullptr;
   }
+  impl->type_registration = impl_->types.add(type.type_hash, type.description);
   return std::unique_ptr<Subscription>(new Subscription(std::move(impl)));
+}
+
+const NodeTypeCache& Participant::type_cache() const
+{
+  return impl_->types;
 }
 
 WakeUp& Participant::wake_up()

@@ -4,6 +4,7 @@
 #define ros2vtk_wire_ParticipantImpl_hpp
 
 #include "GraphCache.hpp"
+#include "ros2vtk/wire/NodeTypeCache.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/QoS.hpp"
 
@@ -64,6 +65,7 @@ public:
   eprosima::fastdds::dds::Subscriber* subscriber = nullptr;
   WakeUp wake_up;
   GraphCache graph;
+  NodeTypeCache types; // what ~/get_type_description serves (every endpoint registers)
   // Link status (on_participant_discovery): remote participants alive, and lease expiries.
   mutable std::mutex peers_mutex;
   std::set<Gid> remote_participants;

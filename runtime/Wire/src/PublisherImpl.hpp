@@ -28,6 +28,7 @@ public:
   eprosima::fastdds::dds::Topic* dds_topic = nullptr;
   eprosima::fastdds::dds::DataWriter* writer = nullptr;
   std::atomic<uint64_t> published{ 0 };
+  NodeTypeCache::Registration type_registration; // the type, served while this exists
 };
 
 } // namespace wire

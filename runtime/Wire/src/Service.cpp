@@ -384,6 +384,7 @@ std::unique_ptr<ServiceServer> Participant::create_service_server(const ServiceT
   {
     return nullptr;
   }
+  impl->type_registration = impl_->types.add(type.type_hash, type.description);
   return std::unique_ptr<ServiceServer>(new ServiceServer(std::move(impl)));
 }
 
@@ -402,6 +403,7 @@ std::unique_ptr<ServiceClient> Participant::create_service_client(const ServiceT
   {
     return nullptr;
   }
+  impl->type_registration = impl_->types.add(type.type_hash, type.description);
   return std::unique_ptr<ServiceClient>(new ServiceClient(std::move(impl)));
 }
 

@@ -59,6 +59,7 @@ public:
   const ServiceTypeSupport& type;
   std::string name;
   ServiceEndpoints endpoints;
+  NodeTypeCache::Registration type_registration; // the service type, served while this exists
   std::mutex mutex;
   std::deque<ServiceRequest> queue;
   std::atomic<uint64_t> rejected{ 0 };
@@ -74,6 +75,7 @@ public:
   const ServiceTypeSupport& type;
   std::string name;
   ServiceEndpoints endpoints;
+  NodeTypeCache::Registration type_registration; // the service type, served while this exists
   std::mutex mutex;
   std::deque<ServiceResponse> queue;
 };

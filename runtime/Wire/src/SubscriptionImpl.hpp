@@ -33,6 +33,7 @@ public:
 
   Participant::Impl& owner;
   const MessageTypeSupport& type;
+  NodeTypeCache::Registration type_registration; // the type, served while this exists
   std::string topic;
   QoS qos;
   eprosima::fastdds::dds::Topic* dds_topic = nullptr;

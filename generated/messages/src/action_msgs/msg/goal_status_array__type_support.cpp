@@ -28,6 +28,38 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "status_list", 145, 0, 0, "action_msgs/msg/GoalStatus", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "goal_id", 1, 0, 0, "unique_identifier_msgs/msg/UUID", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "goal_info", 1, 0, 0, "action_msgs/msg/GoalInfo", "" },
+  { "status", 2, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "uuid", 51, 16, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1 },
+  { "action_msgs/msg/GoalStatus", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields3 },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields4 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "action_msgs/msg/GoalStatusArray", 1, kDescribedFields0 },
+  4,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -79,6 +111,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -38,6 +38,34 @@ const wire::ConstantInfo kConstants[] = {
   { "ERROR_GOAL_TERMINATED", wire::FieldType::Int8, "3" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "return_code", 2, 0, 0, "", "" },
+  { "goals_canceling", 145, 0, 0, "action_msgs/msg/GoalInfo", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "goal_id", 1, 0, 0, "unique_identifier_msgs/msg/UUID", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "uuid", 51, 16, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "action_msgs/srv/CancelGoal_Response", 2, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -89,6 +117,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

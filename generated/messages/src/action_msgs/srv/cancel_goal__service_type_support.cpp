@@ -19,10 +19,63 @@ const wire::MessageTypeSupport* response_type()
   return &CancelGoal_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "action_msgs/srv/CancelGoal_Request", "" },
+  { "response_message", 1, 0, 0, "action_msgs/srv/CancelGoal_Response", "" },
+  { "event_message", 1, 0, 0, "action_msgs/srv/CancelGoal_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "goal_id", 1, 0, 0, "unique_identifier_msgs/msg/UUID", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "action_msgs/srv/CancelGoal_Request", "" },
+  { "response", 97, 1, 0, "action_msgs/srv/CancelGoal_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "goal_info", 1, 0, 0, "action_msgs/msg/GoalInfo", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "return_code", 2, 0, 0, "", "" },
+  { "goals_canceling", 145, 0, 0, "action_msgs/msg/GoalInfo", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "uuid", 51, 16, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1 },
+  { "action_msgs/srv/CancelGoal_Event", 3, kDescribedFields2 },
+  { "action_msgs/srv/CancelGoal_Request", 1, kDescribedFields3 },
+  { "action_msgs/srv/CancelGoal_Response", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields5 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields7 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "action_msgs/srv/CancelGoal", 3, kDescribedFields0 },
+  7,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "action_msgs/srv/CancelGoal",
   &request_type,
   &response_type,
+  "RIHS01_573d8b0a534451d7bc2ac8c5ffde8ac14b8593b7001175d0cd6516dcbeb8689a",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

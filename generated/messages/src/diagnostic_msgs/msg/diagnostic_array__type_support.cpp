@@ -36,6 +36,43 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "status", 145, 0, 0, "diagnostic_msgs/msg/DiagnosticStatus", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "level", 16, 0, 0, "", "" },
+  { "name", 17, 0, 0, "", "" },
+  { "message", 17, 0, 0, "", "" },
+  { "hardware_id", 17, 0, 0, "", "" },
+  { "values", 145, 0, 0, "diagnostic_msgs/msg/KeyValue", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "key", 17, 0, 0, "", "" },
+  { "value", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields2 },
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields3 },
+  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "diagnostic_msgs/msg/DiagnosticArray", 2, kDescribedFields0 },
+  4,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -87,6 +124,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -47,6 +47,28 @@ const wire::ConstantInfo kConstants[] = {
   { "STALE", wire::FieldType::Byte, "3" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "level", 16, 0, 0, "", "" },
+  { "name", 17, 0, 0, "", "" },
+  { "message", 17, 0, 0, "", "" },
+  { "hardware_id", 17, 0, 0, "", "" },
+  { "values", 145, 0, 0, "diagnostic_msgs/msg/KeyValue", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "key", 17, 0, 0, "", "" },
+  { "value", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields1 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields0 },
+  1,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -98,6 +120,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

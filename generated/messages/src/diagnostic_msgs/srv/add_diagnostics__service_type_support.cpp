@@ -19,10 +19,54 @@ const wire::MessageTypeSupport* response_type()
   return &AddDiagnostics_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "diagnostic_msgs/srv/AddDiagnostics_Request", "" },
+  { "response_message", 1, 0, 0, "diagnostic_msgs/srv/AddDiagnostics_Response", "" },
+  { "event_message", 1, 0, 0, "diagnostic_msgs/srv/AddDiagnostics_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "diagnostic_msgs/srv/AddDiagnostics_Request", "" },
+  { "response", 97, 1, 0, "diagnostic_msgs/srv/AddDiagnostics_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "load_namespace", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "success", 15, 0, 0, "", "" },
+  { "message", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "diagnostic_msgs/srv/AddDiagnostics_Event", 3, kDescribedFields2 },
+  { "diagnostic_msgs/srv/AddDiagnostics_Request", 1, kDescribedFields3 },
+  { "diagnostic_msgs/srv/AddDiagnostics_Response", 2, kDescribedFields4 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "diagnostic_msgs/srv/AddDiagnostics", 3, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "diagnostic_msgs/srv/AddDiagnostics",
   &request_type,
   &response_type,
+  "RIHS01_6b91084c9f8bffd9b0c1f6883e0e8e491a831f4fc6c6aec77a4efaf3f1ea90b5",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -34,6 +34,34 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "id", 17, 0, 0, "", "" },
+  { "passed", 16, 0, 0, "", "" },
+  { "status", 145, 0, 0, "diagnostic_msgs/msg/DiagnosticStatus", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "level", 16, 0, 0, "", "" },
+  { "name", 17, 0, 0, "", "" },
+  { "message", 17, 0, 0, "", "" },
+  { "hardware_id", 17, 0, 0, "", "" },
+  { "values", 145, 0, 0, "diagnostic_msgs/msg/KeyValue", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "key", 17, 0, 0, "", "" },
+  { "value", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields1 },
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "diagnostic_msgs/srv/SelfTest_Response", 3, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -85,6 +113,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

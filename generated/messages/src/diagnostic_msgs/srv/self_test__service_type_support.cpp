@@ -19,10 +19,68 @@ const wire::MessageTypeSupport* response_type()
   return &SelfTest_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "diagnostic_msgs/srv/SelfTest_Request", "" },
+  { "response_message", 1, 0, 0, "diagnostic_msgs/srv/SelfTest_Response", "" },
+  { "event_message", 1, 0, 0, "diagnostic_msgs/srv/SelfTest_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "level", 16, 0, 0, "", "" },
+  { "name", 17, 0, 0, "", "" },
+  { "message", 17, 0, 0, "", "" },
+  { "hardware_id", 17, 0, 0, "", "" },
+  { "values", 145, 0, 0, "diagnostic_msgs/msg/KeyValue", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "key", 17, 0, 0, "", "" },
+  { "value", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "diagnostic_msgs/srv/SelfTest_Request", "" },
+  { "response", 97, 1, 0, "diagnostic_msgs/srv/SelfTest_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "id", 17, 0, 0, "", "" },
+  { "passed", 16, 0, 0, "", "" },
+  { "status", 145, 0, 0, "diagnostic_msgs/msg/DiagnosticStatus", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields2 },
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields3 },
+  { "diagnostic_msgs/srv/SelfTest_Event", 3, kDescribedFields4 },
+  { "diagnostic_msgs/srv/SelfTest_Request", 1, kDescribedFields5 },
+  { "diagnostic_msgs/srv/SelfTest_Response", 3, kDescribedFields6 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "diagnostic_msgs/srv/SelfTest", 3, kDescribedFields0 },
+  7,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "diagnostic_msgs/srv/SelfTest",
   &request_type,
   &response_type,
+  "RIHS01_df1e4e54a814a16ccc77471e9239618d46818e8d0e3b45ad6f8c34c6e2abfef6",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

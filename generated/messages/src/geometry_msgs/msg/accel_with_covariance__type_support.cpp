@@ -31,6 +31,31 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "accel", 1, 0, 0, "geometry_msgs/msg/Accel", "" },
+  { "covariance", 59, 36, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "linear", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "angular", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "geometry_msgs/msg/Accel", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "geometry_msgs/msg/AccelWithCovariance", 2, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -82,6 +107,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

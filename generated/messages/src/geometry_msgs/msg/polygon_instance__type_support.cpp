@@ -28,6 +28,30 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "polygon", 1, 0, 0, "geometry_msgs/msg/Polygon", "" },
+  { "id", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "x", 10, 0, 0, "", "" },
+  { "y", 10, 0, 0, "", "" },
+  { "z", 10, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "points", 145, 0, 0, "geometry_msgs/msg/Point32", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "geometry_msgs/msg/Point32", 3, kDescribedFields1 },
+  { "geometry_msgs/msg/Polygon", 1, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "geometry_msgs/msg/PolygonInstance", 2, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -79,6 +103,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -31,6 +31,38 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+  { "covariance", 59, 36, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "geometry_msgs/msg/Point", 3, kDescribedFields1 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields2 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -82,6 +114,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -28,6 +28,26 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "force", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "torque", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields1 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "geometry_msgs/msg/Wrench", 2, kDescribedFields0 },
+  1,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -79,6 +99,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

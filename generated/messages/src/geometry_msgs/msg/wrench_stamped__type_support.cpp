@@ -33,6 +33,41 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "wrench", 1, 0, 0, "geometry_msgs/msg/Wrench", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "force", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "torque", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Wrench", 2, kDescribedFields3 },
+  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "geometry_msgs/msg/WrenchStamped", 2, kDescribedFields0 },
+  4,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -84,6 +119,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -56,6 +56,18 @@ const wire::ConstantInfo kConstants[] = {
   { "TRANSITION_CALLBACK_ERROR", wire::FieldType::UInt8, "99" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "id", 3, 0, 0, "", "" },
+  { "label", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -107,6 +119,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -19,10 +19,58 @@ const wire::MessageTypeSupport* response_type()
   return &ChangeState_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "lifecycle_msgs/srv/ChangeState_Request", "" },
+  { "response_message", 1, 0, 0, "lifecycle_msgs/srv/ChangeState_Response", "" },
+  { "event_message", 1, 0, 0, "lifecycle_msgs/srv/ChangeState_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "id", 3, 0, 0, "", "" },
+  { "label", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "lifecycle_msgs/srv/ChangeState_Request", "" },
+  { "response", 97, 1, 0, "lifecycle_msgs/srv/ChangeState_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "transition", 1, 0, 0, "lifecycle_msgs/msg/Transition", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "success", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields2 },
+  { "lifecycle_msgs/srv/ChangeState_Event", 3, kDescribedFields3 },
+  { "lifecycle_msgs/srv/ChangeState_Request", 1, kDescribedFields4 },
+  { "lifecycle_msgs/srv/ChangeState_Response", 1, kDescribedFields5 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "lifecycle_msgs/srv/ChangeState", 3, kDescribedFields0 },
+  6,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "lifecycle_msgs/srv/ChangeState",
   &request_type,
   &response_type,
+  "RIHS01_356fe34f0475a43acf54542013af4167b0e729f77ea22ffb045c6ad8e20668e5",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

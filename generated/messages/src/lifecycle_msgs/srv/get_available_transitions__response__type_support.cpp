@@ -28,6 +28,35 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "available_transitions", 145, 0, 0, "lifecycle_msgs/msg/TransitionDescription", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "id", 3, 0, 0, "", "" },
+  { "label", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "id", 3, 0, 0, "", "" },
+  { "label", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "transition", 1, 0, 0, "lifecycle_msgs/msg/Transition", "" },
+  { "start_state", 1, 0, 0, "lifecycle_msgs/msg/State", "" },
+  { "goal_state", 1, 0, 0, "lifecycle_msgs/msg/State", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "lifecycle_msgs/msg/State", 2, kDescribedFields1 },
+  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields2 },
+  { "lifecycle_msgs/msg/TransitionDescription", 3, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Response", 1, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -79,6 +108,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

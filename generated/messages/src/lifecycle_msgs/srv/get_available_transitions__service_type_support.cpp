@@ -19,10 +19,69 @@ const wire::MessageTypeSupport* response_type()
   return &GetAvailableTransitions_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Request", "" },
+  { "response_message", 1, 0, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Response", "" },
+  { "event_message", 1, 0, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "id", 3, 0, 0, "", "" },
+  { "label", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "id", 3, 0, 0, "", "" },
+  { "label", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "transition", 1, 0, 0, "lifecycle_msgs/msg/Transition", "" },
+  { "start_state", 1, 0, 0, "lifecycle_msgs/msg/State", "" },
+  { "goal_state", 1, 0, 0, "lifecycle_msgs/msg/State", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Request", "" },
+  { "response", 97, 1, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "available_transitions", 145, 0, 0, "lifecycle_msgs/msg/TransitionDescription", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "lifecycle_msgs/msg/State", 2, kDescribedFields2 },
+  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields3 },
+  { "lifecycle_msgs/msg/TransitionDescription", 3, kDescribedFields4 },
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Event", 3, kDescribedFields5 },
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Request", 1, kDescribedFields6 },
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Response", 1, kDescribedFields7 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "lifecycle_msgs/srv/GetAvailableTransitions", 3, kDescribedFields0 },
+  8,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "lifecycle_msgs/srv/GetAvailableTransitions",
   &request_type,
   &response_type,
+  "RIHS01_59b7ecefce0982a8a844b9f2c4f14764c1c4543cc55e72924e2aa4adad83e9bc",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

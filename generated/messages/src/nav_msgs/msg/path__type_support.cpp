@@ -36,6 +36,53 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "poses", 145, 0, 0, "geometry_msgs/msg/PoseStamped", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
+  { "geometry_msgs/msg/PoseStamped", 2, kDescribedFields4 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5 },
+  { "std_msgs/msg/Header", 2, kDescribedFields6 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "nav_msgs/msg/Path", 2, kDescribedFields0 },
+  6,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -87,6 +134,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

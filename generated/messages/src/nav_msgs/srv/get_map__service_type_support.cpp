@@ -19,10 +19,90 @@ const wire::MessageTypeSupport* response_type()
   return &GetMap_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "nav_msgs/srv/GetMap_Request", "" },
+  { "response_message", 1, 0, 0, "nav_msgs/srv/GetMap_Response", "" },
+  { "event_message", 1, 0, 0, "nav_msgs/srv/GetMap_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "map_load_time", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "resolution", 10, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "origin", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "info", 1, 0, 0, "nav_msgs/msg/MapMetaData", "" },
+  { "data", 146, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "nav_msgs/srv/GetMap_Request", "" },
+  { "response", 97, 1, 0, "nav_msgs/srv/GetMap_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields9[] = {
+  { "map", 1, 0, 0, "nav_msgs/msg/OccupancyGrid", "" },
+};
+const wire::TypeDescriptionField kDescribedFields10[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields11[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields4 },
+  { "nav_msgs/msg/MapMetaData", 5, kDescribedFields5 },
+  { "nav_msgs/msg/OccupancyGrid", 3, kDescribedFields6 },
+  { "nav_msgs/srv/GetMap_Event", 3, kDescribedFields7 },
+  { "nav_msgs/srv/GetMap_Request", 1, kDescribedFields8 },
+  { "nav_msgs/srv/GetMap_Response", 1, kDescribedFields9 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields10 },
+  { "std_msgs/msg/Header", 2, kDescribedFields11 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "nav_msgs/srv/GetMap", 3, kDescribedFields0 },
+  11,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "nav_msgs/srv/GetMap",
   &request_type,
   &response_type,
+  "RIHS01_c8ae77c9995b3554b5ba80e4d4d443f970ac65143102a1d893ec24fc07b31147",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

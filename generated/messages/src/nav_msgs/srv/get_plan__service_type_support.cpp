@@ -19,10 +19,88 @@ const wire::MessageTypeSupport* response_type()
   return &GetPlan_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "nav_msgs/srv/GetPlan_Request", "" },
+  { "response_message", 1, 0, 0, "nav_msgs/srv/GetPlan_Response", "" },
+  { "event_message", 1, 0, 0, "nav_msgs/srv/GetPlan_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "poses", 145, 0, 0, "geometry_msgs/msg/PoseStamped", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "nav_msgs/srv/GetPlan_Request", "" },
+  { "response", 97, 1, 0, "nav_msgs/srv/GetPlan_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "start", 1, 0, 0, "geometry_msgs/msg/PoseStamped", "" },
+  { "goal", 1, 0, 0, "geometry_msgs/msg/PoseStamped", "" },
+  { "tolerance", 10, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields9[] = {
+  { "plan", 1, 0, 0, "nav_msgs/msg/Path", "" },
+};
+const wire::TypeDescriptionField kDescribedFields10[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields11[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
+  { "geometry_msgs/msg/PoseStamped", 2, kDescribedFields4 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5 },
+  { "nav_msgs/msg/Path", 2, kDescribedFields6 },
+  { "nav_msgs/srv/GetPlan_Event", 3, kDescribedFields7 },
+  { "nav_msgs/srv/GetPlan_Request", 3, kDescribedFields8 },
+  { "nav_msgs/srv/GetPlan_Response", 1, kDescribedFields9 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields10 },
+  { "std_msgs/msg/Header", 2, kDescribedFields11 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "nav_msgs/srv/GetPlan", 3, kDescribedFields0 },
+  11,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "nav_msgs/srv/GetPlan",
   &request_type,
   &response_type,
+  "RIHS01_234f7aff100f5edb8150366601687b027bcdc253db47decb88fff846193fe5e8",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -29,6 +29,18 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "names", 161, 0, 0, "", "" },
+  { "prefixes", 161, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/msg/ListParametersResult", 2, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -80,6 +92,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -51,6 +51,30 @@ const wire::ConstantInfo kConstants[] = {
   { "FATAL", wire::FieldType::UInt8, "50" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "level", 3, 0, 0, "", "" },
+  { "name", 17, 0, 0, "", "" },
+  { "msg", 17, 0, 0, "", "" },
+  { "file", 17, 0, 0, "", "" },
+  { "function", 17, 0, 0, "", "" },
+  { "line", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/msg/Log", 7, kDescribedFields0 },
+  1,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -102,6 +126,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

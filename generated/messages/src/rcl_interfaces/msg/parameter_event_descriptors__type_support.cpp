@@ -40,6 +40,44 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "new_parameters", 145, 0, 0, "rcl_interfaces/msg/ParameterDescriptor", "" },
+  { "changed_parameters", 145, 0, 0, "rcl_interfaces/msg/ParameterDescriptor", "" },
+  { "deleted_parameters", 145, 0, 0, "rcl_interfaces/msg/ParameterDescriptor", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "from_value", 11, 0, 0, "", "" },
+  { "to_value", 11, 0, 0, "", "" },
+  { "step", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "from_value", 8, 0, 0, "", "" },
+  { "to_value", 8, 0, 0, "", "" },
+  { "step", 9, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "type", 3, 0, 0, "", "" },
+  { "description", 17, 0, 0, "", "" },
+  { "additional_constraints", 17, 0, 0, "", "" },
+  { "read_only", 15, 0, 0, "", "False" },
+  { "dynamic_typing", 15, 0, 0, "", "False" },
+  { "floating_point_range", 97, 1, 0, "rcl_interfaces/msg/FloatingPointRange", "" },
+  { "integer_range", 97, 1, 0, "rcl_interfaces/msg/IntegerRange", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields1 },
+  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields2 },
+  { "rcl_interfaces/msg/ParameterDescriptor", 8, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/msg/ParameterEventDescriptors", 3, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -91,6 +129,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

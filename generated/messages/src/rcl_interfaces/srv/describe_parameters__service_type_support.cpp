@@ -19,10 +19,76 @@ const wire::MessageTypeSupport* response_type()
   return &DescribeParameters_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "rcl_interfaces/srv/DescribeParameters_Request", "" },
+  { "response_message", 1, 0, 0, "rcl_interfaces/srv/DescribeParameters_Response", "" },
+  { "event_message", 1, 0, 0, "rcl_interfaces/srv/DescribeParameters_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "from_value", 11, 0, 0, "", "" },
+  { "to_value", 11, 0, 0, "", "" },
+  { "step", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "from_value", 8, 0, 0, "", "" },
+  { "to_value", 8, 0, 0, "", "" },
+  { "step", 9, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "type", 3, 0, 0, "", "" },
+  { "description", 17, 0, 0, "", "" },
+  { "additional_constraints", 17, 0, 0, "", "" },
+  { "read_only", 15, 0, 0, "", "False" },
+  { "dynamic_typing", 15, 0, 0, "", "False" },
+  { "floating_point_range", 97, 1, 0, "rcl_interfaces/msg/FloatingPointRange", "" },
+  { "integer_range", 97, 1, 0, "rcl_interfaces/msg/IntegerRange", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "rcl_interfaces/srv/DescribeParameters_Request", "" },
+  { "response", 97, 1, 0, "rcl_interfaces/srv/DescribeParameters_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "names", 161, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "descriptors", 145, 0, 0, "rcl_interfaces/msg/ParameterDescriptor", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields2 },
+  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields3 },
+  { "rcl_interfaces/msg/ParameterDescriptor", 8, kDescribedFields4 },
+  { "rcl_interfaces/srv/DescribeParameters_Event", 3, kDescribedFields5 },
+  { "rcl_interfaces/srv/DescribeParameters_Request", 1, kDescribedFields6 },
+  { "rcl_interfaces/srv/DescribeParameters_Response", 1, kDescribedFields7 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/DescribeParameters", 3, kDescribedFields0 },
+  8,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "rcl_interfaces/srv/DescribeParameters",
   &request_type,
   &response_type,
+  "RIHS01_845b484d71eb0673dae682f2e3ba3c4851a65a3dcfb97bddd82c5b57e91e4cff",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

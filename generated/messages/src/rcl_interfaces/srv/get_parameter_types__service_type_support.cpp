@@ -19,10 +19,53 @@ const wire::MessageTypeSupport* response_type()
   return &GetParameterTypes_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "rcl_interfaces/srv/GetParameterTypes_Request", "" },
+  { "response_message", 1, 0, 0, "rcl_interfaces/srv/GetParameterTypes_Response", "" },
+  { "event_message", 1, 0, 0, "rcl_interfaces/srv/GetParameterTypes_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "rcl_interfaces/srv/GetParameterTypes_Request", "" },
+  { "response", 97, 1, 0, "rcl_interfaces/srv/GetParameterTypes_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "names", 161, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "types", 147, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "rcl_interfaces/srv/GetParameterTypes_Event", 3, kDescribedFields2 },
+  { "rcl_interfaces/srv/GetParameterTypes_Request", 1, kDescribedFields3 },
+  { "rcl_interfaces/srv/GetParameterTypes_Response", 1, kDescribedFields4 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/GetParameterTypes", 3, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "rcl_interfaces/srv/GetParameterTypes",
   &request_type,
   &response_type,
+  "RIHS01_da199c878688b3e530bdfe3ca8f74cb9fa0c303101e980a9e8f260e25e1c80ca",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

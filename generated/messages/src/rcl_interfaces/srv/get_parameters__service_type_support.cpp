@@ -19,10 +19,66 @@ const wire::MessageTypeSupport* response_type()
   return &GetParameters_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "rcl_interfaces/srv/GetParameters_Request", "" },
+  { "response_message", 1, 0, 0, "rcl_interfaces/srv/GetParameters_Response", "" },
+  { "event_message", 1, 0, 0, "rcl_interfaces/srv/GetParameters_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "type", 3, 0, 0, "", "" },
+  { "bool_value", 15, 0, 0, "", "" },
+  { "integer_value", 8, 0, 0, "", "" },
+  { "double_value", 11, 0, 0, "", "" },
+  { "string_value", 17, 0, 0, "", "" },
+  { "byte_array_value", 160, 0, 0, "", "" },
+  { "bool_array_value", 159, 0, 0, "", "" },
+  { "integer_array_value", 152, 0, 0, "", "" },
+  { "double_array_value", 155, 0, 0, "", "" },
+  { "string_array_value", 161, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "rcl_interfaces/srv/GetParameters_Request", "" },
+  { "response", 97, 1, 0, "rcl_interfaces/srv/GetParameters_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "names", 161, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "values", 145, 0, 0, "rcl_interfaces/msg/ParameterValue", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields2 },
+  { "rcl_interfaces/srv/GetParameters_Event", 3, kDescribedFields3 },
+  { "rcl_interfaces/srv/GetParameters_Request", 1, kDescribedFields4 },
+  { "rcl_interfaces/srv/GetParameters_Response", 1, kDescribedFields5 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/GetParameters", 3, kDescribedFields0 },
+  6,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "rcl_interfaces/srv/GetParameters",
   &request_type,
   &response_type,
+  "RIHS01_bf9803d5c74cf989a5de3e0c2e99444599a627c7ff75f97b8c05b01003675cbc",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

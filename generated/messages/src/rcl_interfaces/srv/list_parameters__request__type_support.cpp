@@ -30,6 +30,18 @@ const wire::ConstantInfo kConstants[] = {
   { "DEPTH_RECURSIVE", wire::FieldType::UInt64, "0" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "prefixes", 161, 0, 0, "", "" },
+  { "depth", 9, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/ListParameters_Request", 2, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -81,6 +93,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -19,10 +19,59 @@ const wire::MessageTypeSupport* response_type()
   return &ListParameters_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "rcl_interfaces/srv/ListParameters_Request", "" },
+  { "response_message", 1, 0, 0, "rcl_interfaces/srv/ListParameters_Response", "" },
+  { "event_message", 1, 0, 0, "rcl_interfaces/srv/ListParameters_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "names", 161, 0, 0, "", "" },
+  { "prefixes", 161, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "rcl_interfaces/srv/ListParameters_Request", "" },
+  { "response", 97, 1, 0, "rcl_interfaces/srv/ListParameters_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "prefixes", 161, 0, 0, "", "" },
+  { "depth", 9, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "result", 1, 0, 0, "rcl_interfaces/msg/ListParametersResult", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/ListParametersResult", 2, kDescribedFields2 },
+  { "rcl_interfaces/srv/ListParameters_Event", 3, kDescribedFields3 },
+  { "rcl_interfaces/srv/ListParameters_Request", 2, kDescribedFields4 },
+  { "rcl_interfaces/srv/ListParameters_Response", 1, kDescribedFields5 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/ListParameters", 3, kDescribedFields0 },
+  6,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "rcl_interfaces/srv/ListParameters",
   &request_type,
   &response_type,
+  "RIHS01_3e6062bfbb27bfb8730d4cef2558221f51a11646d78e7bb30a1e83afac3aad9d",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

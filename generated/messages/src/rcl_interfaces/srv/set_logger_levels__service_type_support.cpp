@@ -19,10 +19,63 @@ const wire::MessageTypeSupport* response_type()
   return &SetLoggerLevels_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "rcl_interfaces/srv/SetLoggerLevels_Request", "" },
+  { "response_message", 1, 0, 0, "rcl_interfaces/srv/SetLoggerLevels_Response", "" },
+  { "event_message", 1, 0, 0, "rcl_interfaces/srv/SetLoggerLevels_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "level", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "successful", 15, 0, 0, "", "" },
+  { "reason", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "rcl_interfaces/srv/SetLoggerLevels_Request", "" },
+  { "response", 97, 1, 0, "rcl_interfaces/srv/SetLoggerLevels_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "levels", 145, 0, 0, "rcl_interfaces/msg/LoggerLevel", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "results", 145, 0, 0, "rcl_interfaces/msg/SetLoggerLevelsResult", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/LoggerLevel", 2, kDescribedFields2 },
+  { "rcl_interfaces/msg/SetLoggerLevelsResult", 2, kDescribedFields3 },
+  { "rcl_interfaces/srv/SetLoggerLevels_Event", 3, kDescribedFields4 },
+  { "rcl_interfaces/srv/SetLoggerLevels_Request", 1, kDescribedFields5 },
+  { "rcl_interfaces/srv/SetLoggerLevels_Response", 1, kDescribedFields6 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/SetLoggerLevels", 3, kDescribedFields0 },
+  7,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "rcl_interfaces/srv/SetLoggerLevels",
   &request_type,
   &response_type,
+  "RIHS01_3ff86cb4e91fbf9abae15c234ecc874448de6ece8e193401c077cf116e4f6d78",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

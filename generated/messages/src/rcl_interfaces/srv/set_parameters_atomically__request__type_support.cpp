@@ -28,6 +28,37 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "parameters", 145, 0, 0, "rcl_interfaces/msg/Parameter", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "value", 1, 0, 0, "rcl_interfaces/msg/ParameterValue", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "type", 3, 0, 0, "", "" },
+  { "bool_value", 15, 0, 0, "", "" },
+  { "integer_value", 8, 0, 0, "", "" },
+  { "double_value", 11, 0, 0, "", "" },
+  { "string_value", 17, 0, 0, "", "" },
+  { "byte_array_value", 160, 0, 0, "", "" },
+  { "bool_array_value", 159, 0, 0, "", "" },
+  { "integer_array_value", 152, 0, 0, "", "" },
+  { "double_array_value", 155, 0, 0, "", "" },
+  { "string_array_value", 161, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rcl_interfaces/srv/SetParametersAtomically_Request", 1, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -79,6 +110,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

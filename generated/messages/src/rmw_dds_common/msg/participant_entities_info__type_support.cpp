@@ -36,6 +36,31 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "gid", 1, 0, 0, "rmw_dds_common/msg/Gid", "" },
+  { "node_entities_info_seq", 145, 0, 0, "rmw_dds_common/msg/NodeEntitiesInfo", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "data", 51, 16, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "node_namespace", 21, 0, 256, "", "" },
+  { "node_name", 21, 0, 256, "", "" },
+  { "reader_gid_seq", 145, 0, 0, "rmw_dds_common/msg/Gid", "" },
+  { "writer_gid_seq", 145, 0, 0, "rmw_dds_common/msg/Gid", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "rmw_dds_common/msg/Gid", 1, kDescribedFields1 },
+  { "rmw_dds_common/msg/NodeEntitiesInfo", 4, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "rmw_dds_common/msg/ParticipantEntitiesInfo", 2, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -87,6 +112,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

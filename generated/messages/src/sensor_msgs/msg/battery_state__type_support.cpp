@@ -102,6 +102,44 @@ const wire::ConstantInfo kConstants[] = {
   { "POWER_SUPPLY_TECHNOLOGY_VRLA", wire::FieldType::UInt8, "8" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "voltage", 10, 0, 0, "", "" },
+  { "temperature", 10, 0, 0, "", "" },
+  { "current", 10, 0, 0, "", "" },
+  { "charge", 10, 0, 0, "", "" },
+  { "capacity", 10, 0, 0, "", "" },
+  { "design_capacity", 10, 0, 0, "", "" },
+  { "percentage", 10, 0, 0, "", "" },
+  { "power_supply_status", 3, 0, 0, "", "" },
+  { "power_supply_health", 3, 0, 0, "", "" },
+  { "power_supply_technology", 3, 0, 0, "", "" },
+  { "present", 15, 0, 0, "", "" },
+  { "cell_voltage", 154, 0, 0, "", "" },
+  { "cell_temperature", 154, 0, 0, "", "" },
+  { "location", 17, 0, 0, "", "" },
+  { "serial_number", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/BatteryState", 16, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -153,6 +191,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

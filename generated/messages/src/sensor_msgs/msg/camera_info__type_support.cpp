@@ -72,6 +72,47 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "distortion_model", 17, 0, 0, "", "" },
+  { "d", 155, 0, 0, "", "" },
+  { "k", 59, 9, 0, "", "" },
+  { "r", 59, 9, 0, "", "" },
+  { "p", 59, 12, 0, "", "" },
+  { "binning_x", 7, 0, 0, "", "" },
+  { "binning_y", 7, 0, 0, "", "" },
+  { "roi", 1, 0, 0, "sensor_msgs/msg/RegionOfInterest", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x_offset", 7, 0, 0, "", "" },
+  { "y_offset", 7, 0, 0, "", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "do_rectify", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields2 },
+  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/CameraInfo", 11, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -123,6 +164,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -62,6 +62,48 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+  { "orientation_covariance", 59, 9, 0, "", "" },
+  { "angular_velocity", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "angular_velocity_covariance", 59, 9, 0, "", "" },
+  { "linear_acceleration", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "linear_acceleration_covariance", 59, 9, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields3 },
+  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/Imu", 7, kDescribedFields0 },
+  4,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -113,6 +155,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

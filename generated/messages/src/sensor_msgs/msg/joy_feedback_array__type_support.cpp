@@ -28,6 +28,25 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "array", 145, 0, 0, "sensor_msgs/msg/JoyFeedback", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "type", 3, 0, 0, "", "" },
+  { "id", 3, 0, 0, "", "" },
+  { "intensity", 10, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "sensor_msgs/msg/JoyFeedback", 3, kDescribedFields1 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/JoyFeedbackArray", 1, kDescribedFields0 },
+  1,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -79,6 +98,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -63,6 +63,42 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "angle_min", 10, 0, 0, "", "" },
+  { "angle_max", 10, 0, 0, "", "" },
+  { "angle_increment", 10, 0, 0, "", "" },
+  { "time_increment", 10, 0, 0, "", "" },
+  { "scan_time", 10, 0, 0, "", "" },
+  { "range_min", 10, 0, 0, "", "" },
+  { "range_max", 10, 0, 0, "", "" },
+  { "ranges", 145, 0, 0, "sensor_msgs/msg/LaserEcho", "" },
+  { "intensities", 145, 0, 0, "sensor_msgs/msg/LaserEcho", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "echoes", 154, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "sensor_msgs/msg/LaserEcho", 1, kDescribedFields2 },
+  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/MultiEchoLaserScan", 10, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -114,6 +150,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

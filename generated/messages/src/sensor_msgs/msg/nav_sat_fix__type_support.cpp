@@ -58,6 +58,40 @@ const wire::ConstantInfo kConstants[] = {
   { "COVARIANCE_TYPE_KNOWN", wire::FieldType::UInt8, "3" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "status", 1, 0, 0, "sensor_msgs/msg/NavSatStatus", "" },
+  { "latitude", 11, 0, 0, "", "" },
+  { "longitude", 11, 0, 0, "", "" },
+  { "altitude", 11, 0, 0, "", "" },
+  { "position_covariance", 59, 9, 0, "", "" },
+  { "position_covariance_type", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "status", 2, 0, 0, "", "-2" },
+  { "service", 5, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "sensor_msgs/msg/NavSatStatus", 2, kDescribedFields2 },
+  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/NavSatFix", 7, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -109,6 +143,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

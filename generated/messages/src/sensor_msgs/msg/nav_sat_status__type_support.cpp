@@ -36,6 +36,18 @@ const wire::ConstantInfo kConstants[] = {
   { "SERVICE_GALILEO", wire::FieldType::UInt16, "8" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "status", 2, 0, 0, "", "-2" },
+  { "service", 5, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/NavSatStatus", 2, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -87,6 +99,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

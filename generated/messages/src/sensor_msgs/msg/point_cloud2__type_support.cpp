@@ -60,6 +60,44 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "fields", 145, 0, 0, "sensor_msgs/msg/PointField", "" },
+  { "is_bigendian", 15, 0, 0, "", "" },
+  { "point_step", 7, 0, 0, "", "" },
+  { "row_step", 7, 0, 0, "", "" },
+  { "data", 147, 0, 0, "", "" },
+  { "is_dense", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "offset", 7, 0, 0, "", "" },
+  { "datatype", 3, 0, 0, "", "" },
+  { "count", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "sensor_msgs/msg/PointField", 4, kDescribedFields2 },
+  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/PointCloud2", 9, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -111,6 +149,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

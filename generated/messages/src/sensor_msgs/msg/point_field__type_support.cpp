@@ -40,6 +40,20 @@ const wire::ConstantInfo kConstants[] = {
   { "FLOAT64", wire::FieldType::UInt8, "8" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "offset", 7, 0, 0, "", "" },
+  { "datatype", 3, 0, 0, "", "" },
+  { "count", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/msg/PointField", 4, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -91,6 +105,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

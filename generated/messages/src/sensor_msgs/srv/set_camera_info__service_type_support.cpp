@@ -19,10 +19,81 @@ const wire::MessageTypeSupport* response_type()
   return &SetCameraInfo_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "sensor_msgs/srv/SetCameraInfo_Request", "" },
+  { "response_message", 1, 0, 0, "sensor_msgs/srv/SetCameraInfo_Response", "" },
+  { "event_message", 1, 0, 0, "sensor_msgs/srv/SetCameraInfo_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "distortion_model", 17, 0, 0, "", "" },
+  { "d", 155, 0, 0, "", "" },
+  { "k", 59, 9, 0, "", "" },
+  { "r", 59, 9, 0, "", "" },
+  { "p", 59, 12, 0, "", "" },
+  { "binning_x", 7, 0, 0, "", "" },
+  { "binning_y", 7, 0, 0, "", "" },
+  { "roi", 1, 0, 0, "sensor_msgs/msg/RegionOfInterest", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x_offset", 7, 0, 0, "", "" },
+  { "y_offset", 7, 0, 0, "", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "do_rectify", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "sensor_msgs/srv/SetCameraInfo_Request", "" },
+  { "response", 97, 1, 0, "sensor_msgs/srv/SetCameraInfo_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "camera_info", 1, 0, 0, "sensor_msgs/msg/CameraInfo", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "success", 15, 0, 0, "", "" },
+  { "status_message", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "sensor_msgs/msg/CameraInfo", 11, kDescribedFields2 },
+  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields3 },
+  { "sensor_msgs/srv/SetCameraInfo_Event", 3, kDescribedFields4 },
+  { "sensor_msgs/srv/SetCameraInfo_Request", 1, kDescribedFields5 },
+  { "sensor_msgs/srv/SetCameraInfo_Response", 2, kDescribedFields6 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7 },
+  { "std_msgs/msg/Header", 2, kDescribedFields8 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "sensor_msgs/srv/SetCameraInfo", 3, kDescribedFields0 },
+  8,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "sensor_msgs/srv/SetCameraInfo",
   &request_type,
   &response_type,
+  "RIHS01_a10cca5d33dc637c8d49db50ab288701a3592bb9cd854f2f16a0659613b68984",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -39,6 +39,30 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "triangles", 145, 0, 0, "shape_msgs/msg/MeshTriangle", "" },
+  { "vertices", 145, 0, 0, "geometry_msgs/msg/Point", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "vertex_indices", 55, 3, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "geometry_msgs/msg/Point", 3, kDescribedFields1 },
+  { "shape_msgs/msg/MeshTriangle", 1, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "shape_msgs/msg/Mesh", 2, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -90,6 +114,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

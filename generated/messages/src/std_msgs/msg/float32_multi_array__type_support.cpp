@@ -31,6 +31,31 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "layout", 1, 0, 0, "std_msgs/msg/MultiArrayLayout", "" },
+  { "data", 154, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "label", 17, 0, 0, "", "" },
+  { "size", 7, 0, 0, "", "" },
+  { "stride", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "dim", 145, 0, 0, "std_msgs/msg/MultiArrayDimension", "" },
+  { "data_offset", 7, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "std_msgs/msg/MultiArrayDimension", 3, kDescribedFields1 },
+  { "std_msgs/msg/MultiArrayLayout", 2, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "std_msgs/msg/Float32MultiArray", 2, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -82,6 +107,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -19,10 +19,54 @@ const wire::MessageTypeSupport* response_type()
   return &Trigger_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "std_srvs/srv/Trigger_Request", "" },
+  { "response_message", 1, 0, 0, "std_srvs/srv/Trigger_Response", "" },
+  { "event_message", 1, 0, 0, "std_srvs/srv/Trigger_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "std_srvs/srv/Trigger_Request", "" },
+  { "response", 97, 1, 0, "std_srvs/srv/Trigger_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "success", 15, 0, 0, "", "" },
+  { "message", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
+  { "std_srvs/srv/Trigger_Event", 3, kDescribedFields3 },
+  { "std_srvs/srv/Trigger_Request", 1, kDescribedFields4 },
+  { "std_srvs/srv/Trigger_Response", 2, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "std_srvs/srv/Trigger", 3, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "std_srvs/srv/Trigger",
   &request_type,
   &response_type,
+  "RIHS01_eeff2cd6fa5ad9d27cdf4dec64818317839b62f212a91e6b5304b634b2062c5f",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -56,6 +56,54 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "image", 1, 0, 0, "sensor_msgs/msg/Image", "" },
+  { "f", 10, 0, 0, "", "" },
+  { "t", 10, 0, 0, "", "" },
+  { "valid_window", 1, 0, 0, "sensor_msgs/msg/RegionOfInterest", "" },
+  { "min_disparity", 10, 0, 0, "", "" },
+  { "max_disparity", 10, 0, 0, "", "" },
+  { "delta_d", 10, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "encoding", 17, 0, 0, "", "" },
+  { "is_bigendian", 3, 0, 0, "", "" },
+  { "step", 7, 0, 0, "", "" },
+  { "data", 147, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x_offset", 7, 0, 0, "", "" },
+  { "y_offset", 7, 0, 0, "", "" },
+  { "height", 7, 0, 0, "", "" },
+  { "width", 7, 0, 0, "", "" },
+  { "do_rectify", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "sensor_msgs/msg/Image", 7, kDescribedFields2 },
+  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields3 },
+  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "stereo_msgs/msg/DisparityImage", 8, kDescribedFields0 },
+  4,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -107,6 +155,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -221,6 +221,86 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "bool_values", 111, 3, 0, "", "" },
+  { "byte_values", 112, 3, 0, "", "" },
+  { "char_values", 99, 3, 0, "", "" },
+  { "float32_values", 106, 3, 0, "", "" },
+  { "float64_values", 107, 3, 0, "", "" },
+  { "int8_values", 98, 3, 0, "", "" },
+  { "uint8_values", 99, 3, 0, "", "" },
+  { "int16_values", 100, 3, 0, "", "" },
+  { "uint16_values", 101, 3, 0, "", "" },
+  { "int32_values", 102, 3, 0, "", "" },
+  { "uint32_values", 103, 3, 0, "", "" },
+  { "int64_values", 104, 3, 0, "", "" },
+  { "uint64_values", 105, 3, 0, "", "" },
+  { "string_values", 113, 3, 0, "", "" },
+  { "basic_types_values", 97, 3, 0, "test_msgs/msg/BasicTypes", "" },
+  { "constants_values", 97, 3, 0, "test_msgs/msg/Constants", "" },
+  { "defaults_values", 97, 3, 0, "test_msgs/msg/Defaults", "" },
+  { "bool_values_default", 111, 3, 0, "", "[False, True, False]" },
+  { "byte_values_default", 112, 3, 0, "", "[0, 1, 255]" },
+  { "char_values_default", 99, 3, 0, "", "[0, 1, 127]" },
+  { "float32_values_default", 106, 3, 0, "", "[1.125, 0.0, -1.125]" },
+  { "float64_values_default", 107, 3, 0, "", "[3.1415, 0.0, -3.1415]" },
+  { "int8_values_default", 98, 3, 0, "", "[0, 127, -128]" },
+  { "uint8_values_default", 99, 3, 0, "", "[0, 1, 255]" },
+  { "int16_values_default", 100, 3, 0, "", "[0, 32767, -32768]" },
+  { "uint16_values_default", 101, 3, 0, "", "[0, 1, 65535]" },
+  { "int32_values_default", 102, 3, 0, "", "[0, 2147483647, -2147483648]" },
+  { "uint32_values_default", 103, 3, 0, "", "[0, 1, 4294967295]" },
+  { "int64_values_default", 104, 3, 0, "", "[0, 9223372036854775807, -9223372036854775808]" },
+  { "uint64_values_default", 105, 3, 0, "", "[0, 1, 18446744073709551615]" },
+  { "string_values_default", 113, 3, 0, "", "['', 'max value', 'min value']" },
+  { "alignment_check", 6, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "bool_value", 15, 0, 0, "", "" },
+  { "byte_value", 16, 0, 0, "", "" },
+  { "char_value", 3, 0, 0, "", "" },
+  { "float32_value", 10, 0, 0, "", "" },
+  { "float64_value", 11, 0, 0, "", "" },
+  { "int8_value", 2, 0, 0, "", "" },
+  { "uint8_value", 3, 0, 0, "", "" },
+  { "int16_value", 4, 0, 0, "", "" },
+  { "uint16_value", 5, 0, 0, "", "" },
+  { "int32_value", 6, 0, 0, "", "" },
+  { "uint32_value", 7, 0, 0, "", "" },
+  { "int64_value", 8, 0, 0, "", "" },
+  { "uint64_value", 9, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "bool_value", 15, 0, 0, "", "True" },
+  { "byte_value", 16, 0, 0, "", "50" },
+  { "char_value", 3, 0, 0, "", "100" },
+  { "float32_value", 10, 0, 0, "", "1.125" },
+  { "float64_value", 11, 0, 0, "", "1.125" },
+  { "int8_value", 2, 0, 0, "", "-50" },
+  { "uint8_value", 3, 0, 0, "", "200" },
+  { "int16_value", 4, 0, 0, "", "-1000" },
+  { "uint16_value", 5, 0, 0, "", "2000" },
+  { "int32_value", 6, 0, 0, "", "-30000" },
+  { "uint32_value", 7, 0, 0, "", "60000" },
+  { "int64_value", 8, 0, 0, "", "-40000000" },
+  { "uint64_value", 9, 0, 0, "", "50000000" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields1 },
+  { "test_msgs/msg/Constants", 1, kDescribedFields2 },
+  { "test_msgs/msg/Defaults", 13, kDescribedFields3 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/msg/BoundedSequences", 32, kDescribedFields0 },
+  3,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -272,6 +352,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

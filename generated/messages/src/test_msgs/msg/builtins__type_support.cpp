@@ -33,6 +33,30 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "duration_value", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
+  { "time_value", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/msg/Builtins", 2, kDescribedFields0 },
+  2,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -84,6 +108,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -56,6 +56,29 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "bool_value", 15, 0, 0, "", "True" },
+  { "byte_value", 16, 0, 0, "", "50" },
+  { "char_value", 3, 0, 0, "", "100" },
+  { "float32_value", 10, 0, 0, "", "1.125" },
+  { "float64_value", 11, 0, 0, "", "1.125" },
+  { "int8_value", 2, 0, 0, "", "-50" },
+  { "uint8_value", 3, 0, 0, "", "200" },
+  { "int16_value", 4, 0, 0, "", "-1000" },
+  { "uint16_value", 5, 0, 0, "", "2000" },
+  { "int32_value", 6, 0, 0, "", "-30000" },
+  { "uint32_value", 7, 0, 0, "", "60000" },
+  { "int64_value", 8, 0, 0, "", "-40000000" },
+  { "uint64_value", 9, 0, 0, "", "50000000" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/msg/Defaults", 13, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -107,6 +130,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -25,6 +25,35 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "basic_types_value", 1, 0, 0, "test_msgs/msg/BasicTypes", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "bool_value", 15, 0, 0, "", "" },
+  { "byte_value", 16, 0, 0, "", "" },
+  { "char_value", 3, 0, 0, "", "" },
+  { "float32_value", 10, 0, 0, "", "" },
+  { "float64_value", 11, 0, 0, "", "" },
+  { "int8_value", 2, 0, 0, "", "" },
+  { "uint8_value", 3, 0, 0, "", "" },
+  { "int16_value", 4, 0, 0, "", "" },
+  { "uint16_value", 5, 0, 0, "", "" },
+  { "int32_value", 6, 0, 0, "", "" },
+  { "uint32_value", 7, 0, 0, "", "" },
+  { "int64_value", 8, 0, 0, "", "" },
+  { "uint64_value", 9, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields1 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/msg/Nested", 1, kDescribedFields0 },
+  1,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -76,6 +105,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -57,6 +57,28 @@ const wire::ConstantInfo kConstants[] = {
   { "STRING_CONST", wire::FieldType::String, "Hello world!" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "string_value", 17, 0, 0, "", "" },
+  { "string_value_default1", 17, 0, 0, "", "Hello world!" },
+  { "string_value_default2", 17, 0, 0, "", "Hello'world!" },
+  { "string_value_default3", 17, 0, 0, "", "Hello\"world!" },
+  { "string_value_default4", 17, 0, 0, "", "Hello'world!" },
+  { "string_value_default5", 17, 0, 0, "", "Hello\"world!" },
+  { "bounded_string_value", 21, 0, 22, "", "" },
+  { "bounded_string_value_default1", 21, 0, 22, "", "Hello world!" },
+  { "bounded_string_value_default2", 21, 0, 22, "", "Hello'world!" },
+  { "bounded_string_value_default3", 21, 0, 22, "", "Hello\"world!" },
+  { "bounded_string_value_default4", 21, 0, 22, "", "Hello'world!" },
+  { "bounded_string_value_default5", 21, 0, 22, "", "Hello\"world!" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/msg/Strings", 12, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -108,6 +130,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

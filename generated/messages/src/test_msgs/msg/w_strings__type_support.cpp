@@ -47,6 +47,23 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "wstring_value", 18, 0, 0, "", "" },
+  { "wstring_value_default1", 18, 0, 0, "", "Hello world!" },
+  { "wstring_value_default2", 18, 0, 0, "", "Hell\303\266 w\303\266rld!" },
+  { "wstring_value_default3", 18, 0, 0, "", "\343\203\217\343\203\255\343\203\274\343\203\257\343\203\274\343\203\253\343\203\211" },
+  { "array_of_wstrings", 66, 3, 0, "", "" },
+  { "bounded_sequence_of_wstrings", 114, 3, 0, "", "" },
+  { "unbounded_sequence_of_wstrings", 162, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/msg/WStrings", 7, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -98,6 +115,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

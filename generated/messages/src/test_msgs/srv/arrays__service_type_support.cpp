@@ -19,10 +19,149 @@ const wire::MessageTypeSupport* response_type()
   return &Arrays_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "test_msgs/srv/Arrays_Request", "" },
+  { "response_message", 1, 0, 0, "test_msgs/srv/Arrays_Response", "" },
+  { "event_message", 1, 0, 0, "test_msgs/srv/Arrays_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "bool_value", 15, 0, 0, "", "" },
+  { "byte_value", 16, 0, 0, "", "" },
+  { "char_value", 3, 0, 0, "", "" },
+  { "float32_value", 10, 0, 0, "", "" },
+  { "float64_value", 11, 0, 0, "", "" },
+  { "int8_value", 2, 0, 0, "", "" },
+  { "uint8_value", 3, 0, 0, "", "" },
+  { "int16_value", 4, 0, 0, "", "" },
+  { "uint16_value", 5, 0, 0, "", "" },
+  { "int32_value", 6, 0, 0, "", "" },
+  { "uint32_value", 7, 0, 0, "", "" },
+  { "int64_value", 8, 0, 0, "", "" },
+  { "uint64_value", 9, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "bool_value", 15, 0, 0, "", "True" },
+  { "byte_value", 16, 0, 0, "", "50" },
+  { "char_value", 3, 0, 0, "", "100" },
+  { "float32_value", 10, 0, 0, "", "1.125" },
+  { "float64_value", 11, 0, 0, "", "1.125" },
+  { "int8_value", 2, 0, 0, "", "-50" },
+  { "uint8_value", 3, 0, 0, "", "200" },
+  { "int16_value", 4, 0, 0, "", "-1000" },
+  { "uint16_value", 5, 0, 0, "", "2000" },
+  { "int32_value", 6, 0, 0, "", "-30000" },
+  { "uint32_value", 7, 0, 0, "", "60000" },
+  { "int64_value", 8, 0, 0, "", "-40000000" },
+  { "uint64_value", 9, 0, 0, "", "50000000" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "test_msgs/srv/Arrays_Request", "" },
+  { "response", 97, 1, 0, "test_msgs/srv/Arrays_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "bool_values", 63, 3, 0, "", "" },
+  { "byte_values", 64, 3, 0, "", "" },
+  { "char_values", 51, 3, 0, "", "" },
+  { "float32_values", 58, 3, 0, "", "" },
+  { "float64_values", 59, 3, 0, "", "" },
+  { "int8_values", 50, 3, 0, "", "" },
+  { "uint8_values", 51, 3, 0, "", "" },
+  { "int16_values", 52, 3, 0, "", "" },
+  { "uint16_values", 53, 3, 0, "", "" },
+  { "int32_values", 54, 3, 0, "", "" },
+  { "uint32_values", 55, 3, 0, "", "" },
+  { "int64_values", 56, 3, 0, "", "" },
+  { "uint64_values", 57, 3, 0, "", "" },
+  { "string_values", 65, 3, 0, "", "" },
+  { "basic_types_values", 49, 3, 0, "test_msgs/msg/BasicTypes", "" },
+  { "constants_values", 49, 3, 0, "test_msgs/msg/Constants", "" },
+  { "defaults_values", 49, 3, 0, "test_msgs/msg/Defaults", "" },
+  { "bool_values_default", 63, 3, 0, "", "[False, True, False]" },
+  { "byte_values_default", 64, 3, 0, "", "[0, 1, 255]" },
+  { "char_values_default", 51, 3, 0, "", "[0, 1, 127]" },
+  { "float32_values_default", 58, 3, 0, "", "[1.125, 0.0, -1.125]" },
+  { "float64_values_default", 59, 3, 0, "", "[3.1415, 0.0, -3.1415]" },
+  { "int8_values_default", 50, 3, 0, "", "[0, 127, -128]" },
+  { "uint8_values_default", 51, 3, 0, "", "[0, 1, 255]" },
+  { "int16_values_default", 52, 3, 0, "", "[0, 32767, -32768]" },
+  { "uint16_values_default", 53, 3, 0, "", "[0, 1, 65535]" },
+  { "int32_values_default", 54, 3, 0, "", "[0, 2147483647, -2147483648]" },
+  { "uint32_values_default", 55, 3, 0, "", "[0, 1, 4294967295]" },
+  { "int64_values_default", 56, 3, 0, "", "[0, 9223372036854775807, -9223372036854775808]" },
+  { "uint64_values_default", 57, 3, 0, "", "[0, 1, 18446744073709551615]" },
+  { "string_values_default", 65, 3, 0, "", "['', 'max value', 'min value']" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "bool_values", 63, 3, 0, "", "" },
+  { "byte_values", 64, 3, 0, "", "" },
+  { "char_values", 51, 3, 0, "", "" },
+  { "float32_values", 58, 3, 0, "", "" },
+  { "float64_values", 59, 3, 0, "", "" },
+  { "int8_values", 50, 3, 0, "", "" },
+  { "uint8_values", 51, 3, 0, "", "" },
+  { "int16_values", 52, 3, 0, "", "" },
+  { "uint16_values", 53, 3, 0, "", "" },
+  { "int32_values", 54, 3, 0, "", "" },
+  { "uint32_values", 55, 3, 0, "", "" },
+  { "int64_values", 56, 3, 0, "", "" },
+  { "uint64_values", 57, 3, 0, "", "" },
+  { "string_values", 65, 3, 0, "", "" },
+  { "basic_types_values", 49, 3, 0, "test_msgs/msg/BasicTypes", "" },
+  { "constants_values", 49, 3, 0, "test_msgs/msg/Constants", "" },
+  { "defaults_values", 49, 3, 0, "test_msgs/msg/Defaults", "" },
+  { "bool_values_default", 63, 3, 0, "", "[False, True, False]" },
+  { "byte_values_default", 64, 3, 0, "", "[0, 1, 255]" },
+  { "char_values_default", 51, 3, 0, "", "[0, 1, 127]" },
+  { "float32_values_default", 58, 3, 0, "", "[1.125, 0.0, -1.125]" },
+  { "float64_values_default", 59, 3, 0, "", "[3.1415, 0.0, -3.1415]" },
+  { "int8_values_default", 50, 3, 0, "", "[0, 127, -128]" },
+  { "uint8_values_default", 51, 3, 0, "", "[0, 1, 255]" },
+  { "int16_values_default", 52, 3, 0, "", "[0, 32767, -32768]" },
+  { "uint16_values_default", 53, 3, 0, "", "[0, 1, 65535]" },
+  { "int32_values_default", 54, 3, 0, "", "[0, 2147483647, -2147483648]" },
+  { "uint32_values_default", 55, 3, 0, "", "[0, 1, 4294967295]" },
+  { "int64_values_default", 56, 3, 0, "", "[0, 9223372036854775807, -9223372036854775808]" },
+  { "uint64_values_default", 57, 3, 0, "", "[0, 1, 18446744073709551615]" },
+  { "string_values_default", 65, 3, 0, "", "['', 'max value', 'min value']" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields3 },
+  { "test_msgs/msg/Constants", 1, kDescribedFields4 },
+  { "test_msgs/msg/Defaults", 13, kDescribedFields5 },
+  { "test_msgs/srv/Arrays_Event", 3, kDescribedFields6 },
+  { "test_msgs/srv/Arrays_Request", 31, kDescribedFields7 },
+  { "test_msgs/srv/Arrays_Response", 31, kDescribedFields8 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/srv/Arrays", 3, kDescribedFields0 },
+  8,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "test_msgs/srv/Arrays",
   &request_type,
   &response_type,
+  "RIHS01_ae66e13b3ad1520bcd9fa5751c4a4521222bf27c2f845d79de0c76e4cbb41080",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

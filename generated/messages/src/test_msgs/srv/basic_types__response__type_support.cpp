@@ -59,6 +59,30 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "bool_value", 15, 0, 0, "", "" },
+  { "byte_value", 16, 0, 0, "", "" },
+  { "char_value", 3, 0, 0, "", "" },
+  { "float32_value", 10, 0, 0, "", "" },
+  { "float64_value", 11, 0, 0, "", "" },
+  { "int8_value", 2, 0, 0, "", "" },
+  { "uint8_value", 3, 0, 0, "", "" },
+  { "int16_value", 4, 0, 0, "", "" },
+  { "uint16_value", 5, 0, 0, "", "" },
+  { "int32_value", 6, 0, 0, "", "" },
+  { "uint32_value", 7, 0, 0, "", "" },
+  { "int64_value", 8, 0, 0, "", "" },
+  { "uint64_value", 9, 0, 0, "", "" },
+  { "string_value", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/srv/BasicTypes_Response", 14, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -110,6 +134,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

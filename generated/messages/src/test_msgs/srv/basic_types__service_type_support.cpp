@@ -19,10 +19,79 @@ const wire::MessageTypeSupport* response_type()
   return &BasicTypes_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "test_msgs/srv/BasicTypes_Request", "" },
+  { "response_message", 1, 0, 0, "test_msgs/srv/BasicTypes_Response", "" },
+  { "event_message", 1, 0, 0, "test_msgs/srv/BasicTypes_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "test_msgs/srv/BasicTypes_Request", "" },
+  { "response", 97, 1, 0, "test_msgs/srv/BasicTypes_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "bool_value", 15, 0, 0, "", "" },
+  { "byte_value", 16, 0, 0, "", "" },
+  { "char_value", 3, 0, 0, "", "" },
+  { "float32_value", 10, 0, 0, "", "" },
+  { "float64_value", 11, 0, 0, "", "" },
+  { "int8_value", 2, 0, 0, "", "" },
+  { "uint8_value", 3, 0, 0, "", "" },
+  { "int16_value", 4, 0, 0, "", "" },
+  { "uint16_value", 5, 0, 0, "", "" },
+  { "int32_value", 6, 0, 0, "", "" },
+  { "uint32_value", 7, 0, 0, "", "" },
+  { "int64_value", 8, 0, 0, "", "" },
+  { "uint64_value", 9, 0, 0, "", "" },
+  { "string_value", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "bool_value", 15, 0, 0, "", "" },
+  { "byte_value", 16, 0, 0, "", "" },
+  { "char_value", 3, 0, 0, "", "" },
+  { "float32_value", 10, 0, 0, "", "" },
+  { "float64_value", 11, 0, 0, "", "" },
+  { "int8_value", 2, 0, 0, "", "" },
+  { "uint8_value", 3, 0, 0, "", "" },
+  { "int16_value", 4, 0, 0, "", "" },
+  { "uint16_value", 5, 0, 0, "", "" },
+  { "int32_value", 6, 0, 0, "", "" },
+  { "uint32_value", 7, 0, 0, "", "" },
+  { "int64_value", 8, 0, 0, "", "" },
+  { "uint64_value", 9, 0, 0, "", "" },
+  { "string_value", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
+  { "test_msgs/srv/BasicTypes_Event", 3, kDescribedFields3 },
+  { "test_msgs/srv/BasicTypes_Request", 14, kDescribedFields4 },
+  { "test_msgs/srv/BasicTypes_Response", 14, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/srv/BasicTypes", 3, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "test_msgs/srv/BasicTypes",
   &request_type,
   &response_type,
+  "RIHS01_da348697437c103cc9a9322ac1bdbdcf8eb11a85de22f7f2492ca1df416e1a5f",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

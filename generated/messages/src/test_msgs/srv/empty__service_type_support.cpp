@@ -19,10 +19,53 @@ const wire::MessageTypeSupport* response_type()
   return &Empty_Response::type_support();
 }
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "request_message", 1, 0, 0, "test_msgs/srv/Empty_Request", "" },
+  { "response_message", 1, 0, 0, "test_msgs/srv/Empty_Response", "" },
+  { "event_message", 1, 0, 0, "test_msgs/srv/Empty_Event", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "event_type", 3, 0, 0, "", "" },
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "client_gid", 51, 16, 0, "", "" },
+  { "sequence_number", 8, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "info", 1, 0, 0, "service_msgs/msg/ServiceEventInfo", "" },
+  { "request", 97, 1, 0, "test_msgs/srv/Empty_Request", "" },
+  { "response", 97, 1, 0, "test_msgs/srv/Empty_Response", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
+  { "test_msgs/srv/Empty_Event", 3, kDescribedFields3 },
+  { "test_msgs/srv/Empty_Request", 1, kDescribedFields4 },
+  { "test_msgs/srv/Empty_Response", 1, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "test_msgs/srv/Empty", 3, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 const wire::ServiceTypeSupport kServiceTypeSupport = {
   "test_msgs/srv/Empty",
   &request_type,
   &response_type,
+  "RIHS01_9737679d04950fecab59b9e82ec2bf285f58446ce8e48d287e13b8a9f19f0823",
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

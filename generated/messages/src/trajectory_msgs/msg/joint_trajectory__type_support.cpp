@@ -42,6 +42,44 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "joint_names", 161, 0, 0, "", "" },
+  { "points", 145, 0, 0, "trajectory_msgs/msg/JointTrajectoryPoint", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "positions", 155, 0, 0, "", "" },
+  { "velocities", 155, 0, 0, "", "" },
+  { "accelerations", 155, 0, 0, "", "" },
+  { "effort", 155, 0, 0, "", "" },
+  { "time_from_start", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
+  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+  { "trajectory_msgs/msg/JointTrajectoryPoint", 5, kDescribedFields4 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "trajectory_msgs/msg/JointTrajectory", 3, kDescribedFields0 },
+  4,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -93,6 +131,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

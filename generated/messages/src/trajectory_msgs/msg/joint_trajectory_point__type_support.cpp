@@ -49,6 +49,28 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr, nullptr, nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "positions", 155, 0, 0, "", "" },
+  { "velocities", 155, 0, 0, "", "" },
+  { "accelerations", 155, 0, 0, "", "" },
+  { "effort", 155, 0, 0, "", "" },
+  { "time_from_start", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "trajectory_msgs/msg/JointTrajectoryPoint", 5, kDescribedFields0 },
+  1,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -100,6 +122,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -42,6 +42,66 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "joint_names", 161, 0, 0, "", "" },
+  { "points", 145, 0, 0, "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "translation", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "rotation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "linear", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "angular", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "transforms", 145, 0, 0, "geometry_msgs/msg/Transform", "" },
+  { "velocities", 145, 0, 0, "geometry_msgs/msg/Twist", "" },
+  { "accelerations", 145, 0, 0, "geometry_msgs/msg/Twist", "" },
+  { "time_from_start", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields3 },
+  { "geometry_msgs/msg/Transform", 2, kDescribedFields4 },
+  { "geometry_msgs/msg/Twist", 2, kDescribedFields5 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields6 },
+  { "std_msgs/msg/Header", 2, kDescribedFields7 },
+  { "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint", 4, kDescribedFields8 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "trajectory_msgs/msg/MultiDOFJointTrajectory", 3, kDescribedFields0 },
+  8,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -93,6 +153,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -92,6 +92,59 @@ const wire::ConstantInfo kConstants[] = {
   { "REMOVE", wire::FieldType::Int32, "1" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "ns", 17, 0, 0, "", "" },
+  { "id", 6, 0, 0, "", "" },
+  { "type", 6, 0, 0, "", "" },
+  { "action", 6, 0, 0, "", "" },
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "scale", 10, 0, 0, "", "" },
+  { "outline_color", 1, 0, 0, "std_msgs/msg/ColorRGBA", "" },
+  { "filled", 3, 0, 0, "", "" },
+  { "fill_color", 1, 0, 0, "std_msgs/msg/ColorRGBA", "" },
+  { "lifetime", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
+  { "points", 145, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "outline_colors", 145, 0, 0, "std_msgs/msg/ColorRGBA", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "r", 10, 0, 0, "", "" },
+  { "g", 10, 0, 0, "", "" },
+  { "b", 10, 0, 0, "", "" },
+  { "a", 10, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields3 },
+  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields4 },
+  { "std_msgs/msg/Header", 2, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "visualization_msgs/msg/ImageMarker", 13, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -143,6 +196,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

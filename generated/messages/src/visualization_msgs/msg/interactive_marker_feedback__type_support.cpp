@@ -68,6 +68,55 @@ const wire::ConstantInfo kConstants[] = {
   { "MOUSE_UP", wire::FieldType::UInt8, "5" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "client_id", 17, 0, 0, "", "" },
+  { "marker_name", 17, 0, 0, "", "" },
+  { "control_name", 17, 0, 0, "", "" },
+  { "event_type", 3, 0, 0, "", "" },
+  { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+  { "menu_entry_id", 7, 0, 0, "", "" },
+  { "mouse_point", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "mouse_point_valid", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields4 },
+  { "std_msgs/msg/Header", 2, kDescribedFields5 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "visualization_msgs/msg/InteractiveMarkerFeedback", 9, kDescribedFields0 },
+  5,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -119,6 +168,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

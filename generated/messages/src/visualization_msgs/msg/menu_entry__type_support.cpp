@@ -38,6 +38,21 @@ const wire::ConstantInfo kConstants[] = {
   { "ROSLAUNCH", wire::FieldType::UInt8, "2" },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "id", 7, 0, 0, "", "" },
+  { "parent_id", 7, 0, 0, "", "" },
+  { "title", 17, 0, 0, "", "" },
+  { "command", 17, 0, 0, "", "" },
+  { "command_type", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "visualization_msgs/msg/MenuEntry", 5, kDescribedFields0 },
+  0,
+  nullptr,
+};
+
 void* create_message()
 {
   return new Message();
@@ -89,6 +104,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

@@ -31,6 +31,133 @@ const wire::FieldInfo kFields[] = {
     nullptr, nullptr },
 };
 
+// REP 2011 type description (the type, then the types it references sorted by name), as
+// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+const wire::TypeDescriptionField kDescribedFields0[] = {
+  { "sequence_number", 9, 0, 0, "", "" },
+  { "markers", 145, 0, 0, "visualization_msgs/msg/InteractiveMarker", "" },
+};
+const wire::TypeDescriptionField kDescribedFields1[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields2[] = {
+  { "sec", 6, 0, 0, "", "" },
+  { "nanosec", 7, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields3[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields4[] = {
+  { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+};
+const wire::TypeDescriptionField kDescribedFields5[] = {
+  { "x", 11, 0, 0, "", "0.0" },
+  { "y", 11, 0, 0, "", "0.0" },
+  { "z", 11, 0, 0, "", "0.0" },
+  { "w", 11, 0, 0, "", "1.0" },
+};
+const wire::TypeDescriptionField kDescribedFields6[] = {
+  { "x", 11, 0, 0, "", "" },
+  { "y", 11, 0, 0, "", "" },
+  { "z", 11, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields7[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "format", 17, 0, 0, "", "" },
+  { "data", 147, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields8[] = {
+  { "r", 10, 0, 0, "", "" },
+  { "g", 10, 0, 0, "", "" },
+  { "b", 10, 0, 0, "", "" },
+  { "a", 10, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields9[] = {
+  { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
+  { "frame_id", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields10[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+  { "name", 17, 0, 0, "", "" },
+  { "description", 17, 0, 0, "", "" },
+  { "scale", 10, 0, 0, "", "" },
+  { "menu_entries", 145, 0, 0, "visualization_msgs/msg/MenuEntry", "" },
+  { "controls", 145, 0, 0, "visualization_msgs/msg/InteractiveMarkerControl", "" },
+};
+const wire::TypeDescriptionField kDescribedFields11[] = {
+  { "name", 17, 0, 0, "", "" },
+  { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
+  { "orientation_mode", 3, 0, 0, "", "" },
+  { "interaction_mode", 3, 0, 0, "", "" },
+  { "always_visible", 15, 0, 0, "", "" },
+  { "markers", 145, 0, 0, "visualization_msgs/msg/Marker", "" },
+  { "independent_marker_orientation", 15, 0, 0, "", "" },
+  { "description", 17, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields12[] = {
+  { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
+  { "ns", 17, 0, 0, "", "" },
+  { "id", 6, 0, 0, "", "" },
+  { "type", 6, 0, 0, "", "" },
+  { "action", 6, 0, 0, "", "" },
+  { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
+  { "scale", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
+  { "color", 1, 0, 0, "std_msgs/msg/ColorRGBA", "" },
+  { "lifetime", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
+  { "frame_locked", 15, 0, 0, "", "" },
+  { "points", 145, 0, 0, "geometry_msgs/msg/Point", "" },
+  { "colors", 145, 0, 0, "std_msgs/msg/ColorRGBA", "" },
+  { "texture_resource", 17, 0, 0, "", "" },
+  { "texture", 1, 0, 0, "sensor_msgs/msg/CompressedImage", "" },
+  { "uv_coordinates", 145, 0, 0, "visualization_msgs/msg/UVCoordinate", "" },
+  { "text", 17, 0, 0, "", "" },
+  { "mesh_resource", 17, 0, 0, "", "" },
+  { "mesh_file", 1, 0, 0, "visualization_msgs/msg/MeshFile", "" },
+  { "mesh_use_embedded_materials", 15, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields13[] = {
+  { "id", 7, 0, 0, "", "" },
+  { "parent_id", 7, 0, 0, "", "" },
+  { "title", 17, 0, 0, "", "" },
+  { "command", 17, 0, 0, "", "" },
+  { "command_type", 3, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields14[] = {
+  { "filename", 17, 0, 0, "", "" },
+  { "data", 147, 0, 0, "", "" },
+};
+const wire::TypeDescriptionField kDescribedFields15[] = {
+  { "u", 10, 0, 0, "", "" },
+  { "v", 10, 0, 0, "", "" },
+};
+const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields3 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields4 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields6 },
+  { "sensor_msgs/msg/CompressedImage", 3, kDescribedFields7 },
+  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields8 },
+  { "std_msgs/msg/Header", 2, kDescribedFields9 },
+  { "visualization_msgs/msg/InteractiveMarker", 7, kDescribedFields10 },
+  { "visualization_msgs/msg/InteractiveMarkerControl", 8, kDescribedFields11 },
+  { "visualization_msgs/msg/Marker", 19, kDescribedFields12 },
+  { "visualization_msgs/msg/MenuEntry", 5, kDescribedFields13 },
+  { "visualization_msgs/msg/MeshFile", 2, kDescribedFields14 },
+  { "visualization_msgs/msg/UVCoordinate", 2, kDescribedFields15 },
+};
+const wire::TypeDescriptionTable kTypeDescription = {
+  { "visualization_msgs/srv/GetInteractiveMarkers_Response", 2, kDescribedFields0 },
+  15,
+  kReferencedDescriptions,
+};
+
 void* create_message()
 {
   return new Message();
@@ -82,6 +209,7 @@ const wire::MessageTypeSupport kTypeSupport = {
   &payload_size,
   &serialize_message,
   &deserialize_message,
+  &kTypeDescription,
 };
 
 // Registers the table when the library is loaded (register_types.cpp can force it too).

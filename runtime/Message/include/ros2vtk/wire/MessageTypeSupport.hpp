@@ -82,6 +82,35 @@ struct ConstantInfo
   const char* value; ///< as written in the spec, normalised (strings unquoted)
 };
 
+/// One field of a REP 2011 type description (type_description_interfaces/msg/Field): what a
+/// node's ~/get_type_description serves, generated next to the type hash computed from it.
+struct TypeDescriptionField
+{
+  const char* name;
+  uint8_t type_id;          ///< type_description_interfaces/msg/FieldType id (container included)
+  uint64_t capacity;        ///< N of T[N] or T[<=N]
+  uint64_t string_capacity; ///< N of string<=N
+  const char* nested_type_name; ///< "std_msgs/msg/Header" for nested types, else ""
+  const char* default_value;    ///< as rosidl writes it ("1.0", "True"), "" when none
+};
+
+/// One type of a description (type_description_interfaces/msg/IndividualTypeDescription).
+struct IndividualTypeDescriptionTable
+{
+  const char* type_name;
+  uint32_t field_count;
+  const TypeDescriptionField* fields;
+};
+
+/// A type's full description (type_description_interfaces/msg/TypeDescription): the type and
+/// every type it references, sorted by name. Its RIHS01 hash is the type's type_hash.
+struct TypeDescriptionTable
+{
+  IndividualTypeDescriptionTable type;
+  uint32_t referenced_count;
+  const IndividualTypeDescriptionTable* referenced;
+};
+
 /// Everything the runtime knows about one message type.
 struct MessageTypeSupport
 {
@@ -101,6 +130,8 @@ struct MessageTypeSupport
   size_t (*serialized_size)(const void* message); ///< payload size, header included
   void (*serialize)(const void* message, CdrWriter& writer);
   bool (*deserialize)(void* message, CdrReader& reader); ///< false on hostile bytes
+  /// The REP 2011 description; nullptr for hand-written tables (tests), which no node serves.
+  const TypeDescriptionTable* description;
 };
 
 /// A service: its request and response messages (`<Srv>_Request` / `<Srv>_Response`).
@@ -109,6 +140,10 @@ struct ServiceTypeSupport
   const char* ros_type; ///< "rcl_interfaces/srv/GetParameters"
   const MessageTypeSupport* (*request)();
   const MessageTypeSupport* (*response)();
+  /// The service type's RIHS01 hash and description (request_message, response_message,
+  /// event_message, as rosidl synthesizes them); empty / nullptr for hand-written tables.
+  const char* type_hash;
+  const TypeDescriptionTable* description;
 };
 
 /// Process-wide registry filled by the generated libraries when they load, so the runtime

@@ -17,6 +17,7 @@ namespace wire {
 
 struct MessageTypeSupport;
 struct ServiceTypeSupport;
+class NodeTypeCache;
 class Publisher;
 class ServiceClient;
 class ServiceServer;
@@ -96,6 +97,10 @@ public:
   std::unique_ptr<ServiceClient> create_service_client(const ServiceTypeSupport& type,
                                                        const std::string& service_name,
                                                        const QoS& qos, std::string* error);
+
+  /// The types this node's endpoints use, with their REP 2011 descriptions (what its
+  /// ~/get_type_description serves, TypeDescriptionService).
+  const NodeTypeCache& type_cache() const;
 
   /// Raised whenever any subscription, server or client of this node queued data.
   WakeUp& wake_up();
