@@ -13,6 +13,8 @@
 #include "ros2vtk/wire/Subscription.hpp"
 
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastrtps/attributes/LibrarySettingsAttributes.h>
+#include <fastrtps/xmlparser/XMLProfileManager.h>
 #include <fastdds/rtps/attributes/ServerAttributes.h>
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
@@ -24,6 +26,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
 #include <set>
 
 namespace ros2vtk {
@@ -33,6 +36,26 @@ namespace dds = eprosima::fastdds::dds;
 namespace rtps = eprosima::fastrtps::rtps;
 
 namespace {
+
+// Fast DDS 2.9 may deliver a sample in-process to a reader of this process that is being (or
+// was just) deleted: segfaults in StatefulWriter::deliver_sample_to_intraprocesses /
+// intraprocess_delivery, seen on a loaded machine when two nodes of one process are destroyed one
+// after the other (a discovery sample), and when a node publishes /clock while another switches
+// use_sim_time (user data; eProsima/Fast-DDS#1235 fixed one path of it). Keeping in-process
+// delivery for user data only turned the first into the second. So our participants of one
+// process talk over the loopback like any other (one copy more, for a case users rarely have).
+// Set once, before the first participant, after the default XML profiles (which may set it).
+void use_no_intraprocess_delivery()
+{
+  static std::once_flag once;
+  std::call_once(once, [] {
+    dds::DomainParticipantFactory::get_instance()->load_profiles();
+    eprosima::fastrtps::LibrarySettingsAttributes settings =
+      eprosima::fastrtps::xmlparser::XMLProfileManager::library_settings();
+    settings.intraprocess_delivery = eprosima::fastrtps::INTRAPROCESS_OFF;
+    eprosima::fastrtps::xmlparser::XMLProfileManager::library_settings(settings);
+  });
+}
 
 // RTPS well-known ports (spec 9.6.1.1, Fast DDS defaults): PB + DG * domain + offset + PG * id.
 constexpr uint32_t kPortBase = 7400;
@@ -379,6 +402,7 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   }
   qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
 
+  use_no_intraprocess_delivery();
   const dds::StatusMask mask = dds::StatusMask::none();
   participant = dds::DomainParticipantFactory::get_instance()->create_participant(
     options.domain_id, qos, this, mask);
