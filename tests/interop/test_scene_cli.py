@@ -40,7 +40,10 @@ def test_nodes_and_topics_list_the_rclpy_node(ros):
 SHORT_NAMES = ['Bool', 'DoubleArray', 'Double', 'DoubleTable', 'Empty', 'Image', 'IntArray', 'Int',
                'IntTable', 'JointState', 'PointCloud2', 'PointCloud', 'PoseArray', 'PoseStamped',
                'String', 'TransformStamped', 'UInt8Image', 'WrenchStamped',
-               'Pose', 'Transform', 'Wrench', 'Vector3']
+               'Pose', 'Transform', 'Wrench', 'Vector3',
+               # SlicerROS2's PolyData, and the rules of the common interfaces (docs/messages.md)
+               'PolyData', 'Twist', 'TwistStamped', 'PointStamped', 'PolygonStamped',
+               'PoseWithCovarianceStamped', 'Odometry', 'Path', 'Imu']
 
 
 def test_types_lists_a_publisher_and_a_subscriber_class_per_short_name(ros):
