@@ -166,7 +166,7 @@ def _tf(v3, html, ctrl):
                         html.Td('{{ f.depth ? "\u2514 " : "" }}{{ f.frame }}',
                                 style=("{paddingLeft: (8 + 16 * f.depth) + 'px', whiteSpace: 'nowrap'}",))
                         html.Td('{{ f.parent }}')
-                        html.Td('{{ f.age }}')
+                        html.Td('{{ f.age }}', style='white-space: nowrap')  # "0.008 s" on one line
                         html.Td('{{ f.rate }}')
             html.Div('Lookups', classes='text-subtitle-2')
             _table(v3, html, ['parent', 'child', 'status'], 'tf_lookups', 'x', ['x.parent', 'x.child', 'x.status'])
