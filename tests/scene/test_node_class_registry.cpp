@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 using ros2vtk::scene::NodeClassRegistry;
 using ros2vtk::scene::NodeDirection;
@@ -52,6 +53,41 @@ TEST_F(NodeClassRegistryTest, ResolvesShortClassAndMRMLNames)
   const auto subscriber = registry.resolve(NodeDirection::Subscriber, "vtkMRMLROS2SubscriberTestStringNode");
   ASSERT_NE(subscriber.mapped_class, nullptr) << subscriber.error;
   EXPECT_EQ(subscriber.mapped_class->class_name, "vtkROS2SubscriberTestStringNode");
+}
+
+TEST_F(NodeClassRegistryTest, SlicerClassNamesFindOurEquivalents)
+{
+  auto& registry = NodeClassRegistry::instance();
+  const std::pair<const char*, const char*> expected[] = {
+    { "vtkMRMLModelNode", "vtkROS2ModelNode" },
+    { "vtkMRMLLinearTransformNode", "vtkROS2TransformNode" },
+    { "vtkMRMLTransformNode", "vtkROS2TransformNode" },
+    { "vtkMRMLROS2RobotNode", "vtkROS2RobotNode" },
+    { "vtkROS2RobotNode", "vtkROS2RobotNode" },
+  };
+  for (const auto& pair : expected)
+  {
+    const auto* info = registry.find_class(pair.first);
+    ASSERT_NE(info, nullptr) << pair.first;
+    EXPECT_EQ(info->class_name, pair.second) << pair.first;
+  }
+  EXPECT_EQ(registry.find_class("vtkMRMLScalarVolumeNode"), nullptr);
+
+  std::string error;
+  EXPECT_FALSE(registry.add_alias("vtkROS2ModelNode", "vtkROS2TransformNode", &error));
+  EXPECT_NE(error.find("is a registered class"), std::string::npos) << error;
+  EXPECT_FALSE(registry.add_alias("vtkMRMLModelNode", "vtkROS2TransformNode", &error));
+  EXPECT_NE(error.find("already names 'vtkROS2ModelNode'"), std::string::npos) << error;
+  EXPECT_FALSE(registry.add_alias("vtkMRMLSomethingNode", "vtkROS2NoSuchNode", &error));
+  EXPECT_NE(error.find("unknown class 'vtkROS2NoSuchNode'"), std::string::npos) << error;
+  EXPECT_TRUE(registry.add_alias("vtkMRMLModelNode", "vtkROS2ModelNode", &error)) << error;
+
+  // And through the scene: what a Slicer script calls.
+  vtkNew<vtkROS2Scene> scene;
+  auto* model = scene->AddNewNodeByClass("vtkMRMLModelNode", "needle");
+  ASSERT_NE(model, nullptr);
+  EXPECT_TRUE(model->IsA("vtkROS2ModelNode"));
+  EXPECT_STREQ(model->GetName(), "needle");
 }
 
 TEST_F(NodeClassRegistryTest, AClassOfTheOtherDirectionNamesTheRightCall)

@@ -47,6 +47,10 @@ void register_builtin_node_classes(NodeClassRegistry& registry)
   {
     registry.add(info, nullptr);
   }
+  // Slicer's core classes that Slicer scripts add next to ROS nodes, as our equivalents.
+  registry.add_alias("vtkMRMLModelNode", "vtkROS2ModelNode", nullptr);
+  registry.add_alias("vtkMRMLLinearTransformNode", "vtkROS2TransformNode", nullptr);
+  registry.add_alias("vtkMRMLTransformNode", "vtkROS2TransformNode", nullptr);
 }
 
 } // namespace scene

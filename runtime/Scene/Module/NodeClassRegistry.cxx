@@ -129,10 +129,54 @@ bool NodeClassRegistry::add(const NodeClassInfo& info, std::string* error)
 }
 
 //------------------------------------------------------------------------------
+bool NodeClassRegistry::add_alias(
+  const std::string& alias, const std::string& class_name, std::string* error)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::string problem;
+  if (classes_.count(alias))
+  {
+    problem = "'" + alias + "' is a registered class, not an alias";
+  }
+  else if (!classes_.count(class_name))
+  {
+    problem = "alias '" + alias + "' names the unknown class '" + class_name + "'";
+  }
+  else
+  {
+    auto it = aliases_.find(alias);
+    if (it != aliases_.end() && it->second != class_name)
+    {
+      problem = "'" + alias + "' already names '" + it->second + "'";
+    }
+  }
+  if (!problem.empty())
+  {
+    if (error)
+    {
+      *error = problem;
+    }
+    return false;
+  }
+  aliases_[alias] = class_name;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 const NodeClassInfo* NodeClassRegistry::find_class(const std::string& class_name) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = classes_.find(class_name);
+  std::string wanted = class_name;
+  if (starts_with(wanted, "vtkMRMLROS2"))
+  {
+    wanted = "vtkROS2" + wanted.substr(11);
+  }
+  auto alias = aliases_.find(wanted);
+  if (alias != aliases_.end())
+  {
+    wanted = alias->second;
+  }
+  auto it = classes_.find(wanted);
   return it == classes_.end() ? nullptr : &it->second;
 }
 

@@ -66,7 +66,13 @@ public:
   /// with a different factory; registering the same class twice is harmless.
   bool add(const NodeClassInfo& info, std::string* error);
 
-  /// nullptr when unknown. Pointers stay valid for the life of the process.
+  /// Lets `alias` name a registered class: Slicer's core classes that Slicer scripts add next to
+  /// ROS nodes (vtkMRMLModelNode) map to our equivalents. False (and `error`) when the alias is a
+  /// class name itself or already names another class.
+  bool add_alias(const std::string& alias, const std::string& class_name, std::string* error);
+
+  /// Accepts a class name, an alias, or SlicerROS2's spelling of a class name ("vtkMRMLROS2…" for
+  /// "vtkROS2…"). nullptr when unknown. Pointers stay valid for the life of the process.
   const NodeClassInfo* find_class(const std::string& class_name) const;
   const NodeClassInfo* find_short_name(NodeDirection direction, const std::string& short_name) const;
   std::vector<const NodeClassInfo*> find_ros_type(NodeDirection direction, const std::string& ros_type) const;
@@ -86,6 +92,7 @@ private:
   NodeClassRegistry() = default;
   mutable std::mutex mutex_;
   std::map<std::string, NodeClassInfo> classes_; // by class name; node-based, so pointers are stable
+  std::map<std::string, std::string> aliases_;   // alias -> class name
 };
 
 /// "Publisher" / "Subscriber" / "Other".

@@ -257,23 +257,9 @@ vtkROS2SceneNode* vtkROS2Scene::CreateNodeByClass(const char* className)
 //------------------------------------------------------------------------------
 vtkROS2SceneNode* vtkROS2Scene::AddNewNodeByClass(const char* className, const char* name)
 {
-  std::string wanted = className ? className : "";
-  const std::string slicerPrefix = "vtkMRMLROS2";
-  if (wanted.compare(0, slicerPrefix.size(), slicerPrefix) == 0)
-  {
-    wanted = "vtkROS2" + wanted.substr(slicerPrefix.size());
-  }
-  // Slicer's core classes that Slicer scripts add next to ROS nodes, as our equivalents.
-  else if (wanted == "vtkMRMLModelNode")
-  {
-    wanted = "vtkROS2ModelNode";
-  }
-  else if (wanted == "vtkMRMLLinearTransformNode" || wanted == "vtkMRMLTransformNode")
-  {
-    wanted = "vtkROS2TransformNode";
-  }
+  // The registry accepts SlicerROS2's class names and Slicer's core classes' names too.
   vtkSmartPointer<vtkROS2SceneNode> node;
-  node.TakeReference(this->CreateNodeByClass(wanted.c_str()));
+  node.TakeReference(this->CreateNodeByClass(className));
   if (!node)
   {
     return nullptr;
