@@ -130,7 +130,7 @@ log "ros2vtk set-up in $ROOT"
 install_debian_packages
 make_venv "$VENV"
 install_wheels "$VENV" "$ROOT/scripts/requirements-ros.txt" \
-  'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
+  'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg, xacro'
 install_wheels "$VENV" "$ROOT/scripts/requirements-app.txt" 'trame, trame_vuetify, trame_rca, PIL, selenium'
 install_command
 make_venv "$JAZZY_VENV"

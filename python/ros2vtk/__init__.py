@@ -59,6 +59,17 @@ def _import_extension_modules() -> Dict[str, ModuleType]:
     return modules
 
 
+def _point_at_this_environments_xacro() -> None:
+    """Robot nodes expand .xacro files with the xacro program (runtime/Robot XacroProcessor):
+    the one installed next to this Python (a venv's bin/, active or not) unless the user named one
+    in ROS2VTK_XACRO."""
+    import sys
+    candidate = os.path.join(os.path.dirname(sys.executable), 'xacro')
+    if 'ROS2VTK_XACRO' not in os.environ and os.access(candidate, os.X_OK):
+        os.environ['ROS2VTK_XACRO'] = candidate
+
+
+_point_at_this_environments_xacro()
 extension_modules: Dict[str, ModuleType] = _import_extension_modules()
 
 __all__: List[str] = []

@@ -379,3 +379,60 @@ def test_relative_meshes_of_a_topic_description_use_the_mesh_search_path_and_one
                                                 "'package://ghost/a.stl': package 'ghost' not found")
     assert robot.GetLinkStatus('no_such_link') == ''
     assert len(logged) == 1 and robot.GetLoadSummary().startswith('4 visuals, 2 of 4 meshes missing (2 warnings, 1 cause)')
+
+
+XACRO_ARM = """<?xml version="1.0"?>
+<robot name="xarm" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="prefix" default=""/>
+  <xacro:property name="edge" value="0.1"/>
+  <xacro:macro name="boxed" params="name size">
+    <link name="${name}"><visual><geometry><box size="${size} ${size} ${size}"/></geometry></visual></link>
+  </xacro:macro>
+  <xacro:boxed name="$(arg prefix)base" size="${edge}"/>
+  <xacro:boxed name="$(arg prefix)tool" size="${edge / 2}"/>
+  <joint name="$(arg prefix)j" type="fixed"><parent link="$(arg prefix)base"/><child link="$(arg prefix)tool"/></joint>
+</robot>"""
+
+
+def test_a_xacro_file_is_expanded_with_its_arguments_and_they_come_back_with_the_scene(logic, ros2vtk, tmp_path):
+    # Importing ros2vtk from the venv points ROS2VTK_XACRO at the venv's xacro (pip install xacro).
+    path = tmp_path / 'xarm.urdf.xacro'
+    path.write_text(XACRO_ARM)
+    node = logic.GetDefaultROS2Node()
+    robot = node.CreateAndAddRobotNodeFromFile('xarm', str(path))
+    assert robot.SetXacroArguments('prefix:=left_')
+    assert spin_until(logic, robot.IsLoaded), robot.GetRobotState()
+    assert robot.GetLinkNames() == 'left_base left_tool'
+    # New arguments reload the file.
+    assert robot.SetXacroArguments('prefix:=right_')
+    assert spin_until(logic, lambda: robot.GetLinkNames() == 'right_base right_tool'), robot.GetRobotState()
+    node.GlobalWarningDisplayOff()
+    robot.GlobalWarningDisplayOff()
+    try:
+        assert not robot.SetXacroArguments('prefix=right_')  # not name:=value: refused, kept
+    finally:
+        node.GlobalWarningDisplayOn()
+        robot.GlobalWarningDisplayOn()
+    assert robot.GetXacroArguments() == 'prefix:=right_'
+
+    scene_file = str(tmp_path / 'scene.xml')
+    assert logic.GetScene().WriteToXMLFile(scene_file)
+    assert logic.GetScene().ReadFromXMLFile(scene_file)
+    restored = logic.GetDefaultROS2Node().GetRobotNodeByName('xarm')
+    assert restored.GetXacroArguments() == 'prefix:=right_'
+    assert spin_until(logic, restored.IsLoaded), restored.GetRobotState()
+    assert restored.GetLinkNames() == 'right_base right_tool'
+
+
+def test_a_xacro_file_that_xacro_rejects_is_a_failed_state_with_xacros_words(logic, tmp_path):
+    path = tmp_path / 'bad.xacro'
+    path.write_text('<robot name="b" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:nosuch/></robot>')
+    node = logic.GetDefaultROS2Node()
+    robot = node.CreateAndAddRobotNodeFromFile('bad', str(path))
+    robot.GlobalWarningDisplayOff()  # process-wide: back on below
+    try:
+        assert spin_until(logic, lambda: robot.GetRobotState().startswith('failed'))
+    finally:
+        robot.GlobalWarningDisplayOn()
+    state = robot.GetRobotState()
+    assert 'xacro failed' in state and 'unknown macro name: xacro:nosuch' in state, state

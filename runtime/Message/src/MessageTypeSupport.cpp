@@ -5,6 +5,7 @@
 #include "ros2vtk/wire/CdrWriter.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <mutex>
 
@@ -37,6 +38,11 @@ std::string full_name(const std::string& name, const char* kind)
 }
 
 } // namespace
+
+bool is_placeholder_field(const FieldInfo& field)
+{
+  return std::strcmp(field.name, "structure_needs_at_least_one_member") == 0;
+}
 
 const char* field_type_name(FieldType type)
 {

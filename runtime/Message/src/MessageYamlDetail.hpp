@@ -28,13 +28,6 @@ std::u16string utf32_to_utf16(const std::u32string& text);
 /// A string as the value of a block mapping at `indent`, in the style PyYAML picks.
 std::string format_scalar_string(const std::u32string& text, int indent);
 
-/// rosidl gives a message without fields one dummy member; rosidl_runtime_py hides it (the
-/// Python class has no fields), so `ros2 topic echo` prints such a message as `{}`.
-inline bool is_dummy_member(const FieldInfo& field)
-{
-  return std::strcmp(field.name, "structure_needs_at_least_one_member") == 0;
-}
-
 template <typename T>
 const T& at(const void* pointer)
 {

@@ -247,7 +247,7 @@ private:
     std::string names;
     for (uint32_t i = 0; i < type.field_count; ++i)
     {
-      if (!is_dummy_member(type.fields[i]))
+      if (!is_placeholder_field(type.fields[i]))
       {
         names += (names.empty() ? "" : ", ") + std::string(type.fields[i].name);
       }

@@ -32,7 +32,7 @@ uint32_t visible_field_count(const MessageTypeSupport& type)
   uint32_t count = 0;
   for (uint32_t i = 0; i < type.field_count; ++i)
   {
-    count += is_dummy_member(type.fields[i]) ? 0 : 1;
+    count += is_placeholder_field(type.fields[i]) ? 0 : 1;
   }
   return count;
 }
@@ -79,7 +79,7 @@ public:
     for (uint32_t i = 0; i < type.field_count; ++i)
     {
       const FieldInfo& field = type.fields[i];
-      if (is_dummy_member(field))
+      if (is_placeholder_field(field))
       {
         continue;
       }

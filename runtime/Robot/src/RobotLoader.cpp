@@ -457,6 +457,8 @@ bool RobotLoader::read_urdf_file(const std::string& urdf_path, std::string* text
       *error = "cannot read the URDF file " + in_quotes(urdf_path) + ": no such file";
     return false;
   }
+  if (XacroProcessor::is_xacro_file(urdf_path))
+    return xacro_.expand(urdf_path, resolver_.max_file_bytes(), text, error);
   if (bytes > resolver_.max_file_bytes())
   {
     if (error)

@@ -421,9 +421,7 @@ bool list_fields(const MessageTypeSupport& type, const std::string& path, std::v
   fields.clear();
   for (uint32_t i = 0; i < owner.nested->field_count; ++i)
   {
-    // rosidl gives a message without fields one dummy member; rclpy's classes hide it (a
-    // test_msgs/Constants reads as {}), and so do we.
-    if (std::strcmp(owner.nested->fields[i].name, "structure_needs_at_least_one_member") == 0)
+    if (ros2vtk::wire::is_placeholder_field(owner.nested->fields[i]))
     {
       continue;
     }

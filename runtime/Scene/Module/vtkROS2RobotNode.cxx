@@ -12,6 +12,7 @@
 
 #include "ros2vtk/convert/Units.hpp"
 #include "ros2vtk/robot/RobotLoader.hpp"
+#include "ros2vtk/robot/XacroProcessor.hpp"
 
 #include "vtkCallbackCommand.h"
 #include "vtkMatrix4x4.h"
@@ -70,6 +71,7 @@ public:
   std::vector<std::string> SearchPaths;
   bool RestrictMeshesToRoots = true;
   std::string MeshBaseFolder;
+  std::string XacroArguments;
 
   // The description source node, and whether this robot created it (then it removes it).
   vtkWeakPointer<vtkROS2SceneNode> SourceNode;
@@ -128,6 +130,7 @@ public:
     {
       this->Loader.reset(new ros2vtk::robot::RobotLoader());
       this->Loader->resolver().set_restrict_to_roots(this->RestrictMeshesToRoots);
+      this->Loader->xacro().set_arguments(this->XacroArguments, nullptr); // checked when set
       for (const std::string& folder : this->SearchPaths)
       {
         this->Loader->resolver().add_search_path(folder);
@@ -276,6 +279,34 @@ void vtkROS2RobotNode::SetMeshBaseFolder(const char* folder)
 const char* vtkROS2RobotNode::GetMeshBaseFolder() const
 {
   return this->Internals->MeshBaseFolder.c_str();
+}
+
+bool vtkROS2RobotNode::SetXacroArguments(const char* arguments)
+{
+  vtkInternals& internals = *this->Internals;
+  ros2vtk::robot::XacroProcessor check;
+  std::string error;
+  if (!check.set_arguments(arguments ? arguments : "", &error))
+  {
+    vtkErrorMacro("SetXacroArguments: " << error);
+    return false;
+  }
+  internals.XacroArguments = arguments ? arguments : "";
+  if (internals.Loader)
+  {
+    internals.Loader->xacro().set_arguments(internals.XacroArguments, nullptr);
+  }
+  if (internals.Source == "file")
+  {
+    internals.SourceChanged = true;
+  }
+  this->Modified();
+  return true;
+}
+
+const char* vtkROS2RobotNode::GetXacroArguments() const
+{
+  return this->Internals->XacroArguments.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -1043,6 +1074,7 @@ void vtkROS2RobotNode::WriteXML(vtkXMLDataElement* element)
   element->SetAttribute("fixedFrame", internals.FixedFrame.c_str());
   element->SetAttribute("tfPrefix", internals.TfPrefix.c_str());
   element->SetAttribute("meshBaseFolder", internals.MeshBaseFolder.c_str());
+  element->SetAttribute("xacroArguments", internals.XacroArguments.c_str());
   element->SetAttribute("jointStatesTopic", internals.JointStatesTopic.c_str());
   element->SetIntAttribute("publishTf", internals.PublishTf ? 1 : 0);
   for (const std::string& folder : internals.SearchPaths)
@@ -1075,6 +1107,7 @@ bool vtkROS2RobotNode::ReadXML(vtkXMLDataElement* element)
   internals.FixedFrame = text("fixedFrame");
   internals.TfPrefix = text("tfPrefix");
   internals.MeshBaseFolder = text("meshBaseFolder");
+  internals.XacroArguments = text("xacroArguments");
   internals.JointStatesTopic = text("jointStatesTopic"); // subscribed on the first spin after the load
   int publishTf = 0;
   element->GetScalarAttribute("publishTf", publishTf);

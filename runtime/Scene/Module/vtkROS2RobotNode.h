@@ -86,6 +86,12 @@ public:
   /// Empty (default): the mesh search paths, then the current folder. Applies to the next load.
   void SetMeshBaseFolder(const char* folder);
   const char* GetMeshBaseFolder() const;
+  /// Arguments for a `.xacro` description file, as on xacro's command line ("prefix:=left_
+  /// use_gripper:=true"). The file is expanded by the xacro program (pip install xacro; found
+  /// as $ROS2VTK_XACRO, on PATH or in the venv), `$(find pkg)` through AMENT_PREFIX_PATH. False
+  /// (and an error) for an item that is not name:=value. A robot loaded from a file reloads.
+  bool SetXacroArguments(const char* arguments);
+  const char* GetXacroArguments() const;
   /// On (default): meshes are read only inside package roots, the URDF file's folder (or the
   /// mesh base folder) and the mesh search paths, after `..` and symlinks are resolved, so a
   /// description from the network cannot make us read other files. Off is the explicit opt-out.

@@ -74,6 +74,12 @@ struct FieldInfo
   void (*set_bool)(void* field, size_t index, bool value);
 };
 
+/// rosidl gives a message without fields one placeholder member (a uint8 named
+/// structure_needs_at_least_one_member); it is on the wire, but rclpy's classes and
+/// rosidl_runtime_py hide it (`ros2 topic echo` prints such a message as `{}`), and so do we
+/// wherever fields are shown or set by name.
+bool is_placeholder_field(const FieldInfo& field);
+
 /// A named constant of a message (`uint8 BOOL=1`), kept for YAML/Python display.
 struct ConstantInfo
 {

@@ -9,6 +9,7 @@
 
 #include "ros2vtk/robot/MeshLoader.hpp"
 #include "ros2vtk/robot/ResourceResolver.hpp"
+#include "ros2vtk/robot/XacroProcessor.hpp"
 
 #include <vtkMatrix4x4.h>
 #include <vtkPolyData.h>
@@ -126,12 +127,16 @@ public:
   /// load is a warning on its link and a placeholder.
   bool load_xml(const std::string& urdf_xml, const RobotLoadOptions& options, RobotVisuals* robot,
                 std::string* error);
-  /// The text of a URDF file; false (and why) when it is missing, unreadable or larger than the
-  /// resolver's file size limit.
+  /// The text of a URDF file, or of a xacro file expanded by xacro(); false (and why) when it is
+  /// missing, unreadable, larger than the resolver's file size limit or does not expand.
   bool read_urdf_file(const std::string& urdf_path, std::string* text, std::string* error) const;
   /// Reads the URDF file, then load_xml() with relative paths taken from its folder.
   bool load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
                  RobotLoadOptions options = RobotLoadOptions());
+
+  /// Expands `.xacro` files for read_urdf_file() and load_file(): its command and arguments.
+  XacroProcessor& xacro() { return xacro_; }
+  const XacroProcessor& xacro() const { return xacro_; }
 
   /// Mesh files read (not served from the cache) since construction; for tests and benchmarks.
   size_t mesh_files_read() const { return mesh_files_read_; }
@@ -146,6 +151,7 @@ private:
                         LinkVisual* visual, std::string* why);
 
   ResourceResolver resolver_;
+  XacroProcessor xacro_;
   MeshLoader mesh_loader_;
   std::map<std::string, CachedMesh> cache_;
   size_t mesh_files_read_ = 0;
