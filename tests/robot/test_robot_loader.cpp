@@ -6,6 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <chrono>
+#include <memory>
+
 #include <ostream>
 
 #include <filesystem>
@@ -401,3 +407,71 @@ TEST(RobotLoader, EmptyUrdfTextIsAnError)
 }
 
 } // namespace
+
+TEST(RobotLoader, LoadersSharingAMeshCacheReadEachMeshOnceUntilTheFileChanges)
+{
+  // Two robot nodes of a scene: two loaders, one cache (as vtkROS2RobotNode does).
+  const auto cache = std::make_shared<MeshCache>();
+  RobotLoader first_loader = loader_with_shipped_robots();
+  RobotLoader second_loader = loader_with_shipped_robots();
+  first_loader.set_mesh_cache(cache);
+  second_loader.set_mesh_cache(cache);
+  RobotVisuals first, second;
+  std::string error;
+  ASSERT_TRUE(first_loader.load_file(ros2vtk_test::surgical_arm_urdf(), &first, &error)) << error;
+  EXPECT_EQ(first_loader.mesh_files_read(), 7u);
+  EXPECT_EQ(cache->size(), 7u);
+  ASSERT_TRUE(second_loader.load_file(ros2vtk_test::surgical_arm_urdf(), &second, &error)) << error;
+  EXPECT_EQ(second_loader.mesh_files_read(), 0u);
+  EXPECT_EQ(second.placeholder_count(), 0u);
+
+  // A mesh file that changes is read again.
+  const fs::path folder = fs::temp_directory_path() / ("ros2vtk_mesh_cache_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string mesh = (folder / "part.stl").string();
+  ros2vtk_test::write_triangle_stl(mesh, 0.05f);
+  const std::string xml = "<robot name='r'><link name='a'><visual><geometry><mesh filename='part.stl'/>"
+                          "</geometry></visual></link></robot>";
+  RobotLoadOptions options;
+  options.base_folder = folder.string(); // as a URDF file in that folder would
+  RobotVisuals part;
+  ASSERT_TRUE(first_loader.load_xml(xml, options, &part, &error)) << error;
+  ASSERT_EQ(part.placeholder_count(), 0u) << part.links[0].warnings.at(0);
+  ASSERT_TRUE(second_loader.load_xml(xml, options, &part, &error)) << error;
+  EXPECT_EQ(first_loader.mesh_files_read() + second_loader.mesh_files_read(), 8u);
+  ros2vtk_test::write_triangle_stl(mesh, 0.5f);
+  fs::last_write_time(mesh, fs::last_write_time(mesh) + std::chrono::seconds(1)); // coarse clocks
+  ASSERT_TRUE(second_loader.load_xml(xml, options, &part, &error)) << error;
+  EXPECT_EQ(second_loader.mesh_files_read(), 1u); // its first read: the rest came from the cache
+  EXPECT_NEAR(ros2vtk_test::bounds_of(part.links[0].visuals[0].geometry)[1], 0.5, 1e-6);
+  fs::remove_all(folder);
+}
+
+TEST(MeshCacheTest, TheLeastRecentlyUsedMeshesGoFirstWhenOverTheBound)
+{
+  auto mesh_of_points = [](int points) {
+    MeshData mesh;
+    mesh.polydata = vtkSmartPointer<vtkPolyData>::New();
+    auto coordinates = vtkSmartPointer<vtkPoints>::New();
+    for (int i = 0; i < points; ++i)
+      coordinates->InsertNextPoint(i, 0, 0);
+    mesh.polydata->SetPoints(coordinates);
+    return mesh;
+  };
+  const MeshData sample = mesh_of_points(20000);
+  const size_t one = size_t(sample.polydata->GetActualMemorySize()) * 1024;
+  MeshCache cache(one * 2 + one / 2); // room for two
+  cache.insert("a", mesh_of_points(20000));
+  cache.insert("b", mesh_of_points(20000));
+  MeshData found;
+  ASSERT_TRUE(cache.find("a", &found)); // a is now the most recently used
+  cache.insert("c", mesh_of_points(20000));
+  EXPECT_EQ(cache.size(), 2u);
+  EXPECT_TRUE(cache.find("a", &found));
+  EXPECT_FALSE(cache.find("b", &found));
+  EXPECT_TRUE(cache.find("c", &found));
+  EXPECT_LE(cache.bytes(), one * 2 + one / 2);
+  cache.insert("huge", mesh_of_points(200000)); // bigger than the whole cache: not kept
+  EXPECT_FALSE(cache.find("huge", &found));
+  EXPECT_EQ(cache.size(), 2u);
+}

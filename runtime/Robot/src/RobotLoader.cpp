@@ -119,16 +119,6 @@ vtkSmartPointer<vtkMatrix4x4> to_matrix(const urdf::Pose& pose)
   return matrix;
 }
 
-std::string cache_key(const std::string& path, const std::array<double, 3>& scale)
-{
-  std::error_code ec;
-  const auto stamp = std::filesystem::last_write_time(path, ec);
-  char buffer[128];
-  std::snprintf(buffer, sizeof(buffer), "|%lld|%.17g,%.17g,%.17g",
-                static_cast<long long>(ec ? 0 : stamp.time_since_epoch().count()), scale[0], scale[1], scale[2]);
-  return path + buffer;
-}
-
 vtkSmartPointer<vtkPolyData> shallow_copy(vtkPolyData* source)
 {
   auto copy = vtkSmartPointer<vtkPolyData>::New();
@@ -277,19 +267,17 @@ bool RobotLoader::load_mesh_visual(const std::string& uri, const std::array<doub
     return false;
   }
   visual->mesh_path = resolved.path;
-  const std::string key = cache_key(resolved.path, scale);
-  auto cached = cache_.find(key);
-  if (cached == cache_.end())
+  const std::string key = MeshCache::key_of(resolved.path, scale);
+  MeshData mesh;
+  if (!cache_->find(key, &mesh))
   {
-    MeshData mesh;
     if (!mesh_loader_.load(resolved.path, &mesh, why))
       return false;
     ++mesh_files_read_;
     if (scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0)
       mesh.polydata = scaled(mesh.polydata, scale);
-    cached = cache_.emplace(key, CachedMesh{std::move(mesh)}).first;
+    cache_->insert(key, mesh);
   }
-  const MeshData& mesh = cached->second.mesh;
   visual->geometry = shallow_copy(mesh.polydata);
   visual->has_mesh_color = mesh.has_color;
   visual->mesh_color = mesh.color;

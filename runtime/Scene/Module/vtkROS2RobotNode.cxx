@@ -129,6 +129,8 @@ public:
     if (!this->Loader)
     {
       this->Loader.reset(new ros2vtk::robot::RobotLoader());
+      // Reloads and other robots with the same meshes read no mesh file again.
+      this->Loader->set_mesh_cache(ros2vtk::robot::MeshCache::shared());
       this->Loader->resolver().set_restrict_to_roots(this->RestrictMeshesToRoots);
       this->Loader->xacro().set_arguments(this->XacroArguments, nullptr); // checked when set
       for (const std::string& folder : this->SearchPaths)

@@ -7,6 +7,7 @@
 #ifndef ros2vtk_robot_RobotLoader_hpp
 #define ros2vtk_robot_RobotLoader_hpp
 
+#include "ros2vtk/robot/MeshCache.hpp"
 #include "ros2vtk/robot/MeshLoader.hpp"
 #include "ros2vtk/robot/ResourceResolver.hpp"
 #include "ros2vtk/robot/XacroProcessor.hpp"
@@ -17,6 +18,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -109,9 +111,10 @@ struct RobotLoadOptions
   double placeholder_size = 0.01;
 };
 
-/// Builds RobotVisuals from URDF XML. Meshes are cached by resolved file, modification time and
-/// scale, so loading the same robot (or a second robot sharing meshes) again reads no mesh file.
-/// Never throws. Not thread-safe (one loader per thread).
+/// Builds RobotVisuals from URDF XML. Meshes are cached by resolved file, modification time, size
+/// and scale (MeshCache: the loader's own by default, or one shared with other loaders), so
+/// loading the same robot (or a second robot sharing meshes) again reads no mesh file.
+/// Never throws. Not thread-safe (one loader per thread; a shared MeshCache is thread-safe).
 class RobotLoader
 {
 public:
@@ -140,20 +143,20 @@ public:
 
   /// Mesh files read (not served from the cache) since construction; for tests and benchmarks.
   size_t mesh_files_read() const { return mesh_files_read_; }
-  void clear_cache() { cache_.clear(); }
+  /// Shares `cache` (e.g. MeshCache::shared(), as the scene's robot nodes do) instead of the
+  /// loader's own.
+  void set_mesh_cache(std::shared_ptr<MeshCache> cache) { cache_ = std::move(cache); }
+  const std::shared_ptr<MeshCache>& mesh_cache() const { return cache_; }
+  void clear_cache() { cache_->clear(); }
 
 private:
-  struct CachedMesh
-  {
-    MeshData mesh; ///< geometry already scaled
-  };
   bool load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale, const std::string& base_folder,
                         LinkVisual* visual, std::string* why);
 
   ResourceResolver resolver_;
   XacroProcessor xacro_;
   MeshLoader mesh_loader_;
-  std::map<std::string, CachedMesh> cache_;
+  std::shared_ptr<MeshCache> cache_ = std::make_shared<MeshCache>(); // meshes already scaled
   size_t mesh_files_read_ = 0;
 };
 
