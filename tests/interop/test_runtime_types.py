@@ -1,0 +1,112 @@
+"""Types nobody wrote a spec for (issue 13): our YAML subscriber, created with the name of a type
+no library of ours registers, learns the type from the publishing rclpy node's
+~/get_type_description (REP 2011) and shows the field values; a publisher that serves no type
+descriptions gives a status that says so.
+
+The type is service_msgs/msg/ServiceEventInfo: a Kilted wheel ships it, msg_specs/ does not
+(checked below), and it has a nested type, a fixed array and 64-bit fields.
+"""
+from __future__ import annotations
+
+import json
+import textwrap
+from pathlib import Path
+
+from conftest import BUILD, REPO, VENV_PYTHON
+
+ROS_TYPE = 'service_msgs/msg/ServiceEventInfo'
+TOPIC = '/runtime_type'
+
+PEER = textwrap.dedent('''
+    import sys, time
+    import rclpy
+    from rclpy.parameter import Parameter
+    from service_msgs.msg import ServiceEventInfo
+    serve = sys.argv[1] == 'serve'
+    rclpy.init()
+    overrides = [] if serve else [Parameter('start_type_description_service', value=False)]
+    node = rclpy.create_node(sys.argv[2], parameter_overrides=overrides)
+    publisher = node.create_publisher(ServiceEventInfo, '/runtime_type', 10)
+    msg = ServiceEventInfo(event_type=2, sequence_number=-9000000000123)
+    msg.stamp.sec = 1234
+    msg.stamp.nanosec = 56789
+    msg.client_gid = list(range(200, 216))
+    print('ready', flush=True)
+    end = time.monotonic() + float(sys.argv[3])
+    while time.monotonic() < end:
+        publisher.publish(msg)
+        rclpy.spin_once(node, timeout_sec=0.1)
+    node.destroy_node()
+    rclpy.shutdown()
+''')
+
+OURS = textwrap.dedent('''
+    import json, sys, time
+    import ros2vtk
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    sub = node.CreateAndAddSubscriberNode(sys.argv[1], '/runtime_type')
+    statuses = []
+    end = time.monotonic() + float(sys.argv[2])
+    while time.monotonic() < end and sub.GetNumberOfMessages() == 0:
+        logic.SpinOnWakeUp(0.05)
+        status = sub.GetTypeStatus()
+        if not statuses or statuses[-1] != status:
+            statuses.append(status)
+    result = {'class': sub.GetClassName(), 'ros_type': sub.GetROSType(), 'statuses': statuses,
+              'count': sub.GetNumberOfMessages(), 'yaml': sub.GetLastMessage()}
+    if sub.GetNumberOfMessages():
+        last = ros2vtk.Message.last_of(sub)
+        result['fields'] = {'event_type': last.event_type, 'sec': last.stamp.sec,
+                            'nanosec': last.stamp.nanosec, 'gid': list(last.client_gid),
+                            'sequence_number': last.sequence_number,
+                            'names': list(last.field_names())}
+    print(json.dumps(result), flush=True)
+''')
+
+
+def start_peer(ros, mode: str, name: str, seconds: float):
+    process = ros.start([str(VENV_PYTHON), '-c', PEER, mode, name, str(seconds)])
+    line = process.stdout.readline()
+    assert line.strip() == 'ready', line + process.stderr.read()
+    return process
+
+
+def run_ours(ros, seconds: float) -> dict:
+    env = dict(ros.env, PYTHONPATH=str(BUILD / 'python'))
+    process = ros.start(['/usr/bin/python3', '-c', OURS, ROS_TYPE, str(seconds)], env)
+    code, out, err = ros.finish(process, timeout=seconds + 30)
+    assert code == 0, err
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def test_the_type_is_not_shipped():
+    assert not (REPO / 'msg_specs' / 'service_msgs').exists()
+
+
+def test_yaml_subscriber_learns_an_unshipped_type_from_the_rclpy_publisher(ros):
+    peer = start_peer(ros, 'serve', 'event_talker', 25)
+    result = run_ours(ros, 20)
+    ros.stop(peer)
+    assert result['class'] == 'vtkROS2SubscriberGenericNode'
+    assert result['ros_type'] == ROS_TYPE
+    assert result['count'] >= 1, result
+    assert 'waiting for the type description of service_msgs/msg/ServiceEventInfo from /event_talker' \
+        in result['statuses'], result['statuses']
+    assert result['statuses'][-1] == '', result['statuses']
+    gid = list(range(200, 216))
+    assert result['yaml'] == ('event_type: 2\nstamp:\n  sec: 1234\n  nanosec: 56789\nclient_gid:\n'
+                              + ''.join(f'- {b}\n' for b in gid) + 'sequence_number: -9000000000123\n')
+    assert result['fields'] == {'event_type': 2, 'sec': 1234, 'nanosec': 56789, 'gid': gid,
+                                'sequence_number': -9000000000123,
+                                'names': ['event_type', 'stamp', 'client_gid', 'sequence_number']}
+
+
+def test_a_publisher_without_type_descriptions_gets_a_clear_status(ros):
+    peer = start_peer(ros, 'quiet', 'quiet_talker', 20)
+    result = run_ours(ros, 10)
+    ros.stop(peer)
+    assert result['count'] == 0
+    assert result['statuses'][-1].startswith(
+        'the publisher /quiet_talker does not serve type descriptions (no /quiet_talker/get_type_description'), \
+        result['statuses']
