@@ -53,6 +53,12 @@ OURS = textwrap.dedent('''
         status = sub.GetTypeStatus()
         if not statuses or statuses[-1] != status:
             statuses.append(status)
+    linger = float(sys.argv[3]) if len(sys.argv) > 3 else 0.0
+    if linger and sub.GetNumberOfMessages():
+        print('learnt', flush=True)  # we now serve its description (~/get_type_description)
+        end = time.monotonic() + linger
+        while time.monotonic() < end:
+            logic.SpinOnWakeUp(0.05)
     result = {'class': sub.GetClassName(), 'ros_type': sub.GetROSType(), 'statuses': statuses,
               'count': sub.GetNumberOfMessages(), 'yaml': sub.GetLastMessage()}
     if sub.GetNumberOfMessages():
@@ -72,9 +78,13 @@ def start_peer(ros, mode: str, name: str, seconds: float):
     return process
 
 
-def run_ours(ros, seconds: float) -> dict:
+def start_ours(ros, seconds: float, linger: float = 0.0):
     env = dict(ros.env, PYTHONPATH=str(BUILD / 'python'))
-    process = ros.start(['/usr/bin/python3', '-c', OURS, ROS_TYPE, str(seconds)], env)
+    return ros.start(['/usr/bin/python3', '-c', OURS, ROS_TYPE, str(seconds), str(linger)], env)
+
+
+def run_ours(ros, seconds: float) -> dict:
+    process = start_ours(ros, seconds)
     code, out, err = ros.finish(process, timeout=seconds + 30)
     assert code == 0, err
     return json.loads(out.strip().splitlines()[-1])
@@ -110,3 +120,25 @@ def test_a_publisher_without_type_descriptions_gets_a_clear_status(ros):
     assert result['statuses'][-1].startswith(
         'the publisher /quiet_talker does not serve type descriptions (no /quiet_talker/get_type_description'), \
         result['statuses']
+
+
+def test_we_serve_the_learnt_type_as_the_rclpy_publisher_does(ros):
+    """Our node now uses the learnt type, so its ~/get_type_description serves it (as rcl's
+    node type cache does): rclpy gets from /slicer what /event_talker serves."""
+    peer = start_peer(ros, 'serve', 'event_talker', 40)
+    ours = start_ours(ros, 20, linger=25)
+    line = ours.stdout.readline()
+    assert line.strip() == 'learnt', line + ours.stderr.read()
+    describe = ros.start([str(VENV_PYTHON), str(Path(__file__).parent / 'introspection_peer.py'), 'describe',
+                          '/slicer', '/event_talker', '--types', ROS_TYPE])
+    code, out, err = ros.finish(describe, timeout=90)
+    assert code == 0, err
+    answers = json.loads(out.strip().splitlines()[-1])
+    ros.stop(ours)
+    ros.stop(peer)
+    theirs = answers['/event_talker']['types'][ROS_TYPE]
+    mine = answers['/slicer']['types'][ROS_TYPE]
+    assert theirs['successful'], theirs
+    assert mine['successful'], mine
+    assert mine['type_description'] == theirs['type_description']
+    assert mine['rclpy_hash'] == mine['asked_hash']
