@@ -558,3 +558,60 @@ TEST(DynamicType, MangledResponseBytesAreRefusedOrBuilt)
   EXPECT_GT(refused, 500u);
   EXPECT_GT(built, 0u); // flips in default values and padding change no hash
 }
+
+namespace {
+
+wire::IndividualDescription from_table(const wire::IndividualTypeDescriptionTable& table)
+{
+  wire::IndividualDescription result;
+  result.type_name = table.type_name;
+  for (uint32_t i = 0; i < table.field_count; ++i)
+  {
+    const wire::TypeDescriptionField& f = table.fields[i];
+    result.fields.push_back({ f.name, f.type_id, f.capacity, f.string_capacity, f.nested_type_name, f.default_value });
+  }
+  return result;
+}
+
+} // namespace
+
+TEST(DynamicType, EveryShippedTypeHashesAndBuildsLikeItsGeneratedTable)
+{
+  // The generated description tables of every shipped message type (their hashes come from the
+  // Python generator, checked against rosidl by the golden tests): the C++ hash must agree, and
+  // the type built from the description must lay out, default and serialize as the generated one.
+  size_t checked = 0;
+  for (const std::string& name : wire::registered_message_types())
+  {
+    const wire::MessageTypeSupport* generated = wire::find_message_type(name);
+    if (!generated->description || wire::is_dynamic_message_type(generated))
+      continue;
+    wire::TypeDescriptionData d;
+    d.type = from_table(generated->description->type);
+    for (uint32_t i = 0; i < generated->description->referenced_count; ++i)
+      d.referenced.push_back(from_table(generated->description->referenced[i]));
+    std::string error;
+    EXPECT_EQ(wire::type_description_hash(d, &error), generated->type_hash) << name;
+    const wire::MessageTypeSupport* dynamic = wire::build_dynamic_message_type(d, generated->type_hash, &error);
+    ASSERT_NE(dynamic, nullptr) << name << ": " << error;
+    EXPECT_STREQ(dynamic->dds_type_name, generated->dds_type_name);
+    ASSERT_EQ(dynamic->field_count, generated->field_count) << name;
+    Message a = make(*dynamic);
+    Message b = make(*generated);
+    // Types are cached per hash, and the hash leaves default values out: when an earlier test of
+    // this process built WStrings from rclpy's description (non-ASCII defaults mangled, see
+    // ShippedTypesRead...), that table is the one returned here. Run alone, this test compares it.
+    if (name != "test_msgs/msg/WStrings" || std::string(wire::to_yaml(*dynamic, a.get())).find("\\x") == std::string::npos)
+    {
+      EXPECT_EQ(wire::to_yaml(*dynamic, a.get()), wire::to_yaml(*generated, b.get())) << name;
+      std::vector<uint8_t> ours, theirs;
+      wire::serialize_message(*dynamic, a.get(), ours);
+      wire::serialize_message(*generated, b.get(), theirs);
+      EXPECT_EQ(ours, theirs) << name;
+    }
+    ++checked;
+  }
+  std::cout << "shipped types checked: " << checked << ", dynamic types in the process: "
+            << wire::dynamic_message_type_count() << "\n";
+  EXPECT_GT(checked, 200u);
+}
