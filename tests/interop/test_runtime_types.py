@@ -142,3 +142,22 @@ def test_we_serve_the_learnt_type_as_the_rclpy_publisher_does(ros):
     assert mine['successful'], mine
     assert mine['type_description'] == theirs['type_description']
     assert mine['rclpy_hash'] == mine['asked_hash']
+
+
+def test_ros2vtk_topic_echo_learns_the_type_too(ros):
+    peer = start_peer(ros, 'serve', 'event_talker', 25)
+    code, out, err = ros.finish(ros.tool('echo', TOPIC, ROS_TYPE, '--count', '1', '--timeout', '20'), timeout=40)
+    ros.stop(peer)
+    assert code == 0, err
+    gid = ''.join(f'- {b}\n' for b in range(200, 216))
+    assert out == ('event_type: 2\nstamp:\n  sec: 1234\n  nanosec: 56789\nclient_gid:\n' + gid
+                   + 'sequence_number: -9000000000123\n---\n')
+    assert 'waiting for the type description of service_msgs/msg/ServiceEventInfo from /event_talker' in err
+
+
+def test_ros2vtk_topic_echo_says_when_the_publisher_serves_no_description(ros):
+    peer = start_peer(ros, 'quiet', 'quiet_talker', 20)
+    code, out, err = ros.finish(ros.tool('echo', TOPIC, ROS_TYPE, '--count', '1', '--timeout', '8'), timeout=30)
+    ros.stop(peer)
+    assert code == 3 and out == ''
+    assert 'timeout: the publisher /quiet_talker does not serve type descriptions' in err, err
