@@ -615,3 +615,32 @@ TEST(DynamicType, EveryShippedTypeHashesAndBuildsLikeItsGeneratedTable)
             << wire::dynamic_message_type_count() << "\n";
   EXPECT_GT(checked, 200u);
 }
+
+TEST(DynamicType, HostileSequenceCountsAreRefusedBeforeAllocating)
+{
+  // items: a sequence of a 1 MiB message; a payload claiming 2^32-1 of them (or one, in 8 bytes)
+  // is refused by the length check, before any element is constructed.
+  wire::TypeDescriptionData d;
+  d.type.type_name = "hostile_msgs/msg/Many";
+  wire::DescriptionField items = nested_field("items", "hostile_msgs/msg/Big");
+  items.type_id = 1 + 144;
+  d.type.fields.push_back(items);
+  wire::IndividualDescription big;
+  big.type_name = "hostile_msgs/msg/Big";
+  wire::DescriptionField bytes;
+  bytes.name = "bytes";
+  bytes.type_id = 3 + 48;
+  bytes.capacity = 1u << 20;
+  big.fields.push_back(bytes);
+  d.referenced.push_back(big);
+  std::string error;
+  const wire::MessageTypeSupport* type = wire::build_dynamic_message_type(d, "", &error);
+  ASSERT_NE(type, nullptr) << error;
+  for (const std::vector<uint8_t>& payload :
+       { std::vector<uint8_t>{ 0, 1, 0, 0, 0xff, 0xff, 0xff, 0xff }, std::vector<uint8_t>{ 0, 1, 0, 0, 1, 0, 0, 0, 7, 7, 7, 7 } })
+  {
+    Message message = make(*type);
+    EXPECT_FALSE(wire::deserialize_message(*type, payload.data(), payload.size(), message.get(), &error));
+    EXPECT_NE(error.find("sequence length exceeds the remaining bytes"), std::string::npos) << error;
+  }
+}

@@ -1193,7 +1193,8 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
     m.offset = offset;
     offset += size;
     type->align = std::max(type->align, align);
-    // Lower bound of the serialized size (alignment only adds).
+    // Lower bound of the serialized size (alignment only adds), capped so that CdrReader::
+    // read_length's count * minimum never overflows (a smaller bound is still a bound).
     uint64_t minimum = 0;
     if (m.container == Container::None)
       minimum = e.type == FieldType::Message ? e.nested->min_serialized_size
@@ -1204,7 +1205,7 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
     else
       minimum = 4;
     type->min_serialized_size = static_cast<size_t>(
-      std::min<uint64_t>(uint64_t(type->min_serialized_size) + minimum, uint64_t(1) << 40));
+      std::min<uint64_t>(uint64_t(type->min_serialized_size) + minimum, uint64_t(1) << 24));
     type->members.push_back(std::move(m));
   }
   type->default_elements = default_elements;
