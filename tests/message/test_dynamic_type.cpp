@@ -30,7 +30,8 @@ namespace {
 struct DescriptionFixture
 {
   std::string ros_type;
-  std::string type_hash;
+  std::string type_hash;  ///< rosidl's, as USER_DATA announces it
+  std::string rclpy_hash; ///< rclpy's calculate_type_hash of the served description
   wire::TypeDescriptionData description;
   std::vector<nlohmann::json> samples;
 };
@@ -42,6 +43,7 @@ DescriptionFixture load_description(const std::string& file)
   DescriptionFixture fixture;
   fixture.ros_type = document.at("ros_type").get<std::string>();
   fixture.type_hash = document.at("type_hash").get<std::string>();
+  fixture.rclpy_hash = document.at("rclpy_hash").get<std::string>();
   const std::vector<uint8_t> bytes = ros2vtk_test::decode_hex(document.at("response_hex").get<std::string>());
   // rclpy's response, read with the generated type_description_interfaces type.
   const wire::MessageTypeSupport& type = *tdi::srv::GetTypeDescription::type_support().response();
@@ -111,6 +113,7 @@ TEST(DynamicType, HashOfEveryRclpyDescriptionIsRosidls)
     const DescriptionFixture fixture = load_description(file);
     std::string error;
     EXPECT_EQ(wire::type_description_hash(fixture.description, &error), fixture.type_hash) << file << error;
+    EXPECT_EQ(wire::type_description_hash(fixture.description, &error), fixture.rclpy_hash) << file << error;
   }
 }
 
