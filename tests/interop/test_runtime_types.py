@@ -1,7 +1,8 @@
 """Types nobody wrote a spec for (issue 13): our YAML subscriber, created with the name of a type
 no library of ours registers, learns the type from the publishing rclpy node's
 ~/get_type_description (REP 2011) and shows the field values; a publisher that serves no type
-descriptions gives a status that says so.
+descriptions gives a status that says so. Once learnt, our node serves the type's description
+itself; `ros2vtk-topic echo` learns types the same way.
 
 The type is service_msgs/msg/ServiceEventInfo: a Kilted wheel ships it, msg_specs/ does not
 (checked below), and it has a nested type, a fixed array and 64-bit fields.
