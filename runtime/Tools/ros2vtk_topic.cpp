@@ -4,12 +4,14 @@
 //   ros2vtk-topic types                                 message types this build knows
 //   ros2vtk-topic echo TOPIC TYPE [--count N] [--timeout S] [--qos PROFILE]
 //   ros2vtk-topic pub TOPIC TYPE YAML [--count N] [--rate HZ] [--qos PROFILE] [--wait-matched N]
-// Echo prints each message as YAML followed by `---`, as `ros2 topic echo` does.
+// Echo prints each message as YAML followed by `---`, as `ros2 topic echo` does. A full type name
+// (pkg/msg/Type) this build does not know is learnt from the publisher's ~/get_type_description.
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
 #include "ros2vtk/wire/Subscription.hpp"
+#include "ros2vtk/wire/TypeDescriptionClient.hpp"
 
 #include <chrono>
 #include <csignal>
@@ -162,8 +164,11 @@ int echo(const Options& options)
 {
   if (options.positional.size() != 3)
     return usage();
-  const MessageTypeSupport* type = find_type_or_explain(options.positional[2]);
-  if (!type)
+  const std::string& type_name = options.positional[2];
+  // A full type name nothing registers is learnt from the topic's publisher (issue 13).
+  const bool learn = !find_message_type(type_name) && type_name.find("/msg/") != std::string::npos;
+  const MessageTypeSupport* type = learn ? nullptr : find_type_or_explain(type_name);
+  if (!type && !learn)
     return 1;
   QoS qos;
   if (!QoS::from_name(options.qos, qos))
@@ -175,6 +180,37 @@ int echo(const Options& options)
   if (!participant)
     return 1;
   std::string error;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(options.timeout);
+  if (learn)
+  {
+    std::string topic;
+    if (!participant->resolve_name(options.positional[1], topic, &error))
+    {
+      std::cerr << "ros2vtk-topic: " << error << "\n";
+      return 1;
+    }
+    RuntimeTypeResolver resolver(*participant, topic, type_name);
+    std::string said;
+    while (!interrupted && resolver.poll() != RuntimeTypeResolver::State::Ready)
+    {
+      if (resolver.status() != said)
+      {
+        said = resolver.status();
+        std::cerr << "ros2vtk-topic: " << said << std::endl;
+      }
+      if (resolver.state() == RuntimeTypeResolver::State::Failed)
+        return 1;
+      if (options.timeout >= 0 && Clock::now() >= deadline)
+      {
+        std::cerr << "ros2vtk-topic: timeout: " << resolver.status() << "\n";
+        return 3;
+      }
+      sleep_seconds(0.05);
+    }
+    type = resolver.type();
+    if (!type)
+      return 1;
+  }
   auto subscription = participant->create_subscription(*type, options.positional[1], qos, &error);
   if (!subscription)
   {
@@ -183,7 +219,6 @@ int echo(const Options& options)
   }
   long printed = 0;
   uint64_t rejected_reported = 0;
-  const auto deadline = Clock::now() + std::chrono::duration<double>(options.timeout);
   std::vector<MessagePtr> messages;
   while (!interrupted && (options.count < 0 || printed < options.count))
   {

@@ -286,3 +286,47 @@ def test_type_description_service_switch_is_read_only_and_saved(logic, ros2vtk):
     assert served.GetStartTypeDescriptionService()
     assert served.PrintOwnParameter('start_type_description_service') == \
         'start_type_description_service (bool): true'
+
+
+def test_a_subscriber_of_an_unregistered_type_waits_for_its_publisher_and_survives_a_scene_file(logic):
+    """Issue 13: a full type name nothing registers makes a YAML subscriber that learns the type
+    from a publisher (tests/interop/test_runtime_types.py has the rclpy side); with no publisher it
+    says what it waits for, keeps the name, and a scene file brings it back waiting."""
+    node = logic.GetDefaultROS2Node()
+    sub = node.CreateAndAddSubscriberNode('nobody_ships_msgs/Thing', '/py_unknown_type')
+    assert sub is not None and sub.GetClassName() == 'vtkROS2SubscriberGenericNode'
+    assert sub.GetROSType() == 'nobody_ships_msgs/msg/Thing'
+    assert sub.IsWaitingForType()
+    spin_until(logic, lambda: False, seconds=0.3)
+    assert sub.GetTypeStatus() == ('waiting for a publisher of nobody_ships_msgs/msg/Thing on '
+                                   '/py_unknown_type to learn the type from')
+    assert sub.GetNumberOfMessages() == 0 and sub.GetLastMessage() == ''
+    scene = logic.GetScene()
+    xml = scene.WriteToXMLString()
+    assert 'rosType="nobody_ships_msgs/msg/Thing"' in xml
+    assert scene.ReadFromXMLString(xml)
+    node = logic.GetDefaultROS2Node()
+    restored = node.GetSubscriberNodeByTopic('/py_unknown_type')
+    assert restored is not None and restored.GetROSType() == 'nobody_ships_msgs/msg/Thing'
+    spin_until(logic, lambda: False, seconds=0.3)
+    assert restored.GetTypeStatus().startswith('waiting for a publisher of nobody_ships_msgs/msg/Thing')
+
+
+def test_texts_that_are_no_type_names_are_still_refused(logic):
+    node = logic.GetDefaultROS2Node()
+    assert node.CreateAndAddSubscriberNode('not a/type', '/py_bad_type') is None
+    assert node.CreateAndAddSubscriberNode('NoSuchShortName', '/py_bad_type') is None
+    assert node.CreateAndAddPublisherNode('nobody_ships_msgs/msg/Thing', '/py_bad_type') is None
+    sub = ros2vtk_generic_subscriber(logic)
+    assert not sub.SetROSType('nobody_ships_msgs/msg/Thing')  # SetROSType stays strict
+    assert not sub.SetROSTypeResolvedAtRuntime('pkg/srv/Thing')
+    assert sub.SetROSTypeResolvedAtRuntime('pkg/msg/Thing') and sub.IsWaitingForType()
+    assert sub.SetROSType('std_msgs/msg/String') and not sub.IsWaitingForType()
+    assert sub.GetROSType() == 'std_msgs/msg/String' and sub.GetTypeStatus() == ''
+
+
+def ros2vtk_generic_subscriber(logic):
+    import ros2vtk
+    sub = ros2vtk.vtkROS2SubscriberGenericNode()
+    logic.GetScene().AddNode(sub)
+    return sub

@@ -4,6 +4,9 @@
 
 #include "vtkXMLDataElement.h"
 
+#include <cctype>
+#include <vector>
+
 namespace ros2vtk {
 namespace scene {
 
@@ -44,6 +47,42 @@ std::string assign_generic_type(const char* ros_type, bool added_to_ros_node,
   changed = found != type;
   type = found;
   return std::string();
+}
+
+bool runtime_type_name(std::string& ros_type)
+{
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (true)
+  {
+    const size_t slash = ros_type.find('/', start);
+    parts.push_back(ros_type.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
+    if (slash == std::string::npos)
+    {
+      break;
+    }
+    start = slash + 1;
+  }
+  if (parts.size() < 2 || parts.size() > 3 || (parts.size() == 3 && parts[1] != "msg") || ros_type.size() > 256)
+  {
+    return false;
+  }
+  for (const std::string& part : parts)
+  {
+    if (part.empty() || !std::isalpha(static_cast<unsigned char>(part[0])))
+    {
+      return false;
+    }
+    for (char c : part)
+    {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+      {
+        return false;
+      }
+    }
+  }
+  ros_type = parts[0] + "/msg/" + parts.back();
+  return true;
 }
 
 const char* saved_generic_type(vtkXMLDataElement* element)

@@ -23,6 +23,10 @@ const wire::MessageTypeSupport* find_generic_type(const char* ros_type, std::str
 std::string assign_generic_type(const char* ros_type, bool added_to_ros_node,
   const wire::MessageTypeSupport*& type, bool& changed);
 
+/// A type name a generic subscriber may learn at run time (issue 13): "pkg/msg/Type" or
+/// "pkg/Type" (made "pkg/msg/Type" in place), every part an identifier. False otherwise.
+bool runtime_type_name(std::string& ros_type);
+
 /// The `rosType` attribute a generic node saved, or nullptr when absent or empty.
 const char* saved_generic_type(vtkXMLDataElement* element);
 

@@ -7,6 +7,17 @@
 
 #include "vtkROS2SubscriberNode.h"
 
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+namespace ros2vtk
+{
+namespace wire
+{
+class RuntimeTypeResolver;
+}
+}
+
 class ROS2VTKSCENE_EXPORT vtkROS2SubscriberGenericNode : public vtkROS2SubscriberNode
 {
 public:
@@ -18,6 +29,23 @@ public:
   /// before the node is added to a ROS node. False (vtkErrorMacro listing the registered
   /// types) for an unknown type.
   bool SetROSType(const char* rosType);
+
+  /// Takes a type no library of this process registers ("pkg/msg/Type" or "pkg/Type"): once
+  /// added to a ROS node, the subscriber asks the first publisher of its topic with that type
+  /// for the type's description (REP 2011 `<node>/get_type_description`), builds the type at run
+  /// time and subscribes; until then it receives nothing and GetTypeStatus() says why. A
+  /// registered type is simply set (SetROSType). CreateAndAddSubscriberNode uses this for
+  /// unknown full type names. False for a text that is no type name.
+  bool SetROSTypeResolvedAtRuntime(const char* rosType);
+  /// "" when the type is known; otherwise what the subscriber waits for ("waiting for the type
+  /// description of pkg/msg/T from /node", "the publisher /node does not serve type descriptions
+  /// (...)") or why it gave up.
+  const char* GetTypeStatus() const { return this->TypeStatus.c_str(); }
+  /// True while the type is still to be learnt from a publisher.
+  bool IsWaitingForType() const { return this->Type == nullptr && !this->RuntimeTypeName.empty(); }
+
+  /// Learns the type (when waiting for it), then takes the queued messages.
+  int OnROS2NodeSpin(vtkROS2NodeNode* rosNode) override;
 
   /// The newest message as YAML (same as GetLastMessageYAML; the SlicerROS2 getter name).
   std::string GetLastMessage() const { return this->GetLastMessageYAML(); }
@@ -31,13 +59,23 @@ protected:
   ~vtkROS2SubscriberGenericNode() override;
 
   const ros2vtk::wire::MessageTypeSupport& GetMessageTypeSupport() const override;
-  bool HasMessageTypeSupport() const override { return this->Type != nullptr; }
+  bool HasMessageTypeSupport() const override { return this->Type != nullptr || !this->RuntimeTypeName.empty(); }
+  bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
+    const ros2vtk::wire::QoS& qos, std::string* error) override;
+  void DestroyEndpoint() override;
+  bool HasEndpoint() const override;
 
 private:
   vtkROS2SubscriberGenericNode(const vtkROS2SubscriberGenericNode&) = delete;
   void operator=(const vtkROS2SubscriberGenericNode&) = delete;
 
   const ros2vtk::wire::MessageTypeSupport* Type = nullptr;
+  // A type learnt at run time: its name, a stand-in table that only names it (GetROSType, scene
+  // files) while no message can arrive, and the resolver that asks the publisher.
+  std::string RuntimeTypeName;
+  std::unique_ptr<ros2vtk::wire::MessageTypeSupport> NamedOnlyType;
+  std::unique_ptr<ros2vtk::wire::RuntimeTypeResolver> Resolver;
+  std::string TypeStatus;
 };
 
 #endif

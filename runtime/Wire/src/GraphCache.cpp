@@ -79,7 +79,7 @@ void GraphCache::add_local_endpoint(const Gid& gid, bool is_writer, const std::s
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    local_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type };
+    local_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type, std::string() };
   }
   publish();
 }
@@ -98,10 +98,10 @@ void GraphCache::remove_local_endpoint(const Gid& gid)
 }
 
 void GraphCache::add_remote_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
-                                     const std::string& dds_type)
+                                     const std::string& dds_type, const std::string& type_hash)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  remote_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type };
+  remote_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type, type_hash };
 }
 
 void GraphCache::remove_remote_endpoint(const Gid& gid)
@@ -177,7 +177,14 @@ void GraphCache::on_data_available(dds::DataReader* reader)
     std::vector<NodeInfo> nodes;
     for (const auto& node : info->node_entities_info_seq)
     {
-      nodes.push_back(NodeInfo{ node.node_namespace, node.node_name });
+      NodeInfo entry{ node.node_namespace, node.node_name, {} };
+      for (const auto& writer : node.writer_gid_seq)
+      {
+        Gid gid{};
+        std::copy(writer.data.begin(), writer.data.end(), gid.begin());
+        entry.writers.push_back(gid);
+      }
+      nodes.push_back(std::move(entry));
     }
     std::lock_guard<std::mutex> lock(mutex_);
     remote_nodes_[participant_gid] = std::move(nodes);
@@ -242,6 +249,39 @@ size_t GraphCache::count_endpoints(const std::string& dds_topic, bool writers) c
     }
   }
   return count;
+}
+
+std::vector<PublisherInfo> GraphCache::remote_publishers(const std::string& dds_topic) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<PublisherInfo> result;
+  for (const auto& entry : remote_endpoints_)
+  {
+    if (!entry.second.is_writer || entry.second.dds_topic != dds_topic)
+    {
+      continue;
+    }
+    PublisherInfo info;
+    info.ros_type = dds_type_to_ros(entry.second.dds_type);
+    info.type_hash = entry.second.type_hash;
+    for (const auto& participant : remote_nodes_)
+    {
+      if (!std::equal(participant.first.begin(), participant.first.begin() + 12, entry.first.begin()))
+      {
+        continue;
+      }
+      for (const NodeInfo& node : participant.second)
+      {
+        if (std::find(node.writers.begin(), node.writers.end(), entry.first) != node.writers.end())
+        {
+          info.node_name = node.node_name;
+          info.node_namespace = node.node_namespace;
+        }
+      }
+    }
+    result.push_back(std::move(info));
+  }
+  return result;
 }
 
 } // namespace wire

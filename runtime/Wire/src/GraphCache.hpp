@@ -52,14 +52,18 @@ public:
                           const std::string& dds_type);
   void remove_local_endpoint(const Gid& gid);
 
+  /// `type_hash`: the RIHS01 hash of the endpoint's USER_DATA (`typehash=...;`), "" when none.
   void add_remote_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
-                           const std::string& dds_type);
+                           const std::string& dds_type, const std::string& type_hash = std::string());
   void remove_remote_endpoint(const Gid& gid);
   void remove_remote_participant(const Gid& participant_gid);
 
   std::vector<std::pair<std::string, std::string>> node_names_and_namespaces() const;
   std::vector<TopicInfo> topic_names_and_types() const;
   size_t count_endpoints(const std::string& dds_topic, bool writers) const;
+  /// The remote writers of a DDS topic with their node (from ros_discovery_info; empty names
+  /// while that node's announcement has not arrived) and type hash.
+  std::vector<PublisherInfo> remote_publishers(const std::string& dds_topic) const;
 
   // DataReaderListener: ParticipantEntitiesInfo samples from other participants.
   void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
@@ -70,11 +74,13 @@ private:
     bool is_writer = false;
     std::string dds_topic;
     std::string dds_type;
+    std::string type_hash;
   };
   struct NodeInfo
   {
     std::string node_namespace;
     std::string node_name;
+    std::vector<Gid> writers;
   };
 
   /// Announces the local endpoints on ros_discovery_info. Lock order: publish_mutex_, then

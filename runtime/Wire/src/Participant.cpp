@@ -130,6 +130,24 @@ bool set_error(std::string* error, const std::string& message)
   return false;
 }
 
+/// The `typehash=<hash>;` entry of an endpoint's USER_DATA (rmw's key=value; list), or "".
+std::string type_hash_of(const dds::UserDataQosPolicy& user_data)
+{
+  const std::string text(user_data.data_vec().begin(), user_data.data_vec().end());
+  const std::string key = "typehash=";
+  size_t start = 0;
+  while (start < text.size())
+  {
+    const size_t end = std::min(text.find(';', start), text.size());
+    if (text.compare(start, key.size(), key) == 0)
+    {
+      return text.substr(start + key.size(), std::min<size_t>(end - start - key.size(), 80));
+    }
+    start = end + 1;
+  }
+  return std::string();
+}
+
 std::vector<rtps::octet> user_data_of(const std::string& text, bool with_nul)
 {
   std::vector<rtps::octet> bytes(text.begin(), text.end());
@@ -530,7 +548,7 @@ void Participant::Impl::on_publisher_discovery(dds::DomainParticipant*,
   if (info.status == rtps::WriterDiscoveryInfo::DISCOVERED_WRITER)
   {
     graph.add_remote_endpoint(to_gid(info.info.guid()), true, info.info.topicName().to_string(),
-                              info.info.typeName().to_string());
+                              info.info.typeName().to_string(), type_hash_of(info.info.m_qos.m_userData));
   }
   else if (info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER)
   {
@@ -657,6 +675,13 @@ size_t Participant::count_publishers(const std::string& topic) const
 {
   std::string resolved;
   return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), true) : 0;
+}
+
+std::vector<PublisherInfo> Participant::publishers_info(const std::string& topic) const
+{
+  std::string resolved;
+  return resolve_name(topic, resolved, nullptr) ? impl_->graph.remote_publishers(topic_to_dds(resolved))
+                                                : std::vector<PublisherInfo>();
 }
 
 size_t Participant::count_subscribers(const std::string& topic) const

@@ -66,6 +66,41 @@ void to_message(const TypeDescriptionTable& table, tdi::msg::TypeDescription& me
   }
 }
 
+namespace {
+
+IndividualDescription from_message(const tdi::msg::IndividualTypeDescription& message)
+{
+  IndividualDescription result;
+  result.type_name = message.type_name;
+  result.fields.reserve(message.fields.size());
+  for (const tdi::msg::Field& field : message.fields)
+  {
+    DescriptionField f;
+    f.name = field.name;
+    f.type_id = field.type.type_id;
+    f.capacity = field.type.capacity;
+    f.string_capacity = field.type.string_capacity;
+    f.nested_type_name = field.type.nested_type_name;
+    f.default_value = field.default_value;
+    result.fields.push_back(std::move(f));
+  }
+  return result;
+}
+
+} // namespace
+
+TypeDescriptionData from_message(const tdi::msg::TypeDescription& message)
+{
+  TypeDescriptionData result;
+  result.type = from_message(message.type_description);
+  result.referenced.reserve(message.referenced_type_descriptions.size());
+  for (const auto& referenced : message.referenced_type_descriptions)
+  {
+    result.referenced.push_back(from_message(referenced));
+  }
+  return result;
+}
+
 void answer_type_description_request(const NodeTypeCache& types,
                                      const tdi::srv::GetTypeDescription_Request& request,
                                      tdi::srv::GetTypeDescription_Response& response)

@@ -59,6 +59,15 @@ struct TopicInfo
   std::vector<std::string> types; ///< ROS types, "std_msgs/msg/String"
 };
 
+/// One remote publisher of a topic (rclpy's get_publishers_info_by_topic, the parts we need).
+struct PublisherInfo
+{
+  std::string node_name;      ///< "" while its node's ros_discovery_info has not arrived
+  std::string node_namespace; ///< "/" or "/robot1"
+  std::string ros_type;       ///< "pkg/msg/Type"
+  std::string type_hash;      ///< USER_DATA typehash ("RIHS01_..."), "" when it sent none
+};
+
 /// One ROS 2 node. Creating it announces the node on `ros_discovery_info`; every publisher,
 /// subscription, service and client it creates is added to that announcement.
 class Participant
@@ -109,6 +118,8 @@ public:
   std::vector<std::pair<std::string, std::string>> node_names_and_namespaces() const;
   std::vector<TopicInfo> topic_names_and_types() const;
   size_t count_publishers(const std::string& topic) const;
+  /// The publishers of other participants on `topic` (a name this node resolves).
+  std::vector<PublisherInfo> publishers_info(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
 
   /// Link status: remote participants (other processes' nodes, on any host) discovered and not

@@ -7,6 +7,7 @@
 #define ros2vtk_wire_TypeDescriptionService_hpp
 
 #include "ros2vtk/type_description_interfaces/srv/get_type_description.hpp"
+#include "ros2vtk/wire/DynamicType.hpp"
 #include "ros2vtk/wire/NodeTypeCache.hpp"
 
 #include <memory>
@@ -21,6 +22,9 @@ class Participant;
 /// A generated description table as the message the service sends.
 void to_message(const TypeDescriptionTable& table,
                 ::ros2vtk::type_description_interfaces::msg::TypeDescription& message);
+
+/// A received description in the plain form build_dynamic_message_type reads (DynamicType.hpp).
+TypeDescriptionData from_message(const ::ros2vtk::type_description_interfaces::msg::TypeDescription& message);
 
 /// Fills `response` for `request` from `types`, as rcl_node_type_description_service_handle_request:
 /// the type is looked up by its hash alone; an unparsable hash answers "Failed to parse type

@@ -1,0 +1,195 @@
+// ros2vtk — RuntimeTypeResolver (TypeDescriptionClient.hpp): graph -> publisher's node ->
+// ~/get_type_description -> DynamicType, one non-blocking step per poll().
+#include "ros2vtk/wire/TypeDescriptionClient.hpp"
+
+#include "ShippedTypes.hpp"
+#include "ros2vtk/type_description_interfaces/srv/get_type_description.hpp"
+#include "ros2vtk/wire/DynamicType.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/Service.hpp"
+#include "ros2vtk/wire/TypeDescriptionService.hpp"
+#include "ros2vtk/wire/Utf8.hpp"
+
+#include <cctype>
+#include <vector>
+
+namespace ros2vtk {
+namespace wire {
+
+namespace tdi = ::ros2vtk::type_description_interfaces;
+
+namespace {
+
+bool same_hash(const std::string& a, const std::string& b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+      return false;
+  }
+  return true;
+}
+
+std::string node_name_of(const PublisherInfo& info)
+{
+  if (info.node_namespace.empty() || info.node_namespace == "/")
+    return "/" + info.node_name;
+  return info.node_namespace + "/" + info.node_name;
+}
+
+} // namespace
+
+RuntimeTypeResolver::RuntimeTypeResolver(Participant& participant, std::string topic, std::string ros_type,
+                                         std::chrono::milliseconds service_wait)
+  : participant_(participant)
+  , topic_(std::move(topic))
+  , ros_type_(std::move(ros_type))
+  , service_wait_(service_wait)
+{
+  status_ = "waiting for a publisher of " + ros_type_ + " on " + topic_ + " to learn the type from";
+}
+
+RuntimeTypeResolver::~RuntimeTypeResolver() = default;
+
+void RuntimeTypeResolver::set_state(State state, std::string status)
+{
+  state_ = state;
+  status_ = std::move(status);
+}
+
+bool RuntimeTypeResolver::pick_publisher()
+{
+  bool unnamed = false;
+  for (const PublisherInfo& info : participant_.publishers_info(topic_))
+  {
+    if (info.ros_type != ros_type_)
+      continue;
+    if (info.node_name.empty())
+    {
+      unnamed = true; // its node's ros_discovery_info sample has not arrived yet
+      continue;
+    }
+    node_ = node_name_of(info);
+    type_hash_ = info.type_hash;
+    return true;
+  }
+  set_state(State::WaitingForPublisher,
+            unnamed ? "waiting for the node name of the publisher of " + ros_type_ + " on " + topic_
+                    : "waiting for a publisher of " + ros_type_ + " on " + topic_ + " to learn the type from");
+  return false;
+}
+
+RuntimeTypeResolver::State RuntimeTypeResolver::poll()
+{
+  if (state_ == State::Ready || state_ == State::Failed)
+  {
+    return state_;
+  }
+  if (node_.empty())
+  {
+    if (!pick_publisher())
+    {
+      return state_;
+    }
+    if (type_hash_.empty())
+    {
+      set_state(State::NoService, "the publisher " + node_ + " announces no type hash for " + ros_type_ +
+                                    " (ROS 2 before Jazzy): it cannot be asked for the type description");
+      node_.clear(); // look again: another publisher may announce one
+      return state_;
+    }
+    // Built already (another subscriber, or a library registered it meanwhile)?
+    const MessageTypeSupport* known = find_message_type(ros_type_);
+    if (known && known->type_hash && same_hash(known->type_hash, type_hash_))
+    {
+      type_ = known;
+      set_state(State::Ready, "");
+      return state_;
+    }
+    std::string error;
+    client_ = participant_.create_service_client(
+      shipped_service_type("type_description_interfaces/srv/GetTypeDescription"), node_ + "/get_type_description",
+      QoS::services(), &error);
+    if (!client_)
+    {
+      set_state(State::Failed, "cannot ask " + node_ + " for the type description of " + ros_type_ + ": " + error);
+      return state_;
+    }
+    sequence_ = -1;
+    asked_since_ = std::chrono::steady_clock::now();
+    set_state(State::WaitingForDescription, "waiting for the type description of " + ros_type_ + " from " + node_);
+  }
+  // The publisher left before answering: start over with whoever publishes next.
+  bool present = false;
+  for (const PublisherInfo& info : participant_.publishers_info(topic_))
+  {
+    present = present || (info.ros_type == ros_type_ && node_name_of(info) == node_);
+  }
+  if (!present)
+  {
+    client_.reset();
+    node_.clear();
+    pick_publisher();
+    return state_;
+  }
+  if (sequence_ < 0)
+  {
+    if (client_->is_server_available())
+    {
+      tdi::srv::GetTypeDescription_Request request;
+      request.type_name = ros_type_;
+      request.type_hash = type_hash_;
+      request.include_type_sources = false;
+      sequence_ = client_->send_request(&request);
+      set_state(State::WaitingForDescription, "waiting for the type description of " + ros_type_ + " from " + node_);
+    }
+    else if (std::chrono::steady_clock::now() - asked_since_ > service_wait_)
+    {
+      set_state(State::NoService,
+                "the publisher " + node_ + " does not serve type descriptions (no " + node_ +
+                  "/get_type_description after " + std::to_string(service_wait_.count() / 1000.0).substr(0, 3) +
+                  " s; nodes before Jazzy, or started with start_type_description_service false, have none)");
+    }
+    return state_;
+  }
+  std::vector<ServiceResponse> responses;
+  client_->take(responses);
+  for (const ServiceResponse& reply : responses)
+  {
+    if (reply.sequence_number != sequence_ || !reply.response)
+    {
+      continue;
+    }
+    const auto& response = *static_cast<const tdi::srv::GetTypeDescription_Response*>(reply.response.get());
+    if (!response.successful)
+    {
+      set_state(State::Failed, "the publisher " + node_ + " did not give the type description of " + ros_type_ +
+                                 ": " + clip_for_message(response.failure_reason));
+      client_.reset();
+      return state_;
+    }
+    std::string error;
+    const MessageTypeSupport* built =
+      build_dynamic_message_type(from_message(response.type_description), type_hash_, &error);
+    client_.reset();
+    if (!built)
+    {
+      set_state(State::Failed, "the type description of " + ros_type_ + " from " + node_ + " is unusable: " + error);
+      return state_;
+    }
+    if (built->ros_type != ros_type_)
+    {
+      set_state(State::Failed, node_ + " described " + built->ros_type + " when asked for " + ros_type_);
+      return state_;
+    }
+    type_ = built;
+    set_state(State::Ready, "");
+    return state_;
+  }
+  return state_;
+}
+
+} // namespace wire
+} // namespace ros2vtk
