@@ -10,9 +10,11 @@ What happens here, with the ros2vtk Python API only:
     primitives, with their origins, scales and colours), under a base transform that places it;
   * a CT-like phantom (gel block, tongue-like tissue, pseudotumour, fiducials) is shown as three
     orthogonal slices with a soft-tissue window, placed by an editable registration transform;
-  * the phantom (2 mm voxels: 32 x 26 x 19 cm, about a torso) is placed where the instrument works: at
-    the centre of the needle tip's positions over the first seconds of motion, so the tip reaches
-    into it; the three slices follow the tip, as a CT navigation view does;
+  * the phantom (2 mm voxels: 32 x 26 x 19 cm, its gel block about an abdomen) is registered to
+    where the instrument works: its pseudotumour at the deepest needle tip position of the first
+    6.5 s of motion (the simulated robot's needle insertions,
+    examples/robots/surgical_arm/config/needle_insertion.motion), so the tip reaches into it on
+    every descent; the three slices follow the tip, as a CT navigation view does;
   * it shows everything in the web app (`ros2vtk.app`, prints the URL) or, with --window, in a
     VTK window; without a display the window mode writes PNG frames (--offscreen DIR) and, unless
     --duration says otherwise, stops after 20 s with a summary. Ctrl-C stops it cleanly.
