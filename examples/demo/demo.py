@@ -12,9 +12,10 @@ What happens here, with the ros2vtk Python API only:
     orthogonal slices with a soft-tissue window, placed by an editable registration transform;
   * the phantom (2 mm voxels: 32 x 26 x 19 cm, its gel block about an abdomen) is registered to
     where the instrument works: its pseudotumour at the deepest needle tip position of the first
-    6.5 s of motion (the simulated robot's needle insertions,
+    descent it sees (the simulated robot's needle insertions,
     examples/robots/surgical_arm/config/needle_insertion.motion), so the tip reaches into it on
-    every descent; the three slices follow the tip, as a CT navigation view does;
+    every descent; the three slices follow the tip, as a CT navigation view does (in the window
+    mode also axial, sagittal and coronal panes centred on the tip, the needle's cut drawn);
   * it shows everything in the web app (`ros2vtk.app`, prints the URL) or, with --window, in a
     VTK window; without a display the window mode writes PNG frames (--offscreen DIR) and, unless
     --duration says otherwise, stops after 20 s with a summary. Ctrl-C stops it cleanly.
@@ -165,23 +166,28 @@ def target_centre(image):
 
 class TipPlacement:
     """Registers the phantom to the instrument's working area: it watches the needle tip (its tf
-    lookup) for `seconds` (one insertion of the demo's motion, 6 s), then places the phantom so
-    that its pseudotumour is at the deepest tip position seen: the needle, inserted again, reaches
-    into the phantom and its target, as in a navigated needle insertion."""
+    lookup) until it has seen one descent (the tip down at least `stroke` mm to its lowest point
+    and up again by as much; at most `seconds`), then places the phantom so that its pseudotumour
+    is at the deepest tip position seen: the needle, lowered again, reaches into the phantom and
+    its target, as in a navigated needle insertion."""
 
-    def __init__(self, registration, image, seconds: float = 6.5):
-        self.registration, self.image, self.seconds = registration, image, seconds
+    def __init__(self, registration, image, seconds: float = 10.0, stroke: float = 30.0):
+        self.registration, self.image, self.seconds, self.stroke = registration, image, seconds, stroke
         self.target = target_centre(image)
-        self.deepest, self.start, self.placed = None, None, False
+        self.deepest, self.highest, self.start, self.placed = None, None, None, False
+        self.descended = 0.0  # mm from the highest point before the deepest down to it
 
     def add(self, tip, now: float) -> bool:
         """Adds a tip sample; True when the phantom has just been placed."""
         if self.placed:
             return False
         self.start = now if self.start is None else self.start
+        self.highest = tip[2] if self.highest is None else max(self.highest, tip[2])
         if self.deepest is None or tip[2] < self.deepest[2]:
             self.deepest = list(tip)
-        if now - self.start < self.seconds:
+            self.descended = self.highest - tip[2]
+        one_descent = self.descended >= self.stroke and tip[2] - self.deepest[2] >= self.stroke
+        if not one_descent and now - self.start < self.seconds:
             return False
         placement = vtk.vtkMatrix4x4()
         for i in range(3):
@@ -227,8 +233,13 @@ def frame_scene(renderer) -> None:
     renderer.ResetCameraClippingRange()
 
 
+# The 2D panes of the window mode, top to bottom, with Slicer's view colours (red, yellow, green).
+SLICE_PANES = (('axial', (0.95, 0.35, 0.35)), ('sagittal', (0.95, 0.85, 0.3)), ('coronal', (0.45, 0.8, 0.4)))
+VIEW_WIDTH = 0.7  # of the window, for the 3D view; the panes share the rest
+
+
 class Viewer:
-    def __init__(self, scene, image, registration, offscreen_dir: str | None, size=(1280, 720)):
+    def __init__(self, scene, image, registration, offscreen_dir: str | None, size=(1280, 720), volume=None):
         self.scene = scene
         self.renderer = vtk.vtkRenderer()
         # Slicer's 3D view background, so the scene looks as Slicer users know it.
@@ -251,6 +262,44 @@ class Viewer:
         self.tip_link_id = None    # the tip link's transform node: its model is the tip marker
         self.tip_model_id = None
         self.frame = 0
+        # Axial, sagittal and coronal panes of the phantom (vtkROS2SliceView: resliced where the
+        # registration puts it, the needle's cut drawn in its colour) right of the 3D view, centred
+        # on the needle tip while it is inside the phantom.
+        self.slice_views = {}
+        if volume is not None and hasattr(ros2vtk, 'vtkROS2SliceView'):
+            self.renderer.SetViewport(0.0, 0.0, VIEW_WIDTH, 1.0)
+            for row, (orientation, colour) in enumerate(SLICE_PANES):
+                pane = vtk.vtkRenderer()
+                pane.SetViewport(VIEW_WIDTH, 1.0 - (row + 1) / 3, 1.0, 1.0 - row / 3)
+                pane.SetBackground(0.0, 0.0, 0.0)
+                self.window.AddRenderer(pane)
+                view = ros2vtk.vtkROS2SliceView()
+                view.SetRenderer(pane)
+                view.SetScene(scene)
+                view.SetOrientation(orientation)
+                view.SetVolumeNode(volume)
+                view.SetWindowLevel(400.0, 40.0)
+                view.SetFieldOfView(80.0)  # 16 cm tall around the tip: the needle's way in the tissue
+                label = vtk.vtkTextActor()
+                label.SetInput(orientation)
+                label.GetTextProperty().SetColor(*colour)
+                label.GetTextProperty().SetFontSize(16)
+                label.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
+                label.GetPositionCoordinate().SetValue(0.02, 0.04)
+                pane.AddActor2D(label)
+                self.slice_views[orientation] = view
+            centre = [(b0 + b1) / 2 for b0, b1 in zip(self.phantom.world_bounds()[0::2], self.phantom.world_bounds()[1::2])]
+            for view in self.slice_views.values():
+                view.SetSliceCenter(*centre)
+
+    def follow_tip(self) -> None:
+        """The 3D slices and the 2D panes through the needle tip while it is inside the phantom."""
+        if self.tip is None:
+            return
+        self.phantom.follow(self.tip)
+        if self.phantom.tip_inside:
+            for view in self.slice_views.values():
+                view.SetSliceCenter(*self.tip)
 
     def update(self) -> None:
         """Model nodes of the scene -> actors with their world matrices."""
@@ -290,6 +339,8 @@ class Viewer:
         # The robot moves: near/far planes computed once would clip links that swing towards or
         # away from the camera (seen as a needle guide missing from a frame).
         self.renderer.ResetCameraClippingRange()
+        for view in self.slice_views.values():
+            view.Update()
         self.window.Render()
         if not self.offscreen_dir:
             return None
@@ -318,7 +369,13 @@ class Viewer:
                 'phantom_bounds_mm': self.phantom.world_bounds(),
                 'phantom_display_box': display_box(self.renderer, self.phantom.world_bounds()),
                 'slice_planes_mm': self.phantom.slice_planes(),
-                'voxel_mm': list(self.phantom.image.GetSpacing())}
+                'voxel_mm': list(self.phantom.image.GetSpacing()),
+                'view_viewport_px': [v * self.window.GetSize()[i % 2] for i, v in enumerate(self.renderer.GetViewport())]}
+        centre = [0.0, 0.0, 0.0]
+        for orientation, view in self.slice_views.items():
+            view.GetSliceCenter(centre)
+            info.setdefault('slice_view_centres_mm', {})[orientation] = list(centre)
+            info.setdefault('slice_view_cuts', {})[orientation] = view.GetNumberOfIntersectedModels()
         if robot_box.IsValid():
             bounds = [0.0] * 6
             robot_box.GetBounds(bounds)
@@ -368,6 +425,18 @@ class Demo:
         self.registration.SetMatrixTransformToParent(placement)
         self.scene.AddNode(self.registration)
         self.placement = TipPlacement(self.registration, self.image)
+        # The 2D panes (the app's, the window mode's) show the phantom as a volume node under the
+        # registration; hidden in the 3D view, where PhantomView draws its slices and the tumour.
+        self.volume = None
+        if hasattr(ros2vtk, 'vtkROS2VolumeNode'):
+            self.volume = ros2vtk.vtkROS2VolumeNode()
+            self.volume.SetName('phantom')
+            self.volume.SetImageData(self.image)
+            self.volume.SetWindow(400.0)
+            self.volume.SetLevel(40.0)
+            self.volume.SetVisibility(False)
+            self.scene.AddNode(self.volume)
+            self.volume.SetParentTransformNodeID(self.registration.GetID())
         namespaces = ['/'] if args.robots == 1 else [f'/robot{i + 1}' for i in range(args.robots)]
         urdf_folder = Path(args.urdf).resolve().parent
         package_paths = args.package_path or [str(urdf_folder.parent)]  # <package>/urdf/robot.urdf
@@ -406,9 +475,8 @@ class Demo:
             event = 'tracked'  # the arm in its pose (loaded links sit at the origin until tracked)
         self.tip = tip_position(self.first) if tracked else None
         if self.tip is not None and self.placement.add(self.tip, time.monotonic()):
-            print('[demo] phantom placed at the needle tip: its pseudotumour at the deepest tip position of '
-                  f'{self.placement.seconds:g} s ({", ".join(f"{c:.0f}" for c in self.placement.deepest)} mm)',
-                  flush=True)
+            print('[demo] phantom placed at the needle tip: its pseudotumour at the deepest tip position of the '
+                  f'first descent ({", ".join(f"{c:.0f}" for c in self.placement.deepest)} mm)', flush=True)
             event = 'placed'
         return event
 
@@ -427,7 +495,7 @@ class Demo:
 
 def run_window(demo: Demo, args, duration: float) -> int:
     """A VTK window (or PNG frames offscreen) driven by this loop."""
-    viewer = Viewer(demo.scene, demo.image, demo.registration, args.offscreen or None)
+    viewer = Viewer(demo.scene, demo.image, demo.registration, args.offscreen or None, volume=demo.volume)
     viewer.reset_camera()
     interactor = None
     if not args.offscreen:
@@ -454,8 +522,8 @@ def run_window(demo: Demo, args, duration: float) -> int:
             viewer.update()
             viewer.tip = demo.tip
             viewer.phantom.set_visible(demo.placement.placed)
-            if demo.tip is not None and demo.placement.placed:
-                viewer.phantom.follow(demo.tip)
+            if demo.placement.placed:
+                viewer.follow_tip()
             if event:
                 viewer.reset_camera()  # the robot whole and the phantom in one view
             now = time.monotonic()
@@ -493,18 +561,6 @@ def run_app(demo: Demo, args, duration: float) -> int:
     def setup(app):
         phantom = PhantomView(app.renderer, demo.image, demo.registration)
         phantom.set_visible(False)  # until it is placed at the tip
-        # The 2D panes show the phantom as a volume node under the registration; hidden in the 3D
-        # view, where PhantomView draws its three slices and the pseudotumour.
-        volume = getattr(ros2vtk, 'vtkROS2VolumeNode', None)
-        if volume is not None and app.slices is not None:
-            volume = volume()
-            volume.SetName('phantom')
-            volume.SetImageData(demo.image)
-            volume.SetWindow(400.0)
-            volume.SetLevel(40.0)
-            volume.SetVisibility(False)
-            demo.scene.AddNode(volume)
-            volume.SetParentTransformNodeID(demo.registration.GetID())
 
         def after_spin():
             if demo.after_spin():
@@ -535,7 +591,7 @@ def main() -> int:
     parser.add_argument('--offscreen', default='', help='window mode: write PNG frames here')
     parser.add_argument('--duration', type=float, default=None,
                         help=f'seconds (default: until Ctrl-C; {HEADLESS_SECONDS:g} s for frames without a display)')
-    parser.add_argument('--frames-per-second', type=float, default=0.5, help='PNG frames written per second')
+    parser.add_argument('--frames-per-second', type=float, default=0.75, help='PNG frames written per second')
     parser.add_argument('--urdf', default=str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'),
                         help='the URDF the simulated robot serves (its folder is the base of relative mesh paths)')
     parser.add_argument('--package-path', action='append', default=[],

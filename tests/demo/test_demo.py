@@ -98,13 +98,14 @@ def test_demo_shows_the_needle_reaching_into_the_phantom():
     assert 8 <= len(frames) <= 30, demo.stdout
     infos = {frame: json.loads(frame.with_suffix('.json').read_text()) for frame in frames}
     # The robot whole, in every frame once its links are tracked: the projected box of its
-    # actors' bounds (8 corners) inside the window.
+    # actors' bounds (8 corners) inside the 3D view (the left of the window; the slice panes
+    # share the rest).
     tracked = [f for f in frames if 'robot_display_box' in infos[f] and 'tip_mm' in infos[f]]
-    assert len(tracked) >= len(frames) - 3, f'the arm tracked in {len(tracked)} of {len(frames)} frames'
+    assert len(tracked) >= len(frames) - 4, f'the arm tracked in {len(tracked)} of {len(frames)} frames'
     for frame in tracked:
         x0, y0, x1, y1 = infos[frame]['robot_display_box']
-        width, height = infos[frame]['window']
-        assert 0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height, f'{frame.name}: robot out of view {x0, y0, x1, y1}'
+        vx0, vy0, vx1, vy1 = infos[frame]['view_viewport_px']
+        assert vx0 <= x0 < x1 <= vx1 and vy0 <= y0 < y1 <= vy1, f'{frame.name}: robot out of view {x0, y0, x1, y1}'
     # Its sizeable models drawn where their projected centres are (not background), last frames.
     checked = 0
     for frame in frames[-3:]:
@@ -135,11 +136,14 @@ def test_demo_shows_the_needle_reaching_into_the_phantom():
     assert all(150 <= side <= 500 for side in sides), sides
     nearest = [min(max(0.0, bounds[2 * i]), bounds[2 * i + 1]) for i in range(3)]
     assert math.dist(nearest, (0, 0, 0)) < 1000, bounds
-    # The three slices through the tip (within a voxel) whenever it is inside.
+    # The three slices through the tip (within a voxel) whenever it is inside; the 2D panes
+    # centred on it, their planes cutting the needle (vtkCutter of the scene's models).
     for frame in at_tip:
         info = infos[frame]
         for axis, name in enumerate(('sagittal', 'coronal', 'axial')):
             assert abs(info['slice_planes_mm'][name] - info['tip_mm'][axis]) <= info['voxel_mm'][axis], (frame.name, info)
+            assert math.dist(info['slice_view_centres_mm'][name], info['tip_mm']) <= info['voxel_mm'][axis], (frame.name, info)
+            assert info['slice_view_cuts'][name] >= 1, (frame.name, name, info['slice_view_cuts'])
     # On the picture: the tip's projection inside the phantom's projected box, grey tissue there.
     info = infos[at_tip[0]]
     x0, y0, x1, y1 = info['phantom_display_box']
