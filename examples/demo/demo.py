@@ -569,7 +569,7 @@ def run_app(demo: Demo, args, duration: float) -> int:
             if demo.tip is not None and demo.placement.placed:
                 phantom.follow(demo.tip)
                 if phantom.tip_inside and app.slices is not None:
-                    app.slices.set_point(*demo.tip)  # the slice planes follow the tip, as in --window
+                    app.slices.follow(*demo.tip)  # planes through the tip, panes centred on it, as in --window
         app.add_spin_callback(after_spin)
         app.state.robot_selected = demo.first.GetRobotName()
     print('[demo] starting the app (Ctrl-C stops it)', flush=True)
