@@ -177,7 +177,14 @@ void GraphCache::on_data_available(dds::DataReader* reader)
     std::vector<NodeInfo> nodes;
     for (const auto& node : info->node_entities_info_seq)
     {
-      nodes.push_back(NodeInfo{ node.node_namespace, node.node_name });
+      NodeInfo entry{ node.node_namespace, node.node_name, {} };
+      for (const auto& writer : node.writer_gid_seq)
+      {
+        Gid gid{};
+        std::copy(writer.data.begin(), writer.data.end(), gid.begin());
+        entry.writers.push_back(gid);
+      }
+      nodes.push_back(std::move(entry));
     }
     std::lock_guard<std::mutex> lock(mutex_);
     remote_nodes_[participant_gid] = std::move(nodes);
@@ -242,6 +249,53 @@ size_t GraphCache::count_endpoints(const std::string& dds_topic, bool writers) c
     }
   }
   return count;
+}
+
+namespace {
+std::string full_node_name(const std::string& ns, const std::string& name)
+{
+  return ns == "/" || ns.empty() ? "/" + name : ns + "/" + name;
+}
+} // namespace
+
+std::string GraphCache::node_of_writer_locked(const Gid& gid) const
+{
+  const auto local = local_endpoints_.find(gid);
+  if (local != local_endpoints_.end() && local->second.is_writer)
+    return full_node_name(node_namespace_, node_name_);
+  for (const auto& participant : remote_nodes_)
+  {
+    for (const auto& node : participant.second)
+    {
+      if (std::find(node.writers.begin(), node.writers.end(), gid) != node.writers.end())
+        return full_node_name(node.node_namespace, node.node_name);
+    }
+  }
+  return std::string();
+}
+
+std::string GraphCache::node_of_writer(const Gid& gid) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return node_of_writer_locked(gid);
+}
+
+std::vector<std::string> GraphCache::publisher_nodes(const std::string& dds_topic) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::set<std::string> names;
+  for (const auto* endpoints : { &local_endpoints_, &remote_endpoints_ })
+  {
+    for (const auto& entry : *endpoints)
+    {
+      if (entry.second.is_writer && entry.second.dds_topic == dds_topic)
+      {
+        const std::string owner = node_of_writer_locked(entry.first);
+        names.insert(owner.empty() ? "?" : owner);
+      }
+    }
+  }
+  return std::vector<std::string>(names.begin(), names.end());
 }
 
 } // namespace wire
