@@ -4,19 +4,24 @@
 # process(es) on the loopback, then examples/demo/demo.py with our default ROS node: in the web app
 # (prints its URL, http://127.0.0.1:8080/, until Ctrl-C), or with --window in a VTK window.
 # Usage: scripts/demo.sh [--window] [--port N] [--robots N] [--spin timer|event] [--offscreen DIR]
-#                        [--duration S] [--urdf FILE]
+#                        [--duration S] [--urdf FILE] [--motion FILE]
 # --window without a display renders under Xvfb and writes PNG frames to build/demo-frames for 20 s
 # (--duration S to change) and prints a summary.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${ROS2VTK_BUILD_DIR:-$ROOT/build}"
 URDF="$ROOT/examples/robots/surgical_arm/urdf/surgical_arm.urdf"
+# The surgical arm's needle insertions (ros2vtk-sim-robot --motion); another --urdf moves with the
+# simulator's default motion unless --motion FILE is given.
+MOTION="$ROOT/examples/robots/surgical_arm/config/needle_insertion.motion"
+MOTION_GIVEN=""
 ROBOTS=1
 WINDOW=0
 ARGS=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    --urdf) URDF="$(readlink -f "$2")"; ARGS+=("$1" "$URDF"); shift 2 ;;
+    --urdf) URDF="$(readlink -f "$2")"; ARGS+=("$1" "$URDF"); MOTION="$MOTION_GIVEN"; shift 2 ;;
+    --motion) MOTION="$(readlink -f "$2")"; MOTION_GIVEN="$MOTION"; shift 2 ;;
     --robots) ROBOTS="$2"; ARGS+=("$1" "$2"); shift 2 ;;
     --window|--offscreen) WINDOW=1; ARGS+=("$1"); shift ;;
     *) ARGS+=("$1"); shift ;;
@@ -34,14 +39,16 @@ PHANTOM="$BUILD/demo/phantom.mha"
 mkdir -p "$BUILD/demo"
 [ -f "$PHANTOM" ] || "$BUILD/runtime/Viewer/ros2vtk-make-phantom" "$PHANTOM"
 
+SIM=("$BUILD/runtime/Tools/ros2vtk-sim-robot" --urdf "$URDF" --rate 50)
+if [ -n "$MOTION" ]; then SIM+=(--motion "$MOTION"); fi
 PIDS=()
 cleanup() { for pid in "${PIDS[@]}"; do kill "$pid" 2>/dev/null || true; done; }
 trap cleanup EXIT INT TERM
 if [ "$ROBOTS" -le 1 ]; then
-  "$BUILD/runtime/Tools/ros2vtk-sim-robot" --urdf "$URDF" --rate 50 & PIDS+=($!)
+  "${SIM[@]}" & PIDS+=($!)
 else
   for i in $(seq 1 "$ROBOTS"); do
-    "$BUILD/runtime/Tools/ros2vtk-sim-robot" --urdf "$URDF" --rate 50 --namespace "/robot$i" \
+    "${SIM[@]}" --namespace "/robot$i" \
       --frame-prefix "robot$i/" & PIDS+=($!)
   done
 fi

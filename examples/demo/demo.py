@@ -10,9 +10,12 @@ What happens here, with the ros2vtk Python API only:
     primitives, with their origins, scales and colours), under a base transform that places it;
   * a CT-like phantom (gel block, tongue-like tissue, pseudotumour, fiducials) is shown as three
     orthogonal slices with a soft-tissue window, placed by an editable registration transform;
-  * the phantom (2 mm voxels: 32 x 26 x 19 cm, about a torso) is placed where the instrument works: at
-    the centre of the needle tip's positions over the first seconds of motion, so the tip reaches
-    into it; the three slices follow the tip, as a CT navigation view does;
+  * the phantom (2 mm voxels: 32 x 26 x 19 cm, its gel block about an abdomen) is registered to
+    where the instrument works: its pseudotumour at the deepest needle tip position of the first
+    descent it sees (the simulated robot's needle insertions,
+    examples/robots/surgical_arm/config/needle_insertion.motion), so the tip reaches into it on
+    every descent; the three slices follow the tip, as a CT navigation view does (in the window
+    mode also axial, sagittal and coronal panes centred on the tip, the needle's cut drawn);
   * it shows everything in the web app (`ros2vtk.app`, prints the URL) or, with --window, in a
     VTK window; without a display the window mode writes PNG frames (--offscreen DIR) and, unless
     --duration says otherwise, stops after 20 s with a summary. Ctrl-C stops it cleanly.
@@ -41,7 +44,8 @@ PHANTOM_SPACING_MM = 2.0  # ros2vtk-make-phantom's 1 mm voxels, scaled to a tors
 
 class PhantomView:
     """The CT phantom in a renderer: three orthogonal slices (W400/L40, air see-through) that
-    follow a point, plus the pseudotumour surface, all placed by the registration transform."""
+    follow a point, the pseudotumour surface and the volume's outline, all placed by the
+    registration transform; hidden until the phantom is registered (`set_visible`)."""
 
     def __init__(self, renderer, image, registration):
         self.image = image
@@ -74,9 +78,23 @@ class PhantomView:
         self.tumour.GetProperty().SetOpacity(0.6)
         self.tumour.SetUserMatrix(registration.GetMatrixTransformToParent())
         renderer.AddActor(self.tumour)
+        # The volume's box, as Slicer outlines a volume in 3D: where the image is, at a glance.
+        outline = vtk.vtkOutlineFilter()
+        outline.SetInputData(image)
+        outline_mapper = vtk.vtkPolyDataMapper()
+        outline_mapper.SetInputConnection(outline.GetOutputPort())
+        self.outline = vtk.vtkActor()
+        self.outline.SetMapper(outline_mapper)
+        self.outline.GetProperty().SetColor(0.95, 0.95, 0.6)
+        self.outline.SetUserMatrix(registration.GetMatrixTransformToParent())
+        renderer.AddActor(self.outline)
         extent = image.GetExtent()
         self.follow_index([(extent[2 * i] + extent[2 * i + 1]) // 2 for i in range(3)])
         self.tip_inside = False
+
+    def set_visible(self, visible: bool) -> None:
+        for actor in (*self.slice_actors, self.tumour, self.outline):
+            actor.SetVisibility(visible)
 
     def world_to_index(self, point):
         """World (robot, mm) -> voxel index of the phantom, clamped to its extent."""
@@ -109,40 +127,71 @@ class PhantomView:
             self.tip_inside = False
 
     def world_bounds(self):
-        bounds = [0.0] * 6
-        box = vtk.vtkBoundingBox()
-        matrix = self.registration.GetMatrixTransformToParent()
-        b = self.image.GetBounds()
-        for x in b[0:2]:
-            for y in b[2:4]:
-                for z in b[4:6]:
-                    box.AddPoint(matrix.MultiplyPoint((x, y, z, 1.0))[:3])
-        box.GetBounds(bounds)
-        return bounds
+        """The phantom's box in world mm, as drawn: the bounds of its outline actor."""
+        return list(self.outline.GetBounds())
+
+    def slice_planes(self):
+        """Where the three slices are drawn (world mm, from their actors' bounds): the x of the
+        sagittal one, the y of the coronal one, the z of the axial one."""
+        names = ('sagittal', 'coronal', 'axial')
+        planes = {}
+        for axis, actor in enumerate(self.slice_actors):
+            b = actor.GetBounds()
+            planes[names[axis]] = (b[2 * axis] + b[2 * axis + 1]) / 2
+        return planes
+
+
+def target_centre(image):
+    """The pseudotumour's centre in the image's own frame (mm): the centre of mass of the
+    surface around the voxels of its grey range (110..1000 HU; the fiducial beads, 1500 HU, and
+    the tissue, 60 HU, are left out)."""
+    mask = vtk.vtkImageThreshold()
+    mask.SetInputData(image)
+    mask.ThresholdBetween(110, 1000)
+    mask.SetInValue(1)
+    mask.SetOutValue(0)
+    mask.SetOutputScalarTypeToUnsignedChar()
+    surface = vtk.vtkFlyingEdges3D()
+    surface.SetInputConnection(mask.GetOutputPort())
+    surface.SetValue(0, 0.5)
+    centre = vtk.vtkCenterOfMass()
+    centre.SetInputConnection(surface.GetOutputPort())
+    centre.SetUseScalarsAsWeights(False)
+    centre.Update()
+    if surface.GetOutput().GetNumberOfPoints() == 0:  # no tumour: the volume's centre
+        b = image.GetBounds()
+        return [(b[2 * i] + b[2 * i + 1]) / 2 for i in range(3)]
+    return list(centre.GetCenter())
 
 
 class TipPlacement:
-    """Places the phantom where the instrument works: after `seconds` of watching the needle tip
-    move, at the first moment the tip is in the lower half of its heights (the instrument going
-    down towards a patient), the phantom is centred on the tip, so the tip is inside it then and
-    passes through it again as the arm moves."""
+    """Registers the phantom to the instrument's working area: it watches the needle tip (its tf
+    lookup) until it has seen one descent (the tip down at least `stroke` mm to its lowest point
+    and up again by as much; at most `seconds`), then places the phantom so that its pseudotumour
+    is at the deepest tip position seen: the needle, lowered again, reaches into the phantom and
+    its target, as in a navigated needle insertion."""
 
-    def __init__(self, registration, image, seconds: float = 3.0):
-        self.registration, self.image, self.seconds = registration, image, seconds
-        self.heights, self.start, self.placed = [], None, False
+    def __init__(self, registration, image, seconds: float = 10.0, stroke: float = 30.0):
+        self.registration, self.image, self.seconds, self.stroke = registration, image, seconds, stroke
+        self.target = target_centre(image)
+        self.deepest, self.highest, self.start, self.placed = None, None, None, False
+        self.descended = 0.0  # mm from the highest point before the deepest down to it
 
     def add(self, tip, now: float) -> bool:
         """Adds a tip sample; True when the phantom has just been placed."""
         if self.placed:
             return False
         self.start = now if self.start is None else self.start
-        self.heights.append(tip[2])
-        if now - self.start < self.seconds or tip[2] > sorted(self.heights)[len(self.heights) // 2]:
+        self.highest = tip[2] if self.highest is None else max(self.highest, tip[2])
+        if self.deepest is None or tip[2] < self.deepest[2]:
+            self.deepest = list(tip)
+            self.descended = self.highest - tip[2]
+        one_descent = self.descended >= self.stroke and tip[2] - self.deepest[2] >= self.stroke
+        if not one_descent and now - self.start < self.seconds:
             return False
-        b = self.image.GetBounds()
         placement = vtk.vtkMatrix4x4()
         for i in range(3):
-            placement.SetElement(i, 3, tip[i] - (b[2 * i] + b[2 * i + 1]) / 2)
+            placement.SetElement(i, 3, self.deepest[i] - self.target[i])
         self.registration.SetMatrixTransformToParent(placement)
         self.placed = True
         return True
@@ -173,19 +222,24 @@ def display_box(renderer, bounds):
 
 def frame_scene(renderer) -> None:
     """Everything in view (robot whole, phantom), z up, from the front-right, with a margin for
-    the arm's motion."""
+    the arm's motion (re-framed once the arm is tracked and once the phantom is placed)."""
     camera = renderer.GetActiveCamera()
     camera.SetViewUp(0, 0, 1)
     camera.SetFocalPoint(0, 0, 0)
     camera.SetPosition(1.0, -1.1, 0.55)
     camera.SetViewAngle(30.0)
     renderer.ResetCamera()
-    camera.Zoom(0.8)
+    camera.Zoom(1.0)  # (the bounding sphere of the arm and the phantom leaves room for the motion)
     renderer.ResetCameraClippingRange()
 
 
+# The 2D panes of the window mode, top to bottom, with Slicer's view colours (red, yellow, green).
+SLICE_PANES = (('axial', (0.95, 0.35, 0.35)), ('sagittal', (0.95, 0.85, 0.3)), ('coronal', (0.45, 0.8, 0.4)))
+VIEW_WIDTH = 0.7  # of the window, for the 3D view; the panes share the rest
+
+
 class Viewer:
-    def __init__(self, scene, image, registration, offscreen_dir: str | None, size=(1280, 720)):
+    def __init__(self, scene, image, registration, offscreen_dir: str | None, size=(1280, 720), volume=None):
         self.scene = scene
         self.renderer = vtk.vtkRenderer()
         # Slicer's 3D view background, so the scene looks as Slicer users know it.
@@ -203,8 +257,49 @@ class Viewer:
         self.actors = {}
         self.registration = registration
         self.phantom = PhantomView(self.renderer, image, registration)
-        self.tip = None
+        self.phantom.set_visible(False)  # until it is placed at the tip
+        self.tip = None            # the needle tip (world mm) once every link is tracked
+        self.tip_link_id = None    # the tip link's transform node: its model is the tip marker
+        self.tip_model_id = None
         self.frame = 0
+        # Axial, sagittal and coronal panes of the phantom (vtkROS2SliceView: resliced where the
+        # registration puts it, the needle's cut drawn in its colour) right of the 3D view, centred
+        # on the needle tip while it is inside the phantom.
+        self.slice_views = {}
+        if volume is not None and hasattr(ros2vtk, 'vtkROS2SliceView'):
+            self.renderer.SetViewport(0.0, 0.0, VIEW_WIDTH, 1.0)
+            for row, (orientation, colour) in enumerate(SLICE_PANES):
+                pane = vtk.vtkRenderer()
+                pane.SetViewport(VIEW_WIDTH, 1.0 - (row + 1) / 3, 1.0, 1.0 - row / 3)
+                pane.SetBackground(0.0, 0.0, 0.0)
+                self.window.AddRenderer(pane)
+                view = ros2vtk.vtkROS2SliceView()
+                view.SetRenderer(pane)
+                view.SetScene(scene)
+                view.SetOrientation(orientation)
+                view.SetVolumeNode(volume)
+                view.SetWindowLevel(400.0, 40.0)
+                view.SetFieldOfView(80.0)  # 16 cm tall around the tip: the needle's way in the tissue
+                label = vtk.vtkTextActor()
+                label.SetInput(orientation)
+                label.GetTextProperty().SetColor(*colour)
+                label.GetTextProperty().SetFontSize(16)
+                label.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
+                label.GetPositionCoordinate().SetValue(0.02, 0.04)
+                pane.AddActor2D(label)
+                self.slice_views[orientation] = view
+            centre = [(b0 + b1) / 2 for b0, b1 in zip(self.phantom.world_bounds()[0::2], self.phantom.world_bounds()[1::2])]
+            for view in self.slice_views.values():
+                view.SetSliceCenter(*centre)
+
+    def follow_tip(self) -> None:
+        """The 3D slices and the 2D panes through the needle tip while it is inside the phantom."""
+        if self.tip is None:
+            return
+        self.phantom.follow(self.tip)
+        if self.phantom.tip_inside:
+            for view in self.slice_views.values():
+                view.SetSliceCenter(*self.tip)
 
     def update(self) -> None:
         """Model nodes of the scene -> actors with their world matrices."""
@@ -214,6 +309,9 @@ class Viewer:
         for i in range(models.GetNumberOfItems()):
             model = models.GetItemAsObject(i)
             present.add(model.GetID())
+            parent = model.GetParentTransformNode()
+            if self.tip_link_id is not None and parent is not None and parent.GetID() == self.tip_link_id:
+                self.tip_model_id = model.GetID()
             actor = self.actors.get(model.GetID())
             if actor is None:
                 mapper = vtk.vtkPolyDataMapper()
@@ -241,6 +339,8 @@ class Viewer:
         # The robot moves: near/far planes computed once would clip links that swing towards or
         # away from the camera (seen as a needle guide missing from a frame).
         self.renderer.ResetCameraClippingRange()
+        for view in self.slice_views.values():
+            view.Update()
         self.window.Render()
         if not self.offscreen_dir:
             return None
@@ -252,24 +352,43 @@ class Viewer:
         writer.SetFileName(path)
         writer.SetInputConnection(grab.GetOutputPort())
         writer.Write()
-        # Where each robot model should be on the picture: the display position of the centre
-        # of its world bounds (for tests and for a person checking a frame).
+        # What is where on this picture, read back from the scene and the renderer (for tests
+        # and for a person checking a frame): each robot model's projected centre, the robot's
+        # and the phantom's projected boxes (actor bounds), the needle tip (its tf lookup, and the
+        # centre of its drawn marker), the phantom's box and the slice planes (their actors).
         projected = {}
+        robot_box = vtk.vtkBoundingBox()
         for node_id, actor in self.actors.items():
             b = actor.GetBounds()
+            robot_box.AddBounds(b)
             size = math.dist((b[0], b[2], b[4]), (b[1], b[3], b[5]))
-            coordinate = vtk.vtkCoordinate()
-            coordinate.SetCoordinateSystemToWorld()
-            coordinate.SetValue((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2)
-            x, y = coordinate.GetComputedDoubleDisplayValue(self.renderer)
+            x, y = display_point(self.renderer, ((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2))
             projected[node_id] = {'x': x, 'y': y, 'size_mm': size}
         info = {'models': projected, 'window': list(self.window.GetSize()),
+                'phantom_visible': bool(self.phantom.outline.GetVisibility()),
                 'phantom_bounds_mm': self.phantom.world_bounds(),
-                'phantom_display_box': display_box(self.renderer, self.phantom.world_bounds())}
+                'phantom_display_box': display_box(self.renderer, self.phantom.world_bounds()),
+                'slice_planes_mm': self.phantom.slice_planes(),
+                'voxel_mm': list(self.phantom.image.GetSpacing()),
+                'view_viewport_px': [v * self.window.GetSize()[i % 2] for i, v in enumerate(self.renderer.GetViewport())]}
+        centre = [0.0, 0.0, 0.0]
+        for orientation, view in self.slice_views.items():
+            view.GetSliceCenter(centre)
+            info.setdefault('slice_view_centres_mm', {})[orientation] = list(centre)
+            info.setdefault('slice_view_cuts', {})[orientation] = view.GetNumberOfIntersectedModels()
+        if robot_box.IsValid():
+            bounds = [0.0] * 6
+            robot_box.GetBounds(bounds)
+            info['robot_bounds_mm'] = bounds
+            info['robot_display_box'] = display_box(self.renderer, bounds)
         info['tip_inside_phantom'] = self.phantom.tip_inside
         if self.tip is not None:
             info['tip_mm'] = self.tip
             info['tip_display'] = list(display_point(self.renderer, self.tip))
+        marker = self.actors.get(self.tip_model_id)
+        if marker is not None:
+            b = marker.GetBounds()
+            info['tip_marker_mm'] = [(b[2 * i] + b[2 * i + 1]) / 2 for i in range(3)]
         Path(path).with_suffix('.json').write_text(json.dumps(info))
         self.frame += 1
         return path
@@ -301,11 +420,23 @@ class Demo:
         self.registration = ros2vtk.vtkROS2TransformNode()
         self.registration.SetName('registration:robot_to_image')
         placement = vtk.vtkMatrix4x4()
-        placement.SetElement(0, 3, 350.0)   # until the tip placement: in front of the robot (mm)
+        placement.SetElement(0, 3, 350.0)   # until the tip placement (hidden in 3D): in front of the robot (mm)
         placement.SetElement(2, 3, 150.0)
         self.registration.SetMatrixTransformToParent(placement)
         self.scene.AddNode(self.registration)
         self.placement = TipPlacement(self.registration, self.image)
+        # The 2D panes (the app's, the window mode's) show the phantom as a volume node under the
+        # registration; hidden in the 3D view, where PhantomView draws its slices and the tumour.
+        self.volume = None
+        if hasattr(ros2vtk, 'vtkROS2VolumeNode'):
+            self.volume = ros2vtk.vtkROS2VolumeNode()
+            self.volume.SetName('phantom')
+            self.volume.SetImageData(self.image)
+            self.volume.SetWindow(400.0)
+            self.volume.SetLevel(40.0)
+            self.volume.SetVisibility(False)
+            self.scene.AddNode(self.volume)
+            self.volume.SetParentTransformNodeID(self.registration.GetID())
         namespaces = ['/'] if args.robots == 1 else [f'/robot{i + 1}' for i in range(args.robots)]
         urdf_folder = Path(args.urdf).resolve().parent
         package_paths = args.package_path or [str(urdf_folder.parent)]  # <package>/urdf/robot.urdf
@@ -328,7 +459,7 @@ class Demo:
 
     def after_spin(self) -> str:
         """Per spin: announces loads, places the phantom at the tool tip, returns 'loaded',
-        'placed' or '' (what the view should re-frame for)."""
+        'tracked', 'placed' or '' (what the view should re-frame for)."""
         event = ''
         for ns, robot in self.robots.items():
             if robot.IsLoaded() and self.announced.get(ns) != robot.GetNumberOfLoads():
@@ -339,14 +470,19 @@ class Demo:
                 print(f'[demo] robot in {ns}: {robot.GetNumberOfLinks()} links, {robot.GetNumberOfModelNodes()} '
                       f'visuals, loaded in {1000 * robot.GetLastLoadDuration():.1f} ms', flush=True)
                 event = 'loaded'
-        self.tip = tip_position(self.first)
-        if self.tip is not None and self.first.GetNumberOfLinksTracked() == self.first.GetNumberOfLinks():
-            if self.placement.add(self.tip, time.monotonic()):
-                centre = [self.registration.GetMatrixTransformToParent().GetElement(i, 3) for i in range(3)]
-                print('[demo] phantom placed at the needle tip\'s working area (corner '
-                      + ', '.join(f'{c:.0f}' for c in centre) + ' mm)', flush=True)
-                event = 'placed'
+        tracked = self.first.IsLoaded() and self.first.GetNumberOfLinksTracked() == self.first.GetNumberOfLinks()
+        if tracked and self.tip is None:
+            event = 'tracked'  # the arm in its pose (loaded links sit at the origin until tracked)
+        self.tip = tip_position(self.first) if tracked else None
+        if self.tip is not None and self.placement.add(self.tip, time.monotonic()):
+            print('[demo] phantom placed at the needle tip: its pseudotumour at the deepest tip position of the '
+                  f'first descent ({", ".join(f"{c:.0f}" for c in self.placement.deepest)} mm)', flush=True)
+            event = 'placed'
         return event
+
+    def tip_link_id(self):
+        node = self.first.GetLinkTransformNode(TIP_LINK) if self.first.IsLoaded() else None
+        return node.GetID() if node is not None else None
 
     def status(self, spins: int, seconds: float, spin_time: float) -> str:
         state = '; '.join(f'{ns}: {r.GetRobotState()}, {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} '
@@ -359,7 +495,7 @@ class Demo:
 
 def run_window(demo: Demo, args, duration: float) -> int:
     """A VTK window (or PNG frames offscreen) driven by this loop."""
-    viewer = Viewer(demo.scene, demo.image, demo.registration, args.offscreen or None)
+    viewer = Viewer(demo.scene, demo.image, demo.registration, args.offscreen or None, volume=demo.volume)
     viewer.reset_camera()
     interactor = None
     if not args.offscreen:
@@ -382,10 +518,12 @@ def run_window(demo: Demo, args, duration: float) -> int:
             spin_time += time.perf_counter() - t0
             spins_since += 1
             event = demo.after_spin()
+            viewer.tip_link_id = demo.tip_link_id()
             viewer.update()
             viewer.tip = demo.tip
-            if demo.tip is not None:
-                viewer.phantom.follow(demo.tip)
+            viewer.phantom.set_visible(demo.placement.placed)
+            if demo.placement.placed:
+                viewer.follow_tip()
             if event:
                 viewer.reset_camera()  # the robot whole and the phantom in one view
             now = time.monotonic()
@@ -422,26 +560,16 @@ def run_app(demo: Demo, args, duration: float) -> int:
 
     def setup(app):
         phantom = PhantomView(app.renderer, demo.image, demo.registration)
-        # The 2D panes show the phantom as a volume node under the registration; hidden in the 3D
-        # view, where PhantomView draws its three slices and the pseudotumour.
-        volume = getattr(ros2vtk, 'vtkROS2VolumeNode', None)
-        if volume is not None and app.slices is not None:
-            volume = volume()
-            volume.SetName('phantom')
-            volume.SetImageData(demo.image)
-            volume.SetWindow(400.0)
-            volume.SetLevel(40.0)
-            volume.SetVisibility(False)
-            demo.scene.AddNode(volume)
-            volume.SetParentTransformNodeID(demo.registration.GetID())
+        phantom.set_visible(False)  # until it is placed at the tip
 
         def after_spin():
             if demo.after_spin():
+                phantom.set_visible(demo.placement.placed)
                 app.framed = -1  # re-frame: the robot whole and the phantom
-            if demo.tip is not None:
+            if demo.tip is not None and demo.placement.placed:
                 phantom.follow(demo.tip)
                 if phantom.tip_inside and app.slices is not None:
-                    app.slices.set_point(*demo.tip)  # the slice planes follow the tip, as in --window
+                    app.slices.follow(*demo.tip)  # planes through the tip, panes centred on it, as in --window
         app.add_spin_callback(after_spin)
         app.state.robot_selected = demo.first.GetRobotName()
     print('[demo] starting the app (Ctrl-C stops it)', flush=True)
@@ -463,7 +591,7 @@ def main() -> int:
     parser.add_argument('--offscreen', default='', help='window mode: write PNG frames here')
     parser.add_argument('--duration', type=float, default=None,
                         help=f'seconds (default: until Ctrl-C; {HEADLESS_SECONDS:g} s for frames without a display)')
-    parser.add_argument('--frames-per-second', type=float, default=0.5, help='PNG frames written per second')
+    parser.add_argument('--frames-per-second', type=float, default=0.75, help='PNG frames written per second')
     parser.add_argument('--urdf', default=str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'),
                         help='the URDF the simulated robot serves (its folder is the base of relative mesh paths)')
     parser.add_argument('--package-path', action='append', default=[],

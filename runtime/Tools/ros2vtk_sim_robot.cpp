@@ -5,9 +5,13 @@
 //   * publishes the URDF on `robot_description` (reliable, transient local, depth 1);
 //   * publishes fixed joints on /tf_static and moving joints on /tf, stamped now, with the frame
 //     prefix, exactly as robot_state_publisher does; mimic joints follow their leader;
-//   * publishes `joint_states` following a smooth trajectory inside the joint limits.
+//   * publishes `joint_states` following a smooth trajectory inside the joint limits, or the
+//     motion given by --motion FILE: one line per joint, `<joint> <mid> <amplitude> <period s>
+//     [<phase rad>]` (rad or m; position = mid + amplitude * sin(2 pi t / period + phase); `#`
+//     starts a comment; joints not listed keep the default motion), e.g.
+//     examples/robots/surgical_arm/config/needle_insertion.motion.
 // Usage: ros2vtk-sim-robot --urdf FILE [--namespace NS] [--rate HZ] [--frame-prefix P]
-//                          [--duration S] [--node NAME]
+//                          [--duration S] [--node NAME] [--motion FILE]
 #include "ros2vtk/geometry_msgs/msg/transform_stamped.hpp"
 #include "ros2vtk/rcl_interfaces/msg/parameter_type.hpp"
 #include "ros2vtk/robot/KinematicTree.hpp"
@@ -19,6 +23,7 @@
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -48,6 +53,7 @@ struct Options
   std::string ns = "/";
   std::string node = "robot_state_publisher";
   std::string frame_prefix;
+  std::string motion_path;
   double rate = 50.0;
   double duration = 0.0;
 };
@@ -72,6 +78,8 @@ bool parse(int argc, char** argv, Options& options)
       options.rate = std::atof(value.c_str());
     else if (arg == "--duration")
       options.duration = std::atof(value.c_str());
+    else if (arg == "--motion")
+      options.motion_path = value;
     else
       return false;
   }
@@ -147,6 +155,74 @@ struct Trajectory
     }
   }
 
+  /// Applies a --motion file's lines to the joints they name; false + `error` (file:line: what)
+  /// on an unreadable file, a malformed line, an unknown or repeated joint, a period <= 0, or a
+  /// motion leaving the joint's limits.
+  bool apply(const std::string& path, const robot::KinematicTree& tree, std::string* error)
+  {
+    std::ifstream file(path);
+    if (!file)
+    {
+      *error = "cannot read the motion file " + path;
+      return false;
+    }
+    std::string line;
+    std::map<std::string, int> seen;
+    for (int number = 1; std::getline(file, line); ++number)
+    {
+      const std::string where = path + ":" + std::to_string(number) + ": ";
+      line = line.substr(0, line.find('#'));
+      std::istringstream fields(line);
+      std::string name;
+      if (!(fields >> name))
+        continue; // blank or comment
+      double mid = 0, amplitude = 0, period = 0, phase = 0;
+      if (!(fields >> mid >> amplitude >> period))
+      {
+        *error = where + "expected '<joint> <mid> <amplitude> <period s> [<phase rad>]'";
+        return false;
+      }
+      std::string rest;
+      if (!(fields >> phase))
+        phase = 0;
+      fields.clear();
+      if (fields >> rest)
+      {
+        *error = where + "unexpected '" + rest + "' (expected '<joint> <mid> <amplitude> <period s> [<phase rad>]')";
+        return false;
+      }
+      auto joint = std::find_if(joints.begin(), joints.end(), [&](const Joint& j) { return j.name == name; });
+      if (joint == joints.end())
+      {
+        *error = where + "'" + name + "' is not an actuated joint of " + tree.robot_name();
+        return false;
+      }
+      if (seen.count(name))
+      {
+        *error = where + "'" + name + "' was already given on line " + std::to_string(seen[name]);
+        return false;
+      }
+      seen[name] = number;
+      if (!(period > 0))
+      {
+        *error = where + "the period must be > 0 s";
+        return false;
+      }
+      const robot::JointInfo* info = tree.joint(name);
+      if (info->has_limits && info->upper > info->lower &&
+          (mid - std::abs(amplitude) < info->lower - 1e-9 || mid + std::abs(amplitude) > info->upper + 1e-9))
+      {
+        std::ostringstream message;
+        message << where << "'" << name << "' would move over [" << mid - std::abs(amplitude) << ", "
+                << mid + std::abs(amplitude) << "], outside its limits [" << info->lower << ", " << info->upper << "]";
+        *error = message.str();
+        return false;
+      }
+      *joint = { name, mid, amplitude, 2 * M_PI / period, phase };
+    }
+    return true;
+  }
+
   void at(double t, std::map<std::string, double>& positions, std::vector<double>& velocities) const
   {
     velocities.clear();
@@ -177,7 +253,7 @@ int main(int argc, char** argv)
   if (!parse(argc, argv, options))
   {
     std::cerr << "usage: ros2vtk-sim-robot --urdf FILE [--namespace NS] [--rate HZ] "
-                 "[--frame-prefix P] [--duration S] [--node NAME]\n";
+                 "[--frame-prefix P] [--duration S] [--node NAME] [--motion FILE]\n";
     return 2;
   }
   std::ifstream file(options.urdf_path);
@@ -194,6 +270,12 @@ int main(int argc, char** argv)
   if (!tree)
   {
     std::cerr << "ros2vtk-sim-robot: " << options.urdf_path << ": " << error << "\n";
+    return 1;
+  }
+  Trajectory trajectory(*tree);
+  if (!options.motion_path.empty() && !trajectory.apply(options.motion_path, *tree, &error))
+  {
+    std::cerr << "ros2vtk-sim-robot: " << error << "\n";
     return 1;
   }
 
@@ -259,7 +341,6 @@ int main(int argc, char** argv)
             << tree->actuated_joints().size() << " actuated) as " << participant->fully_qualified_name()
             << " at " << options.rate << " Hz" << std::endl;
 
-  Trajectory trajectory(*tree);
   std::map<std::string, double> positions;
   std::vector<double> velocities;
   const auto start = Clock::now();
@@ -277,6 +358,12 @@ int main(int argc, char** argv)
       urdf = current->string_value;
       tree = robot::KinematicTree::from_urdf(urdf, &error);
       trajectory = Trajectory(*tree);
+      // The motion file's joints that the new robot has (others are its own business).
+      if (!options.motion_path.empty() && !trajectory.apply(options.motion_path, *tree, &error))
+      {
+        trajectory = Trajectory(*tree);
+        std::cout << "ros2vtk-sim-robot: the new robot gets the default motion: " << error << std::endl;
+      }
       positions.clear();
       publish_description();
       std::cout << "ros2vtk-sim-robot: new robot_description: " << tree->robot_name() << std::endl;

@@ -9,6 +9,7 @@ in <build>/test-artifacts/app/:
 """
 from __future__ import annotations
 
+import importlib.util
 import io
 import json
 import os
@@ -245,10 +246,25 @@ def cells(driver, row_id: str) -> list[str]:
     return [cell.text for cell in driver.find_elements(By.CSS_SELECTOR, f'[id="{row_id}"] td')]
 
 
-def test_5_tf_frame_tree_shows_the_robots_frames_with_ages(world):
+def tf2_msgs_env(env: dict) -> dict:
+    """`env` plus what lets an rclpy peer import tf2_msgs (tests/interop/conftest.py builds it
+    once), prepended to its paths as the interop tests do."""
+    spec = importlib.util.spec_from_file_location('interop_conftest', REPO / 'tests' / 'interop' / 'conftest.py')
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return {key: os.pathsep.join(filter(None, [value, env.get(key)])) for key, value in module.tf2_msgs_env().items()}
+
+
+def test_5_tf_frame_tree_shows_the_robots_frames_with_ages_and_publishers(world):
     """The tf section lists every frame of our node's buffer as a tree (parent before child,
-    indented by depth), each with the age of its newest transform, 'static' for /tf_static."""
+    indented by depth), each with the age of its newest transform, 'static' for /tf_static, and
+    the node that sent it: the simulated robot (node /robot_state_publisher, /tf and /tf_static)
+    and an rclpy node (/camera_mount) that publishes one static frame on /tf_static too; each
+    static frame is attributed to its own sender. Above: the nodes publishing /tf and /tf_static."""
     driver = world['driver']
+    peer = world['start']([VENV_PYTHON, REPO / 'tests' / 'interop' / 'ros_peer.py', '--node', 'camera_mount',
+                           'tf_pub', 'world', 'camera', '{"t": [0.5, 0, 1.2], "q": [0, 0, 0, 1]}', '--static',
+                           '--seconds', '120'], tf2_msgs_env(world['env']), stdout=subprocess.DEVNULL)
     chain = ['base_link', 'column_link', 'upper_arm_link', 'forearm_link', 'wrist_link', 'instrument_link',
              'needle_guide_link', 'needle_tip']
     wait_for('every frame of the arm in the tf tree',
@@ -265,11 +281,23 @@ def test_5_tf_frame_tree_shows_the_robots_frames_with_ages(world):
     assert column[1] == 'base_link', column
     age = float(column[2].removesuffix(' s'))  # a number of seconds: a moving joint on /tf
     assert age >= 0.0, column
+    assert column[4] == '/robot_state_publisher', column
+    # The static frames of both publishers of /tf_static, each with its own sender.
+    camera = wait_for('the rclpy static frame with its publisher', lambda: (lambda c: len(c) == 5 and c[4] == '/camera_mount' and c)(
+        cells(driver, 'tf-frame-camera')), seconds=30)
+    assert camera[1] == 'world' and camera[2] == 'static', camera
     tip = cells(driver, 'tf-frame-needle_tip')
     assert tip[1] == 'needle_guide_link' and tip[2] == 'static', tip  # a fixed joint on /tf_static
-    driver.execute_script('arguments[0].scrollIntoView({block: "start"})', driver.find_element(By.ID, 'tf_frames'))
+    assert tip[4] == '/robot_state_publisher', tip
+    statics = wait_for('both nodes listed for /tf_static', lambda: (lambda t: '/camera_mount' in t and t)(
+        row_text(driver, 'tf-publishers-tf_static')))
+    assert statics == '/tf_static published by /camera_mount, /robot_state_publisher', statics
+    assert row_text(driver, 'tf-publishers-tf') == '/tf published by /robot_state_publisher'
+    assert peer.poll() is None, 'the rclpy tf peer stopped early'
+    driver.execute_script('arguments[0].scrollIntoView({block: "start"})',
+                          driver.find_element(By.ID, 'tf-publishers-tf'))
     step_shot(driver, '5-tf-tree')
-    print(f'tf tree order {order}; column_link {column}; needle_tip {tip}')
+    print(f'tf tree order {order}; column_link {column}; needle_tip {tip}; camera {camera}')
 
 
 def test_6_set_a_remote_rclpy_nodes_parameter_from_the_form(world):

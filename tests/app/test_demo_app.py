@@ -1,8 +1,10 @@
 """The demo as a newcomer sees it (its default mode): examples/demo/demo.py serves the web app on
-its own logic (`ros2vtk.app.serve(logic, on_app=...)`) with the simulated robot running. In headless
-Chromium: the robot row is loaded with every link tracked, the view shows the robot's orange (the
-phantom's pixels are checked by tests/demo, where its projected box is known), and the demo stops by itself after --duration with exit 0. Screenshot in
-<build>/test-artifacts/app/demo-app.png."""
+its own logic (`ros2vtk.app.serve(logic, on_app=...)`) with the simulated robot running its needle
+insertions. In headless Chromium: the robot row is loaded with every link tracked, the view shows
+the robot's orange (the phantom's pixels are checked by tests/demo, where its projected box is
+known), the three slice panes show the phantom, and once the phantom is placed at the tip they
+follow the needle (its cut drawn in all three at once); the demo stops by itself after --duration
+with exit 0. Screenshots in <build>/test-artifacts/app/demo-app*.png."""
 from __future__ import annotations
 
 import io
@@ -23,6 +25,7 @@ BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
 VENV_PYTHON = Path(os.environ.get('ROS2VTK_VENV_PYTHON', REPO / '.venv' / 'bin' / 'python'))
 ARTIFACTS = BUILD / 'test-artifacts' / 'app'
 URDF = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+MOTION = REPO / 'examples' / 'robots' / 'surgical_arm' / 'config' / 'needle_insertion.motion'
 
 
 def wait_for(what, check, seconds=60.0, step=0.5):
@@ -72,8 +75,8 @@ def test_demo_serves_the_app_with_robot_and_phantom():
     with socket.socket() as s:
         s.bind(('127.0.0.1', 0))
         port = s.getsockname()[1]
-    sim = subprocess.Popen([str(BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot'), '--urdf', str(URDF)], env=env,
-                           stdout=subprocess.DEVNULL)
+    sim = subprocess.Popen([str(BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot'), '--urdf', str(URDF),
+                            '--motion', str(MOTION)], env=env, stdout=subprocess.DEVNULL)
     demo = subprocess.Popen([str(VENV_PYTHON), str(REPO / 'examples' / 'demo' / 'demo.py'), '--phantom', str(phantom),
                              '--port', str(port), '--duration', '60'], env=env, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True)
@@ -123,9 +126,19 @@ def test_demo_serves_the_app_with_robot_and_phantom():
                 (ARTIFACTS / f'demo-slice-{orientation}.png').write_bytes(png)
             print(f'slice panes, last look: phantom {last.get("phantom")}, needle {last.get("needle")}')
         driver.save_screenshot(str(ARTIFACTS / 'demo-app.png'))
-        # To look at, not asserted: the panes later, after the phantom was placed at the tip.
-        time.sleep(20)
-        driver.save_screenshot(str(ARTIFACTS / 'demo-app-later.png'))
+        # Once the phantom is placed at the tip, the panes follow the needle tip while it is inside:
+        # each plane then goes through the needle, whose cut (its orange) shows in all three panes
+        # at once (the cut shows only when a plane crosses the needle).
+        cuts = {}
+
+        def needle_in_every_pane():
+            cuts.update({o: orange_pixels(driver.find_element(By.ID, f'slice_{o}').screenshot_as_png) for o in panes})
+            return all(n >= 4 for n in cuts.values())
+        try:
+            wait_for('the needle cut in the three panes', needle_in_every_pane, seconds=45)
+        finally:
+            driver.save_screenshot(str(ARTIFACTS / 'demo-app-later.png'))
+            print(f'needle (orange) pixels in the panes, last look: {cuts}')
         output, _ = demo.communicate(timeout=120)  # --duration 60 ends it
     finally:
         driver.quit()

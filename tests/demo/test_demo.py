@@ -1,9 +1,14 @@
-"""The demo, headless, as a newcomer runs it: a simulated robot (its own process) and the viewer
-writing frames. Checks the pictures: robot pixels where the camera projection of its models says,
-the phantom visible, the robot moving. Frames are kept in <build>/test-artifacts/demo/."""
+"""The demo, headless, as a newcomer runs it: a simulated robot (its own process, with the surgical
+arm's needle-insertion motion) and the viewer writing frames. Checks each frame's numbers, which the
+demo reads back from its scene and renderer (the tip from its tf lookup and from its drawn marker,
+the phantom's box from its outline actor, the slice planes from their actors, the robot's box from
+its actors), and the pictures: the robot whole in view, the needle tip inside the phantom with the
+three slices through it, the phantom drawn there, the robot moving. Frames are kept in
+<build>/test-artifacts/demo/."""
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 import signal
@@ -44,9 +49,13 @@ def differs_from_background(image, x: int, y: int) -> bool:
     return max(abs(p - q) for p, q in zip(pixel(image, x, y), background(y, height))) > 10
 
 
+ARM = REPO / 'examples' / 'robots' / 'surgical_arm'
+SIM = BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot'
+
+
 def start_sim(env):
-    return subprocess.Popen([str(BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot'), '--urdf',
-                             str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf')],
+    return subprocess.Popen([str(SIM), '--urdf', str(ARM / 'urdf' / 'surgical_arm.urdf'),
+                             '--motion', str(ARM / 'config' / 'needle_insertion.motion')],
                             env=env, stdout=subprocess.DEVNULL)
 
 
@@ -64,7 +73,7 @@ def demo_env(offset: int):
                 PYTHONPATH=str(BUILD / 'python'))
 
 
-def test_demo_shows_a_moving_robot_beside_the_phantom():
+def test_demo_shows_the_needle_reaching_into_the_phantom():
     if ARTIFACTS.exists():
         shutil.rmtree(ARTIFACTS)
     env = demo_env(2)
@@ -87,26 +96,56 @@ def test_demo_shows_a_moving_robot_beside_the_phantom():
     assert elapsed < 90, f'the bounded run took {elapsed:.0f} s'
     frames = sorted(ARTIFACTS.glob('frame_*.png'))
     assert 8 <= len(frames) <= 30, demo.stdout
-    # The robot whole: in the last frames every sizeable model's projected centre is inside the
-    # window and drawn (not background).
+    infos = {frame: json.loads(frame.with_suffix('.json').read_text()) for frame in frames}
+    # The robot whole, in every frame once its links are tracked: the projected box of its
+    # actors' bounds (8 corners) inside the 3D view (the left of the window; the slice panes
+    # share the rest).
+    tracked = [f for f in frames if 'robot_display_box' in infos[f] and 'tip_mm' in infos[f]]
+    assert len(tracked) >= len(frames) - 4, f'the arm tracked in {len(tracked)} of {len(frames)} frames'
+    for frame in tracked:
+        x0, y0, x1, y1 = infos[frame]['robot_display_box']
+        vx0, vy0, vx1, vy1 = infos[frame]['view_viewport_px']
+        assert vx0 <= x0 < x1 <= vx1 and vy0 <= y0 < y1 <= vy1, f'{frame.name}: robot out of view {x0, y0, x1, y1}'
+    # Its sizeable models drawn where their projected centres are (not background), last frames.
     checked = 0
     for frame in frames[-3:]:
         image = read_png(frame)
-        info = json.loads(frame.with_suffix('.json').read_text())
-        assert info['models'], 'no robot model in the scene'
+        info = infos[frame]
         for model in info['models'].values():
             if model['size_mm'] < 40:
                 continue  # needle tip and small parts can be hidden behind others
             x, y = int(round(model['x'])), int(round(model['y']))  # display: origin bottom-left
-            assert 0 <= x < info['window'][0] and 0 <= y < info['window'][1], f'{frame.name}: a link out of view'
             assert differs_from_background(image, x, y), f'{frame.name}: nothing drawn at {x},{y}'
             checked += 1
     assert checked >= 9
-    # The phantom at the tool tip: a frame where the tip is inside the phantom volume, its
-    # projection inside the phantom's projected box, and grey tissue drawn in that box.
-    at_tip = [f for f in frames if json.loads(f.with_suffix('.json').read_text()).get('tip_inside_phantom')]
-    assert at_tip, 'no frame with the needle tip inside the phantom'
-    info = json.loads(at_tip[0].with_suffix('.json').read_text())
+    # The needle tip from its tf lookup is where its marker (a model under the tip link) is drawn.
+    for frame in tracked:
+        tip, marker = infos[frame]['tip_mm'], infos[frame]['tip_marker_mm']
+        assert max(abs(a - b) for a, b in zip(tip, marker)) < 3.0, f'{frame.name}: tip {tip}, marker {marker}'
+
+    def inside(point, bounds):
+        return all(bounds[2 * i] <= point[i] <= bounds[2 * i + 1] for i in range(3))
+    # The phantom at the tool tip: frames where the tip is inside the drawn phantom's box.
+    at_tip = [f for f in tracked if infos[f]['phantom_visible'] and inside(infos[f]['tip_mm'], infos[f]['phantom_bounds_mm'])]
+    assert at_tip, 'no frame with the needle tip inside the phantom: ' + str(
+        [(infos[f].get('tip_mm'), infos[f]['phantom_bounds_mm']) for f in frames])
+    # At the robot's scale and in its workspace: a torso-sized box (20..50 cm a side), whose
+    # nearest point is within the arm's reach from the base (under 1 m).
+    bounds = infos[at_tip[0]]['phantom_bounds_mm']
+    sides = [bounds[2 * i + 1] - bounds[2 * i] for i in range(3)]
+    assert all(150 <= side <= 500 for side in sides), sides
+    nearest = [min(max(0.0, bounds[2 * i]), bounds[2 * i + 1]) for i in range(3)]
+    assert math.dist(nearest, (0, 0, 0)) < 1000, bounds
+    # The three slices through the tip (within a voxel) whenever it is inside; the 2D panes
+    # centred on it, their planes cutting the needle (vtkCutter of the scene's models).
+    for frame in at_tip:
+        info = infos[frame]
+        for axis, name in enumerate(('sagittal', 'coronal', 'axial')):
+            assert abs(info['slice_planes_mm'][name] - info['tip_mm'][axis]) <= info['voxel_mm'][axis], (frame.name, info)
+            assert math.dist(info['slice_view_centres_mm'][name], info['tip_mm']) <= info['voxel_mm'][axis], (frame.name, info)
+            assert info['slice_view_cuts'][name] >= 1, (frame.name, name, info['slice_view_cuts'])
+    # On the picture: the tip's projection inside the phantom's projected box, grey tissue there.
+    info = infos[at_tip[0]]
     x0, y0, x1, y1 = info['phantom_display_box']
     tx, ty = info['tip_display']
     assert x0 <= tx <= x1 and y0 <= ty <= y1, info
@@ -166,3 +205,24 @@ def test_ctrl_c_stops_the_demo_with_one_line():
     assert demo.returncode == 0, err
     assert '[demo] interrupted (Ctrl-C): stopping' in out
     assert 'Traceback' not in err, err
+
+
+def test_sim_robot_refuses_a_bad_motion_file(tmp_path):
+    """--motion: a clear error (file:line: what) and exit 1 before anything is published."""
+    cases = {
+        'no_such_joint 0 0.1 5\n': "'no_such_joint' is not an actuated joint of surgical_arm",
+        'elbow_pitch 0 0.1\n': "expected '<joint> <mid> <amplitude> <period s> [<phase rad>]'",
+        'elbow_pitch 0 0.1 0\n': 'the period must be > 0 s',
+        '# a comment\n\nelbow_pitch 2.0 0.5 5\n': "'elbow_pitch' would move over [1.5, 2.5], outside its limits [-2.2, 2.2]",
+        'elbow_pitch 0 0.1 5\nelbow_pitch 0 0.2 5\n': "'elbow_pitch' was already given on line 1",
+        'elbow_pitch 0 0.1 5 0 extra\n': "unexpected 'extra'",
+    }
+    for number, (text, message) in enumerate(cases.items()):
+        motion = tmp_path / f'bad{number}.motion'
+        motion.write_text(text)
+        run = subprocess.run([str(SIM), '--urdf', str(ARM / 'urdf' / 'surgical_arm.urdf'), '--motion', str(motion)],
+                             capture_output=True, text=True, timeout=30, env=demo_env(4))
+        assert run.returncode == 1 and message in run.stderr and str(motion) in run.stderr, (text, run.stderr)
+    run = subprocess.run([str(SIM), '--urdf', str(ARM / 'urdf' / 'surgical_arm.urdf'), '--motion',
+                          str(tmp_path / 'missing.motion')], capture_output=True, text=True, timeout=30, env=demo_env(4))
+    assert run.returncode == 1 and 'cannot read the motion file' in run.stderr, run.stderr

@@ -16,7 +16,7 @@ def build(app, title):
     ctrl = app.ctrl
     with SinglePageWithDrawerLayout(app.server, full_height=True) as layout:
         layout.title.set_text(title)
-        layout.drawer.width = 560
+        layout.drawer.width = 600
         with layout.toolbar:
             v3.VSpacer()
             v3.VBtn('Reset view', click=ctrl.reset_camera, variant='text', id='reset_view')
@@ -155,19 +155,24 @@ def _topics(v3, html, ctrl):
 def _tf(v3, html, ctrl):
     with v3.VExpansionPanel(title='tf'):
         with v3.VExpansionPanelText():
-            html.Div('Frames ({{ tf_frames.length }}): age of the newest transform', classes='text-subtitle-2')
+            html.Div('Frames ({{ tf_frames.length }}): age of the newest transform, the node that sent it',
+                     classes='text-subtitle-2')
+            html.Div('{{ p.topic }} published by {{ p.nodes }}', v_for='p in tf_publishers', key='p.topic',
+                     classes='text-caption', id=("'tf-publishers-' + p.topic.slice(1)",))
             with v3.VTable(density='compact', classes='text-caption', id='tf_frames'):
                 with html.Thead():
                     with html.Tr():
-                        for header in ('frame', 'parent', 'age', 'rate/s'):
-                            html.Th(header)
+                        # Narrow cells: five columns, the publisher in view in the 600 px drawer.
+                        for header in ('frame', 'parent', 'age', 'rate/s', 'publisher'):
+                            html.Th(header, style='padding: 0 4px')
                 with html.Tbody():
                     with html.Tr(v_for='f in tf_frames', key='f.frame', id=("'tf-frame-' + f.frame",)):
                         html.Td('{{ f.depth ? "\u2514 " : "" }}{{ f.frame }}',
-                                style=("{paddingLeft: (8 + 16 * f.depth) + 'px', whiteSpace: 'nowrap'}",))
-                        html.Td('{{ f.parent }}')
-                        html.Td('{{ f.age }}', style='white-space: nowrap')  # "0.008 s" on one line
-                        html.Td('{{ f.rate }}')
+                                style=("{paddingLeft: (4 + 12 * f.depth) + 'px', paddingRight: '4px', whiteSpace: 'nowrap'}",))
+                        html.Td('{{ f.parent }}', style='padding: 0 4px')
+                        html.Td('{{ f.age }}', style='padding: 0 4px; white-space: nowrap')  # "0.008 s" on one line
+                        html.Td('{{ f.rate }}', style='padding: 0 4px')
+                        html.Td('{{ f.publisher }}', style='padding: 0 4px; white-space: nowrap')
             html.Div('Lookups', classes='text-subtitle-2')
             _table(v3, html, ['parent', 'child', 'status'], 'tf_lookups', 'x', ['x.parent', 'x.child', 'x.status'])
             html.Div('Broadcasters', classes='text-subtitle-2')

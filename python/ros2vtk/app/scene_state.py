@@ -137,10 +137,21 @@ def parse_frames_yaml(text: str) -> dict[str, dict[str, str]]:
     return frames
 
 
+def tf_publishers(ros_node) -> list[dict]:
+    """The nodes publishing /tf and /tf_static, from the ROS graph (as `ros2 topic info -v`)."""
+    if ros_node is None or not hasattr(ros_node, 'GetPublisherNodeNames'):
+        return []
+    return [{'topic': topic, 'nodes': ', '.join(ros_node.GetPublisherNodeNames(topic).split()) or '(none)'}
+            for topic in ('/tf', '/tf_static')]
+
+
 def tf_frame_rows(ros_node) -> list[dict]:
     """Every frame the node's tf buffer knows, as a depth-first tree (parent before its children,
     siblings by name): depth, parent, the age of its newest transform ('static' for /tf_static
-    frames) and its rate. Roots (frames that are only parents) head their trees."""
+    frames), its rate, and the node that published its newest transform (tf2's 'broadcaster':
+    our listener records the node of the DDS writer each message came from, as the ROS graph
+    names it; '?' while no node announcement lists that writer). Roots (frames that are only
+    parents) head their trees."""
     if ros_node is None or not hasattr(ros_node, 'GetTf2FramesAsYAML'):
         return []
     frames = parse_frames_yaml(ros_node.GetTf2FramesAsYAML())
@@ -159,11 +170,21 @@ def tf_frame_rows(ros_node) -> list[dict]:
             age, rate = 'static', ''
         else:
             delay = float(info.get('transform_delay', 'nan'))
-            age, rate = f'{max(delay, 0.0):.3f} s', info.get('rate', '')
+            try:
+                rate = f"{float(info.get('rate', '')):.1f}"
+            except ValueError:
+                rate = info.get('rate', '')
+            age = f'{max(delay, 0.0):.3f} s'
         authority = info.get('broadcaster', '')
+        if not info:
+            publisher = ''
+        elif authority in ('ros2vtk_tf_listener', 'no recorded authority', ''):
+            publisher = '?'
+        else:
+            publisher = authority
         rows.append({'frame': frame, 'depth': depth, 'parent': info.get('parent', ''), 'age': age,
-                     'rate': rate, 'static': static,
-                     'authority': '' if authority in ('ros2vtk_tf_listener', 'no recorded authority') else authority})
+                     'rate': rate, 'static': static, 'topic': ('/tf_static' if static else '/tf') if info else '',
+                     'publisher': publisher})
         for child in sorted(children.get(frame, [])):
             if child not in seen:  # a loop in a broken tree must not recurse forever
                 seen.add(child)

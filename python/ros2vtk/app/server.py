@@ -100,7 +100,7 @@ class App:
             'topics': [], 'topic_selected': '', 'topic_yaml': '', 'topic_direction': 'subscriber',
             'topic_type': 'String', 'topic_name': '/chatter', 'publish_yaml': "{data: 'hello'}",
             'graph_filter': '', 'graph_nodes': [], 'graph_topics': [],
-            'tf_frames': [], 'tf_lookups': [], 'tf_broadcasters': [], 'tf_parent': 'world', 'tf_child': 'base_link',
+            'tf_frames': [], 'tf_publishers': [], 'tf_lookups': [], 'tf_broadcasters': [], 'tf_parent': 'world', 'tf_child': 'base_link',
             'tf_static': False,
             'parameters': [], 'param_node': '/robot_state_publisher', 'param_names': 'robot_description',
             'remote_param_node': '/robot_state_publisher', 'remote_param_name': 'publish_frequency',
@@ -397,6 +397,7 @@ class App:
         s.graph_nodes, s.graph_topics = scene_state.graph(self.node, s.graph_filter)
         s.tf_lookups, s.tf_broadcasters = scene_state.tf_rows(self.scene)
         s.tf_frames = scene_state.tf_frame_rows(self.node)
+        s.tf_publishers = scene_state.tf_publishers(self.node)
         if self.parameter_sets:
             self._take_parameter_answers()
         s.parameters = scene_state.parameter_rows(self.scene)

@@ -191,7 +191,8 @@ class SlicePanes:
     view is (`areas`, one RenderWindowArea per orientation). The models cut by each slice plane
     (a robot's needle) are drawn on it in their colours. As in Slicer, each pane stays centred
     on the volume and only its plane moves: through `point` (world mm) once a script calls
-    set_point (the demo follows the tool tip), through the volume's centre until then."""
+    set_point, through the volume's centre until then. `follow` (a navigation view: the demo
+    follows the tool tip) centres the panes on the point too, zoomed to a field of view."""
 
     ORIENTATIONS = ('axial', 'sagittal', 'coronal')
     NORMAL_AXIS = {'axial': 2, 'sagittal': 0, 'coronal': 1}
@@ -213,10 +214,24 @@ class SlicePanes:
             self.views[orientation], self.windows[orientation] = view, window
         self.volume = None
         self.point: tuple[float, float, float] | None = None
+        self.centred = False  # panes centred on the point (follow) or on the volume
 
     def set_point(self, x: float, y: float, z: float) -> None:
         """The point (world mm) the three slice planes go through (applied on the next update)."""
         self.point = (float(x), float(y), float(z))
+        if self.centred:  # back to the whole volume in each pane
+            for view in self.views.values():
+                view.SetFieldOfView(0.0)
+        self.centred = False
+
+    def follow(self, x: float, y: float, z: float, half_height: float = 80.0) -> None:
+        """The three planes through the point and each pane centred on it, `half_height` mm
+        from its centre to its top (a navigation view following a tool tip)."""
+        self.point = (float(x), float(y), float(z))
+        if not self.centred:
+            for view in self.views.values():
+                view.SetFieldOfView(half_height)
+        self.centred = True
 
     def _image_to_world(self) -> vtk.vtkMatrix4x4:
         matrix = vtk.vtkMatrix4x4()
@@ -262,6 +277,8 @@ class SlicePanes:
                 if volume is not None and volume.GetWindow() > 0:
                     view.SetWindowLevel(volume.GetWindow(), volume.GetLevel())
         middle, point = self.volume_center() or self.point, self.clamped_point()
+        if self.centred and point is not None:
+            middle = point
         if middle is not None:
             for orientation, view in self.views.items():
                 center = list(middle)

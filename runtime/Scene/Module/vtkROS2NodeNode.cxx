@@ -825,6 +825,20 @@ std::string vtkROS2NodeNode::GetTopicNamesAndTypes()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetPublisherNodeNames(const char* topic)
+{
+  std::string lines;
+  if (this->Internals->Participant && topic)
+  {
+    for (const auto& name : this->Internals->Participant->publisher_node_names(topic))
+    {
+      lines += name + "\n";
+    }
+  }
+  return lines;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkROS2NodeNode::GetTf2FramesAsYAML()
 {
   ros2vtk::tf2::BufferCore* buffer = this->GetTf2Buffer();

@@ -200,6 +200,9 @@ public:
   /// entry per line, "/ns/name" and "/topic type1 type2". Discovery takes about a second.
   std::string GetNodeNamesAndNamespaces();
   std::string GetTopicNamesAndTypes();
+  /// The nodes publishing `topic` (like `ros2 topic info -v`), one "/ns/name" a line, sorted;
+  /// "?" for writers that no node's ros_discovery_info announcement lists (yet).
+  std::string GetPublisherNodeNames(const char* topic);
   ///@}
 
   /// Every frame of this node's tf buffer that has a transform, as tf2's allFramesAsYAML

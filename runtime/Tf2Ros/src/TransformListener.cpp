@@ -13,7 +13,7 @@ namespace tf2_ros {
 std::unique_ptr<TransformListener> TransformListener::create(wire::Participant& participant, tf2::BufferCore& buffer,
                                                              std::string* error)
 {
-  std::unique_ptr<TransformListener> listener(new TransformListener(buffer));
+  std::unique_ptr<TransformListener> listener(new TransformListener(participant, buffer));
   const wire::MessageTypeSupport& type = tf2_msgs::msg::TFMessage::type_support();
   wire::QoS dynamic_qos{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
                          wire::QoS::Durability::Volatile };
@@ -26,9 +26,23 @@ std::unique_ptr<TransformListener> TransformListener::create(wire::Participant& 
   return listener;
 }
 
-TransformListener::TransformListener(tf2::BufferCore& buffer)
-  : buffer_(buffer)
+const std::string TransformListener::kUnknownAuthority = "ros2vtk_tf_listener";
+
+TransformListener::TransformListener(wire::Participant& participant, tf2::BufferCore& buffer)
+  : participant_(participant)
+  , buffer_(buffer)
 {
+}
+
+const std::string& TransformListener::authority_of(const std::array<uint8_t, 16>& writer)
+{
+  const auto known = authorities_.find(writer);
+  if (known != authorities_.end())
+    return known->second;
+  std::string node = participant_.node_of_writer(writer);
+  if (node.empty())
+    return kUnknownAuthority; // asked again with its next message: announcements come late
+  return authorities_.emplace(writer, std::move(node)).first->second;
 }
 
 TransformListener::~TransformListener() = default;
@@ -44,6 +58,7 @@ size_t TransformListener::drain(wire::Subscription& subscription, bool is_static
   for (const auto& message : messages)
   {
     const auto* tf = static_cast<const tf2_msgs::msg::TFMessage*>(message.get());
+    const std::string& authority = authority_of(message.publisher_gid);
     for (const auto& t : tf->transforms)
     {
       transform.frame_id = t.header.frame_id;
@@ -54,7 +69,7 @@ size_t TransformListener::drain(wire::Subscription& subscription, bool is_static
       // Eigen's constructor order is (w, x, y, z).
       transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w, t.transform.rotation.x,
                                                         t.transform.rotation.y, t.transform.rotation.z);
-      if (buffer_.set_transform(transform, "ros2vtk_tf_listener", is_static, &reason))
+      if (buffer_.set_transform(transform, authority, is_static, &reason))
       {
         ++inserted;
       }

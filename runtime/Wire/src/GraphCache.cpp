@@ -284,5 +284,52 @@ std::vector<PublisherInfo> GraphCache::remote_publishers(const std::string& dds_
   return result;
 }
 
+namespace {
+std::string full_node_name(const std::string& ns, const std::string& name)
+{
+  return ns == "/" || ns.empty() ? "/" + name : ns + "/" + name;
+}
+} // namespace
+
+std::string GraphCache::node_of_writer_locked(const Gid& gid) const
+{
+  const auto local = local_endpoints_.find(gid);
+  if (local != local_endpoints_.end() && local->second.is_writer)
+    return full_node_name(node_namespace_, node_name_);
+  for (const auto& participant : remote_nodes_)
+  {
+    for (const auto& node : participant.second)
+    {
+      if (std::find(node.writers.begin(), node.writers.end(), gid) != node.writers.end())
+        return full_node_name(node.node_namespace, node.node_name);
+    }
+  }
+  return std::string();
+}
+
+std::string GraphCache::node_of_writer(const Gid& gid) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return node_of_writer_locked(gid);
+}
+
+std::vector<std::string> GraphCache::publisher_nodes(const std::string& dds_topic) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::set<std::string> names;
+  for (const auto* endpoints : { &local_endpoints_, &remote_endpoints_ })
+  {
+    for (const auto& entry : *endpoints)
+    {
+      if (entry.second.is_writer && entry.second.dds_topic == dds_topic)
+      {
+        const std::string owner = node_of_writer_locked(entry.first);
+        names.insert(owner.empty() ? "?" : owner);
+      }
+    }
+  }
+  return std::vector<std::string>(names.begin(), names.end());
+}
+
 } // namespace wire
 } // namespace ros2vtk

@@ -64,6 +64,13 @@ public:
   /// The remote writers of a DDS topic with their node (from ros_discovery_info; empty names
   /// while that node's announcement has not arrived) and type hash.
   std::vector<PublisherInfo> remote_publishers(const std::string& dds_topic) const;
+  /// The nodes ("/ns/name") whose writers publish `dds_topic` (as `ros2 topic info -v` names
+  /// them: a writer is matched to the node whose ros_discovery_info announcement lists its gid;
+  /// "?" for writers no announcement lists, e.g. before it arrives or from non-ROS DDS), sorted,
+  /// one entry per node.
+  std::vector<std::string> publisher_nodes(const std::string& dds_topic) const;
+  /// The node whose announcement lists writer `gid` ("/ns/name"; ours for our writers), or "".
+  std::string node_of_writer(const Gid& gid) const;
 
   // DataReaderListener: ParticipantEntitiesInfo samples from other participants.
   void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
@@ -80,7 +87,7 @@ private:
   {
     std::string node_namespace;
     std::string node_name;
-    std::vector<Gid> writers;
+    std::vector<Gid> writers; ///< the writer gids its announcement lists
   };
 
   /// Announces the local endpoints on ros_discovery_info. Lock order: publish_mutex_, then
@@ -102,6 +109,9 @@ private:
   std::map<Gid, Endpoint> local_endpoints_;
   std::map<Gid, Endpoint> remote_endpoints_;
   std::map<Gid, std::vector<NodeInfo>> remote_nodes_; ///< by participant gid
+
+  /// Caller holds mutex_.
+  std::string node_of_writer_locked(const Gid& gid) const;
 };
 
 } // namespace wire

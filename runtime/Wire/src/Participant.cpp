@@ -690,6 +690,18 @@ size_t Participant::count_subscribers(const std::string& topic) const
   return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), false) : 0;
 }
 
+std::vector<std::string> Participant::publisher_node_names(const std::string& topic) const
+{
+  std::string resolved;
+  return resolve_name(topic, resolved, nullptr) ? impl_->graph.publisher_nodes(topic_to_dds(resolved))
+                                                : std::vector<std::string>();
+}
+
+std::string Participant::node_of_writer(const std::array<uint8_t, 16>& gid) const
+{
+  return impl_->graph.node_of_writer(gid);
+}
+
 size_t Participant::remote_participant_count() const
 {
   std::lock_guard<std::mutex> lock(impl_->peers_mutex);

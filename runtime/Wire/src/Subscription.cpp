@@ -33,6 +33,7 @@ MessagePtr::~MessagePtr()
 MessagePtr::MessagePtr(MessagePtr&& other) noexcept
   : source_timestamp_ns(other.source_timestamp_ns)
   , reception_timestamp_ns(other.reception_timestamp_ns)
+  , publisher_gid(other.publisher_gid)
   , type_(other.type_)
   , message_(other.message_)
 {
@@ -51,6 +52,7 @@ MessagePtr& MessagePtr::operator=(MessagePtr&& other) noexcept
     message_ = other.message_;
     source_timestamp_ns = other.source_timestamp_ns;
     reception_timestamp_ns = other.reception_timestamp_ns;
+    publisher_gid = other.publisher_gid;
     other.message_ = nullptr;
   }
   return *this;
@@ -130,6 +132,7 @@ void Subscription::Impl::on_data_available(dds::DataReader* data_reader)
     MessagePtr message(&type, sample.message);
     sample.message = nullptr;
     message.source_timestamp_ns = info.source_timestamp.to_ns();
+    message.publisher_gid = to_gid(info.sample_identity.writer_guid());
     message.reception_timestamp_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                                        std::chrono::system_clock::now().time_since_epoch())
                                        .count();

@@ -6,7 +6,9 @@
 
 #include "ros2vtk/tf2/BufferCore.hpp"
 
+#include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -20,6 +22,9 @@ namespace tf2_ros {
 class TransformListener
 {
 public:
+  /// The authority of transforms whose writer no node announcement lists (yet).
+  static const std::string kUnknownAuthority; // "ros2vtk_tf_listener"
+
   static std::unique_ptr<TransformListener> create(wire::Participant& participant, tf2::BufferCore& buffer,
                                                    std::string* error);
   ~TransformListener();
@@ -32,10 +37,15 @@ public:
   const std::string& last_rejection() const { return last_rejection_; }
 
 private:
-  TransformListener(tf2::BufferCore& buffer);
+  TransformListener(wire::Participant& participant, tf2::BufferCore& buffer);
   size_t drain(wire::Subscription& subscription, bool is_static);
+  /// The authority recorded with a transform: the node of the writer that sent it (from the
+  /// ROS graph, as `ros2 topic info -v` names it), or kUnknownAuthority until the graph knows it.
+  const std::string& authority_of(const std::array<uint8_t, 16>& writer);
 
+  wire::Participant& participant_;
   tf2::BufferCore& buffer_;
+  std::map<std::array<uint8_t, 16>, std::string> authorities_; ///< writers whose node is known
   std::unique_ptr<wire::Subscription> dynamic_;
   std::unique_ptr<wire::Subscription> static_;
   uint64_t rejected_ = 0;

@@ -7,6 +7,8 @@
 #include "ros2vtk/wire/Rosout.hpp"
 #include "ros2vtk/wire/WakeUp.hpp"
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -121,6 +123,12 @@ public:
   /// The publishers of other participants on `topic` (a name this node resolves).
   std::vector<PublisherInfo> publishers_info(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
+  /// The nodes ("/ns/name") publishing `topic`, sorted; "?" stands for writers that no node's
+  /// ros_discovery_info announcement lists (yet).
+  std::vector<std::string> publisher_node_names(const std::string& topic) const;
+  /// The node ("/ns/name") whose ros_discovery_info announcement lists the writer `gid` (this
+  /// node for its own writers); "" when none does (yet).
+  std::string node_of_writer(const std::array<uint8_t, 16>& gid) const;
 
   /// Link status: remote participants (other processes' nodes, on any host) discovered and not
   /// yet removed, and how many of them were dropped because their lease expired (silence

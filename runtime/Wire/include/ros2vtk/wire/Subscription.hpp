@@ -7,6 +7,7 @@
 
 #include "ros2vtk/wire/QoS.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -34,6 +35,9 @@ public:
   explicit operator bool() const { return message_ != nullptr; }
   int64_t source_timestamp_ns = 0;   ///< writer's time stamp of the sample
   int64_t reception_timestamp_ns = 0;
+  /// The DDS GUID of the writer that sent it (the rmw gid; Participant::node_of_writer names
+  /// its node).
+  std::array<uint8_t, 16> publisher_gid{};
 
 private:
   const MessageTypeSupport* type_ = nullptr;
