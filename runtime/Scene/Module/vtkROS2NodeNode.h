@@ -30,6 +30,7 @@ class Participant;
 
 class vtkROS2ParameterNode;
 class vtkROS2RobotNode;
+class vtkROS2ActionClientNode;
 class vtkROS2ServiceClientNode;
 class vtkROS2ServiceServerNode;
 class vtkROS2Tf2BroadcasterNode;
@@ -78,6 +79,7 @@ public:
   static constexpr const char* RobotRole = "robot";
   static constexpr const char* ServiceClientRole = "serviceClient";
   static constexpr const char* ServiceServerRole = "serviceServer";
+  static constexpr const char* ActionClientRole = "actionClient";
   ///@}
 #endif
   /// Removes every publisher and subscriber from DDS (they stay in the scene) and destroys the
@@ -173,6 +175,18 @@ public:
   /// SlicerROS2's name for the same list (its service clients are one class per type; ours is
   /// one class for every type, so the list names the types).
   std::string RegisteredROS2ServiceClientNodes() const { return this->GetRegisteredServiceTypes(); }
+  ///@}
+
+  ///@{
+  /// Action clients of any generated .action type (`type` as "test_msgs/action/Fibonacci" or
+  /// "test_msgs/Fibonacci"; docs/actions.md): goals, feedback, results and cancels on Spin. One
+  /// client per action name and ROS node; nullptr / false (vtkErrorMacro listing the known
+  /// types) otherwise.
+  vtkROS2ActionClientNode* CreateAndAddActionClientNode(const char* type, const char* action);
+  vtkROS2ActionClientNode* GetActionClientNodeByAction(const char* action);
+  bool RemoveAndDeleteActionClientNode(const char* action);
+  /// Space-separated ROS names of the action types that can be used.
+  std::string GetRegisteredActionTypes() const;
   ///@}
 
   ///@{
