@@ -99,3 +99,52 @@ def test_missing_action_server_gives_our_client_a_clear_timeout(ros):
     assert result['error'] == ('timed out: no server for /nobody_serves_this (test_msgs/action/Fibonacci) '
                                'appeared within 1.5 s')
     assert result['events']['GoalFailedEvent'] == 1 and result['events']['GoalResponseEvent'] == 0
+
+
+# -- our server, rclpy ActionClient ------------------------------------------------------------
+
+def our_server(ros, *args: str):
+    server = ours(ros, 'serve', *args)
+    ros.wait_ready(server)
+    return server
+
+
+def rclpy_client(ros, *args: str, timeout: float = 60) -> dict:
+    client = ros.start([str(VENV_PYTHON), str(HERE / 'action_peer.py'), 'client', *args])
+    code, out, err = ros.finish(client, timeout=timeout)
+    assert code == 0, err
+    assert json.loads(out.strip().splitlines()[0]) == {'ready': True}, out + err
+    return last_json(out)
+
+
+def test_rclpy_client_gets_feedback_and_result_from_our_server(ros):
+    server = our_server(ros, '/fibonacci', '--step', '0.05', '--count', '1', '--seconds', '30')
+    result = rclpy_client(ros, '/fibonacci', '5')
+    expected = fibonacci_feedbacks(5)
+    assert result['accepted'] is True, result
+    assert result['status'] == STATUS_SUCCEEDED and result['sequence'] == expected[-1]
+    assert result['feedbacks'] == expected
+    code, out, err = ros.finish(server, timeout=40)
+    assert code == 0, err
+    served = last_json(out)
+    assert served['orders'] == [5] and served['outcomes'] == ['succeeded'] and served['results_sent'] == 1
+
+
+def test_rclpy_client_cancels_a_goal_on_our_server(ros):
+    server = our_server(ros, '/slow_fibonacci', '--step', '0.3', '--count', '1', '--seconds', '30')
+    result = rclpy_client(ros, '/slow_fibonacci', '20', '--cancel-after', '2', '--timeout', '15')
+    assert result['cancel_return_code'] == 0, result  # ERROR_NONE
+    assert result['status'] == STATUS_CANCELED, result
+    full = fibonacci_feedbacks(20)[-1]
+    assert 3 <= len(result['sequence']) < len(full) and result['sequence'] == full[:len(result['sequence'])]
+    code, out, err = ros.finish(server, timeout=40)
+    assert code == 0, err
+    served = last_json(out)
+    assert served['cancels'] == 1 and served['cancel_events'] == 1 and served['outcomes'] == ['canceled']
+
+
+def test_our_server_rejects_a_goal_of_the_rclpy_client(ros):
+    server = our_server(ros, '/fibonacci', '--max-order', '10', '--seconds', '10')
+    result = rclpy_client(ros, '/fibonacci', '11')
+    assert result == {'accepted': False}
+    ros.stop(server)

@@ -6,6 +6,7 @@
 #include "vtkROS2PublisherGenericNode.h"
 #include "vtkROS2RobotNode.h"
 #include "vtkROS2ActionClientNode.h"
+#include "vtkROS2ActionServerNode.h"
 #include "vtkROS2ServiceClientNode.h"
 #include "vtkROS2ServiceServerNode.h"
 #include "vtkROS2SubscriberGenericNode.h"
@@ -44,6 +45,7 @@ void register_builtin_node_classes(NodeClassRegistry& registry)
     { "", "vtkROS2ServiceClientNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceClientNode> },
     { "", "vtkROS2ServiceServerNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceServerNode> },
     { "", "vtkROS2ActionClientNode", "", NodeDirection::Other, &create_node<vtkROS2ActionClientNode> },
+    { "", "vtkROS2ActionServerNode", "", NodeDirection::Other, &create_node<vtkROS2ActionServerNode> },
   };
   for (const auto& info : builtins)
   {

@@ -5,6 +5,7 @@
 // unique_identifier_msgs and the member names rosidl gives every synthesized type) is named here.
 #include "vtkROS2ActionClientNode.h"
 
+#include "ActionMembers.hpp"
 #include "MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
@@ -40,8 +41,7 @@ vtkStandardNewMacro(vtkROS2ActionClientNode);
 namespace
 {
 using Clock = std::chrono::steady_clock;
-using ros2vtk::wire::FieldInfo;
-using ros2vtk::wire::FieldType;
+using ros2vtk::scene::member;
 using ros2vtk::wire::MessagePtr;
 using ros2vtk::wire::MessageTypeSupport;
 using UUID = ros2vtk::unique_identifier_msgs::msg::UUID;
@@ -57,45 +57,6 @@ std::string FormatSeconds(double seconds)
   std::ostringstream text;
   text << seconds << " s";
   return text.str();
-}
-
-/// The offset of member `name` of `type`, checked to be a single value of `fieldType` (and of
-/// `nested` when it is a message); false with `error` otherwise (a table not made by
-/// ros2vtk_gen's action synthesis).
-bool MemberOffset(const MessageTypeSupport& type, const char* name, FieldType fieldType,
-  const MessageTypeSupport* nested, size_t& offset, std::string* error)
-{
-  for (uint32_t i = 0; i < type.field_count; ++i)
-  {
-    const FieldInfo& field = type.fields[i];
-    if (std::string(field.name) != name)
-    {
-      continue;
-    }
-    if (field.type != fieldType || field.container != ros2vtk::wire::Container::None ||
-      (nested && (!field.nested || field.nested() != nested)))
-    {
-      break;
-    }
-    offset = field.offset;
-    return true;
-  }
-  *error = std::string(type.ros_type) + " has no member '" + name + "' of type " +
-    (nested ? nested->ros_type : ros2vtk::wire::field_type_name(fieldType)) +
-    " (not an action type as rosidl synthesizes it)";
-  return false;
-}
-
-template <typename T>
-T& Member(void* message, size_t offset)
-{
-  return *reinterpret_cast<T*>(static_cast<char*>(message) + offset);
-}
-
-template <typename T>
-const T& Member(const void* message, size_t offset)
-{
-  return *reinterpret_cast<const T*>(static_cast<const char*>(message) + offset);
 }
 
 UUID RandomGoalId()
@@ -119,19 +80,11 @@ UUID RandomGoalId()
 class vtkROS2ActionClientNode::vtkInternals
 {
 public:
-  /// Where the members rosidl synthesizes sit in this action's types.
-  struct Offsets
-  {
-    size_t SendGoalId = 0, SendGoalGoal = 0, Accepted = 0;
-    size_t GetResultId = 0, ResultStatus = 0, ResultResult = 0;
-    size_t FeedbackId = 0, FeedbackFeedback = 0;
-  };
-
   const ros2vtk::wire::ActionTypeSupport* Type = nullptr;
   std::string TypeName;   // as given (saved with the scene)
   std::string ActionName; // as given
   std::string ResolvedName;
-  Offsets At;
+  ros2vtk::scene::ActionMembers At; // where the synthesized members sit in this action's types
   std::unique_ptr<ros2vtk::wire::ServiceClient> SendGoalClient;
   std::unique_ptr<ros2vtk::wire::ServiceClient> GetResultClient;
   std::unique_ptr<ros2vtk::wire::ServiceClient> CancelClient;
@@ -211,31 +164,15 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     vtkErrorMacro("action client " << action << ": " << error);
     return false;
   }
-  // The fixed action protocol: the table must point at the action_msgs types this file uses.
-  if (support->cancel_goal() != &ros2vtk::action_msgs::srv::CancelGoal::type_support() ||
-    support->status() != &ros2vtk::action_msgs::msg::GoalStatusArray::type_support())
-  {
-    vtkErrorMacro("action client " << action << ": the table of " << support->ros_type
-                                   << " does not use ros2vtk's action_msgs types");
-    return false;
-  }
-  vtkInternals::Offsets at;
-  const auto* uuid = &UUID::type_support();
-  const auto& sendGoal = *support->send_goal();
-  const auto& getResult = *support->get_result();
-  const auto& feedbackMessage = *support->feedback_message();
-  if (!MemberOffset(*sendGoal.request(), "goal_id", FieldType::Message, uuid, at.SendGoalId, &error) ||
-    !MemberOffset(*sendGoal.request(), "goal", FieldType::Message, support->goal(), at.SendGoalGoal, &error) ||
-    !MemberOffset(*sendGoal.response(), "accepted", FieldType::Bool, nullptr, at.Accepted, &error) ||
-    !MemberOffset(*getResult.request(), "goal_id", FieldType::Message, uuid, at.GetResultId, &error) ||
-    !MemberOffset(*getResult.response(), "status", FieldType::Int8, nullptr, at.ResultStatus, &error) ||
-    !MemberOffset(*getResult.response(), "result", FieldType::Message, support->result(), at.ResultResult, &error) ||
-    !MemberOffset(feedbackMessage, "goal_id", FieldType::Message, uuid, at.FeedbackId, &error) ||
-    !MemberOffset(feedbackMessage, "feedback", FieldType::Message, support->feedback(), at.FeedbackFeedback, &error))
+  ros2vtk::scene::ActionMembers at;
+  if (!ros2vtk::scene::find_action_members(*support, at, &error))
   {
     vtkErrorMacro("action client " << action << ": " << error);
     return false;
   }
+  const auto& sendGoal = *support->send_goal();
+  const auto& getResult = *support->get_result();
+  const auto& feedbackMessage = *support->feedback_message();
   // rcl_action's endpoints and default QoS (WIRE_NOTES_2 §2.1).
   const std::string prefix = resolved + "/_action/";
   const auto services = ros2vtk::wire::QoS::services();
@@ -414,7 +351,7 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
   internals.GoalId = RandomGoalId();
   internals.HasGoal = true;
   internals.GoalRequest = NewMessage(*type.send_goal()->request());
-  Member<UUID>(internals.GoalRequest.get(), internals.At.SendGoalId) = internals.GoalId;
+  member<UUID>(internals.GoalRequest.get(), internals.At.SendGoalId) = internals.GoalId;
   type.goal()->copy(internals.Goal.get(), static_cast<char*>(internals.GoalRequest.get()) + internals.At.SendGoalGoal);
   internals.LastFeedback = NewMessage(*type.feedback());
   internals.Result = NewMessage(*type.result());
@@ -501,12 +438,12 @@ int vtkROS2ActionClientNode::ProcessAction()
     {
       continue; // an earlier goal's answer, or a second server's duplicate
     }
-    if (Member<bool>(response.response.get(), internals.At.Accepted))
+    if (member<bool>(response.response.get(), internals.At.Accepted))
     {
       internals.State = Accepted;
       ++internals.GoalsAccepted;
       auto request = NewMessage(*internals.Type->get_result()->request());
-      Member<UUID>(request.get(), internals.At.GetResultId) = internals.GoalId;
+      member<UUID>(request.get(), internals.At.GetResultId) = internals.GoalId;
       // Asked at once (as rclcpp does with a result callback); the server answers when done.
       internals.ResultSequence = internals.GetResultClient->send_request(request.get());
       if (internals.ResultSequence < 0)
@@ -528,7 +465,7 @@ int vtkROS2ActionClientNode::ProcessAction()
   for (auto& message : messages)
   {
     if (!internals.HasGoal || internals.State == WaitingForServer ||
-      Member<UUID>(message.get(), internals.At.FeedbackId) != internals.GoalId)
+      member<UUID>(message.get(), internals.At.FeedbackId) != internals.GoalId)
     {
       continue; // feedback goes to every client; each keeps its own goals' (WIRE_NOTES_2 §2.5)
     }
@@ -575,7 +512,7 @@ int vtkROS2ActionClientNode::ProcessAction()
       continue;
     }
     const void* answer = response.response.get();
-    internals.ResultStatus = Member<int8_t>(answer, internals.At.ResultStatus);
+    internals.ResultStatus = member<int8_t>(answer, internals.At.ResultStatus);
     internals.Type->result()->copy(static_cast<const char*>(answer) + internals.At.ResultResult, internals.Result.get());
     ++internals.Results;
     switch (internals.ResultStatus)

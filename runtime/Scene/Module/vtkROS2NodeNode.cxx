@@ -35,7 +35,7 @@ namespace
 /// role (a kind added outside the runtime, connectors) follow, roles sorted by name.
 const char* const SpinOrder[] = { vtkROS2NodeNode::Tf2LookupRole, vtkROS2NodeNode::SubscriberRole,
   vtkROS2NodeNode::ParameterRole, vtkROS2NodeNode::ServiceClientRole, vtkROS2NodeNode::ServiceServerRole,
-  vtkROS2NodeNode::ActionClientRole, vtkROS2NodeNode::RobotRole };
+  vtkROS2NodeNode::ActionClientRole, vtkROS2NodeNode::ActionServerRole, vtkROS2NodeNode::RobotRole };
 
 std::string IndexKey(const char* role, const std::string& key)
 {
