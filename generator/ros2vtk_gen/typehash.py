@@ -11,7 +11,7 @@ A service's description is synthesized as rosidl does: the service type with the
 request_message, response_message and event_message, and its `<Srv>_Event` message (info,
 request[<=1], response[<=1]) referencing service_msgs/msg/ServiceEventInfo. An action's is
 the action type with the fields goal, result, feedback, send_goal_service, get_result_service
-and feedback_message, referencing all of them and what they reference (WIRE_NOTES_2 §2.2).
+and feedback_message, referencing all of them and what they reference (docs/wire-notes.md §8.2).
 """
 from __future__ import annotations
 

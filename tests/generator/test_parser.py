@@ -216,7 +216,7 @@ def test_action_blocks_and_synthesized_types():
     action = parse_spec_file(os.path.join(MSG_SPECS, "test_msgs", "action", "Fibonacci.action"))
     assert isinstance(action, Action)
     assert action.ros_type == "test_msgs/action/Fibonacci"
-    # As rosidl_adapter's action.idl.em synthesizes them (WIRE_NOTES_2 §2.2).
+    # As rosidl_adapter's action.idl.em synthesizes them (docs/wire-notes.md §8.2).
     assert [(m.ros_type, [(f.name, f.type.ros_name(), f.container) for f in m.fields])
             for m in action.messages] == [
         ("test_msgs/action/Fibonacci_Goal", [("order", "int32", SCALAR)]),

@@ -173,7 +173,7 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   const auto& sendGoal = *support->send_goal();
   const auto& getResult = *support->get_result();
   const auto& feedbackMessage = *support->feedback_message();
-  // rcl_action's endpoints and default QoS (WIRE_NOTES_2 §2.1).
+  // rcl_action's endpoints and default QoS (docs/wire-notes.md §8.1).
   const std::string prefix = resolved + "/_action/";
   const auto services = ros2vtk::wire::QoS::services();
   auto sendGoalClient = participant.create_service_client(sendGoal, prefix + "send_goal", services, &error);
@@ -467,7 +467,7 @@ int vtkROS2ActionClientNode::ProcessAction()
     if (!internals.HasGoal || internals.State == WaitingForServer ||
       member<UUID>(message.get(), internals.At.FeedbackId) != internals.GoalId)
     {
-      continue; // feedback goes to every client; each keeps its own goals' (WIRE_NOTES_2 §2.5)
+      continue; // feedback goes to every client; each keeps its own goals' (docs/wire-notes.md §8.3)
     }
     internals.Type->feedback()->copy(
       static_cast<const char*>(message.get()) + internals.At.FeedbackFeedback, internals.LastFeedback.get());

@@ -174,7 +174,7 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     vtkErrorMacro("action server " << action << ": " << error);
     return false;
   }
-  // rcl_action's endpoints and default QoS (WIRE_NOTES_2 §2.1).
+  // rcl_action's endpoints and default QoS (docs/wire-notes.md §8.1).
   const std::string prefix = resolved + "/_action/";
   const auto services = ros2vtk::wire::QoS::services();
   auto sendGoal = participant.create_service_server(*support->send_goal(), prefix + "send_goal", services, &error);
@@ -326,7 +326,7 @@ int vtkROS2ActionServerNode::ProcessRequests()
     response.return_code = CancelResponse::ERROR_NONE;
     const bool byId = !IsZero(asked.goal_id);
     const bool byTime = Nanoseconds(asked.stamp) != 0;
-    // rcl_action_process_cancel_request (WIRE_NOTES_2 §2.5): one goal, all goals, or goals
+    // rcl_action_process_cancel_request (docs/wire-notes.md §8.3): one goal, all goals, or goals
     // accepted up to a time (plus the named one).
     vtkInternals::Goal* named = byId ? internals.Find(asked.goal_id) : nullptr;
     if (byId && !byTime && !named)
