@@ -59,7 +59,8 @@ def test_our_client_gets_feedback_and_result_from_rclpy_fibonacci(ros):
     assert result['last_feedback'] == {'sequence': expected[-1]}
     assert result['events'] == {'GoalResponseEvent': 1, 'FeedbackReceivedEvent': len(expected),
                                 'ResultReceivedEvent': 1, 'GoalFailedEvent': 0, 'CancelResponseEvent': 0}
-    assert result['statuses'][-1] == 'succeeded' and 'accepted' in result['statuses']
+    # (Accepted and executing are passing states: one spin may take them together with the result.)
+    assert result['statuses'][-1] == 'succeeded', result['statuses']
     assert len(result['goal_id']) == 32 and result['goal_id'] != '0' * 32
     ros.stop(server)
 

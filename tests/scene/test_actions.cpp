@@ -9,6 +9,15 @@
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
+#include "ActionMembers.hpp"
+
+#include "ros2vtk/wire/CdrWriter.hpp"
+#include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/Publisher.hpp"
+#include "ros2vtk/wire/QoS.hpp"
+#include "ros2vtk/wire/Service.hpp"
+
 #include "vtkCallbackCommand.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -131,6 +140,95 @@ TEST_F(ActionTest, RejectedGoalAndBlockingSend)
   EXPECT_EQ(this->Server->GetNumberOfGoalsRejected(), 1);
   EXPECT_FALSE(this->Server->HasActiveGoal());
   EXPECT_FALSE(this->Server->RejectGoal()) << "only inside the event";
+}
+
+TEST_F(ActionTest, ForeignFeedbackAndMalformedStatusAreIgnored)
+{
+  this->MakePair("/crowded");
+  std::string error;
+  auto raw = ros2vtk::wire::Participant::create(
+    "stranger", "", ros2vtk::wire::ParticipantOptions::from_environment(), &error);
+  ASSERT_TRUE(raw) << error;
+  const ros2vtk::wire::ActionTypeSupport* type = ros2vtk::wire::find_action_type("test_msgs/action/Fibonacci");
+  ASSERT_NE(type, nullptr);
+  ros2vtk::scene::ActionMembers at;
+  ASSERT_TRUE(ros2vtk::scene::find_action_members(*type, at, &error)) << error;
+  auto feedback = raw->create_publisher(
+    *type->feedback_message(), "/crowded/_action/feedback", ros2vtk::wire::QoS::default_profile(), &error);
+  // A status table that writes a sequence length far beyond the payload (what a broken or
+  // hostile server would send): the client's reader must reject it.
+  static ros2vtk::wire::MessageTypeSupport hostileStatus = *type->status();
+  hostileStatus.serialize = [](const void*, ros2vtk::wire::CdrWriter& writer) {
+    writer.write(static_cast<uint32_t>(0x7fffffff));
+  };
+  auto status =
+    raw->create_publisher(hostileStatus, "/crowded/_action/status", ros2vtk::wire::QoS::transient_local(1), &error);
+  ASSERT_TRUE(feedback && status) << error;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return feedback->matched_subscriptions() > 0 && status->matched_subscriptions() > 0; }));
+
+  ASSERT_GT(this->Client->SendGoalYAML("{order: 4}"), 0);
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }));
+  // Feedback of another client's goal (another id) and a malformed status sample.
+  void* other = type->feedback_message()->create();
+  ros2vtk::scene::member<uint8_t>(other, at.FeedbackId) = 0x5a; // first byte of the goal id
+  ASSERT_TRUE(feedback->publish(other));
+  type->feedback_message()->destroy(other);
+  void* blank = hostileStatus.create();
+  ASSERT_TRUE(status->publish(blank));
+  hostileStatus.destroy(blank);
+  ros2vtk_test::SpinUntil(this->Logic, [] { return false; }, 0.5);
+  EXPECT_EQ(this->Client->GetNumberOfFeedbacks(), 0) << "feedback of another goal is not ours";
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
+    return this->Output->Warnings.find("malformed feedback/status sample(s) rejected") != std::string::npos;
+  })) << this->Output->Warnings;
+  EXPECT_NE(this->Output->Warnings.find("action '/crowded'"), std::string::npos) << this->Output->Warnings;
+
+  ASSERT_TRUE(this->Server->PublishFeedbackYAML("{sequence: [0, 1, 1]}"));
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfFeedbacks() == 1; }));
+  ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2, 3]}"));
+  ASSERT_TRUE(this->Client->WaitForGoal(10.0));
+  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Succeeded) << this->Client->GetLastError();
+}
+
+TEST_F(ActionTest, MalformedGoalRequestsAreRejectedAndTheServerKeepsServing)
+{
+  this->MakePair("/hostile_goals");
+  std::string error;
+  auto raw = ros2vtk::wire::Participant::create(
+    "goal_garbler", "", ros2vtk::wire::ParticipantOptions::from_environment(), &error);
+  ASSERT_TRUE(raw) << error;
+  const ros2vtk::wire::ServiceTypeSupport* sendGoal =
+    ros2vtk::wire::find_action_type("test_msgs/action/Fibonacci")->send_goal();
+  // X_SendGoal_Request on the wire, cut after 3 bytes of the goal id.
+  static ros2vtk::wire::MessageTypeSupport hostileRequest = *sendGoal->request();
+  static const ros2vtk::wire::MessageTypeSupport* realResponse = sendGoal->response();
+  hostileRequest.serialize = [](const void*, ros2vtk::wire::CdrWriter& writer) {
+    writer.write(static_cast<uint8_t>(1));
+    writer.write(static_cast<uint8_t>(2));
+    writer.write(static_cast<uint8_t>(3));
+  };
+  static const ros2vtk::wire::ServiceTypeSupport hostile{ sendGoal->ros_type,
+    [] { return static_cast<const ros2vtk::wire::MessageTypeSupport*>(&hostileRequest); },
+    [] { return realResponse; }, sendGoal->type_hash, sendGoal->description };
+  auto client = raw->create_service_client(
+    hostile, "/hostile_goals/_action/send_goal", ros2vtk::wire::QoS::services(), &error);
+  ASSERT_TRUE(client) << error;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return client->is_server_available(); }));
+  void* ignored = hostileRequest.create();
+  ASSERT_GT(client->send_request(ignored), 0);
+  hostileRequest.destroy(ignored);
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
+    return this->Output->Warnings.find("malformed request(s) rejected") != std::string::npos;
+  })) << this->Output->Warnings;
+  EXPECT_NE(this->Output->Warnings.find("action '/hostile_goals'"), std::string::npos);
+  EXPECT_EQ(this->Server->GetNumberOfGoalsReceived(), 0) << "no malformed goal reached the script";
+
+  ASSERT_GT(this->Client->SendGoalYAML("{order: 1}"), 0);
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }));
+  ASSERT_TRUE(this->Server->AbortGoal(""));
+  ASSERT_TRUE(this->Client->WaitForGoal(10.0));
+  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Aborted) << this->Client->GetLastError();
+  EXPECT_EQ(this->Client->GetResultStatus(), 6);
 }
 
 TEST_F(ActionTest, BadUseGivesClearErrors)

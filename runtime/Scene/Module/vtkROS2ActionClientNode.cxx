@@ -7,6 +7,7 @@
 
 #include "ActionMembers.hpp"
 #include "MessageFields.hpp"
+#include "RateLimitedReport.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -113,6 +114,11 @@ public:
   vtkTypeInt64 Results = 0;
   vtkTypeInt64 Feedbacks = 0;
   bool InWait = false;
+  // Malformed feedback / status samples (rejected by the wire subscriptions): counted, and
+  // reported as a warning at most every 5 s.
+  uint64_t RejectedSeen = 0;
+  vtkTypeInt64 Rejected = 0;
+  ros2vtk::scene::RateLimitedReport RejectionReport{ std::chrono::seconds(5) };
 
   bool ServerReady() const
   {
@@ -562,6 +568,21 @@ int vtkROS2ActionClientNode::ProcessAction()
       : "timed out: " + internals.ResolvedName + " did not answer the goal within " + FormatSeconds(internals.GoalTimeout);
     internals.State = TimedOut;
     events.push_back(GoalFailedEvent);
+  }
+
+  const uint64_t rejected =
+    internals.FeedbackSubscription->rejected_count() + internals.StatusSubscription->rejected_count();
+  const uint64_t fresh = rejected > internals.RejectedSeen ? rejected - internals.RejectedSeen : 0;
+  internals.RejectedSeen = rejected;
+  internals.Rejected += static_cast<vtkTypeInt64>(fresh);
+  if (const uint64_t due = internals.RejectionReport.record(fresh, now))
+  {
+    const std::string reason = internals.StatusSubscription->last_rejection().empty()
+      ? internals.FeedbackSubscription->last_rejection()
+      : internals.StatusSubscription->last_rejection();
+    vtkWarningMacro("action '" << internals.ResolvedName << "': " << due
+                               << " malformed feedback/status sample(s) rejected (total " << internals.Rejected
+                               << "; latest: " << reason << ")");
   }
 
   if (events.empty())

@@ -6,6 +6,7 @@
 
 #include "ActionMembers.hpp"
 #include "MessageFields.hpp"
+#include "RateLimitedReport.hpp"
 #include "vtkROS2NodeNode.h"
 
 #include "ros2vtk/action_msgs/msg/goal_status.hpp"
@@ -26,6 +27,7 @@
 #include "vtkXMLDataElement.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <vector>
 
@@ -95,6 +97,11 @@ public:
   const void* Deciding = nullptr; // X_Goal under GoalReceivedEvent
   bool RejectDeciding = false;
   vtkTypeInt64 Received = 0, Accepted = 0, Rejected = 0, Cancels = 0, ResultsSent = 0;
+  // Malformed requests (rejected by the wire servers): counted, and reported as a warning at
+  // most every 5 s.
+  uint64_t MalformedSeen = 0;
+  vtkTypeInt64 Malformed = 0;
+  ros2vtk::scene::RateLimitedReport MalformedReport{ std::chrono::seconds(5) };
 
   Goal* Current()
   {
@@ -357,6 +364,22 @@ int vtkROS2ActionServerNode::ProcessRequests()
       }
     }
     internals.CancelServer->send_response(request.id, &response);
+  }
+
+  const uint64_t malformed = internals.SendGoalServer->rejected_count() +
+    internals.GetResultServer->rejected_count() + internals.CancelServer->rejected_count();
+  const uint64_t fresh = malformed > internals.MalformedSeen ? malformed - internals.MalformedSeen : 0;
+  internals.MalformedSeen = malformed;
+  internals.Malformed += static_cast<vtkTypeInt64>(fresh);
+  if (const uint64_t due = internals.MalformedReport.record(fresh, std::chrono::steady_clock::now()))
+  {
+    std::string reason = internals.SendGoalServer->last_rejection();
+    for (const auto* server : { internals.GetResultServer.get(), internals.CancelServer.get() })
+    {
+      reason = reason.empty() ? server->last_rejection() : reason;
+    }
+    vtkWarningMacro("action '" << internals.ResolvedName << "': " << due << " malformed request(s) rejected (total "
+                               << internals.Malformed << "; latest: " << reason << ")");
   }
 
   if (statusChanged)
