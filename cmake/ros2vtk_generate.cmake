@@ -5,20 +5,23 @@ ros2vtk_generate.cmake — build C++ from ROS 2 interface specs with ros2vtk_gen
 .. code-block:: cmake
 
   ros2vtk_generate_messages(<target>
-    SPECS        <file.msg|file.srv|folder> ...
+    SPECS        <file.msg|file.srv|file.action|folder> ...
     [ROS_PACKAGES <installed ROS package name> ...]
     [DEPENDENCIES <target made by ros2vtk_generate_messages> ...])
 
-Generates, for every message (and every service's Request/Response), the C++ struct, its CDR
+Generates, for every message (and every service's Request/Response, every action's eight
+synthesized messages and its ``ActionTypeSupport`` table), the C++ struct, its CDR
 serializer and its ``ros2vtk::wire::MessageTypeSupport`` table into
 ``${CMAKE_CURRENT_BINARY_DIR}/<target>/`` (``include/`` and ``src/``), and builds them as the
 library ``<target>``, linked PUBLIC to ``ros2vtk::Message`` with the generated ``include/`` as
 PUBLIC include directory.
 
 ``SPECS``
-  Spec files or folders (searched recursively for ``*.msg`` / ``*.srv``), relative to
-  ``CMAKE_CURRENT_SOURCE_DIR``. Files must be laid out ``<package>/msg/<Type>.msg`` or
-  ``<package>/srv/<Srv>.srv``: the package name comes from the path.
+  Spec files or folders (searched recursively for ``*.msg`` / ``*.srv`` / ``*.action``),
+  relative to ``CMAKE_CURRENT_SOURCE_DIR``. Files must be laid out ``<package>/msg/<Type>.msg``,
+  ``<package>/srv/<Srv>.srv`` or ``<package>/action/<X>.action``: the package name comes from
+  the path. Actions need ``unique_identifier_msgs``, ``builtin_interfaces`` and ``action_msgs``
+  (shipped in ``ros2vtk::Messages``).
   A ROS package's installed share folder works as it is (``<prefix>/share/lab_msgs``: its
   ``.idl``/``.json`` files are skipped).
 ``ROS_PACKAGES``
@@ -58,17 +61,18 @@ function(_ros2vtk_expand_specs function_name out_var)
     get_filename_component(_r2v_path "${_r2v_entry}" ABSOLUTE
       BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
     if(IS_DIRECTORY "${_r2v_path}")
-      file(GLOB_RECURSE _r2v_found CONFIGURE_DEPENDS "${_r2v_path}/*.msg" "${_r2v_path}/*.srv")
+      file(GLOB_RECURSE _r2v_found CONFIGURE_DEPENDS "${_r2v_path}/*.msg" "${_r2v_path}/*.srv"
+        "${_r2v_path}/*.action")
       if(NOT _r2v_found)
-        message(FATAL_ERROR "${function_name}: folder '${_r2v_entry}' holds no .msg/.srv "
+        message(FATAL_ERROR "${function_name}: folder '${_r2v_entry}' holds no .msg/.srv/.action "
           "file (cmake/ros2vtk_generate.cmake)")
       endif()
       list(SORT _r2v_found)
       list(APPEND _r2v_files ${_r2v_found})
     elseif(EXISTS "${_r2v_path}")
-      if(NOT _r2v_path MATCHES "\\.(msg|srv)$")
-        message(FATAL_ERROR "${function_name}: spec '${_r2v_entry}' is neither .msg nor "
-          ".srv (cmake/ros2vtk_generate.cmake)")
+      if(NOT _r2v_path MATCHES "\\.(msg|srv|action)$")
+        message(FATAL_ERROR "${function_name}: spec '${_r2v_entry}' is not .msg, .srv or "
+          ".action (cmake/ros2vtk_generate.cmake)")
       endif()
       list(APPEND _r2v_files "${_r2v_path}")
     else()

@@ -13,8 +13,8 @@ import jinja2
 
 from . import __version__, naming, nodes, typehash
 from .errors import GeneratorError
-from .model import (ARRAY, BOUNDED_SEQUENCE, PRIMITIVE_SIZES, SCALAR, SEQUENCE, BaseType, Field,
-                    Message, Service, Value)
+from .model import (ARRAY, BOUNDED_SEQUENCE, PRIMITIVE_SIZES, SCALAR, SEQUENCE, Action, BaseType,
+                    Field, Message, Service, Value)
 from .msg_parser import messages_of, parse_spec_file, resolve, spec_identity
 
 FAMILIES = ("messages", "nodes")  # nodes: ros2vtk_generate_nodes (see nodes.py)
@@ -219,7 +219,7 @@ def message_view(message: Message, table: Dict[str, Message]) -> dict:
     field_views = [field_view(item, qualified, table) for item in fields]
     if message.is_empty:
         field_views[0]["initializer"] = " = 0"
-    includes = sorted({naming.header_path(str(f.type.package), "msg", f.type.name)
+    includes = sorted({naming.header_path(str(f.type.package), f.type.interface, f.type.name)
                        for f in message.fields if f.type.is_message})
     nested = sorted({(v["nested_function"], v["nested_cpp_type"]) for v in field_views
                      if v["kind"] == "message"})
@@ -272,13 +272,27 @@ def _message_paths(package: str, kind: str, name: str) -> List[Tuple[str, str]]:
     ]
 
 
-def _service_paths(package: str, name: str) -> List[Tuple[str, str]]:
-    paths = _message_paths(package, "srv", f"{name}_Request")
-    paths += _message_paths(package, "srv", f"{name}_Response")
+def _service_paths(package: str, name: str, kind: str = "srv") -> List[Tuple[str, str]]:
+    paths = _message_paths(package, kind, f"{name}_Request")
+    paths += _message_paths(package, kind, f"{name}_Response")
     paths += [
-        ("msg/service.hpp.j2", "include/" + naming.header_path(package, "srv", name)),
+        ("msg/service.hpp.j2", "include/" + naming.header_path(package, kind, name)),
         ("msg/service_type_support.cpp.j2",
-         "src/" + naming.source_path(package, "srv", name, "service_type_support")),
+         "src/" + naming.source_path(package, kind, name, "service_type_support")),
+    ]
+    return paths
+
+
+def _action_paths(package: str, name: str) -> List[Tuple[str, str]]:
+    paths: List[Tuple[str, str]] = []
+    for suffix in ("Goal", "Result", "Feedback", "FeedbackMessage"):
+        paths += _message_paths(package, "action", f"{name}_{suffix}")
+    for suffix in ("SendGoal", "GetResult"):
+        paths += _service_paths(package, f"{name}_{suffix}", "action")
+    paths += [
+        ("msg/action.hpp.j2", "include/" + naming.header_path(package, "action", name)),
+        ("msg/action_type_support.cpp.j2",
+         "src/" + naming.source_path(package, "action", name, "action_type_support")),
     ]
     return paths
 
@@ -294,8 +308,12 @@ def list_outputs(config: Config) -> List[str]:
     paths: List[str] = []
     for spec in config.specs:
         package, kind, name = spec_identity(spec)
-        pairs = _service_paths(package, name) if kind == "srv" else _message_paths(package, kind,
-                                                                                   name)
+        if kind == "action":
+            pairs = _action_paths(package, name)
+        elif kind == "srv":
+            pairs = _service_paths(package, name)
+        else:
+            pairs = _message_paths(package, kind, name)
         paths.extend(path for _, path in pairs)
     paths.append(REGISTER_PATH)
     paths.append("include/" + naming.register_header(config.target))
@@ -317,16 +335,23 @@ def plan(config: Config) -> List[Artefact]:
     artefacts: List[Artefact] = []
     registered_messages: List[str] = []
     registered_services: List[str] = []
+    registered_actions: List[str] = []
     for spec in specs:
         for message in messages_of([spec]):
             view = message_view(message, table)
             registered_messages.append(view["qualified"])
             for template, path in _message_paths(message.package, message.kind, message.name):
                 artefacts.append(Artefact(template, path, message.spec, {"message": view}))
-        if isinstance(spec, Service):
-            artefacts.extend(_service_artefacts(spec, table))
-            registered_services.append("::" + naming.cpp_namespace(spec.package, "srv") + "::"
-                                       + spec.name)
+        services = ([spec.send_goal, spec.get_result] if isinstance(spec, Action) else
+                    [spec] if isinstance(spec, Service) else [])
+        for service in services:
+            artefacts.extend(_service_artefacts(service, table))
+            registered_services.append("::" + naming.cpp_namespace(service.package, service.kind)
+                                       + "::" + service.name)
+        if isinstance(spec, Action):
+            artefacts.extend(_action_artefacts(spec, table))
+            registered_actions.append("::" + naming.cpp_namespace(spec.package, "action") + "::"
+                                      + spec.name)
     headers = sorted({a.path[len("include/"):] for a in artefacts if a.path.startswith("include/")})
     register_header = naming.register_header(config.target)
     artefacts.append(Artefact("register.hpp.j2", "include/" + register_header,
@@ -349,6 +374,7 @@ def plan(config: Config) -> List[Artefact]:
                                   "headers": headers,
                                   "messages": sorted(registered_messages),
                                   "services": sorted(registered_services),
+                                  "actions": sorted(registered_actions),
                               }))
     artefacts.sort(key=lambda a: a.path)
     duplicates = {a.path for a in artefacts if sum(b.path == a.path for b in artefacts) > 1}
@@ -365,7 +391,7 @@ def _service_artefacts(service: Service, table: Dict[str, Message]) -> List[Arte
         "ros_type": service.ros_type,
         "type_hash": typehash.type_hash(service, table),
         "description": description_view(typehash.service_description(service, table)),
-        "namespace": naming.cpp_namespace(service.package, "srv"),
+        "namespace": naming.cpp_namespace(service.package, service.kind),
         "header": header,
         "guard": naming.include_guard(header),
         "request": naming.message_header(service.request),
@@ -374,9 +400,40 @@ def _service_artefacts(service: Service, table: Dict[str, Message]) -> List[Arte
     return [
         Artefact("msg/service.hpp.j2", "include/" + header, service.spec, {"service": view}),
         Artefact("msg/service_type_support.cpp.j2",
-                 "src/" + naming.source_path(service.package, "srv", service.name,
+                 "src/" + naming.source_path(service.package, service.kind, service.name,
                                              "service_type_support"),
                  service.spec, {"service": view}),
+    ]
+
+
+def _action_artefacts(action: Action, table: Dict[str, Message]) -> List[Artefact]:
+    header = naming.action_header(action)
+    view = {
+        "name": action.name,
+        "ros_type": action.ros_type,
+        "type_hash": typehash.type_hash(action, table),
+        "description": description_view(typehash.action_description(action, table)),
+        "namespace": naming.cpp_namespace(action.package, "action"),
+        "header": header,
+        "guard": naming.include_guard(header),
+        "includes": [naming.message_header(action.goal), naming.message_header(action.result),
+                     naming.message_header(action.feedback),
+                     naming.message_header(action.feedback_message),
+                     naming.service_header(action.send_goal),
+                     naming.service_header(action.get_result)],
+        "goal": action.goal.name,
+        "result": action.result.name,
+        "feedback": action.feedback.name,
+        "feedback_message": action.feedback_message.name,
+        "send_goal": action.send_goal.name,
+        "get_result": action.get_result.name,
+    }
+    return [
+        Artefact("msg/action.hpp.j2", "include/" + header, action.spec, {"action": view}),
+        Artefact("msg/action_type_support.cpp.j2",
+                 "src/" + naming.source_path(action.package, "action", action.name,
+                                             "action_type_support"),
+                 action.spec, {"action": view}),
     ]
 
 
@@ -464,13 +521,14 @@ def generate(config: Config) -> List[str]:
 
 
 def expand_spec_paths(paths: Sequence[str]) -> List[str]:
-    """Files stay; folders become the .msg/.srv files below them (sorted)."""
+    """Files stay; folders become the .msg/.srv/.action files below them (sorted)."""
     result: List[str] = []
     for path in paths:
         if os.path.isdir(path):
             found = []
             for root, _, files in os.walk(path):
-                found.extend(os.path.join(root, f) for f in files if f.endswith((".msg", ".srv")))
+                found.extend(os.path.join(root, f) for f in files
+                             if f.endswith((".msg", ".srv", ".action")))
             result.extend(sorted(found))
         else:
             result.append(path)

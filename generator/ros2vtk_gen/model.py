@@ -25,6 +25,7 @@ class BaseType:
     name: str
     package: Optional[str] = None
     string_bound: int = 0  # N of string<=N; 0 = unbounded
+    interface: str = "msg"  # "action" for the types synthesized from a .action (X_Goal, ...)
 
     @property
     def is_primitive(self) -> bool:
@@ -38,10 +39,11 @@ class BaseType:
     def is_message(self) -> bool:
         return self.package is not None
 
-    def ros_name(self, kind: str = "msg") -> str:
-        """`std_msgs/msg/Header` for messages; the spelling of the spec for primitives."""
+    def ros_name(self) -> str:
+        """`std_msgs/msg/Header` for messages (`pkg/action/X_Goal` for the types an action
+        synthesizes); the spelling of the spec for primitives."""
         if self.package is not None:
-            return f"{self.package}/{kind}/{self.name}"
+            return f"{self.package}/{self.interface}/{self.name}"
         return f"{self.name}<={self.string_bound}" if self.string_bound else self.name
 
 
@@ -76,7 +78,8 @@ class Constant:
 
 @dataclass(frozen=True)
 class Message:
-    """A message type. For services, `kind` is "srv" and `name` ends in _Request/_Response."""
+    """A message type. For services, `kind` is "srv" and `name` ends in _Request/_Response; the
+    types synthesized from a .action have `kind` "action" (X_Goal, X_SendGoal_Request, ...)."""
 
     package: str
     kind: str
@@ -103,7 +106,37 @@ class Service:
     response: Message
     spec: str
     source: str = field(default="", compare=False)
+    kind: str = "srv"  # "action" for X_SendGoal / X_GetResult of an action
 
     @property
     def ros_type(self) -> str:
-        return f"{self.package}/srv/{self.name}"
+        return f"{self.package}/{self.kind}/{self.name}"
+
+
+@dataclass(frozen=True)
+class Action:
+    """A .action and what rosidl synthesizes from it (all in `pkg/action/`): X_Goal, X_Result,
+    X_Feedback (the three blocks), the services X_SendGoal and X_GetResult and the message
+    X_FeedbackMessage."""
+
+    package: str
+    name: str
+    goal: Message
+    result: Message
+    feedback: Message
+    send_goal: Service
+    get_result: Service
+    feedback_message: Message
+    spec: str
+    source: str = field(default="", compare=False)
+
+    @property
+    def ros_type(self) -> str:
+        return f"{self.package}/action/{self.name}"
+
+    @property
+    def messages(self) -> Tuple[Message, ...]:
+        """Every message type of the action, services flattened, in rosidl's order."""
+        return (self.goal, self.result, self.feedback, self.send_goal.request,
+                self.send_goal.response, self.get_result.request, self.get_result.response,
+                self.feedback_message)

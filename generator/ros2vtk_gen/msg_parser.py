@@ -8,6 +8,7 @@ is small; the rules below follow its documented behaviour:
   constant   := PRIMITIVE NAME '=' VALUE
   TYPE       := [package '/'] Name | primitive ['<=' N] , then optionally [N] | [<=N] | []
   service    := request lines, a line '---', response lines
+  action     := goal lines, '---', result lines, '---', feedback lines
 
 A '#' inside a quoted string is not a comment. Every problem raises SpecError(file, line, ...).
 """
@@ -20,7 +21,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 from . import errors
 from .errors import SpecError
-from .model import (ARRAY, BOUNDED_SEQUENCE, PRIMITIVE_TYPES, SCALAR, SEQUENCE, BaseType,
+from .model import (ARRAY, BOUNDED_SEQUENCE, PRIMITIVE_TYPES, SCALAR, SEQUENCE, Action, BaseType,
                     Constant, Field, Message, Service, Value)
 
 PACKAGE_RE = re.compile(r"^[a-z]([a-z0-9_]?[a-z0-9]+)*$")
@@ -323,16 +324,67 @@ def parse_service_text(text: str, package: str, name: str, *, path: str = "<stri
     return Service(package, name, request, response, display, path)
 
 
+# The fixed types every action's synthesized types nest (rosidl_adapter action.idl.em).
+UUID_TYPE = BaseType("UUID", "unique_identifier_msgs")
+TIME_TYPE = BaseType("Time", "builtin_interfaces")
+
+
+def parse_action_text(text: str, package: str, name: str, *, path: str = "<string>",
+                      spec: Optional[str] = None) -> Action:
+    """Parses a .action (goal `---` result `---` feedback) and synthesizes, as rosidl does,
+    X_SendGoal (goal_id, goal / accepted, stamp), X_GetResult (goal_id / status, result) and
+    X_FeedbackMessage (goal_id, feedback), all of kind "action"."""
+    numbered = list(enumerate(text.splitlines(), start=1))
+    separators = [n for n, raw in numbered if strip_comment(raw).strip() == "---"]
+    if len(separators) != 2:
+        line = separators[2] if len(separators) > 2 else max(len(numbered), 1)
+        raise SpecError(path, line, "an action needs exactly two '---' lines (goal --- result "
+                        f"--- feedback), found {len(separators)}", errors.BAD_SERVICE)
+    first, second = separators
+    display = spec if spec is not None else f"{package}/action/{name}.action"
+
+    def block(suffix: str, lines: Sequence[Tuple[int, str]]) -> Message:
+        return parse_message_text("", package, f"{name}_{suffix}", kind="action", path=path,
+                                  spec=display, lines=lines)
+
+    def synthesized(suffix: str, fields: Sequence[Field]) -> Message:
+        return Message(package, "action", f"{name}_{suffix}", tuple(fields), (), display, path)
+
+    def own(suffix: str) -> BaseType:
+        return BaseType(f"{name}_{suffix}", package, interface="action")
+
+    goal = block("Goal", numbered[:first - 1])
+    result = block("Result", numbered[first:second - 1])
+    feedback = block("Feedback", numbered[second:])
+    goal_id = Field("goal_id", UUID_TYPE, line=1)  # errors about it point at the file's top
+    send_goal = Service(package, f"{name}_SendGoal",
+                        synthesized("SendGoal_Request", [goal_id, Field("goal", own("Goal"))]),
+                        synthesized("SendGoal_Response", [Field("accepted", BaseType("bool")),
+                                                          Field("stamp", TIME_TYPE)]),
+                        display, path, kind="action")
+    get_result = Service(package, f"{name}_GetResult",
+                         synthesized("GetResult_Request", [goal_id]),
+                         synthesized("GetResult_Response", [Field("status", BaseType("int8")),
+                                                            Field("result", own("Result"))]),
+                         display, path, kind="action")
+    feedback_message = synthesized("FeedbackMessage", [goal_id, Field("feedback", own("Feedback"))])
+    return Action(package, name, goal, result, feedback, send_goal, get_result, feedback_message,
+                  display, path)
+
+
+SPEC_KINDS = ("msg", "srv", "action")
+
+
 def spec_identity(path: str) -> Tuple[str, str, str]:
-    """`.../<package>/<msg|srv>/<Name>.<msg|srv>` -> (package, kind, Name)."""
+    """`.../<package>/<msg|srv|action>/<Name>.<msg|srv|action>` -> (package, kind, Name)."""
     directory, file_name = os.path.split(os.path.normpath(path))
     stem, extension = os.path.splitext(file_name)
     kind = extension[1:]
     parent = os.path.basename(directory)
     package = os.path.basename(os.path.dirname(directory))
-    if kind not in ("msg", "srv") or parent != kind:
+    if kind not in SPEC_KINDS or parent != kind:
         raise SpecError(path, 1, f"spec files must be laid out as <package>/{kind or 'msg'}/"
-                        f"<Name>.{kind or 'msg'} (.msg or .srv)", errors.BAD_PATH)
+                        f"<Name>.{kind or 'msg'} (.msg, .srv or .action)", errors.BAD_PATH)
     if not PACKAGE_RE.match(package):
         raise SpecError(path, 1, f"invalid package name '{package}' (from the spec's folder)",
                         errors.BAD_PATH)
@@ -341,7 +393,7 @@ def spec_identity(path: str) -> Tuple[str, str, str]:
     return package, kind, stem
 
 
-def parse_spec_file(path: str) -> Union[Message, Service]:
+def parse_spec_file(path: str) -> Union[Message, Service, Action]:
     """Reads one spec file; its package, kind and name come from its path."""
     package, kind, name = spec_identity(path)
     try:
@@ -354,22 +406,27 @@ def parse_spec_file(path: str) -> Union[Message, Service]:
     display = f"{package}/{kind}/{name}.{kind}"
     if kind == "srv":
         return parse_service_text(text, package, name, path=path, spec=display)
+    if kind == "action":
+        return parse_action_text(text, package, name, path=path, spec=display)
     return parse_message_text(text, package, name, kind="msg", path=path, spec=display)
 
 
-def messages_of(specs: Iterable[Union[Message, Service]]) -> List[Message]:
-    """Every message, services flattened into their request and response."""
+def messages_of(specs: Iterable[Union[Message, Service, Action]]) -> List[Message]:
+    """Every message, services flattened into their request and response, actions into the
+    eight messages they synthesize."""
     result: List[Message] = []
     for spec in specs:
-        if isinstance(spec, Service):
+        if isinstance(spec, Action):
+            result.extend(spec.messages)
+        elif isinstance(spec, Service):
             result.extend((spec.request, spec.response))
         else:
             result.append(spec)
     return result
 
 
-def resolve(specs: Sequence[Union[Message, Service]],
-            known: Sequence[Union[Message, Service]] = ()) -> Dict[str, Message]:
+def resolve(specs: Sequence[Union[Message, Service, Action]],
+            known: Sequence[Union[Message, Service, Action]] = ()) -> Dict[str, Message]:
     """Checks that every referenced type exists (in `specs` or `known`) and that no message
     contains itself. Returns all messages by ROS name (`pkg/msg/Type`)."""
     table: Dict[str, Message] = {}

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import re
 
-from .model import BaseType, Message, Service
+from .model import Action, BaseType, Message, Service
 
 CPP_ROOT_NAMESPACE = "ros2vtk"
 
@@ -25,9 +25,9 @@ def cpp_qualified_name(message: Message) -> str:
     return f"{cpp_namespace(message.package, message.kind)}::{message.name}"
 
 
-def cpp_type_of_message(base: BaseType, kind: str = "msg") -> str:
+def cpp_type_of_message(base: BaseType) -> str:
     """Fully qualified C++ struct of a referenced message type."""
-    return f"::{cpp_namespace(str(base.package), kind)}::{base.name}"
+    return f"::{cpp_namespace(str(base.package), base.interface)}::{base.name}"
 
 
 def dds_type_name(message: Message) -> str:
@@ -45,7 +45,11 @@ def message_header(message: Message) -> str:
 
 
 def service_header(service: Service) -> str:
-    return header_path(service.package, "srv", service.name)
+    return header_path(service.package, service.kind, service.name)
+
+
+def action_header(action: Action) -> str:
+    return header_path(action.package, "action", action.name)
 
 
 def source_path(package: str, kind: str, name: str, artefact: str) -> str:

@@ -9,7 +9,9 @@ with separators (', ', ': ') and ASCII escapes; the hash is SHA-256 of that text
 
 A service's description is synthesized as rosidl does: the service type with the fields
 request_message, response_message and event_message, and its `<Srv>_Event` message (info,
-request[<=1], response[<=1]) referencing service_msgs/msg/ServiceEventInfo.
+request[<=1], response[<=1]) referencing service_msgs/msg/ServiceEventInfo. An action's is
+the action type with the fields goal, result, feedback, send_goal_service, get_result_service
+and feedback_message, referencing all of them and what they reference (docs/wire-notes.md §8.2).
 """
 from __future__ import annotations
 
@@ -17,7 +19,7 @@ import hashlib
 import json
 from typing import Dict, List, Optional, Union
 
-from .model import ARRAY, BOUNDED_SEQUENCE, SEQUENCE, Field, Message, Service, Value
+from .model import ARRAY, BOUNDED_SEQUENCE, SEQUENCE, Action, Field, Message, Service, Value
 
 # type_description_interfaces/msg/FieldType ids.
 FIELD_TYPE_NESTED = 1
@@ -151,6 +153,27 @@ def service_description(service: Service, table: Dict[str, Message]) -> dict:
             "referenced_type_descriptions": [references[name] for name in sorted(references)]}
 
 
+def action_description(action: Action, table: Dict[str, Message]) -> dict:
+    """The TypeDescription of an action type, as rosidl synthesizes it (module docstring)."""
+    references: Dict[str, dict] = {}
+    for service in (action.send_goal, action.get_result):
+        description = service_description(service, table)
+        references[service.ros_type] = description["type_description"]
+        for individual in description["referenced_type_descriptions"]:
+            references.setdefault(individual["type_name"], individual)
+    for message in (action.goal, action.result, action.feedback, action.feedback_message):
+        references[message.ros_type] = _individual_description(message)
+        references.update(_references([message], table))
+    members = [("goal", action.goal.ros_type), ("result", action.result.ros_type),
+               ("feedback", action.feedback.ros_type),
+               ("send_goal_service", action.send_goal.ros_type),
+               ("get_result_service", action.get_result.ros_type),
+               ("feedback_message", action.feedback_message.ros_type)]
+    return {"type_description": {"type_name": action.ros_type, "fields": [
+                _plain_field(name, FIELD_TYPE_NESTED, nested=nested) for name, nested in members]},
+            "referenced_type_descriptions": [references[name] for name in sorted(references)]}
+
+
 def _without_defaults(individual: dict) -> dict:
     return {"type_name": individual["type_name"],
             "fields": [{"name": f["name"], "type": f["type"]} for f in individual["fields"]]}
@@ -174,8 +197,12 @@ def description_hash(description: dict) -> str:
     return "RIHS01_" + hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def type_hash(message_or_service: Union[Message, Service], table: Dict[str, Message]) -> str:
-    """`RIHS01_<64 hex>` of a message or service; `table` resolves nested types by ROS name."""
+def type_hash(message_or_service: Union[Message, Service, Action],
+              table: Dict[str, Message]) -> str:
+    """`RIHS01_<64 hex>` of a message, service or action; `table` resolves nested types by ROS
+    name."""
+    if isinstance(message_or_service, Action):
+        return description_hash(action_description(message_or_service, table))
     if isinstance(message_or_service, Service):
         return description_hash(service_description(message_or_service, table))
     return description_hash(message_description(message_or_service, table))

@@ -56,6 +56,27 @@ def test_outputs_listed_are_exactly_the_outputs_written(tmp_path):
     assert "include/ros2vtk/ros2vtk_test_msgs/srv/echo__request.hpp" in list_outputs(config)
 
 
+def test_action_outputs_listed_are_exactly_the_outputs_written(tmp_path):
+    # An action's outputs come from its file name alone (CMake asks before the specs are valid);
+    # they must be what rendering it writes: 8 messages x 3 files, 2 services x 2, the action x 2.
+    from ros2vtk_gen.emit import expand_spec_paths
+    needed = [os.path.join(MSG_SPECS, p) for p in ("builtin_interfaces", "unique_identifier_msgs",
+                                                     "action_msgs", "service_msgs")
+              if os.path.isdir(os.path.join(MSG_SPECS, p))]
+    action = os.path.join(MSG_SPECS, "test_msgs", "action", "Fibonacci.action")
+    config = Config("messages", "actions", str(tmp_path), (action,),
+                    (("ros2vtkMessages", tuple(expand_spec_paths(needed))),))
+    generate(config)
+    written = sorted(tree(tmp_path))
+    assert written == list_outputs(config)
+    own = [path for path in written if "/test_msgs/action/" in path]
+    assert len(own) == 8 * 3 + 2 * 2 + 2
+    assert "include/ros2vtk/test_msgs/action/fibonacci.hpp" in own
+    assert "src/test_msgs/action/fibonacci__action_type_support.cpp" in own
+    support = tree(tmp_path)["src/test_msgs/action/fibonacci__action_type_support.cpp"]
+    assert '"test_msgs/action/Fibonacci"' in support and "wire::register_action_type" in support
+
+
 def test_unchanged_files_are_not_rewritten(tmp_path):
     config = fixture_config(str(tmp_path))
     assert generate(config)  # first run writes everything

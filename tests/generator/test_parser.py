@@ -6,7 +6,8 @@ import pytest
 from conftest import FIXTURES, MSG_SPECS
 from ros2vtk_gen import errors
 from ros2vtk_gen.errors import SpecError
-from ros2vtk_gen.model import ARRAY, BOUNDED_SEQUENCE, SCALAR, SEQUENCE, Message, Service
+from ros2vtk_gen.model import (ARRAY, BOUNDED_SEQUENCE, SCALAR, SEQUENCE, Action, Message,
+                               Service)
 from ros2vtk_gen.msg_parser import (parse_message_text, parse_service_text, parse_spec_file,
                                     resolve)
 
@@ -100,7 +101,8 @@ def test_shipped_specs_parse_and_resolve():
     for root, _, files in os.walk(MSG_SPECS):
         if "fixtures" in root or "mappings" in root:
             continue
-        paths += [os.path.join(root, f) for f in files if f.endswith((".msg", ".srv"))]
+        paths += [os.path.join(root, f) for f in files
+                  if f.endswith((".msg", ".srv", ".action"))]
     table = resolve([parse_spec_file(p) for p in sorted(paths)])
     # Derived from the folders, so adding a package needs no edit here: every spec file gives
     # one entry per message (a service its Request and Response too).
@@ -111,6 +113,9 @@ def test_shipped_specs_parse_and_resolve():
                f"{os.path.basename(p)[:-4]}" in table for p in messages)
     assert all(f"{os.path.basename(os.path.dirname(os.path.dirname(p)))}/srv/"
                f"{os.path.basename(p)[:-4]}_Request" in table for p in services)
+    actions = [p for p in paths if p.endswith(".action")]
+    assert actions and all(f"{os.path.basename(os.path.dirname(os.path.dirname(p)))}/action/"
+                           f"{os.path.basename(p)[:-7]}_FeedbackMessage" in table for p in actions)
     assert [f.name for f in table["sensor_msgs/msg/PointCloud2"].fields] == [
         "header", "height", "width", "fields", "is_bigendian", "point_step", "row_step", "data",
         "is_dense"]
@@ -205,3 +210,62 @@ def test_spec_paths_name_package_and_type(tmp_path, relative, words):
     path.write_text("int32 x\n")
     with pytest.raises(SpecError, match=words):
         parse_spec_file(str(path))
+
+
+def test_action_blocks_and_synthesized_types():
+    action = parse_spec_file(os.path.join(MSG_SPECS, "test_msgs", "action", "Fibonacci.action"))
+    assert isinstance(action, Action)
+    assert action.ros_type == "test_msgs/action/Fibonacci"
+    # As rosidl_adapter's action.idl.em synthesizes them (docs/wire-notes.md §8.2).
+    assert [(m.ros_type, [(f.name, f.type.ros_name(), f.container) for f in m.fields])
+            for m in action.messages] == [
+        ("test_msgs/action/Fibonacci_Goal", [("order", "int32", SCALAR)]),
+        ("test_msgs/action/Fibonacci_Result", [("sequence", "int32", SEQUENCE)]),
+        ("test_msgs/action/Fibonacci_Feedback", [("sequence", "int32", SEQUENCE)]),
+        ("test_msgs/action/Fibonacci_SendGoal_Request",
+         [("goal_id", "unique_identifier_msgs/msg/UUID", SCALAR),
+          ("goal", "test_msgs/action/Fibonacci_Goal", SCALAR)]),
+        ("test_msgs/action/Fibonacci_SendGoal_Response",
+         [("accepted", "bool", SCALAR), ("stamp", "builtin_interfaces/msg/Time", SCALAR)]),
+        ("test_msgs/action/Fibonacci_GetResult_Request",
+         [("goal_id", "unique_identifier_msgs/msg/UUID", SCALAR)]),
+        ("test_msgs/action/Fibonacci_GetResult_Response",
+         [("status", "int8", SCALAR), ("result", "test_msgs/action/Fibonacci_Result", SCALAR)]),
+        ("test_msgs/action/Fibonacci_FeedbackMessage",
+         [("goal_id", "unique_identifier_msgs/msg/UUID", SCALAR),
+          ("feedback", "test_msgs/action/Fibonacci_Feedback", SCALAR)]),
+    ]
+    assert action.send_goal.ros_type == "test_msgs/action/Fibonacci_SendGoal"
+    assert action.get_result.ros_type == "test_msgs/action/Fibonacci_GetResult"
+    assert action.result.fields[0].line == 5  # line numbers continue after each '---'
+
+
+def test_action_short_names_mean_the_package_messages():
+    action = parse_spec_file(os.path.join(MSG_SPECS, "test_msgs", "action",
+                                          "NestedMessage.action"))
+    assert [f.type.ros_name() for f in action.goal.fields] == [
+        "test_msgs/msg/Builtins", "test_msgs/msg/BasicTypes", "builtin_interfaces/msg/Time"]
+
+
+@pytest.mark.parametrize("text,line,words", [
+    ("int32 a\n---\nint32 b\n", 3, "found 1"),
+    ("int32 a\n", 1, "found 0"),
+    ("int32 a\n---\n---\n---\n", 4, "found 3"),
+])
+def test_malformed_actions(tmp_path, text, line, words):
+    path = tmp_path / "pkg" / "action" / "Bad.action"
+    path.parent.mkdir(parents=True)
+    path.write_text(text)
+    with pytest.raises(SpecError) as caught:
+        parse_spec_file(str(path))
+    assert (caught.value.line, caught.value.code) == (line, errors.BAD_SERVICE)
+    assert "exactly two '---'" in str(caught.value) and words in str(caught.value)
+
+
+def test_action_without_unique_identifier_msgs_names_what_is_missing(tmp_path):
+    path = tmp_path / "pkg" / "action" / "Go.action"
+    path.parent.mkdir(parents=True)
+    path.write_text("int32 a\n---\n---\n")
+    with pytest.raises(SpecError) as caught:
+        resolve([parse_spec_file(str(path))])
+    assert "unknown type 'unique_identifier_msgs/UUID' of field 'goal_id'" in str(caught.value)

@@ -6,8 +6,8 @@ import pytest
 
 from conftest import FIXTURES, MSG_SPECS, SHIPPED_PACKAGES
 from ros2vtk_gen.msg_parser import parse_spec_file, resolve
-from ros2vtk_gen.model import Service
-from ros2vtk_gen.typehash import (hashable_description, message_description, service_description,
+from ros2vtk_gen.model import Action, Service
+from ros2vtk_gen.typehash import (action_description, hashable_description, message_description, service_description,
                                   type_hash)
 
 EXPECTED = {
@@ -225,3 +225,108 @@ def test_served_description_keeps_default_values_as_rosidl_writes_them(table):
     request = message_description(
         table["type_description_interfaces/srv/GetTypeDescription_Request"], table)
     assert request["type_description"]["fields"][2]["default_value"] == "True"
+
+
+# Action types, from share/test_msgs/action/Fibonacci.json and NestedMessage.json of the Kilted
+# ros-test-msgs wheel (rosidl's own type_hashes): the action, its three blocks, the synthesized
+# services and messages. These are the hashes an rclpy action server and client advertise.
+EXPECTED_ACTIONS = {
+    "test_msgs/action/Fibonacci": {
+        "test_msgs/action/Fibonacci":
+            "be9273e3557225044b4a040811112491f7079326e3a573f83258b0b4c30bd069",
+        "test_msgs/action/Fibonacci_Feedback":
+            "7d1110f2efa019ad5ad8ad2244db98d862f39dc9fae8c976814b0065fa2f32d5",
+        "test_msgs/action/Fibonacci_FeedbackMessage":
+            "37487bae8cea358366b97003c1ef1ca7ce7c08df36f9e8cca496624226aee64e",
+        "test_msgs/action/Fibonacci_GetResult":
+            "5d30fdeb21d20e117aa5f36c7b4f0b6874f1a8cf7a9c038d58f1156c5737b209",
+        "test_msgs/action/Fibonacci_GetResult_Request":
+            "c65e93c4c4328d7f1abd6ace83dba8e5fa0f32de76b4d2c96b5c655d94803b92",
+        "test_msgs/action/Fibonacci_GetResult_Response":
+            "ef88159d47a3d21d9bf4bec690cf668939d9542db28a9cfd77dbcd97eaf1add2",
+        "test_msgs/action/Fibonacci_Goal":
+            "e58ef5a8f4f039ab522a740823547c460b1d5aed8031c8b7825d33d345d90df8",
+        "test_msgs/action/Fibonacci_Result":
+            "0774b095467813c6904d475498b5486b7ebd4cda6a4569f97e8de8c862689049",
+        "test_msgs/action/Fibonacci_SendGoal":
+            "d807633803e38e164276573cd97e9fbd71e109c290bbf4cc312a0a1c9da7bbd9",
+        "test_msgs/action/Fibonacci_SendGoal_Request":
+            "dfe75c73dc2c090cbc8fd8c45039bfa279d16aa6aadd348f812c6adad26e669e",
+        "test_msgs/action/Fibonacci_SendGoal_Response":
+            "1e7e84f7edf1fb020d9e51c7842bceef4cbdbd847f354125f3227cf4f314a683",
+    },
+    "test_msgs/action/NestedMessage": {
+        "test_msgs/action/NestedMessage":
+            "edd4bac361b0ee01c5e228d7c065f1d64e1b11aa55c5c6efb4e5e10e40fde40a",
+        "test_msgs/action/NestedMessage_Feedback":
+            "d03aaba098e33076c53560da77017d777a79d45d135bb72886da6e5d8357718e",
+        "test_msgs/action/NestedMessage_FeedbackMessage":
+            "72ee5828e8083f3c42a56bc5d99fd9e7d5c86389850fc006f254ecdcaecb7d03",
+        "test_msgs/action/NestedMessage_GetResult":
+            "0272bc330d08cbb96e6947dd9c2731c12ad7252823c7086978d117a802119e2b",
+        "test_msgs/action/NestedMessage_GetResult_Request":
+            "687ebbfa75d95d5d0f23ca800c213b4777fef311028d94a5d353ef7377f25741",
+        "test_msgs/action/NestedMessage_GetResult_Response":
+            "663ca16d674f9c9557884d2cfa74b51e3d4720a8fd305d87d89369a087791c80",
+        "test_msgs/action/NestedMessage_Goal":
+            "88928767537b27c7f9c7c78442e95b78c8a9b8f35877496ec9ca40c3a4a14176",
+        "test_msgs/action/NestedMessage_Result":
+            "c3356da873cd9b6f11cafaa25d6a9269a68751b937715cee506c3dbc051cdcfd",
+        "test_msgs/action/NestedMessage_SendGoal":
+            "8dea947216740e5b9e00eb537306bfe75af96492c688927d4f803afa5d81359b",
+        "test_msgs/action/NestedMessage_SendGoal_Request":
+            "e8d6d6d151e1b899137319c7784c420e6cae65767c10ca02cd129f76c5d7ea1b",
+        "test_msgs/action/NestedMessage_SendGoal_Response":
+            "e78d269a75544304ab7f6d700ba1cb718875360bb84007906227267f9b124381",
+    },
+}
+
+
+@pytest.fixture(scope="module")
+def actions():
+    found = {}
+    for package in SHIPPED_PACKAGES:
+        folder = os.path.join(MSG_SPECS, package, "action")
+        if os.path.isdir(folder):
+            for name in sorted(os.listdir(folder)):
+                spec = parse_spec_file(os.path.join(folder, name))
+                assert isinstance(spec, Action)
+                found[spec.ros_type] = spec
+    return found
+
+
+def _action_hashes(action, table):
+    hashes = {action.ros_type: type_hash(action, table)}
+    hashes.update({m.ros_type: type_hash(m, table) for m in action.messages})
+    hashes.update({s.ros_type: type_hash(s, table) for s in (action.send_goal, action.get_result)})
+    return hashes
+
+
+@pytest.mark.parametrize("ros_type", sorted(EXPECTED_ACTIONS))
+def test_action_type_hashes_match_rosidl(table, actions, ros_type):
+    hashes = _action_hashes(actions[ros_type], table)
+    for name, expected in EXPECTED_ACTIONS[ros_type].items():
+        assert hashes[name] == "RIHS01_" + expected, name
+
+
+def test_action_description_as_rosidl_synthesizes_it(table, actions):
+    # As share/test_msgs/action/Fibonacci.json (type_description_msg) writes it.
+    description = action_description(actions["test_msgs/action/Fibonacci"], table)
+    assert [(f["name"], f["type"]["type_id"], f["type"]["nested_type_name"])
+            for f in description["type_description"]["fields"]] == [
+        ("goal", 1, "test_msgs/action/Fibonacci_Goal"),
+        ("result", 1, "test_msgs/action/Fibonacci_Result"),
+        ("feedback", 1, "test_msgs/action/Fibonacci_Feedback"),
+        ("send_goal_service", 1, "test_msgs/action/Fibonacci_SendGoal"),
+        ("get_result_service", 1, "test_msgs/action/Fibonacci_GetResult"),
+        ("feedback_message", 1, "test_msgs/action/Fibonacci_FeedbackMessage")]
+    assert [d["type_name"] for d in description["referenced_type_descriptions"]] == [
+        "builtin_interfaces/msg/Time", "service_msgs/msg/ServiceEventInfo",
+        "test_msgs/action/Fibonacci_Feedback", "test_msgs/action/Fibonacci_FeedbackMessage",
+        "test_msgs/action/Fibonacci_GetResult", "test_msgs/action/Fibonacci_GetResult_Event",
+        "test_msgs/action/Fibonacci_GetResult_Request",
+        "test_msgs/action/Fibonacci_GetResult_Response", "test_msgs/action/Fibonacci_Goal",
+        "test_msgs/action/Fibonacci_Result", "test_msgs/action/Fibonacci_SendGoal",
+        "test_msgs/action/Fibonacci_SendGoal_Event",
+        "test_msgs/action/Fibonacci_SendGoal_Request",
+        "test_msgs/action/Fibonacci_SendGoal_Response", "unique_identifier_msgs/msg/UUID"]

@@ -200,6 +200,28 @@
 #include "ros2vtk/std_srvs/srv/trigger__request.hpp"
 #include "ros2vtk/std_srvs/srv/trigger__response.hpp"
 #include "ros2vtk/stereo_msgs/msg/disparity_image.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__feedback.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__feedback_message.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__get_result.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__get_result__request.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__get_result__response.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__goal.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__result.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__send_goal.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__send_goal__request.hpp"
+#include "ros2vtk/test_msgs/action/fibonacci__send_goal__response.hpp"
+#include "ros2vtk/test_msgs/action/nested_message.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__feedback.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__feedback_message.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__get_result.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__get_result__request.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__get_result__response.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__goal.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__result.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__send_goal.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__send_goal__request.hpp"
+#include "ros2vtk/test_msgs/action/nested_message__send_goal__response.hpp"
 #include "ros2vtk/test_msgs/msg/arrays.hpp"
 #include "ros2vtk/test_msgs/msg/basic_types.hpp"
 #include "ros2vtk/test_msgs/msg/bounded_plain_sequences.hpp"
@@ -256,7 +278,7 @@
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
 
-/// Registers every message and service type of this library; safe to call more than once.
+/// Registers every message, service and action type of this library; safe to call more than once.
 extern "C" void ros2vtk_register_ros2vtkMessages_types()
 {
   ::ros2vtk::wire::register_message_type(&::ros2vtk::action_msgs::msg::GoalInfo::type_support());
@@ -434,6 +456,22 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::std_srvs::srv::Trigger_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::stereo_msgs::msg::DisparityImage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_Feedback::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_FeedbackMessage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_GetResult_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_GetResult_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_Goal::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_Result::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_SendGoal_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::Fibonacci_SendGoal_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_Feedback::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_FeedbackMessage::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_GetResult_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_GetResult_Response::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_Goal::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_Result::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_SendGoal_Request::type_support());
+  ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::action::NestedMessage_SendGoal_Response::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::Arrays::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::BasicTypes::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::test_msgs::msg::BoundedPlainSequences::type_support());
@@ -504,9 +542,15 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Empty::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::SetBool::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::std_srvs::srv::Trigger::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::action::Fibonacci_GetResult::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::action::Fibonacci_SendGoal::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::action::NestedMessage_GetResult::type_support());
+  ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::action::NestedMessage_SendGoal::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::Arrays::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::BasicTypes::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::test_msgs::srv::Empty::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::type_description_interfaces::srv::GetTypeDescription::type_support());
   ::ros2vtk::wire::register_service_type(&::ros2vtk::visualization_msgs::srv::GetInteractiveMarkers::type_support());
+  ::ros2vtk::wire::register_action_type(&::ros2vtk::test_msgs::action::Fibonacci::type_support());
+  ::ros2vtk::wire::register_action_type(&::ros2vtk::test_msgs::action::NestedMessage::type_support());
 }

@@ -18,6 +18,7 @@ struct Registry
   std::mutex mutex;
   std::map<std::string, const MessageTypeSupport*> messages;
   std::map<std::string, const ServiceTypeSupport*> services;
+  std::map<std::string, const ActionTypeSupport*> actions;
 };
 
 Registry& registry()
@@ -80,6 +81,46 @@ void register_service_type(const ServiceTypeSupport* type)
   Registry& r = registry();
   std::lock_guard<std::mutex> lock(r.mutex);
   r.services[type->ros_type] = type;
+}
+
+void register_action_type(const ActionTypeSupport* type)
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  r.actions[type->ros_type] = type;
+}
+
+const ActionTypeSupport* find_action_type(const std::string& ros_type, std::string* error)
+{
+  const ActionTypeSupport* type = nullptr;
+  {
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    auto it = r.actions.find(full_name(ros_type, "action"));
+    type = it == r.actions.end() ? nullptr : it->second;
+  }
+  if (!type && error)
+  {
+    *error = "unknown action type '" + ros_type + "' (known:";
+    for (const std::string& name : registered_action_types())
+    {
+      *error += ' ' + name;
+    }
+    *error += ')';
+  }
+  return type;
+}
+
+std::vector<std::string> registered_action_types()
+{
+  Registry& r = registry();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  std::vector<std::string> names;
+  for (const auto& entry : r.actions)
+  {
+    names.push_back(entry.first);
+  }
+  return names;
 }
 
 const MessageTypeSupport* find_message_type(const std::string& ros_type)

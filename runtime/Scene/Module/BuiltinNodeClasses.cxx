@@ -5,6 +5,8 @@
 #include "vtkROS2ParameterNode.h"
 #include "vtkROS2PublisherGenericNode.h"
 #include "vtkROS2RobotNode.h"
+#include "vtkROS2ActionClientNode.h"
+#include "vtkROS2ActionServerNode.h"
 #include "vtkROS2ServiceClientNode.h"
 #include "vtkROS2ServiceServerNode.h"
 #include "vtkROS2SubscriberGenericNode.h"
@@ -42,6 +44,8 @@ void register_builtin_node_classes(NodeClassRegistry& registry)
     { "", "vtkROS2RobotNode", "", NodeDirection::Other, &create_node<vtkROS2RobotNode> },
     { "", "vtkROS2ServiceClientNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceClientNode> },
     { "", "vtkROS2ServiceServerNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceServerNode> },
+    { "", "vtkROS2ActionClientNode", "", NodeDirection::Other, &create_node<vtkROS2ActionClientNode> },
+    { "", "vtkROS2ActionServerNode", "", NodeDirection::Other, &create_node<vtkROS2ActionServerNode> },
   };
   for (const auto& info : builtins)
   {

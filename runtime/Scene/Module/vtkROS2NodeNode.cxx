@@ -31,11 +31,11 @@ namespace
 
 /// The order in which Spin calls its children's OnROS2NodeSpin (docs/architecture.md): tf first
 /// so that everything after it sees this spin's transforms, then incoming data, parameters,
-/// services, and robots last (they read lookups and parameters). Children under any other
+/// services, actions, and robots last (they read lookups and parameters). Children under any other
 /// role (a kind added outside the runtime, connectors) follow, roles sorted by name.
 const char* const SpinOrder[] = { vtkROS2NodeNode::Tf2LookupRole, vtkROS2NodeNode::SubscriberRole,
   vtkROS2NodeNode::ParameterRole, vtkROS2NodeNode::ServiceClientRole, vtkROS2NodeNode::ServiceServerRole,
-  vtkROS2NodeNode::RobotRole };
+  vtkROS2NodeNode::ActionClientRole, vtkROS2NodeNode::ActionServerRole, vtkROS2NodeNode::RobotRole };
 
 std::string IndexKey(const char* role, const std::string& key)
 {

@@ -30,6 +30,8 @@ class Participant;
 
 class vtkROS2ParameterNode;
 class vtkROS2RobotNode;
+class vtkROS2ActionClientNode;
+class vtkROS2ActionServerNode;
 class vtkROS2ServiceClientNode;
 class vtkROS2ServiceServerNode;
 class vtkROS2Tf2BroadcasterNode;
@@ -78,6 +80,8 @@ public:
   static constexpr const char* RobotRole = "robot";
   static constexpr const char* ServiceClientRole = "serviceClient";
   static constexpr const char* ServiceServerRole = "serviceServer";
+  static constexpr const char* ActionClientRole = "actionClient";
+  static constexpr const char* ActionServerRole = "actionServer";
   ///@}
 #endif
   /// Removes every publisher and subscriber from DDS (they stay in the scene) and destroys the
@@ -173,6 +177,22 @@ public:
   /// SlicerROS2's name for the same list (its service clients are one class per type; ours is
   /// one class for every type, so the list names the types).
   std::string RegisteredROS2ServiceClientNodes() const { return this->GetRegisteredServiceTypes(); }
+  ///@}
+
+  ///@{
+  /// Actions of any generated .action type (`type` as "test_msgs/action/Fibonacci" or
+  /// "test_msgs/Fibonacci"; docs/actions.md): a client sends goals and gets feedback, results and
+  /// cancels on Spin; a server fires an event per goal and cancel request for a script to answer.
+  /// One client and one server per action name and ROS node; nullptr / false (vtkErrorMacro
+  /// listing the known types) otherwise.
+  vtkROS2ActionClientNode* CreateAndAddActionClientNode(const char* type, const char* action);
+  vtkROS2ActionClientNode* GetActionClientNodeByAction(const char* action);
+  bool RemoveAndDeleteActionClientNode(const char* action);
+  vtkROS2ActionServerNode* CreateAndAddActionServerNode(const char* type, const char* action);
+  vtkROS2ActionServerNode* GetActionServerNodeByAction(const char* action);
+  bool RemoveAndDeleteActionServerNode(const char* action);
+  /// Space-separated ROS names of the action types that can be used.
+  std::string GetRegisteredActionTypes() const;
   ///@}
 
   ///@{

@@ -152,10 +152,31 @@ struct ServiceTypeSupport
   const TypeDescriptionTable* description;
 };
 
+/// An action `pkg/action/X`: the types rosidl synthesizes from X.action (all registered as
+/// messages and services too) and the fixed action_msgs types its endpoints use, so the runtime
+/// runs the action protocol (docs/actions.md) without naming any per-action type.
+struct ActionTypeSupport
+{
+  const char* ros_type; ///< "test_msgs/action/Fibonacci"
+  const MessageTypeSupport* (*goal)();             ///< X_Goal
+  const MessageTypeSupport* (*result)();           ///< X_Result
+  const MessageTypeSupport* (*feedback)();         ///< X_Feedback
+  const ServiceTypeSupport* (*send_goal)();        ///< X_SendGoal (goal_id, goal / accepted, stamp)
+  const ServiceTypeSupport* (*get_result)();       ///< X_GetResult (goal_id / status, result)
+  const MessageTypeSupport* (*feedback_message)(); ///< X_FeedbackMessage (goal_id, feedback)
+  const ServiceTypeSupport* (*cancel_goal)();      ///< action_msgs/srv/CancelGoal
+  const MessageTypeSupport* (*status)();           ///< action_msgs/msg/GoalStatusArray
+  /// The action type's RIHS01 hash and description (goal, result, feedback, send_goal_service,
+  /// get_result_service, feedback_message, as rosidl synthesizes them).
+  const char* type_hash;
+  const TypeDescriptionTable* description;
+};
+
 /// Process-wide registry filled by the generated libraries when they load, so the runtime
 /// and the Python layer can find any generated type by its ROS name.
 void register_message_type(const MessageTypeSupport* type);
 void register_service_type(const ServiceTypeSupport* type);
+void register_action_type(const ActionTypeSupport* type);
 
 /// Accepts "pkg/msg/Type" and "pkg/Type". nullptr when unknown.
 const MessageTypeSupport* find_message_type(const std::string& ros_type);
@@ -163,9 +184,14 @@ const ServiceTypeSupport* find_service_type(const std::string& ros_type);
 /// As above; when unknown, `error` says so and lists the registered service types.
 const ServiceTypeSupport* find_service_type(const std::string& ros_type, std::string* error);
 
-/// Sorted ROS names of every registered message / service type.
+/// Accepts "pkg/action/X" and "pkg/X"; when unknown (nullptr), `error` (if given) says so and
+/// lists the registered action types.
+const ActionTypeSupport* find_action_type(const std::string& ros_type, std::string* error = nullptr);
+
+/// Sorted ROS names of every registered message / service / action type.
 std::vector<std::string> registered_message_types();
 std::vector<std::string> registered_service_types();
+std::vector<std::string> registered_action_types();
 
 /// Serializes into `buffer` (cleared first); the result is a complete payload.
 void serialize_message(const MessageTypeSupport& type, const void* message,

@@ -1,0 +1,175 @@
+// ros2vtk — a client of one ROS 2 action of any generated .action type (issue 13).
+//
+//   client = rosNode.CreateAndAddActionClientNode("test_msgs/action/Fibonacci", "/fibonacci")
+//   result = client.SendGoalAndWait("{order: 5}", 10.0)   # scripts: spins until the result
+//   client.SendGoalYAML("{order: 5}")                      # applications: events on later spins
+//   # GoalResponseEvent (accepted or rejected), FeedbackReceivedEvent (GetLastFeedbackYAML),
+//   # ResultReceivedEvent (GetResultYAML, GetGoalStatus), GoalFailedEvent (GetLastError)
+//   client.CancelGoal()                                    # CancelResponseEvent
+//
+// On the wire it is what rcl_action makes (docs/actions.md): the services
+// `<action>/_action/send_goal`, `get_result` and `cancel_goal`, the feedback topic and the
+// transient-local status topic. Goals, results and feedback are YAML through the action's
+// generated tables (wire::ActionTypeSupport), so one class serves every generated action type.
+// One goal is tracked at a time: sending a new goal stops tracking the previous one (it is not
+// canceled).
+#ifndef vtkROS2ActionClientNode_h
+#define vtkROS2ActionClientNode_h
+
+#include "ros2vtkSceneModule.h" // for export macro
+#include "vtkROS2SceneNode.h"
+
+#include "vtkCommand.h" // for vtkCommand::UserEvent
+
+#include <memory> // for std::unique_ptr (pimpl)
+#include <string> // for std::string
+
+class vtkROS2NodeNode;
+
+class ROS2VTKSCENE_EXPORT vtkROS2ActionClientNode : public vtkROS2SceneNode
+{
+public:
+  static vtkROS2ActionClientNode* New();
+  vtkTypeMacro(vtkROS2ActionClientNode, vtkROS2SceneNode);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum
+  {
+    /// The server answered the goal: GetGoalStatus() is Accepted or Rejected.
+    GoalResponseEvent = vtkCommand::UserEvent + 80,
+    /// Feedback for the current goal arrived (GetLastFeedbackYAML).
+    FeedbackReceivedEvent = vtkCommand::UserEvent + 81,
+    /// The result arrived (GetResultYAML; GetGoalStatus is Succeeded, Canceled or Aborted).
+    ResultReceivedEvent = vtkCommand::UserEvent + 82,
+    /// The goal could not be sent or was not answered in time; GetLastError says why.
+    GoalFailedEvent = vtkCommand::UserEvent + 83,
+    /// The server answered a CancelGoal (GetLastCancelReturnCode).
+    CancelResponseEvent = vtkCommand::UserEvent + 84
+  };
+
+  /// Where the current goal stands. Accepted .. Aborted follow action_msgs/msg/GoalStatus as
+  /// the server reports it on the status topic and in the result.
+  enum GoalState
+  {
+    Idle = 0,
+    WaitingForServer,
+    WaitingForAcceptance,
+    Rejected,
+    Accepted,
+    Executing,
+    Canceling,
+    Succeeded,
+    Canceled,
+    Aborted,
+    TimedOut,
+    Failed
+  };
+
+  /// "/fibonacci" (resolved) and "test_msgs/action/Fibonacci".
+  const char* GetActionName() const;
+  const char* GetActionType() const;
+  /// True when the server's three services are matched and it publishes feedback and status
+  /// (rcl_action_server_is_available).
+  bool IsServerReady() const;
+
+  ///@{
+  /// The goal the next SendGoal sends (the action's X_Goal); blank until set. False with
+  /// vtkErrorMacro naming the field on invalid YAML or a value that does not fit.
+  bool SetGoalYAML(const char* yaml);
+  std::string GetGoalYAML() const;
+  bool SetGoalField(const char* path, const char* value);
+  void ResetGoal();
+  ///@}
+
+  /// Seconds a goal may wait for a server and for its acceptance, and a cancel request for its
+  /// answer (default 5). The result itself has no deadline (goals may run for long).
+  void SetTimeout(double seconds);
+  double GetTimeout() const;
+
+  /// Sends the goal set above with a new random goal id; the answer arrives on a later Spin.
+  /// Returns the goal's number in this client (> 0), or -1 when not attached.
+  vtkTypeInt64 SendGoal();
+  /// SetGoalYAML then SendGoal (-1 on invalid YAML).
+  vtkTypeInt64 SendGoalYAML(const char* yaml);
+  /// Asks the server to cancel the current goal (action_msgs/srv/CancelGoal with its id). False
+  /// when there is no accepted, unfinished goal.
+  bool CancelGoal();
+
+  /// For scripts: sends `goalYAML` and spins every ROS node of the scene until the result
+  /// arrives, the goal is rejected or `timeoutSeconds` (<= 0: GetTimeout()) pass. Returns the
+  /// result YAML, or "" with GetLastError saying why (rejected, timeout, no server). A goal
+  /// still running at the timeout keeps running and is still tracked.
+  std::string SendGoalAndWait(const char* goalYAML, double timeoutSeconds = -1.0);
+  /// Spins the scene until the current goal is finished (result, rejection, failure) or
+  /// `timeoutSeconds` pass; true when it is finished.
+  bool WaitForGoal(double timeoutSeconds);
+
+  int GetGoalStatus() const;
+  /// "idle", "waiting for server", "waiting for acceptance", "rejected", "accepted",
+  /// "executing", "canceling", "succeeded", "canceled", "aborted", "timed out", "failed".
+  const char* GetStatusAsString() const;
+  /// True once the current goal is rejected, finished, timed out or failed.
+  bool IsGoalDone() const;
+  const char* GetLastError() const;
+  /// The current goal's id as 32 hex digits ("" before the first goal).
+  std::string GetGoalIdAsString() const;
+
+  ///@{
+  /// Feedback of the current goal: how many arrived, and the newest (blank before the first)
+  /// as YAML or one field.
+  vtkTypeInt64 GetNumberOfFeedbacks() const;
+  std::string GetLastFeedbackYAML() const;
+  std::string GetFeedbackField(const char* path) const;
+  ///@}
+
+  ///@{
+  /// The current goal's result (blank before it arrives) as YAML or one field, and the status
+  /// the server sent with it (action_msgs/msg/GoalStatus: 4 succeeded, 5 canceled, 6 aborted).
+  std::string GetResultYAML() const;
+  std::string GetResultField(const char* path) const;
+  int GetResultStatus() const;
+  ///@}
+
+  /// return_code of the newest cancel response (action_msgs/srv/CancelGoal: 0 none, 1
+  /// rejected, 2 unknown goal id, 3 goal terminated); -1 before one.
+  int GetLastCancelReturnCode() const;
+  /// Goals sent, goals accepted, results received.
+  vtkTypeInt64 GetNumberOfGoalsSent() const;
+  vtkTypeInt64 GetNumberOfGoalsAccepted() const;
+  vtkTypeInt64 GetNumberOfResults() const;
+
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
+  void OnSceneRestored() override;
+
+#ifndef __VTK_WRAP__
+  /// Used by vtkROS2NodeNode: chooses the type ("pkg/action/X" or "pkg/X"), creates the wire
+  /// endpoints on `rosNode`. False with vtkErrorMacro otherwise.
+  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action);
+  /// Releases the wire endpoints (the ROS node is being destroyed); the node stays in the scene.
+  void Detach();
+  /// Per Spin: sends a waiting goal once the server is there, takes answers, feedback, status.
+  int ProcessAction();
+#endif
+
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessAction(); }
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
+  /// Index key among the ROS node's action clients.
+  std::string GetROS2NodeChildKey() const override { return this->GetActionName(); }
+
+protected:
+  vtkROS2ActionClientNode();
+  ~vtkROS2ActionClientNode() override;
+  void OnRemovedFromScene() override;
+
+private:
+  vtkROS2ActionClientNode(const vtkROS2ActionClientNode&) = delete;
+  void operator=(const vtkROS2ActionClientNode&) = delete;
+
+  bool SpinSceneUntil(double timeoutSeconds, bool (*done)(const vtkROS2ActionClientNode*));
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

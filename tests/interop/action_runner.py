@@ -1,0 +1,137 @@
+"""Our action client or server (the VTK-wrapped Python API, Debian's python3 with
+<build>/python on PYTHONPATH) in its own process, for test_scene_actions.py. Prints JSON lines:
+{"ready": ...} first, then one result object.
+
+    action_runner.py goal test_msgs/action/Fibonacci /fibonacci '{order: 5}' --timeout 10
+    action_runner.py goal ... --cancel-after 2      # asynchronous: SendGoal, cancel, WaitForGoal
+    action_runner.py serve /fibonacci --step 0.1 --max-order 20 --count 1
+
+The server computes Fibonacci as rclpy's example server does (start from [0, 1], append one
+number per step, feedback after each), in this script, through the server node's API.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+import yaml
+
+import ros2vtk
+
+EVENTS = ('GoalResponseEvent', 'FeedbackReceivedEvent', 'ResultReceivedEvent', 'GoalFailedEvent',
+          'CancelResponseEvent')
+
+
+def cmd_goal(args, logic, node) -> int:
+    client = node.CreateAndAddActionClientNode(args.type, args.name)
+    if client is None:
+        print(json.dumps({'ready': False, 'error': 'client not created'}), flush=True)
+        return 1
+    events = {name: 0 for name in EVENTS}
+    statuses = []
+    feedbacks = []
+    for name in EVENTS:
+        client.AddObserver(getattr(ros2vtk.vtkROS2ActionClientNode, name),
+                           lambda caller, _e, name=name: events.__setitem__(name, events[name] + 1))
+    client.AddObserver(ros2vtk.vtkROS2ActionClientNode.FeedbackReceivedEvent,
+                       lambda caller, _e: feedbacks.append(yaml.safe_load(caller.GetLastFeedbackYAML())))
+    client.AddObserver('ModifiedEvent', lambda caller, _e: statuses.append(caller.GetStatusAsString())
+                       if not statuses or statuses[-1] != caller.GetStatusAsString() else None)
+    ready = ros2vtk.spin_until(logic, client.IsServerReady, seconds=args.wait) if args.wait > 0 else False
+    print(json.dumps({'ready': bool(ready)}), flush=True)
+    cancel_sent = None
+    if args.cancel_after:
+        client.SetTimeout(args.timeout)
+        client.SendGoalYAML(args.yaml)
+        ros2vtk.spin_until(logic, lambda: client.GetNumberOfFeedbacks() >= args.cancel_after or client.IsGoalDone(),
+                           seconds=args.timeout)
+        cancel_sent = bool(client.CancelGoal())
+        client.WaitForGoal(args.timeout)
+        result_yaml = client.GetResultYAML() if client.GetNumberOfResults() else ''
+    else:
+        result_yaml = client.SendGoalAndWait(args.yaml, args.timeout)
+    print(json.dumps({'status': client.GetStatusAsString(), 'done': bool(client.IsGoalDone()),
+                      'result': yaml.safe_load(result_yaml) if result_yaml else None,
+                      'result_status': client.GetResultStatus(), 'error': client.GetLastError(),
+                      'feedback_count': client.GetNumberOfFeedbacks(),
+                      'last_feedback': yaml.safe_load(client.GetLastFeedbackYAML()),
+                      'feedbacks': feedbacks, 'events': events, 'statuses': statuses,
+                      'cancel_sent': cancel_sent, 'cancel_return_code': client.GetLastCancelReturnCode(),
+                      'goal_id': client.GetGoalIdAsString(),
+                      'accepted': client.GetNumberOfGoalsAccepted()}), flush=True)
+    return 0
+
+
+def cmd_serve(args, logic, node) -> int:
+    server = node.CreateAndAddActionServerNode('test_msgs/action/Fibonacci', args.name)
+    if server is None:
+        print(json.dumps({'ready': False}), flush=True)
+        return 1
+    decided = []
+
+    def on_goal(caller, _event):
+        order = int(caller.GetGoalField('order'))
+        decided.append(order)
+        if order > args.max_order:
+            caller.RejectGoal()
+
+    cancels = []
+    server.AddObserver(ros2vtk.vtkROS2ActionServerNode.GoalReceivedEvent, on_goal)
+    server.AddObserver(ros2vtk.vtkROS2ActionServerNode.CancelRequestedEvent, lambda *_: cancels.append(1))
+    print(json.dumps({'ready': True}), flush=True)
+    import time
+    end = time.monotonic() + args.seconds
+    current, sequence, order, due, finished, outcomes = None, [], 0, 0.0, 0, []
+    while time.monotonic() < end and (not args.count or finished < args.count):
+        logic.SpinOnWakeUp(0.02)
+        if not server.HasActiveGoal():
+            continue
+        if server.GetGoalIdAsString() != current:
+            current, sequence, order, due = server.GetGoalIdAsString(), [0, 1], int(server.GetGoalField('order')), 0.0
+        if server.IsCancelRequested():
+            server.ConfirmGoalCanceled(yaml.safe_dump({'sequence': sequence}))
+            finished += 1
+            outcomes.append('canceled')
+        elif time.monotonic() >= due:
+            if len(sequence) <= order:
+                sequence = sequence + [sequence[-1] + sequence[-2]]
+                server.PublishFeedbackYAML(yaml.safe_dump({'sequence': sequence}))
+                due = time.monotonic() + args.step
+            else:
+                server.SucceedGoal(yaml.safe_dump({'sequence': sequence}))
+                finished += 1
+                outcomes.append('succeeded')
+    ros2vtk.spin_until(logic, lambda: False, seconds=0.5)  # result requests still on their way
+    print(json.dumps({'received': server.GetNumberOfGoalsReceived(), 'accepted': server.GetNumberOfGoalsAccepted(),
+                      'rejected': server.GetNumberOfGoalsRejected(), 'cancels': server.GetNumberOfCancelRequests(),
+                      'cancel_events': len(cancels), 'results_sent': server.GetNumberOfResultsSent(),
+                      'orders': decided, 'outcomes': outcomes}), flush=True)
+    return 0
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument('--node-name', default='slicer')
+    sub = parser.add_subparsers(dest='command', required=True)
+    goal = sub.add_parser('goal')
+    goal.add_argument('type')
+    goal.add_argument('name')
+    goal.add_argument('yaml')
+    goal.add_argument('--timeout', type=float, default=10.0)
+    goal.add_argument('--wait', type=float, default=15.0, help='seconds to wait for the server (0: do not)')
+    goal.add_argument('--cancel-after', type=int, default=0, help='cancel after this many feedbacks')
+    serve = sub.add_parser('serve')
+    serve.add_argument('name')
+    serve.add_argument('--seconds', type=float, default=20.0)
+    serve.add_argument('--step', type=float, default=0.05, help='seconds per Fibonacci step')
+    serve.add_argument('--max-order', type=int, default=40, help='goals above are rejected')
+    serve.add_argument('--count', type=int, default=0, help='stop after this many finished goals')
+    args = parser.parse_args()
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    return {'goal': cmd_goal, 'serve': cmd_serve}[args.command](args, logic, node)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
