@@ -76,7 +76,21 @@ INCOMING = [
     ('Path', 'nav_msgs/msg/Path',
      [rigid(ROT_Z90, [100.0, -250.0, 1500.0]), rigid([[1, 0, 0], [0, -1, 0], [0, 0, -1]], [-200.0, 0.0, 300.0])]),
     ('Imu', 'sensor_msgs/msg/Imu', [0.0, 0.0, S, S, 0.01, -0.02, 0.03, 0.0, 0.0, 9.81]),  # SI, never scaled
+    # issue 13: K (pixels, row-major) and D of one CameraInfo, never scaled
+    ('CameraInfo', 'sensor_msgs/msg/CameraInfo', [[525.0, 0.0, 319.5], [0.0, 526.5, 239.5], [0.0, 0.0, 1.0]]),
+    ('CameraDistortion', 'sensor_msgs/msg/CameraInfo', [-0.28, 0.07, 0.0001, -0.0002, 0.0]),
+    ('JoyAxes', 'sensor_msgs/msg/Joy', [0.5, -1.0, 0.25]),
+    ('JoyButtons', 'sensor_msgs/msg/Joy', [0, 1, 1, 0]),
+    # the Path above as a line: positions in mm, one polyline cell through them in order
+    ('PathPolyline', 'nav_msgs/msg/Path', {'points': [[100.0, -250.0, 1500.0], [-200.0, 0.0, 300.0]],
+                                           'lines': [[0, 1]]}),
 ]
+CAMERA_INFO = {'header': HEADER, 'height': 480, 'width': 640, 'distortion_model': 'plumb_bob',
+               'd': [-0.28, 0.07, 0.0001, -0.0002, 0.0],
+               'k': [525.0, 0.0, 319.5, 0.0, 526.5, 239.5, 0.0, 0.0, 1.0],
+               'r': [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0],
+               'p': [525.0, 0.0, 319.5, 0.0, 0.0, 526.5, 239.5, 0.0, 0.0, 0.0, 1.0, 0.0]}
+JOY = {'header': HEADER, 'axes': [0.5, -1.0, 0.25], 'buttons': [0, 1, 1, 0]}
 # messages sent instead of SAMPLES[ros_type]
 INCOMING_MESSAGES = {
     'Pose': SAMPLES['geometry_msgs/msg/PoseStamped']['pose'],
@@ -97,9 +111,16 @@ INCOMING_MESSAGES = {
         {'header': HEADER, 'pose': POSE},
         {'header': HEADER, 'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3},
                                     'orientation': {'x': 1.0, 'y': 0.0, 'z': 0.0, 'w': 0.0}}}]},
+    'PathPolyline': {'header': HEADER, 'poses': [
+        {'header': HEADER, 'pose': POSE},
+        {'header': HEADER, 'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3}}}]},
     'Imu': {'header': HEADER, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S},
             'angular_velocity': {'x': 0.01, 'y': -0.02, 'z': 0.03},
             'linear_acceleration': {'x': 0.0, 'y': 0.0, 'z': 9.81}},
+    'CameraInfo': CAMERA_INFO,
+    'CameraDistortion': CAMERA_INFO,
+    'JoyAxes': JOY,
+    'JoyButtons': JOY,
     'DoubleTable': {'layout': {'dim': [{'label': 'rows', 'size': 2, 'stride': 4},
                                        {'label': '', 'size': 2, 'stride': 2}], 'data_offset': 0},
                     'data': [0.5, -1.25, 1e-9, 12345.678]},
@@ -207,6 +228,20 @@ OUTGOING = [
     ('Imu', 'sensor_msgs/msg/Imu',
      {'header': {'frame_id': 'ct_scanner'}, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S},
       'angular_velocity': {'x': 0.01, 'y': -0.02, 'z': 0.03}, 'linear_acceleration': {'x': 0.0, 'y': 0.0, 'z': 9.81}}),
+    # a typed publisher fills only its rule's fields: K, or D, the rest zero / empty
+    ('CameraInfo', 'sensor_msgs/msg/CameraInfo',
+     {'header': {'frame_id': 'ct_scanner'}, 'k': [525.0, 0.0, 319.5, 0.0, 526.5, 239.5, 0.0, 0.0, 1.0],
+      'd': [], 'width': 0, 'height': 0, 'distortion_model': ''}),
+    ('CameraDistortion', 'sensor_msgs/msg/CameraInfo',
+     {'header': {'frame_id': 'ct_scanner'}, 'd': [-0.28, 0.07, 0.0001, -0.0002, 0.0], 'k': [0.0] * 9}),
+    ('JoyAxes', 'sensor_msgs/msg/Joy', {'header': {'frame_id': 'ct_scanner'}, 'axes': [0.5, -1.0, 0.25], 'buttons': []}),
+    ('JoyButtons', 'sensor_msgs/msg/Joy', {'header': {'frame_id': 'ct_scanner'}, 'buttons': [0, 1, 1, 0], 'axes': []}),
+    # the points in the line cell's order (not their storage order), metres
+    ('PathPolyline', 'nav_msgs/msg/Path',
+     {'header': {'frame_id': 'ct_scanner'},
+      'poses': [{'pose': {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5}}},
+                {'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3}}},
+                {'pose': {'position': {'x': 0.0, 'y': 0.0, 'z': 0.0}}}]}),
 ]
 
 

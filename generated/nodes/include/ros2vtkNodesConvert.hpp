@@ -28,9 +28,11 @@
 #include "ros2vtk/geometry_msgs/msg/wrench_stamped.hpp"
 #include "ros2vtk/nav_msgs/msg/odometry.hpp"
 #include "ros2vtk/nav_msgs/msg/path.hpp"
+#include "ros2vtk/sensor_msgs/msg/camera_info.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
 #include "ros2vtk/sensor_msgs/msg/imu.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
+#include "ros2vtk/sensor_msgs/msg/joy.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud2.hpp"
 #include "ros2vtk/std_msgs/msg/bool.hpp"
@@ -45,7 +47,10 @@
 
 class vtkDataArray;
 class vtkDoubleArray;
+class vtkFloatArray;
 class vtkImageData;
+class vtkIntArray;
+class vtkMatrix3x3;
 class vtkMatrix4x4;
 class vtkPoints;
 class vtkPolyData;
@@ -146,6 +151,12 @@ bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkTransformCollec
 bool VTKToROS2(vtkTransformCollection* object, ::ros2vtk::nav_msgs::msg::Path& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
+// PathPolyline: nav_msgs/msg/Path <-> vtkPolyData (kind polyline, nav_msgs.toml; lengths: point).
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkPolyData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::nav_msgs::msg::Path& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image, sensor_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Image& message, vtkImageData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
@@ -176,6 +187,30 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::sensor_msgs::msg::JointState& messag
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Imu& message, vtkDoubleArray* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::Imu& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// CameraInfo: sensor_msgs/msg/CameraInfo <-> vtkMatrix3x3 (kind matrix3x3, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CameraInfo& message, vtkMatrix3x3* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkMatrix3x3* object, ::ros2vtk::sensor_msgs::msg::CameraInfo& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// CameraDistortion: sensor_msgs/msg/CameraInfo <-> vtkDoubleArray (kind sequence_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CameraInfo& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::CameraInfo& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// JoyAxes: sensor_msgs/msg/Joy <-> vtkFloatArray (kind sequence_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkFloatArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkFloatArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// JoyButtons: sensor_msgs/msg/Joy <-> vtkIntArray (kind sequence_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkIntArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkIntArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 // String: std_msgs/msg/String <-> std::string (kind value, std_msgs.toml).
