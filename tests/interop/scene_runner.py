@@ -298,7 +298,7 @@ def vtk_sample(short: str):
         p.InsertNextPoint(500.0, 1500.0, -2000.0)
         p.InsertNextPoint(250.0, 0.0, 4000.0)
         return p
-    if short == 'Image':
+    if short in ('Image', 'CompressedImage'):
         image = vtk.vtkImageData()
         image.SetDimensions(3, 2, 1)
         image.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 3)

@@ -29,6 +29,7 @@
 #include "ros2vtk/nav_msgs/msg/odometry.hpp"
 #include "ros2vtk/nav_msgs/msg/path.hpp"
 #include "ros2vtk/sensor_msgs/msg/camera_info.hpp"
+#include "ros2vtk/sensor_msgs/msg/compressed_image.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
 #include "ros2vtk/sensor_msgs/msg/imu.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
@@ -212,6 +213,14 @@ bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkIntArray* obj
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkIntArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// CompressedImage: sensor_msgs/msg/CompressedImage <-> vtkImageData (kind compressed_image, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CompressedImage& message, vtkImageData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+/// `encoding` "" picks one from the image's scalar type (see ros2vtk/convert/Image.hpp).
+bool VTKToROS2(vtkImageData* object, ::ros2vtk::sensor_msgs::msg::CompressedImage& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr,
+  const std::string& encoding = std::string());
 
 // String: std_msgs/msg/String <-> std::string (kind value, std_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::String& message, std::string* value,

@@ -814,6 +814,28 @@ bool VTKToROS2(vtkIntArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
 }
 
 //------------------------------------------------------------------------------
+// CompressedImage: sensor_msgs/msg/CompressedImage <-> vtkImageData (kind compressed_image)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CompressedImage& message, vtkImageData* object,
+  double /*lengthScale*/, std::string* error)
+{
+  return ::ros2vtk::convert::compressed_to_image(message.format, message.data, object, error);
+}
+
+bool VTKToROS2(vtkImageData* object, ::ros2vtk::sensor_msgs::msg::CompressedImage& message,
+  double /*lengthScale*/, std::string* error, const std::string& encoding)
+{
+  std::string format;
+  std::vector<uint8_t> data;
+  if (!::ros2vtk::convert::image_to_compressed(object, encoding, &format, &data, error))
+  {
+    return false;
+  }
+  message.format = std::move(format);
+  message.data = std::move(data);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // String: std_msgs/msg/String <-> std::string (kind value)
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::String& message, std::string* value,
   double /*lengthScale*/, std::string* error)

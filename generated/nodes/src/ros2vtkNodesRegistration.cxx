@@ -54,6 +54,8 @@
 #include "vtkROS2SubscriberJoyAxesNode.h"
 #include "vtkROS2PublisherJoyButtonsNode.h"
 #include "vtkROS2SubscriberJoyButtonsNode.h"
+#include "vtkROS2PublisherCompressedImageNode.h"
+#include "vtkROS2SubscriberCompressedImageNode.h"
 #include "vtkROS2PublisherStringNode.h"
 #include "vtkROS2SubscriberStringNode.h"
 #include "vtkROS2PublisherBoolNode.h"
@@ -207,6 +209,10 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherJoyButtonsNode> },
     { "JoyButtons", "vtkROS2SubscriberJoyButtonsNode", "sensor_msgs/msg/Joy", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberJoyButtonsNode> },
+    { "CompressedImage", "vtkROS2PublisherCompressedImageNode", "sensor_msgs/msg/CompressedImage", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherCompressedImageNode> },
+    { "CompressedImage", "vtkROS2SubscriberCompressedImageNode", "sensor_msgs/msg/CompressedImage", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberCompressedImageNode> },
     { "String", "vtkROS2PublisherStringNode", "std_msgs/msg/String", NodeDirection::Publisher,
       &CreateNode<vtkROS2PublisherStringNode> },
     { "String", "vtkROS2SubscriberStringNode", "std_msgs/msg/String", NodeDirection::Subscriber,

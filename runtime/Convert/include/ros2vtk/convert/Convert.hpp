@@ -3,6 +3,7 @@
 #define ros2vtk_convert_Convert_hpp
 
 #include "ros2vtk/convert/Arrays.hpp"
+#include "ros2vtk/convert/CompressedImage.hpp"
 #include "ros2vtk/convert/Image.hpp"
 #include "ros2vtk/convert/JointState.hpp"
 #include "ros2vtk/convert/MultiArray.hpp"
