@@ -143,6 +143,15 @@ def to_plain(value):
         return [list(value.GetPoint(i)) for i in range(value.GetNumberOfPoints())]
     if name == 'vtkMatrix3x3':
         return [[value.GetElement(i, j) for j in range(3)] for i in range(3)]
+    if name == 'vtkPolyData' and value.GetPointData().GetArray('Color'):  # a Marker
+        lines, ids = [], vtk.vtkIdList()
+        for c in range(value.GetLines().GetNumberOfCells()):
+            value.GetLines().GetCellAtId(c, ids)
+            lines.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+        color = value.GetPointData().GetArray('Color')
+        return {'bounds': list(value.GetBounds()), 'color': list(color.GetTuple(0)) if color.GetNumberOfTuples() else [],
+                'lines': lines, 'verts': value.GetNumberOfVerts(), 'polys': value.GetNumberOfPolys(),
+                'points': [list(value.GetPoint(i)) for i in range(min(value.GetNumberOfPoints(), 10))]}
     if name == 'vtkPolyData' and value.GetNumberOfLines() > 0:  # a polyline: its points and line cells
         lines, ids = [], vtk.vtkIdList()
         for c in range(value.GetLines().GetNumberOfCells()):
@@ -252,6 +261,24 @@ def vtk_sample(short: str):
         return vtk_array(vtk.vtkFloatArray, (0.5, -1.0, 0.25))
     if short == 'JoyButtons':
         return vtk_array(vtk.vtkIntArray, (0, 1, 1, 0))
+    if short == 'Marker':  # a red line through three points (mm)
+        line = vtk.vtkPolyData()
+        p = vtk.vtkPoints()
+        for point in ((0.0, 0.0, 0.0), (100.0, 0.0, 0.0), (100.0, 200.0, 0.0)):
+            p.InsertNextPoint(*point)
+        line.SetPoints(p)
+        cells = vtk.vtkCellArray()
+        cells.InsertNextCell(3)
+        for i in (0, 1, 2):
+            cells.InsertCellPoint(i)
+        line.SetLines(cells)
+        color = vtk.vtkUnsignedCharArray()
+        color.SetName('Color')
+        color.SetNumberOfComponents(4)
+        for _ in range(3):
+            color.InsertNextTuple4(255, 0, 0, 255)
+        line.GetPointData().AddArray(color)
+        return line
     if short == 'PathPolyline':
         # points stored out of order; the line cell gives the path's order (mm)
         line = vtk.vtkPolyData()

@@ -308,6 +308,81 @@ def test_compressed_image_published_as_png_that_pillow_decodes(ros):
     assert list(picture.tobytes()) == [30, 31, 32, 40, 41, 42, 50, 51, 52, 0, 1, 2, 10, 11, 12, 20, 21, 22]
 
 
+# visualization_msgs/Marker -> vtkPolyData in mm: (name, message, expected bounds in mm, extra checks).
+# Bounds worked out by hand from the Marker conventions: a shape of size `scale` centred on
+# `pose` (an arrow from the pose along its x, a cylinder's axis along its z).
+MARKER_POSE = {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5}, 'orientation': {'w': 1.0}}
+MARKER_COLOR = {'r': 1.0, 'g': 0.5, 'b': 0.0, 'a': 1.0}
+MARKERS = [
+    ('cube', {'type': 1, 'pose': MARKER_POSE, 'scale': {'x': 0.02, 'y': 0.04, 'z': 0.06}},
+     [90.0, 110.0, -270.0, -230.0, 1470.0, 1530.0], {'polys': 6}),
+    # turned 90 degrees about z: the x size lies along y
+    ('sphere', {'type': 2, 'pose': {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5},
+                                    'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S}},
+                'scale': {'x': 0.02, 'y': 0.04, 'z': 0.06}},
+     [80.0, 120.0, -260.0, -240.0, 1470.0, 1530.0], {}),
+    ('cylinder', {'type': 3, 'pose': MARKER_POSE, 'scale': {'x': 0.02, 'y': 0.02, 'z': 0.1}},
+     [90.0, 110.0, -260.0, -240.0, 1450.0, 1550.0], {}),
+    ('arrow', {'type': 0, 'pose': MARKER_POSE, 'scale': {'x': 0.2, 'y': 0.01, 'z': 0.04}},
+     [100.0, 300.0, -270.0, -230.0, 1480.0, 1520.0], {}),
+    ('line_strip', {'type': 4, 'pose': {'position': {'z': 1.0}, 'orientation': {'w': 1.0}},
+                    'scale': {'x': 0.005}, 'points': [{'x': 0.0}, {'x': 0.1}, {'x': 0.1, 'y': 0.2}]},
+     [0.0, 100.0, 0.0, 200.0, 1000.0, 1000.0],
+     {'lines': [[0, 1, 2]], 'points': [[0.0, 0.0, 1000.0], [100.0, 0.0, 1000.0], [100.0, 200.0, 1000.0]]}),
+    ('points', {'type': 8, 'pose': {'position': {'z': 1.0}, 'orientation': {'w': 1.0}},
+                'scale': {'x': 0.005, 'y': 0.005}, 'points': [{'x': 0.0}, {'x': 0.1}, {'x': 0.1, 'y': 0.2}]},
+     [0.0, 100.0, 0.0, 200.0, 1000.0, 1000.0], {'lines': [], 'verts': 3}),
+]
+
+
+@pytest.mark.parametrize('name,fields,bounds,extra', MARKERS, ids=[m[0] for m in MARKERS])
+def test_rclpy_marker_to_our_poly_data(ros, name, fields, bounds, extra):
+    topic = '/scene_in/marker_' + name
+    ours = ros.scene('--seconds', '20', 'sub', 'Marker', topic, '--count', '5', '--linger', '1')
+    ros.wait_ready(ours)
+    message = dict(fields, header=HEADER, color=MARKER_COLOR)
+    peer = ros.peer('pub', topic, 'visualization_msgs/msg/Marker', json.dumps(message), '--count', '5', '--rate', '20')
+    code, out, err = ros.finish(ours)
+    ros.stop(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == 5 and result['value'] is not None, result
+    value = result['value']
+    close(bounds, value['bounds'], tol=1e-6)
+    assert value['color'] == [255.0, 128.0, 0.0, 255.0]  # 0.5 * 255 = 127.5, rounded half up
+    close(extra, value)
+
+
+def test_unsupported_marker_type_is_refused_with_a_reason(ros):
+    ours = ros.scene('--seconds', '20', 'sub', 'Marker', '/scene_in/marker_text', '--count', '3', '--linger', '1')
+    ros.wait_ready(ours)
+    message = {'header': HEADER, 'type': 9, 'pose': MARKER_POSE, 'scale': {'z': 0.1}, 'text': 'hello'}
+    peer = ros.peer('pub', '/scene_in/marker_text', 'visualization_msgs/msg/Marker', json.dumps(message),
+                    '--count', '3', '--rate', '20')
+    code, out, err = ros.finish(ours)
+    ros.stop(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == 3 and result['value'] is None
+    assert 'marker type is not supported' in result['conversion_error'], result
+
+
+def test_our_poly_data_line_to_rclpy_marker(ros):
+    echo = ros.peer('echo', '/scene_out/marker', 'visualization_msgs/msg/Marker', '--count', '1', '--timeout', '25')
+    ros.wait_ready(echo)
+    ours = ros.scene('--seconds', '8', 'pub', 'Marker', '/scene_out/marker')
+    code, out, err = ros.finish(echo, timeout=40)
+    ros.stop(ours)
+    assert code == 0, err
+    message = json.loads(out.splitlines()[-1])
+    close({'header': {'frame_id': 'ct_scanner'}, 'type': 4, 'action': 0,
+           'pose': {'position': {'x': 0.0, 'y': 0.0, 'z': 0.0}, 'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}},
+           'scale': {'x': 0.001, 'y': 0.001, 'z': 0.001},
+           'color': {'r': 1.0, 'g': 0.0, 'b': 0.0, 'a': 1.0},
+           'points': [{'x': 0.0, 'y': 0.0, 'z': 0.0}, {'x': 0.1, 'y': 0.0, 'z': 0.0}, {'x': 0.1, 'y': 0.2, 'z': 0.0}]},
+          message)
+
+
 def test_pose_array_rotations_and_metres(ros):
     echo = ros.peer('echo', '/scene_out/poses', 'geometry_msgs/msg/PoseArray', '--count', '1', '--timeout', '25')
     ros.wait_ready(echo)

@@ -43,6 +43,7 @@
 #include "ros2vtk/std_msgs/msg/int64.hpp"
 #include "ros2vtk/std_msgs/msg/int64_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/string.hpp"
+#include "ros2vtk/visualization_msgs/msg/marker.hpp"
 
 #include <string>
 
@@ -268,6 +269,12 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Int64MultiArray& mess
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::Float64MultiArray& message, vtkTable* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker, visualization_msgs.toml; lengths: position, scale, points).
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 } // namespace nodes

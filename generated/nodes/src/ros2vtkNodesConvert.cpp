@@ -1079,5 +1079,78 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
   return true;
 }
 
+//------------------------------------------------------------------------------
+// Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker)
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::Marker marker;
+  switch (message.type)
+  {
+    case ::ros2vtk::visualization_msgs::msg::Marker::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::CUBE: marker.shape = ::ros2vtk::convert::MarkerShape::Cube; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
+    default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
+  }
+  marker.position[0] = message.pose.position.x;
+  marker.position[1] = message.pose.position.y;
+  marker.position[2] = message.pose.position.z;
+  marker.orientation[0] = message.pose.orientation.x;
+  marker.orientation[1] = message.pose.orientation.y;
+  marker.orientation[2] = message.pose.orientation.z;
+  marker.orientation[3] = message.pose.orientation.w;
+  marker.scale[0] = message.scale.x;
+  marker.scale[1] = message.scale.y;
+  marker.scale[2] = message.scale.z;
+  marker.color[0] = message.color.r;
+  marker.color[1] = message.color.g;
+  marker.color[2] = message.color.b;
+  marker.color[3] = message.color.a;
+  marker.points.reserve(3 * message.points.size());
+  for (const auto& point : message.points)
+  {
+    marker.points.push_back(point.x);
+    marker.points.push_back(point.y);
+    marker.points.push_back(point.z);
+  }
+  return ::ros2vtk::convert::marker_to_poly_data(marker, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::Marker marker;
+  if (!::ros2vtk::convert::poly_data_to_marker(object, lengthScale, &marker, error))
+  {
+    return false;
+  }
+  message.type = marker.shape == ::ros2vtk::convert::MarkerShape::LineStrip ? ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP : ::ros2vtk::visualization_msgs::msg::Marker::POINTS;
+  message.pose.position.x = marker.position[0];
+  message.pose.position.y = marker.position[1];
+  message.pose.position.z = marker.position[2];
+  message.pose.orientation.x = marker.orientation[0];
+  message.pose.orientation.y = marker.orientation[1];
+  message.pose.orientation.z = marker.orientation[2];
+  message.pose.orientation.w = marker.orientation[3];
+  message.scale.x = marker.scale[0];
+  message.scale.y = marker.scale[1];
+  message.scale.z = marker.scale[2];
+  message.color.r = static_cast<float>(marker.color[0]);
+  message.color.g = static_cast<float>(marker.color[1]);
+  message.color.b = static_cast<float>(marker.color[2]);
+  message.color.a = static_cast<float>(marker.color[3]);
+  message.points.resize(marker.points.size() / 3);
+  for (size_t i = 0; i < message.points.size(); ++i)
+  {
+    message.points[i].x = marker.points[3 * i];
+    message.points[i].y = marker.points[3 * i + 1];
+    message.points[i].z = marker.points[3 * i + 2];
+  }
+  return true;
+}
+
 } // namespace nodes
 } // namespace ros2vtk

@@ -74,6 +74,8 @@
 #include "vtkROS2SubscriberIntTableNode.h"
 #include "vtkROS2PublisherDoubleTableNode.h"
 #include "vtkROS2SubscriberDoubleTableNode.h"
+#include "vtkROS2PublisherMarkerNode.h"
+#include "vtkROS2SubscriberMarkerNode.h"
 
 #include "vtkSetGet.h" // for vtkGenericWarningMacro
 
@@ -249,6 +251,10 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherDoubleTableNode> },
     { "DoubleTable", "vtkROS2SubscriberDoubleTableNode", "std_msgs/msg/Float64MultiArray", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberDoubleTableNode> },
+    { "Marker", "vtkROS2PublisherMarkerNode", "visualization_msgs/msg/Marker", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherMarkerNode> },
+    { "Marker", "vtkROS2SubscriberMarkerNode", "visualization_msgs/msg/Marker", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberMarkerNode> },
   };
   auto& registry = ros2vtk::scene::NodeClassRegistry::instance();
   for (const NodeClassInfo& info : classes)

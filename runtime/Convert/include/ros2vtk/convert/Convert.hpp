@@ -6,6 +6,7 @@
 #include "ros2vtk/convert/CompressedImage.hpp"
 #include "ros2vtk/convert/Image.hpp"
 #include "ros2vtk/convert/JointState.hpp"
+#include "ros2vtk/convert/Marker.hpp"
 #include "ros2vtk/convert/MultiArray.hpp"
 #include "ros2vtk/convert/PointCloud2.hpp"
 #include "ros2vtk/convert/Points.hpp"
