@@ -88,7 +88,7 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
         auto sphere = vtkSmartPointer<vtkSphereSource>::New();
         sphere->SetRadius(0.5);
         sphere->SetThetaResolution(24);
-        sphere->SetPhiResolution(16);
+        sphere->SetPhiResolution(17); // 11.25 degree steps: the equator is sampled
         source = sphere;
         unit->Scale(sx, sy, sz);
       }
