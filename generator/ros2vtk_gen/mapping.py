@@ -386,6 +386,12 @@ def resolve_path(message: Message, path: str, table: Mapping[str, Message]) -> R
 def check_shape(item: Field, shape: Shape, table: Mapping[str, Message]) -> None:
     """Raises ValueError when the field does not have `shape`."""
     is_sequence = item.container in (SEQUENCE, BOUNDED_SEQUENCE)
+    if shape.array_size:
+        if item.container != ARRAY or item.size != shape.array_size or \
+                not item.type.is_primitive or item.type.name not in shape.primitives:
+            raise ValueError(f"field '{item.name}' must be a {shape.describe()}, it is "
+                             f"{_describe_field(item)}")
+        return
     if item.container == ARRAY or is_sequence != shape.sequence:
         raise ValueError(f"field '{item.name}' must be a {shape.describe()}, it is "
                          f"{_describe_field(item)}")

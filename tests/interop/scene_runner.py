@@ -141,6 +141,23 @@ def to_plain(value):
                             for c in range(scalars.GetNumberOfComponents())]}
     if name == 'vtkPoints':
         return [list(value.GetPoint(i)) for i in range(value.GetNumberOfPoints())]
+    if name == 'vtkMatrix3x3':
+        return [[value.GetElement(i, j) for j in range(3)] for i in range(3)]
+    if name == 'vtkPolyData' and value.GetPointData().GetArray('Color'):  # a Marker
+        lines, ids = [], vtk.vtkIdList()
+        for c in range(value.GetLines().GetNumberOfCells()):
+            value.GetLines().GetCellAtId(c, ids)
+            lines.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+        color = value.GetPointData().GetArray('Color')
+        return {'bounds': list(value.GetBounds()), 'color': list(color.GetTuple(0)) if color.GetNumberOfTuples() else [],
+                'lines': lines, 'verts': value.GetNumberOfVerts(), 'polys': value.GetNumberOfPolys(),
+                'points': [list(value.GetPoint(i)) for i in range(min(value.GetNumberOfPoints(), 10))]}
+    if name == 'vtkPolyData' and value.GetNumberOfLines() > 0:  # a polyline: its points and line cells
+        lines, ids = [], vtk.vtkIdList()
+        for c in range(value.GetLines().GetNumberOfCells()):
+            value.GetLines().GetCellAtId(c, ids)
+            lines.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+        return {'points': [list(value.GetPoint(i)) for i in range(value.GetNumberOfPoints())], 'lines': lines}
     if name == 'vtkPolyData':
         return [list(value.GetPoint(i)) for i in range(value.GetNumberOfPoints())]
     if value.IsA('vtkDataArray'):
@@ -232,6 +249,49 @@ def vtk_sample(short: str):
             t.SetMatrix(m)
             collection.AddItem(t)
         return collection
+    if short == 'CameraInfo':  # K in pixels, row-major
+        k = vtk.vtkMatrix3x3()
+        for i, row in enumerate(((525.0, 0.0, 319.5), (0.0, 526.5, 239.5), (0.0, 0.0, 1.0))):
+            for j, v in enumerate(row):
+                k.SetElement(i, j, v)
+        return k
+    if short == 'CameraDistortion':
+        return vtk_array(vtk.vtkDoubleArray, (-0.28, 0.07, 0.0001, -0.0002, 0.0))
+    if short == 'JoyAxes':
+        return vtk_array(vtk.vtkFloatArray, (0.5, -1.0, 0.25))
+    if short == 'JoyButtons':
+        return vtk_array(vtk.vtkIntArray, (0, 1, 1, 0))
+    if short == 'Marker':  # a red line through three points (mm)
+        line = vtk.vtkPolyData()
+        p = vtk.vtkPoints()
+        for point in ((0.0, 0.0, 0.0), (100.0, 0.0, 0.0), (100.0, 200.0, 0.0)):
+            p.InsertNextPoint(*point)
+        line.SetPoints(p)
+        cells = vtk.vtkCellArray()
+        cells.InsertNextCell(3)
+        for i in (0, 1, 2):
+            cells.InsertCellPoint(i)
+        line.SetLines(cells)
+        color = vtk.vtkUnsignedCharArray()
+        color.SetName('Color')
+        color.SetNumberOfComponents(4)
+        for _ in range(3):
+            color.InsertNextTuple4(255, 0, 0, 255)
+        line.GetPointData().AddArray(color)
+        return line
+    if short == 'PathPolyline':
+        # points stored out of order; the line cell gives the path's order (mm)
+        line = vtk.vtkPolyData()
+        p = vtk.vtkPoints()
+        for point in ((0.0, 0.0, 0.0), (100.0, -250.0, 1500.0), (-200.0, 0.0, 300.0)):
+            p.InsertNextPoint(*point)
+        line.SetPoints(p)
+        cells = vtk.vtkCellArray()
+        cells.InsertNextCell(3)
+        for i in (1, 2, 0):
+            cells.InsertCellPoint(i)
+        line.SetLines(cells)
+        return line
     if short == 'Vector3':
         return vtk_array(vtk.vtkDoubleArray, (0.5, -1.5, 2.25))
     if short in ('WrenchStamped', 'Wrench'):
@@ -265,7 +325,7 @@ def vtk_sample(short: str):
         p.InsertNextPoint(500.0, 1500.0, -2000.0)
         p.InsertNextPoint(250.0, 0.0, 4000.0)
         return p
-    if short == 'Image':
+    if short in ('Image', 'CompressedImage'):
         image = vtk.vtkImageData()
         image.SetDimensions(3, 2, 1)
         image.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 3)

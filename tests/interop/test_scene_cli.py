@@ -43,7 +43,9 @@ SHORT_NAMES = ['Bool', 'DoubleArray', 'Double', 'DoubleTable', 'Empty', 'Image',
                'Pose', 'Transform', 'Wrench', 'Vector3',
                # SlicerROS2's PolyData, and the rules of the common interfaces (docs/messages.md)
                'PolyData', 'Twist', 'TwistStamped', 'PointStamped', 'PolygonStamped',
-               'PoseWithCovarianceStamped', 'Odometry', 'Path', 'Imu']
+               'PoseWithCovarianceStamped', 'Odometry', 'Path', 'Imu',
+               # issue 13: what users see first
+               'CameraInfo', 'CameraDistortion', 'JoyAxes', 'JoyButtons', 'PathPolyline', 'CompressedImage', 'Marker']
 
 
 def test_types_lists_a_publisher_and_a_subscriber_class_per_short_name(ros):

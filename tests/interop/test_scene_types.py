@@ -3,11 +3,13 @@ with the units policy: lengths in mm on our side, metres on the wire; nothing el
 Expected values are written out by hand from tests/interop/samples.py."""
 from __future__ import annotations
 
+import io
 import json
 import math
 import struct
 
 import pytest
+from PIL import Image as PILImage
 
 from samples import HEADER, POSE, SAMPLES
 from test_wire_topics import assert_matches
@@ -76,7 +78,33 @@ INCOMING = [
     ('Path', 'nav_msgs/msg/Path',
      [rigid(ROT_Z90, [100.0, -250.0, 1500.0]), rigid([[1, 0, 0], [0, -1, 0], [0, 0, -1]], [-200.0, 0.0, 300.0])]),
     ('Imu', 'sensor_msgs/msg/Imu', [0.0, 0.0, S, S, 0.01, -0.02, 0.03, 0.0, 0.0, 9.81]),  # SI, never scaled
+    # issue 13: K (pixels, row-major) and D of one CameraInfo, never scaled
+    ('CameraInfo', 'sensor_msgs/msg/CameraInfo', [[525.0, 0.0, 319.5], [0.0, 526.5, 239.5], [0.0, 0.0, 1.0]]),
+    ('CameraDistortion', 'sensor_msgs/msg/CameraInfo', [-0.28, 0.07, 0.0001, -0.0002, 0.0]),
+    ('JoyAxes', 'sensor_msgs/msg/Joy', [0.5, -1.0, 0.25]),
+    ('JoyButtons', 'sensor_msgs/msg/Joy', [0, 1, 1, 0]),
+    # the Path above as a line: positions in mm, one polyline cell through them in order
+    # PNG bytes decoded by vtkPNGReader: the same pixels as the raw Image above, VTK row 0 = bottom
+    ('CompressedImage', 'sensor_msgs/msg/CompressedImage',
+     {'dimensions': [3, 2, 1], 'components': 3, 'scalars': [float(v) for v in IMAGE[9:18] + IMAGE[0:9]]}),
+    ('PathPolyline', 'nav_msgs/msg/Path', {'points': [[100.0, -250.0, 1500.0], [-200.0, 0.0, 300.0]],
+                                           'lines': [[0, 1]]}),
 ]
+CAMERA_INFO = {'header': HEADER, 'height': 480, 'width': 640, 'distortion_model': 'plumb_bob',
+               'd': [-0.28, 0.07, 0.0001, -0.0002, 0.0],
+               'k': [525.0, 0.0, 319.5, 0.0, 526.5, 239.5, 0.0, 0.0, 1.0],
+               'r': [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0],
+               'p': [525.0, 0.0, 319.5, 0.0, 0.0, 526.5, 239.5, 0.0, 0.0, 0.0, 1.0, 0.0]}
+
+
+def png_bytes(width: int, height: int, rgb: list) -> list:
+    """PNG made by Pillow (not by VTK, the code under test), rows top first."""
+    out = io.BytesIO()
+    PILImage.frombytes('RGB', (width, height), bytes(rgb)).save(out, format='PNG')
+    return list(out.getvalue())
+
+
+JOY = {'header': HEADER, 'axes': [0.5, -1.0, 0.25], 'buttons': [0, 1, 1, 0]}
 # messages sent instead of SAMPLES[ros_type]
 INCOMING_MESSAGES = {
     'Pose': SAMPLES['geometry_msgs/msg/PoseStamped']['pose'],
@@ -97,9 +125,17 @@ INCOMING_MESSAGES = {
         {'header': HEADER, 'pose': POSE},
         {'header': HEADER, 'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3},
                                     'orientation': {'x': 1.0, 'y': 0.0, 'z': 0.0, 'w': 0.0}}}]},
+    'PathPolyline': {'header': HEADER, 'poses': [
+        {'header': HEADER, 'pose': POSE},
+        {'header': HEADER, 'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3}}}]},
     'Imu': {'header': HEADER, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S},
             'angular_velocity': {'x': 0.01, 'y': -0.02, 'z': 0.03},
             'linear_acceleration': {'x': 0.0, 'y': 0.0, 'z': 9.81}},
+    'CameraInfo': CAMERA_INFO,
+    'CompressedImage': {'header': HEADER, 'format': 'png', 'data': png_bytes(3, 2, IMAGE)},
+    'CameraDistortion': CAMERA_INFO,
+    'JoyAxes': JOY,
+    'JoyButtons': JOY,
     'DoubleTable': {'layout': {'dim': [{'label': 'rows', 'size': 2, 'stride': 4},
                                        {'label': '', 'size': 2, 'stride': 2}], 'data_offset': 0},
                     'data': [0.5, -1.25, 1e-9, 12345.678]},
@@ -119,7 +155,7 @@ def test_rclpy_publisher_to_our_vtk_subscriber(ros, short, ros_type, expected):
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] == SENT and result['rejected'] == 0, result
-    if isinstance(expected, dict) and short != 'Image':  # a table: exactly these columns
+    if isinstance(expected, dict) and 'Image' not in short:  # a table: exactly these columns
         assert sorted(result['value']) == sorted(expected), result['value']
     close(expected, result['value'])
 
@@ -207,6 +243,20 @@ OUTGOING = [
     ('Imu', 'sensor_msgs/msg/Imu',
      {'header': {'frame_id': 'ct_scanner'}, 'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S},
       'angular_velocity': {'x': 0.01, 'y': -0.02, 'z': 0.03}, 'linear_acceleration': {'x': 0.0, 'y': 0.0, 'z': 9.81}}),
+    # a typed publisher fills only its rule's fields: K, or D, the rest zero / empty
+    ('CameraInfo', 'sensor_msgs/msg/CameraInfo',
+     {'header': {'frame_id': 'ct_scanner'}, 'k': [525.0, 0.0, 319.5, 0.0, 526.5, 239.5, 0.0, 0.0, 1.0],
+      'd': [], 'width': 0, 'height': 0, 'distortion_model': ''}),
+    ('CameraDistortion', 'sensor_msgs/msg/CameraInfo',
+     {'header': {'frame_id': 'ct_scanner'}, 'd': [-0.28, 0.07, 0.0001, -0.0002, 0.0], 'k': [0.0] * 9}),
+    ('JoyAxes', 'sensor_msgs/msg/Joy', {'header': {'frame_id': 'ct_scanner'}, 'axes': [0.5, -1.0, 0.25], 'buttons': []}),
+    ('JoyButtons', 'sensor_msgs/msg/Joy', {'header': {'frame_id': 'ct_scanner'}, 'buttons': [0, 1, 1, 0], 'axes': []}),
+    # the points in the line cell's order (not their storage order), metres
+    ('PathPolyline', 'nav_msgs/msg/Path',
+     {'header': {'frame_id': 'ct_scanner'},
+      'poses': [{'pose': {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5}}},
+                {'pose': {'position': {'x': -0.2, 'y': 0.0, 'z': 0.3}}},
+                {'pose': {'position': {'x': 0.0, 'y': 0.0, 'z': 0.0}}}]}),
 ]
 
 
@@ -223,6 +273,114 @@ def test_our_vtk_publisher_to_rclpy_subscriber(ros, short, ros_type, expected):
     close(expected, message)
     if 'header' in message:
         assert message['header']['stamp']['sec'] > 1600000000, 'stamped with the current time'
+
+
+def test_malformed_compressed_image_is_refused_with_a_reason(ros):
+    """Bytes that are no PNG/JPEG, and a truncated PNG: every message arrives, none converts, the
+    reason names the problem, the process keeps running."""
+    for name, data in (('garbage', [1, 2, 3, 4, 5]), ('truncated', png_bytes(3, 2, IMAGE)[:30])):
+        topic = '/scene_in/bad_compressed_' + name
+        ours = ros.scene('--seconds', '20', 'sub', 'CompressedImage', topic, '--count', '5', '--linger', '1')
+        ros.wait_ready(ours)
+        peer = ros.peer('pub', topic, 'sensor_msgs/msg/CompressedImage',
+                        json.dumps({'header': HEADER, 'format': 'png', 'data': data}), '--count', '5', '--rate', '20')
+        code, out, err = ros.finish(ours)
+        ros.stop(peer)
+        assert code == 0, err
+        result = json.loads(out.splitlines()[-1])
+        assert result['count'] == 5, result
+        expected = 'neither PNG nor JPEG' if name == 'garbage' else 'cannot decode the PNG'
+        assert expected in result['conversion_error'], result
+
+
+def test_compressed_image_published_as_png_that_pillow_decodes(ros):
+    echo = ros.peer('echo', '/scene_out/compressed', 'sensor_msgs/msg/CompressedImage', '--count', '1', '--timeout', '25')
+    ros.wait_ready(echo)
+    ours = ros.scene('--seconds', '8', 'pub', 'CompressedImage', '/scene_out/compressed')
+    code, out, err = ros.finish(echo, timeout=40)
+    ros.stop(ours)
+    assert code == 0, err
+    message = json.loads(out.splitlines()[-1])
+    assert message['format'] == 'png' and message['header']['frame_id'] == 'ct_scanner'
+    picture = PILImage.open(io.BytesIO(bytes(message['data'])))
+    assert picture.format == 'PNG' and picture.size == (3, 2) and picture.mode == 'RGB'
+    # the raw Image's wire rows: VTK row 1 (pixels 3..5) is the top row
+    assert list(picture.tobytes()) == [30, 31, 32, 40, 41, 42, 50, 51, 52, 0, 1, 2, 10, 11, 12, 20, 21, 22]
+
+
+# visualization_msgs/Marker -> vtkPolyData in mm: (name, message, expected bounds in mm, extra checks).
+# Bounds worked out by hand from the Marker conventions: a shape of size `scale` centred on
+# `pose` (an arrow from the pose along its x, a cylinder's axis along its z).
+MARKER_POSE = {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5}, 'orientation': {'w': 1.0}}
+MARKER_COLOR = {'r': 1.0, 'g': 0.5, 'b': 0.0, 'a': 1.0}
+MARKERS = [
+    ('cube', {'type': 1, 'pose': MARKER_POSE, 'scale': {'x': 0.02, 'y': 0.04, 'z': 0.06}},
+     [90.0, 110.0, -270.0, -230.0, 1470.0, 1530.0], {'polys': 6}),
+    # turned 90 degrees about z: the x size lies along y
+    ('sphere', {'type': 2, 'pose': {'position': {'x': 0.1, 'y': -0.25, 'z': 1.5},
+                                    'orientation': {'x': 0.0, 'y': 0.0, 'z': S, 'w': S}},
+                'scale': {'x': 0.02, 'y': 0.04, 'z': 0.06}},
+     [80.0, 120.0, -260.0, -240.0, 1470.0, 1530.0], {}),
+    ('cylinder', {'type': 3, 'pose': MARKER_POSE, 'scale': {'x': 0.02, 'y': 0.02, 'z': 0.1}},
+     [90.0, 110.0, -260.0, -240.0, 1450.0, 1550.0], {}),
+    ('arrow', {'type': 0, 'pose': MARKER_POSE, 'scale': {'x': 0.2, 'y': 0.01, 'z': 0.04}},
+     [100.0, 300.0, -270.0, -230.0, 1480.0, 1520.0], {}),
+    ('line_strip', {'type': 4, 'pose': {'position': {'z': 1.0}, 'orientation': {'w': 1.0}},
+                    'scale': {'x': 0.005}, 'points': [{'x': 0.0}, {'x': 0.1}, {'x': 0.1, 'y': 0.2}]},
+     [0.0, 100.0, 0.0, 200.0, 1000.0, 1000.0],
+     {'lines': [[0, 1, 2]], 'points': [[0.0, 0.0, 1000.0], [100.0, 0.0, 1000.0], [100.0, 200.0, 1000.0]]}),
+    ('points', {'type': 8, 'pose': {'position': {'z': 1.0}, 'orientation': {'w': 1.0}},
+                'scale': {'x': 0.005, 'y': 0.005}, 'points': [{'x': 0.0}, {'x': 0.1}, {'x': 0.1, 'y': 0.2}]},
+     [0.0, 100.0, 0.0, 200.0, 1000.0, 1000.0], {'lines': [], 'verts': 3}),
+]
+
+
+@pytest.mark.parametrize('name,fields,bounds,extra', MARKERS, ids=[m[0] for m in MARKERS])
+def test_rclpy_marker_to_our_poly_data(ros, name, fields, bounds, extra):
+    topic = '/scene_in/marker_' + name
+    ours = ros.scene('--seconds', '20', 'sub', 'Marker', topic, '--count', '5', '--linger', '1')
+    ros.wait_ready(ours)
+    message = dict(fields, header=HEADER, color=MARKER_COLOR)
+    peer = ros.peer('pub', topic, 'visualization_msgs/msg/Marker', json.dumps(message), '--count', '5', '--rate', '20')
+    code, out, err = ros.finish(ours)
+    ros.stop(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == 5 and result['value'] is not None, result
+    value = result['value']
+    close(bounds, value['bounds'], tol=1e-6)
+    assert value['color'] == [255.0, 128.0, 0.0, 255.0]  # 0.5 * 255 = 127.5, rounded half up
+    close(extra, value)
+
+
+def test_unsupported_marker_type_is_refused_with_a_reason(ros):
+    ours = ros.scene('--seconds', '20', 'sub', 'Marker', '/scene_in/marker_text', '--count', '3', '--linger', '1')
+    ros.wait_ready(ours)
+    message = {'header': HEADER, 'type': 9, 'pose': MARKER_POSE, 'scale': {'z': 0.1}, 'text': 'hello'}
+    peer = ros.peer('pub', '/scene_in/marker_text', 'visualization_msgs/msg/Marker', json.dumps(message),
+                    '--count', '3', '--rate', '20')
+    code, out, err = ros.finish(ours)
+    ros.stop(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    assert result['count'] == 3 and result['value'] is None
+    assert 'marker type is not supported' in result['conversion_error'], result
+
+
+def test_our_poly_data_line_to_rclpy_marker(ros):
+    echo = ros.peer('echo', '/scene_out/marker', 'visualization_msgs/msg/Marker', '--count', '1', '--timeout', '25')
+    ros.wait_ready(echo)
+    ours = ros.scene('--seconds', '8', 'pub', 'Marker', '/scene_out/marker')
+    code, out, err = ros.finish(echo, timeout=40)
+    ros.stop(ours)
+    assert code == 0, err
+    message = json.loads(out.splitlines()[-1])
+    close({'header': {'frame_id': 'ct_scanner'}, 'type': 4, 'action': 0,
+           'pose': {'position': {'x': 0.0, 'y': 0.0, 'z': 0.0}, 'orientation': {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0}},
+           'scale': {'x': 0.001, 'y': 0.001, 'z': 0.001},
+           'color': {'r': 1.0, 'g': 0.0, 'b': 0.0, 'a': 1.0},
+           'points': [{'x': 0.0, 'y': 0.0, 'z': 0.0}, {'x': 0.1, 'y': 0.0, 'z': 0.0}, {'x': 0.1, 'y': 0.2, 'z': 0.0}]},
+          message)
 
 
 def test_pose_array_rotations_and_metres(ros):

@@ -154,6 +154,55 @@ def test_points_kind_on_a_single_message_names_the_point_kind(tmp_path, table):
     assert "with ," not in error
 
 
+def test_matrix3x3_sequence_array_and_polyline_kinds(tmp_path, table):
+    """CameraInfo's K (float64[9]) <-> vtkMatrix3x3, its D (float64[]) and Joy's axes
+    (float32[]) and buttons (int32[]) <-> the VTK array of their element type, a Path's
+    positions <-> a polyline vtkPolyData scaled as lengths."""
+    rules = {rule.short_name: rule for rule in load_rules(SHIPPED_MAPPINGS, table)}
+    assert rules["CameraInfo"].kind == "matrix3x3" and rules["CameraInfo"].vtk_type == "vtkMatrix3x3"
+    assert rules["CameraInfo"].roles["elements"].path == "k"
+    assert rules["CameraInfo"].scaled_roles == ()
+    assert rules["CameraDistortion"].vtk_type == "vtkDoubleArray"
+    assert rules["JoyAxes"].vtk_type == "vtkFloatArray"
+    assert rules["JoyButtons"].vtk_type == "vtkIntArray"
+    assert rules["PathPolyline"].kind == "polyline"
+    assert rules["PathPolyline"].scaled_roles == ("point",)
+    camera = """\
+    [[mapping]]
+    short_name = "Cam"
+    ros_type = "sensor_msgs/msg/CameraInfo"
+    vtk_type = "vtkMatrix3x3"
+    kind = "matrix3x3"
+    fields = { elements = "p" }
+    """
+    error = error_of(tmp_path, table, camera).message
+    assert "field 'p' must be a float64[9], it is float64[12]" in error, error
+    error = error_of(tmp_path, table, camera.replace('"p"', '"d"')).message
+    assert "field 'd' must be a float64[9], it is sequence of float64" in error, error
+    joy = """\
+    [[mapping]]
+    short_name = "Buttons"
+    ros_type = "sensor_msgs/msg/Joy"
+    vtk_type = "vtkFloatArray"
+    kind = "sequence_array"
+    fields = { data = "buttons" }
+    """
+    error = error_of(tmp_path, table, joy)
+    assert error.code == "R2V204" and "int32 values go into vtkIntArray" in error.message, error
+    error = error_of(tmp_path, table, joy.replace('"buttons"', '"header"')).message
+    assert "field 'header' must be a sequence of" in error, error
+    path = """\
+    [[mapping]]
+    short_name = "Line"
+    ros_type = "nav_msgs/msg/Path"
+    vtk_type = "vtkPolyData"
+    kind = "polyline"
+    fields = { sequence = "poses", point = "pose.position" }
+    lengths = ["poses.pose.orientation"]
+    """
+    assert error_of(tmp_path, table, path).code == "R2V207"
+
+
 def test_missing_required_key_points_at_the_rule(tmp_path, table):
     error = error_of(tmp_path, table, "\n" + GOOD_POSE.replace('kind = "rigid_transform"\n', ""))
     assert error.line == 2 and "'kind' is required" in error.message

@@ -28,9 +28,12 @@
 #include "ros2vtk/geometry_msgs/msg/wrench_stamped.hpp"
 #include "ros2vtk/nav_msgs/msg/odometry.hpp"
 #include "ros2vtk/nav_msgs/msg/path.hpp"
+#include "ros2vtk/sensor_msgs/msg/camera_info.hpp"
+#include "ros2vtk/sensor_msgs/msg/compressed_image.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
 #include "ros2vtk/sensor_msgs/msg/imu.hpp"
 #include "ros2vtk/sensor_msgs/msg/joint_state.hpp"
+#include "ros2vtk/sensor_msgs/msg/joy.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud2.hpp"
 #include "ros2vtk/std_msgs/msg/bool.hpp"
@@ -40,12 +43,16 @@
 #include "ros2vtk/std_msgs/msg/int64.hpp"
 #include "ros2vtk/std_msgs/msg/int64_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/string.hpp"
+#include "ros2vtk/visualization_msgs/msg/marker.hpp"
 
 #include <string>
 
 class vtkDataArray;
 class vtkDoubleArray;
+class vtkFloatArray;
 class vtkImageData;
+class vtkIntArray;
+class vtkMatrix3x3;
 class vtkMatrix4x4;
 class vtkPoints;
 class vtkPolyData;
@@ -146,6 +153,12 @@ bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkTransformCollec
 bool VTKToROS2(vtkTransformCollection* object, ::ros2vtk::nav_msgs::msg::Path& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
+// PathPolyline: nav_msgs/msg/Path <-> vtkPolyData (kind polyline, nav_msgs.toml; lengths: point).
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkPolyData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::nav_msgs::msg::Path& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image, sensor_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Image& message, vtkImageData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
@@ -177,6 +190,38 @@ bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Imu& message, vtkDoubleArray* 
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::Imu& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// CameraInfo: sensor_msgs/msg/CameraInfo <-> vtkMatrix3x3 (kind matrix3x3, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CameraInfo& message, vtkMatrix3x3* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkMatrix3x3* object, ::ros2vtk::sensor_msgs::msg::CameraInfo& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// CameraDistortion: sensor_msgs/msg/CameraInfo <-> vtkDoubleArray (kind sequence_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CameraInfo& message, vtkDoubleArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::CameraInfo& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// JoyAxes: sensor_msgs/msg/Joy <-> vtkFloatArray (kind sequence_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkFloatArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkFloatArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// JoyButtons: sensor_msgs/msg/Joy <-> vtkIntArray (kind sequence_array, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkIntArray* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkIntArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// CompressedImage: sensor_msgs/msg/CompressedImage <-> vtkImageData (kind compressed_image, sensor_msgs.toml).
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CompressedImage& message, vtkImageData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+/// `encoding` "" picks one from the image's scalar type (see ros2vtk/convert/Image.hpp).
+bool VTKToROS2(vtkImageData* object, ::ros2vtk::sensor_msgs::msg::CompressedImage& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr,
+  const std::string& encoding = std::string());
 
 // String: std_msgs/msg/String <-> std::string (kind value, std_msgs.toml).
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::String& message, std::string* value,
@@ -224,6 +269,12 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Int64MultiArray& mess
 bool ROS2ToVTK(const ::ros2vtk::std_msgs::msg::Float64MultiArray& message, vtkTable* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker, visualization_msgs.toml; lengths: position, scale, points).
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 } // namespace nodes

@@ -6,7 +6,10 @@
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -16,6 +19,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -499,6 +503,41 @@ bool VTKToROS2(vtkTransformCollection* object, ::ros2vtk::nav_msgs::msg::Path& m
 }
 
 //------------------------------------------------------------------------------
+// PathPolyline: nav_msgs/msg/Path <-> vtkPolyData (kind polyline)
+bool ROS2ToVTK(const ::ros2vtk::nav_msgs::msg::Path& message, vtkPolyData* object,
+  double lengthScale, std::string* error)
+{
+  std::vector<double> xyz;
+  xyz.reserve(3 * message.poses.size());
+  for (const auto& element : message.poses)
+  {
+    xyz.push_back(element.pose.position.x);
+    xyz.push_back(element.pose.position.y);
+    xyz.push_back(element.pose.position.z);
+  }
+  return ::ros2vtk::convert::xyz_to_polyline(xyz, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::nav_msgs::msg::Path& message,
+  double lengthScale, std::string* error)
+{
+  std::vector<double> xyz;
+  if (!::ros2vtk::convert::polyline_to_xyz(object, lengthScale, &xyz, error))
+  {
+    return false;
+  }
+  message.poses.resize(xyz.size() / 3);
+  for (size_t i = 0; i < message.poses.size(); ++i)
+  {
+    auto& element = message.poses[i];
+    element.pose.position.x = xyz[3 * i];
+    element.pose.position.y = xyz[3 * i + 1];
+    element.pose.position.z = xyz[3 * i + 2];
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 // Image: sensor_msgs/msg/Image <-> vtkImageData (kind image)
 bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Image& message, vtkImageData* object,
   double /*lengthScale*/, std::string* error)
@@ -676,6 +715,123 @@ bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::Imu& message
   message.linear_acceleration.x = static_cast<double>(values[7]);
   message.linear_acceleration.y = static_cast<double>(values[8]);
   message.linear_acceleration.z = static_cast<double>(values[9]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// CameraInfo: sensor_msgs/msg/CameraInfo <-> vtkMatrix3x3 (kind matrix3x3)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CameraInfo& message, vtkMatrix3x3* object,
+  double /*lengthScale*/, std::string* error)
+{
+  return ::ros2vtk::convert::values_to_matrix3x3(message.k.data(), object, error);
+}
+
+bool VTKToROS2(vtkMatrix3x3* object, ::ros2vtk::sensor_msgs::msg::CameraInfo& message,
+  double /*lengthScale*/, std::string* error)
+{
+  return ::ros2vtk::convert::matrix3x3_to_values(object, message.k.data(), error);
+}
+
+//------------------------------------------------------------------------------
+// CameraDistortion: sensor_msgs/msg/CameraInfo <-> vtkDoubleArray (kind sequence_array)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CameraInfo& message, vtkDoubleArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const std::vector<double> values(message.d.begin(), message.d.end());
+  return ::ros2vtk::convert::numbers_to_array(values.data(), values.size(), object, error);
+}
+
+bool VTKToROS2(vtkDoubleArray* object, ::ros2vtk::sensor_msgs::msg::CameraInfo& message,
+  double /*lengthScale*/, std::string* error)
+{
+  const ::ros2vtk::convert::NumberLimits limits{ static_cast<double>(std::numeric_limits<double>::lowest()),
+    static_cast<double>(std::numeric_limits<double>::max()), false };
+  std::vector<double> values;
+  if (!::ros2vtk::convert::array_to_numbers(object, limits, &values, error))
+  {
+    return false;
+  }
+  message.d.resize(values.size());
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    message.d[i] = static_cast<double>(values[i]);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// JoyAxes: sensor_msgs/msg/Joy <-> vtkFloatArray (kind sequence_array)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkFloatArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const std::vector<double> values(message.axes.begin(), message.axes.end());
+  return ::ros2vtk::convert::numbers_to_array(values.data(), values.size(), object, error);
+}
+
+bool VTKToROS2(vtkFloatArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
+  double /*lengthScale*/, std::string* error)
+{
+  const ::ros2vtk::convert::NumberLimits limits{ static_cast<double>(std::numeric_limits<float>::lowest()),
+    static_cast<double>(std::numeric_limits<float>::max()), false };
+  std::vector<double> values;
+  if (!::ros2vtk::convert::array_to_numbers(object, limits, &values, error))
+  {
+    return false;
+  }
+  message.axes.resize(values.size());
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    message.axes[i] = static_cast<float>(values[i]);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// JoyButtons: sensor_msgs/msg/Joy <-> vtkIntArray (kind sequence_array)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::Joy& message, vtkIntArray* object,
+  double /*lengthScale*/, std::string* error)
+{
+  const std::vector<double> values(message.buttons.begin(), message.buttons.end());
+  return ::ros2vtk::convert::numbers_to_array(values.data(), values.size(), object, error);
+}
+
+bool VTKToROS2(vtkIntArray* object, ::ros2vtk::sensor_msgs::msg::Joy& message,
+  double /*lengthScale*/, std::string* error)
+{
+  const ::ros2vtk::convert::NumberLimits limits{ static_cast<double>(std::numeric_limits<int32_t>::lowest()),
+    static_cast<double>(std::numeric_limits<int32_t>::max()), true };
+  std::vector<double> values;
+  if (!::ros2vtk::convert::array_to_numbers(object, limits, &values, error))
+  {
+    return false;
+  }
+  message.buttons.resize(values.size());
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    message.buttons[i] = static_cast<int32_t>(values[i]);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// CompressedImage: sensor_msgs/msg/CompressedImage <-> vtkImageData (kind compressed_image)
+bool ROS2ToVTK(const ::ros2vtk::sensor_msgs::msg::CompressedImage& message, vtkImageData* object,
+  double /*lengthScale*/, std::string* error)
+{
+  return ::ros2vtk::convert::compressed_to_image(message.format, message.data, object, error);
+}
+
+bool VTKToROS2(vtkImageData* object, ::ros2vtk::sensor_msgs::msg::CompressedImage& message,
+  double /*lengthScale*/, std::string* error, const std::string& encoding)
+{
+  std::string format;
+  std::vector<uint8_t> data;
+  if (!::ros2vtk::convert::image_to_compressed(object, encoding, &format, &data, error))
+  {
+    return false;
+  }
+  message.format = std::move(format);
+  message.data = std::move(data);
   return true;
 }
 
@@ -920,6 +1076,79 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
   }
   message.layout.data_offset = layout.data_offset;
   message.data = std::move(data);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker)
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::Marker marker;
+  switch (message.type)
+  {
+    case ::ros2vtk::visualization_msgs::msg::Marker::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::CUBE: marker.shape = ::ros2vtk::convert::MarkerShape::Cube; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
+    default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
+  }
+  marker.position[0] = message.pose.position.x;
+  marker.position[1] = message.pose.position.y;
+  marker.position[2] = message.pose.position.z;
+  marker.orientation[0] = message.pose.orientation.x;
+  marker.orientation[1] = message.pose.orientation.y;
+  marker.orientation[2] = message.pose.orientation.z;
+  marker.orientation[3] = message.pose.orientation.w;
+  marker.scale[0] = message.scale.x;
+  marker.scale[1] = message.scale.y;
+  marker.scale[2] = message.scale.z;
+  marker.color[0] = message.color.r;
+  marker.color[1] = message.color.g;
+  marker.color[2] = message.color.b;
+  marker.color[3] = message.color.a;
+  marker.points.reserve(3 * message.points.size());
+  for (const auto& point : message.points)
+  {
+    marker.points.push_back(point.x);
+    marker.points.push_back(point.y);
+    marker.points.push_back(point.z);
+  }
+  return ::ros2vtk::convert::marker_to_poly_data(marker, lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
+  double lengthScale, std::string* error)
+{
+  ::ros2vtk::convert::Marker marker;
+  if (!::ros2vtk::convert::poly_data_to_marker(object, lengthScale, &marker, error))
+  {
+    return false;
+  }
+  message.type = marker.shape == ::ros2vtk::convert::MarkerShape::LineStrip ? ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP : ::ros2vtk::visualization_msgs::msg::Marker::POINTS;
+  message.pose.position.x = marker.position[0];
+  message.pose.position.y = marker.position[1];
+  message.pose.position.z = marker.position[2];
+  message.pose.orientation.x = marker.orientation[0];
+  message.pose.orientation.y = marker.orientation[1];
+  message.pose.orientation.z = marker.orientation[2];
+  message.pose.orientation.w = marker.orientation[3];
+  message.scale.x = marker.scale[0];
+  message.scale.y = marker.scale[1];
+  message.scale.z = marker.scale[2];
+  message.color.r = static_cast<float>(marker.color[0]);
+  message.color.g = static_cast<float>(marker.color[1]);
+  message.color.b = static_cast<float>(marker.color[2]);
+  message.color.a = static_cast<float>(marker.color[3]);
+  message.points.resize(marker.points.size() / 3);
+  for (size_t i = 0; i < message.points.size(); ++i)
+  {
+    message.points[i].x = marker.points[3 * i];
+    message.points[i].y = marker.points[3 * i + 1];
+    message.points[i].z = marker.points[3 * i + 2];
+  }
   return true;
 }
 

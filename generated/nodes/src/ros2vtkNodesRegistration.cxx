@@ -34,6 +34,8 @@
 #include "vtkROS2SubscriberOdometryNode.h"
 #include "vtkROS2PublisherPathNode.h"
 #include "vtkROS2SubscriberPathNode.h"
+#include "vtkROS2PublisherPathPolylineNode.h"
+#include "vtkROS2SubscriberPathPolylineNode.h"
 #include "vtkROS2PublisherImageNode.h"
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2PublisherPointCloudNode.h"
@@ -44,6 +46,16 @@
 #include "vtkROS2SubscriberJointStateNode.h"
 #include "vtkROS2PublisherImuNode.h"
 #include "vtkROS2SubscriberImuNode.h"
+#include "vtkROS2PublisherCameraInfoNode.h"
+#include "vtkROS2SubscriberCameraInfoNode.h"
+#include "vtkROS2PublisherCameraDistortionNode.h"
+#include "vtkROS2SubscriberCameraDistortionNode.h"
+#include "vtkROS2PublisherJoyAxesNode.h"
+#include "vtkROS2SubscriberJoyAxesNode.h"
+#include "vtkROS2PublisherJoyButtonsNode.h"
+#include "vtkROS2SubscriberJoyButtonsNode.h"
+#include "vtkROS2PublisherCompressedImageNode.h"
+#include "vtkROS2SubscriberCompressedImageNode.h"
 #include "vtkROS2PublisherStringNode.h"
 #include "vtkROS2SubscriberStringNode.h"
 #include "vtkROS2PublisherBoolNode.h"
@@ -62,6 +74,8 @@
 #include "vtkROS2SubscriberIntTableNode.h"
 #include "vtkROS2PublisherDoubleTableNode.h"
 #include "vtkROS2SubscriberDoubleTableNode.h"
+#include "vtkROS2PublisherMarkerNode.h"
+#include "vtkROS2SubscriberMarkerNode.h"
 
 #include "vtkSetGet.h" // for vtkGenericWarningMacro
 
@@ -149,6 +163,10 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherPathNode> },
     { "Path", "vtkROS2SubscriberPathNode", "nav_msgs/msg/Path", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberPathNode> },
+    { "PathPolyline", "vtkROS2PublisherPathPolylineNode", "nav_msgs/msg/Path", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherPathPolylineNode> },
+    { "PathPolyline", "vtkROS2SubscriberPathPolylineNode", "nav_msgs/msg/Path", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberPathPolylineNode> },
     { "Image", "vtkROS2PublisherImageNode", "sensor_msgs/msg/Image", NodeDirection::Publisher,
       &CreateNode<vtkROS2PublisherImageNode> },
     { "Image", "vtkROS2SubscriberImageNode", "sensor_msgs/msg/Image", NodeDirection::Subscriber,
@@ -177,6 +195,26 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherImuNode> },
     { "Imu", "vtkROS2SubscriberImuNode", "sensor_msgs/msg/Imu", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberImuNode> },
+    { "CameraInfo", "vtkROS2PublisherCameraInfoNode", "sensor_msgs/msg/CameraInfo", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherCameraInfoNode> },
+    { "CameraInfo", "vtkROS2SubscriberCameraInfoNode", "sensor_msgs/msg/CameraInfo", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberCameraInfoNode> },
+    { "CameraDistortion", "vtkROS2PublisherCameraDistortionNode", "sensor_msgs/msg/CameraInfo", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherCameraDistortionNode> },
+    { "CameraDistortion", "vtkROS2SubscriberCameraDistortionNode", "sensor_msgs/msg/CameraInfo", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberCameraDistortionNode> },
+    { "JoyAxes", "vtkROS2PublisherJoyAxesNode", "sensor_msgs/msg/Joy", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherJoyAxesNode> },
+    { "JoyAxes", "vtkROS2SubscriberJoyAxesNode", "sensor_msgs/msg/Joy", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberJoyAxesNode> },
+    { "JoyButtons", "vtkROS2PublisherJoyButtonsNode", "sensor_msgs/msg/Joy", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherJoyButtonsNode> },
+    { "JoyButtons", "vtkROS2SubscriberJoyButtonsNode", "sensor_msgs/msg/Joy", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberJoyButtonsNode> },
+    { "CompressedImage", "vtkROS2PublisherCompressedImageNode", "sensor_msgs/msg/CompressedImage", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherCompressedImageNode> },
+    { "CompressedImage", "vtkROS2SubscriberCompressedImageNode", "sensor_msgs/msg/CompressedImage", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberCompressedImageNode> },
     { "String", "vtkROS2PublisherStringNode", "std_msgs/msg/String", NodeDirection::Publisher,
       &CreateNode<vtkROS2PublisherStringNode> },
     { "String", "vtkROS2SubscriberStringNode", "std_msgs/msg/String", NodeDirection::Subscriber,
@@ -213,6 +251,10 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherDoubleTableNode> },
     { "DoubleTable", "vtkROS2SubscriberDoubleTableNode", "std_msgs/msg/Float64MultiArray", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberDoubleTableNode> },
+    { "Marker", "vtkROS2PublisherMarkerNode", "visualization_msgs/msg/Marker", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherMarkerNode> },
+    { "Marker", "vtkROS2SubscriberMarkerNode", "visualization_msgs/msg/Marker", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberMarkerNode> },
   };
   auto& registry = ros2vtk::scene::NodeClassRegistry::instance();
   for (const NodeClassInfo& info : classes)

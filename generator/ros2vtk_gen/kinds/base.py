@@ -35,8 +35,12 @@ class Shape:
     primitives: Tuple[str, ...] = ()
     members: Tuple[Tuple[str, "Shape"], ...] = ()
     sequence: bool = False
+    # N > 0: a fixed array T[N] of exactly that size (CameraInfo's float64[9] K).
+    array_size: int = 0
 
     def describe(self) -> str:
+        if self.array_size:
+            return f"{' or '.join(self.primitives)}[{self.array_size}]"
         if self.primitives:
             text = " or ".join(self.primitives)
         elif self.members:
@@ -46,8 +50,8 @@ class Shape:
         return f"sequence of {text}" if self.sequence else text
 
 
-def prim(*names: str, sequence: bool = False) -> Shape:
-    return Shape(primitives=names, sequence=sequence)
+def prim(*names: str, sequence: bool = False, array_size: int = 0) -> Shape:
+    return Shape(primitives=names, sequence=sequence, array_size=array_size)
 
 
 def struct(sequence: bool = False, **members: Shape) -> Shape:

@@ -1,0 +1,55 @@
+// ros2vtk — a display marker (visualization_msgs/Marker: a shape, its pose, size and colour, or
+// a list of points) <-> a vtkPolyData to draw, built with VTK's sources (vtkCubeSource,
+// vtkSphereSource, vtkCylinderSource, vtkArrowSource) in the scene's units.
+//
+// The shape is an enum here: the template of kind `marker` maps the message's type constants
+// to it, so nothing below knows a ROS constant.
+#ifndef ros2vtk_convert_Marker_hpp
+#define ros2vtk_convert_Marker_hpp
+
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+namespace ros2vtk {
+namespace convert {
+
+enum class MarkerShape
+{
+  Arrow,     ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z
+  Cube,      ///< side lengths scale.x, y, z
+  Sphere,    ///< diameters scale.x, y, z
+  Cylinder,  ///< along +z: diameters scale.x, y, height scale.z
+  LineStrip, ///< `points` (in the marker's frame) joined by one polyline
+  Points,    ///< `points` as vertices
+  Unsupported,
+};
+
+struct Marker
+{
+  MarkerShape shape = MarkerShape::Unsupported;
+  double position[3] = { 0, 0, 0 };
+  double orientation[4] = { 0, 0, 0, 1 }; ///< x, y, z, w
+  double scale[3] = { 1, 1, 1 };
+  double color[4] = { 1, 1, 1, 1 }; ///< r, g, b, a in 0..1
+  std::vector<double> points;       ///< flat x0 y0 z0 x1 ..., in the marker's frame
+};
+
+/// ROS -> VTK: positions, sizes and points are lengths (times length_scale); the pose places
+/// the shape. The poly data gets the surface (or line, or vertices) and an unsigned char RGBA
+/// point array "Color" (set as its scalars). Unsupported shapes, a zero or non-finite size of a
+/// solid shape, or a non-unit quaternion are refused; the output is then untouched.
+bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData* poly_data,
+  std::string* error);
+
+/// VTK -> ROS: a poly data with one line cell becomes a LineStrip of the points along it,
+/// anything else Points of all its points; identity pose, scale 1 VTK unit (1 mm when scaled)
+/// and the colour of the first tuple of its "Color" array (opaque white without one).
+bool poly_data_to_marker(vtkPolyData* poly_data, double length_scale, Marker* marker,
+  std::string* error);
+
+} // namespace convert
+} // namespace ros2vtk
+
+#endif

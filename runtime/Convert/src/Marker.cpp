@@ -1,0 +1,230 @@
+// ros2vtk — a display marker <-> vtkPolyData through VTK's shape sources (Marker.hpp).
+#include "ros2vtk/convert/Marker.hpp"
+
+#include "ros2vtk/convert/Polyline.hpp"
+
+#include "Validation.hpp"
+
+#include <vtkArrowSource.h>
+#include <vtkCellArray.h>
+#include <vtkCubeSource.h>
+#include <vtkCylinderSource.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkQuaternion.h>
+#include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+
+namespace ros2vtk {
+namespace convert {
+
+using detail::fail;
+
+bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData* poly_data,
+  std::string* error)
+{
+  const char* where = "marker_to_poly_data";
+  if (!poly_data)
+  {
+    return fail(error, where, "output poly data is null");
+  }
+  if (!detail::check_length_scale(length_scale, where, error))
+  {
+    return false;
+  }
+  if (!detail::all_finite(marker.position, 3) || !detail::all_finite(marker.orientation, 4) ||
+    !detail::all_finite(marker.scale, 3) || !detail::all_finite(marker.color, 4))
+  {
+    return fail(error, where, "the pose, scale or colour has a NaN or infinite value");
+  }
+  const double* q = marker.orientation;
+  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (std::fabs(norm - 1.0) > 1e-3)
+  {
+    return fail(error, where, "the orientation is not a unit quaternion (norm " +
+        detail::number_text(norm) + ")");
+  }
+  const bool solid = marker.shape == MarkerShape::Arrow || marker.shape == MarkerShape::Cube ||
+    marker.shape == MarkerShape::Sphere || marker.shape == MarkerShape::Cylinder;
+  if (solid && (marker.scale[0] <= 0 || marker.scale[1] <= 0 || marker.scale[2] <= 0))
+  {
+    return fail(error, where, "a solid marker needs a positive scale on x, y and z");
+  }
+  const double sx = marker.scale[0] * length_scale, sy = marker.scale[1] * length_scale,
+               sz = marker.scale[2] * length_scale;
+
+  vtkNew<vtkPolyData> shape; // in the marker's frame, scene units
+  switch (marker.shape)
+  {
+    case MarkerShape::Cube:
+    {
+      vtkNew<vtkCubeSource> source;
+      source->SetXLength(sx);
+      source->SetYLength(sy);
+      source->SetZLength(sz);
+      source->Update();
+      shape->DeepCopy(source->GetOutput());
+      break;
+    }
+    case MarkerShape::Sphere:
+    case MarkerShape::Cylinder:
+    case MarkerShape::Arrow:
+    {
+      // Unit shapes, then stretched: a sphere of diameter 1; a cylinder of diameter 1 and
+      // height 1 turned from VTK's y axis onto z; an arrow of length 1 along x whose head is
+      // 1 wide, with the shaft scale.y / scale.z of it.
+      vtkSmartPointer<vtkPolyDataAlgorithm> source;
+      vtkNew<vtkTransform> unit;
+      if (marker.shape == MarkerShape::Sphere)
+      {
+        auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+        sphere->SetRadius(0.5);
+        sphere->SetThetaResolution(24);
+        sphere->SetPhiResolution(17); // 11.25 degree steps: the equator is sampled
+        source = sphere;
+        unit->Scale(sx, sy, sz);
+      }
+      else if (marker.shape == MarkerShape::Cylinder)
+      {
+        auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
+        cylinder->SetRadius(0.5);
+        cylinder->SetHeight(1.0);
+        cylinder->SetResolution(24);
+        source = cylinder;
+        unit->Scale(sx, sy, sz);
+        unit->RotateX(90.0);
+      }
+      else
+      {
+        auto arrow = vtkSmartPointer<vtkArrowSource>::New();
+        arrow->SetTipRadius(0.5);
+        arrow->SetTipLength(0.23);
+        arrow->SetShaftRadius(0.5 * sy / sz);
+        arrow->SetTipResolution(24);
+        arrow->SetShaftResolution(24);
+        source = arrow;
+        unit->Scale(sx, sz, sz);
+      }
+      vtkNew<vtkTransformPolyDataFilter> stretch;
+      stretch->SetInputConnection(source->GetOutputPort());
+      stretch->SetTransform(unit);
+      stretch->Update();
+      shape->DeepCopy(stretch->GetOutput());
+      break;
+    }
+    case MarkerShape::LineStrip:
+    case MarkerShape::Points:
+    {
+      if (!xyz_to_polyline(marker.points, length_scale, shape, error))
+      {
+        return false;
+      }
+      if (marker.shape == MarkerShape::Points)
+      {
+        vtkNew<vtkCellArray> vertices;
+        for (vtkIdType i = 0; i < shape->GetNumberOfPoints(); ++i)
+        {
+          vertices->InsertNextCell(1, &i);
+        }
+        shape->SetLines(nullptr);
+        shape->SetVerts(vertices);
+      }
+      break;
+    }
+    default:
+      return fail(error, where, "this marker type is not supported (supported: arrow, cube, "
+                                "sphere, cylinder, line strip, points)");
+  }
+
+  vtkNew<vtkTransform> pose;
+  pose->Translate(marker.position[0] * length_scale, marker.position[1] * length_scale,
+    marker.position[2] * length_scale);
+  vtkQuaterniond rotation(q[3] / norm, q[0] / norm, q[1] / norm, q[2] / norm);
+  double axis[3];
+  const double angle = rotation.GetRotationAngleAndAxis(axis);
+  if (angle != 0.0)
+  {
+    pose->RotateWXYZ(vtkMath::DegreesFromRadians(angle), axis);
+  }
+  vtkNew<vtkTransformPolyDataFilter> place;
+  place->SetInputData(shape);
+  place->SetTransform(pose);
+  place->Update();
+
+  vtkNew<vtkUnsignedCharArray> color;
+  color->SetName("Color");
+  color->SetNumberOfComponents(4);
+  const vtkIdType count = place->GetOutput()->GetNumberOfPoints();
+  color->SetNumberOfTuples(count);
+  unsigned char rgba[4];
+  for (int c = 0; c < 4; ++c)
+  {
+    const double v = std::min(1.0, std::max(0.0, marker.color[c]));
+    rgba[c] = static_cast<unsigned char>(std::lround(v * 255.0));
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    color->SetTypedTuple(i, rgba);
+  }
+  poly_data->DeepCopy(place->GetOutput());
+  poly_data->GetPointData()->SetScalars(color);
+  poly_data->Modified();
+  return true;
+}
+
+bool poly_data_to_marker(vtkPolyData* poly_data, double length_scale, Marker* marker,
+  std::string* error)
+{
+  const char* where = "poly_data_to_marker";
+  if (!poly_data || !marker)
+  {
+    return fail(error, where, poly_data ? "output marker is null" : "input poly data is null");
+  }
+  Marker out;
+  const bool line = poly_data->GetLines() && poly_data->GetLines()->GetNumberOfCells() == 1;
+  if (line)
+  {
+    if (!polyline_to_xyz(poly_data, length_scale, &out.points, error))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    vtkNew<vtkPolyData> pointsOnly;
+    pointsOnly->SetPoints(poly_data->GetPoints());
+    if (!polyline_to_xyz(pointsOnly, length_scale, &out.points, error))
+    {
+      return false;
+    }
+  }
+  out.shape = line ? MarkerShape::LineStrip : MarkerShape::Points;
+  for (double& s : out.scale)
+  {
+    s = 1.0 / length_scale;
+  }
+  vtkDataArray* color = poly_data->GetPointData()->GetArray("Color");
+  if (color && color->GetNumberOfTuples() > 0 &&
+    (color->GetNumberOfComponents() == 3 || color->GetNumberOfComponents() == 4))
+  {
+    const bool bytes = color->GetDataType() == VTK_UNSIGNED_CHAR;
+    for (int c = 0; c < color->GetNumberOfComponents(); ++c)
+    {
+      const double v = color->GetComponent(0, c);
+      out.color[c] = bytes ? v / 255.0 : v;
+    }
+  }
+  *marker = std::move(out);
+  return true;
+}
+
+} // namespace convert
+} // namespace ros2vtk
