@@ -893,23 +893,9 @@ void vtkROS2ActionClientNode::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 vtkROS2ActionClientNode* vtkROS2NodeNode::CreateAndAddActionClientNode(const char* type, const char* action)
 {
-  if (!this->CheckReadyFor("CreateAndAddActionClientNode"))
-  {
-    return nullptr;
-  }
-  if (!type || !action || !*action)
-  {
-    vtkErrorMacro("CreateAndAddActionClientNode: type and action name are required");
-    return nullptr;
-  }
-  if (this->GetActionClientNodeByAction(action))
-  {
-    vtkErrorMacro("CreateAndAddActionClientNode: this node has a client of " << action << " already");
-    return nullptr;
-  }
   vtkNew<vtkROS2ActionClientNode> node;
-  const bool attached = this->AdoptChild(ActionClientRole, node, (std::string("ros2:action_client:") + action).c_str(),
-    [&] { return node->Attach(this, type, action); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddActionClientNode", ActionClientRole, node, type, action, "action",
+    "this node has a client of ", "ros2:action_client:", [&] { return node->Attach(this, type, action); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -922,13 +908,7 @@ vtkROS2ActionClientNode* vtkROS2NodeNode::GetActionClientNodeByAction(const char
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteActionClientNode(const char* action)
 {
-  vtkROS2ActionClientNode* node = this->GetActionClientNodeByAction(action);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteActionClientNode: no client of " << (action ? action : ""));
-    return false;
-  }
-  return this->RemoveChild(ActionClientRole, node);
+  return this->RemoveKeyedChild("RemoveAndDeleteActionClientNode", ActionClientRole, action, "no client of ");
 }
 
 //------------------------------------------------------------------------------

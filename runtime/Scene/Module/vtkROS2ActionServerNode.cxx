@@ -609,23 +609,9 @@ void vtkROS2ActionServerNode::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 vtkROS2ActionServerNode* vtkROS2NodeNode::CreateAndAddActionServerNode(const char* type, const char* action)
 {
-  if (!this->CheckReadyFor("CreateAndAddActionServerNode"))
-  {
-    return nullptr;
-  }
-  if (!type || !action || !*action)
-  {
-    vtkErrorMacro("CreateAndAddActionServerNode: type and action name are required");
-    return nullptr;
-  }
-  if (this->GetActionServerNodeByAction(action))
-  {
-    vtkErrorMacro("CreateAndAddActionServerNode: this node serves " << action << " already");
-    return nullptr;
-  }
   vtkNew<vtkROS2ActionServerNode> node;
-  const bool attached = this->AdoptChild(ActionServerRole, node, (std::string("ros2:action_server:") + action).c_str(),
-    [&] { return node->Attach(this, type, action); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddActionServerNode", ActionServerRole, node, type, action, "action",
+    "this node serves ", "ros2:action_server:", [&] { return node->Attach(this, type, action); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -638,11 +624,5 @@ vtkROS2ActionServerNode* vtkROS2NodeNode::GetActionServerNodeByAction(const char
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteActionServerNode(const char* action)
 {
-  vtkROS2ActionServerNode* node = this->GetActionServerNodeByAction(action);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteActionServerNode: no server of " << (action ? action : ""));
-    return false;
-  }
-  return this->RemoveChild(ActionServerRole, node);
+  return this->RemoveKeyedChild("RemoveAndDeleteActionServerNode", ActionServerRole, action, "no server of ");
 }

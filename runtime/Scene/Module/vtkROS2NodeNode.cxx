@@ -662,6 +662,40 @@ bool vtkROS2NodeNode::AdoptChild(const char* role, vtkROS2SceneNode* child, cons
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2NodeNode::AdoptKeyedChild(const char* what, const char* role, vtkROS2SceneNode* child,
+  const char* type, const char* key, const char* argument, const char* duplicate, const char* namePrefix,
+  const std::function<bool()>& attach)
+{
+  if (!this->CheckReadyFor(what))
+  {
+    return false;
+  }
+  if (!type || !key || !*key)
+  {
+    vtkErrorMacro(<< what << ": type and " << argument << " name are required");
+    return false;
+  }
+  if (this->FindChildByName(role, key))
+  {
+    vtkErrorMacro(<< what << ": " << duplicate << key << " already");
+    return false;
+  }
+  return this->AdoptChild(role, child, (std::string(namePrefix) + key).c_str(), attach);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2NodeNode::RemoveKeyedChild(const char* what, const char* role, const char* key, const char* missing)
+{
+  vtkROS2SceneNode* child = this->FindChildByName(role, key);
+  if (!child)
+  {
+    vtkErrorMacro(<< what << ": " << missing << (key ? key : ""));
+    return false;
+  }
+  return this->RemoveChild(role, child);
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2NodeNode::CheckReadyFor(const char* what)
 {
   if (!this->Scene)

@@ -354,6 +354,15 @@ private:
   /// Names `child`, adds it to the scene and runs `attach`; on success references it under
   /// `role`, on failure removes it from the scene again.
   bool AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name, const std::function<bool()>& attach);
+  /// The create and remove paths of the kinds keyed by one ROS name (service and action clients
+  /// and servers), for their SlicerROS2 methods: `what` names the method in errors, `argument`
+  /// the key ("service"), `duplicate` / `missing` start the refusals ("this node serves ",
+  /// "no server of "). Create checks readiness and arguments, refuses a second child of the same
+  /// name, then adopts `child` named `namePrefix` + key.
+  bool AdoptKeyedChild(const char* what, const char* role, vtkROS2SceneNode* child, const char* type,
+    const char* key, const char* argument, const char* duplicate, const char* namePrefix,
+    const std::function<bool()>& attach);
+  bool RemoveKeyedChild(const char* what, const char* role, const char* key, const char* missing);
   /// CreateAndAddPublisherNode / SubscriberNode: the class mapped to `type`, or `newGeneric`'s
   /// node (a new reference) for a registered type without a mapping rule.
   vtkROS2SceneNode* CreateAndAddTopicNode(

@@ -642,23 +642,9 @@ void vtkROS2ServiceClientNode::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 vtkROS2ServiceClientNode* vtkROS2NodeNode::CreateAndAddServiceClientNode(const char* type, const char* service)
 {
-  if (!this->CheckReadyFor("CreateAndAddServiceClientNode"))
-  {
-    return nullptr;
-  }
-  if (!type || !service || !*service)
-  {
-    vtkErrorMacro("CreateAndAddServiceClientNode: type and service name are required");
-    return nullptr;
-  }
-  if (this->GetServiceClientNodeByService(service))
-  {
-    vtkErrorMacro("CreateAndAddServiceClientNode: this node has a client of " << service << " already");
-    return nullptr;
-  }
   vtkNew<vtkROS2ServiceClientNode> node;
-  const bool attached = this->AdoptChild(ServiceClientRole, node, (std::string("ros2:client:") + service).c_str(),
-    [&] { return node->Attach(this, type, service); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddServiceClientNode", ServiceClientRole, node, type, service, "service",
+    "this node has a client of ", "ros2:client:", [&] { return node->Attach(this, type, service); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -671,11 +657,5 @@ vtkROS2ServiceClientNode* vtkROS2NodeNode::GetServiceClientNodeByService(const c
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteServiceClientNode(const char* service)
 {
-  vtkROS2ServiceClientNode* node = this->GetServiceClientNodeByService(service);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteServiceClientNode: no client of " << (service ? service : ""));
-    return false;
-  }
-  return this->RemoveChild(ServiceClientRole, node);
+  return this->RemoveKeyedChild("RemoveAndDeleteServiceClientNode", ServiceClientRole, service, "no client of ");
 }

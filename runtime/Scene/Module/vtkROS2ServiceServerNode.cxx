@@ -464,23 +464,9 @@ void vtkROS2ServiceServerNode::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 vtkROS2ServiceServerNode* vtkROS2NodeNode::CreateAndAddServiceServerNode(const char* type, const char* service)
 {
-  if (!this->CheckReadyFor("CreateAndAddServiceServerNode"))
-  {
-    return nullptr;
-  }
-  if (!type || !service || !*service)
-  {
-    vtkErrorMacro("CreateAndAddServiceServerNode: type and service name are required");
-    return nullptr;
-  }
-  if (this->GetServiceServerNodeByService(service))
-  {
-    vtkErrorMacro("CreateAndAddServiceServerNode: this node serves " << service << " already");
-    return nullptr;
-  }
   vtkNew<vtkROS2ServiceServerNode> node;
-  const bool attached = this->AdoptChild(ServiceServerRole, node, (std::string("ros2:server:") + service).c_str(),
-    [&] { return node->Attach(this, type, service); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddServiceServerNode", ServiceServerRole, node, type, service, "service",
+    "this node serves ", "ros2:server:", [&] { return node->Attach(this, type, service); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -493,11 +479,5 @@ vtkROS2ServiceServerNode* vtkROS2NodeNode::GetServiceServerNodeByService(const c
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteServiceServerNode(const char* service)
 {
-  vtkROS2ServiceServerNode* node = this->GetServiceServerNodeByService(service);
-  if (!node)
-  {
-    vtkErrorMacro("RemoveAndDeleteServiceServerNode: no server of " << (service ? service : ""));
-    return false;
-  }
-  return this->RemoveChild(ServiceServerRole, node);
+  return this->RemoveKeyedChild("RemoveAndDeleteServiceServerNode", ServiceServerRole, service, "no server of ");
 }
