@@ -436,3 +436,19 @@ def test_a_xacro_file_that_xacro_rejects_is_a_failed_state_with_xacros_words(log
         robot.GlobalWarningDisplayOn()
     state = robot.GetRobotState()
     assert 'xacro failed' in state and 'unknown macro name: xacro:nosuch' in state, state
+
+
+def test_removing_a_robot_after_its_own_subscriber_left_the_scene_reports_nothing(logic):
+    # What clearing a scene does (the demo's exit printed "RemoveAndDeleteSubscriberNode: no
+    # subscriber on '/robot_description'"): the robot's own source leaves first.
+    node = logic.GetDefaultROS2Node()
+    robot = node.CreateAndAddRobotNodeFromTopic('solo', '/solo/robot_description', '', '')
+    assert robot is not None
+    subscriber = node.GetSubscriberNodeByTopic('/solo/robot_description')
+    assert subscriber is not None
+    errors = []
+    node.AddObserver('ErrorEvent', lambda caller, event: errors.append(event))
+    logic.GetScene().RemoveNode(subscriber)
+    assert node.RemoveAndDeleteRobotNode('solo')
+    assert errors == []
+    assert node.GetRobotNodeByName('solo') is None

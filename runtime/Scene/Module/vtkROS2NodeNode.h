@@ -226,7 +226,8 @@ public:
   ///@}
 
   /// Every frame of this node's tf buffer that has a transform, as tf2's allFramesAsYAML
-  /// (`ros2 run tf2_tools view_frames`): per frame its parent, broadcaster (authority), rate,
+  /// (`ros2 run tf2_tools view_frames`): per frame its parent, broadcaster (the node that sent
+  /// its newest transform, from the writer's ros_discovery_info announcement), rate,
   /// newest and oldest stamp, buffer length, and the delay of the newest transform to the
   /// node's current time. Static frames have stamp 0. "[]" when the buffer holds nothing,
   /// "" before Create. Subscribes to /tf and /tf_static on first use, as lookups do.

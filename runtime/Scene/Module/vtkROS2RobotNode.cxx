@@ -1036,13 +1036,18 @@ void vtkROS2RobotNode::ReleaseSource()
     source->RemoveObserver(internals.SourceObserverTag);
   }
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  // Only while the ROS node still holds it: when a whole scene is cleared, the source may have
+  // left before the robot (asking to remove it again would report an error nobody made).
   if (source && internals.OwnsSourceNode && rosNode)
   {
     if (internals.Source == "parameter")
     {
-      rosNode->RemoveAndDeleteParameterNode(internals.ParameterNodeName.c_str());
+      if (rosNode->GetParameterNodeByNode(internals.ParameterNodeName.c_str()) == source)
+      {
+        rosNode->RemoveAndDeleteParameterNode(internals.ParameterNodeName.c_str());
+      }
     }
-    else
+    else if (rosNode->GetSubscriberNodeByTopic(internals.Topic.c_str()) == source)
     {
       rosNode->RemoveAndDeleteSubscriberNode(internals.Topic.c_str());
     }
