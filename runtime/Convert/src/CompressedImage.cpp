@@ -205,6 +205,64 @@ std::string png_problem(const std::vector<uint8_t>& d)
   return "";
 }
 
+// What is wrong with JPEG data, checked up to the start of the scan, or "". VTK 9.1's memory
+// source for libjpeg reads past the end of the buffer when a marker segment's length runs past it
+// (a segfault under AddressSanitizer on mutated data, reading whatever follows the buffer
+// otherwise), so every segment before the scan must fit before libjpeg sees the bytes.
+std::string jpeg_problem(const std::vector<uint8_t>& d)
+{
+  size_t at = 2; // after SOI
+  bool frame = false;
+  while (true)
+  {
+    if (at >= d.size() || d[at] != 0xff)
+    {
+      return "no marker at byte " + std::to_string(at);
+    }
+    while (at < d.size() && d[at] == 0xff)
+    {
+      ++at; // fill bytes
+    }
+    if (at >= d.size())
+    {
+      return "the data ends inside a marker";
+    }
+    const uint8_t marker = d[at++];
+    if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7))
+    {
+      continue; // TEM, RSTn: no length
+    }
+    if (marker == 0xd8 || marker == 0xd9 || marker == 0x00)
+    {
+      return "unexpected marker 0xff" + std::string(marker == 0x00 ? "00" : marker == 0xd8 ? "d8" : "d9") +
+        " before the scan";
+    }
+    if (at + 2 > d.size())
+    {
+      return "the data ends inside a segment length";
+    }
+    const size_t length = (size_t(d[at]) << 8) | d[at + 1];
+    if (length < 2 || at + length > d.size())
+    {
+      return "a segment of " + std::to_string(length) + " bytes at byte " + std::to_string(at) +
+        " runs past the end of the data (" + std::to_string(d.size()) + " bytes)";
+    }
+    if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc)
+    {
+      frame = true; // SOFn
+    }
+    at += length;
+    if (marker == 0xda) // SOS: the entropy-coded data follows
+    {
+      if (!frame)
+      {
+        return "a scan before any frame header";
+      }
+      return at < d.size() ? "" : "no data after the scan header";
+    }
+  }
+}
+
 } // namespace
 
 bool compressed_to_image(const std::string& format, const std::vector<uint8_t>& data,
@@ -231,6 +289,13 @@ bool compressed_to_image(const std::string& format, const std::vector<uint8_t>& 
   }
   else if (starts_with(data, jpeg, sizeof(jpeg)))
   {
+    const std::string problem = jpeg_problem(data);
+    if (!problem.empty())
+    {
+      return fail(error, where,
+        "cannot decode the JPEG data (format '" + format + "', " + std::to_string(data.size()) +
+          " bytes): " + problem);
+    }
     reader = vtkSmartPointer<vtkJPEGReader>::New();
   }
   else
