@@ -124,7 +124,12 @@ def test_rclpy_client_gets_feedback_and_result_from_our_server(ros):
     expected = fibonacci_feedbacks(5)
     assert result['accepted'] is True, result
     assert result['status'] == STATUS_SUCCEEDED and result['sequence'] == expected[-1]
-    assert result['feedbacks'] == expected
+    # Feedback sent before our feedback writer has discovered the client's reader is not
+    # delivered (volatile, as with an rclpy server: wait_for_server only proves the client's side
+    # of discovery). What arrives is in order, ends with the last feedback, and skips only a
+    # prefix (the Jazzy client under CI load missed the first one).
+    feedbacks = result['feedbacks']
+    assert feedbacks and feedbacks == expected[len(expected) - len(feedbacks):], feedbacks
     code, out, err = ros.finish(server, timeout=40)
     assert code == 0, err
     served = last_json(out)
