@@ -5,9 +5,14 @@
 // spin; from there vtkROS2RobotNode::LoadRobotDescription parses it, loads every mesh and builds
 // the link transform (tf lookup) and model nodes: the same path the automatic load takes. Each of
 // the N robots is its own robot node (own name, own tf prefix) on the default ROS node; they stay
-// loaded, so VmRSS after the 1st and the Nth is the memory of 1 and N robots.
+// loaded, so VmRSS after the 1st and the Nth is the memory of 1 and N robots. Robot nodes share
+// one mesh cache (MeshCache), so loads 2..N are the cached reload of the same description.
 //
-//   bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots 10]
+// The baseline (--assimp-files, a text file of mesh paths, one per line): assimp's own import of
+// the same mesh files with the post-processing flags MeshLoader uses, timed in this process before
+// any robot loads, after every file was read once so both sides start from a warm page cache.
+//
+//   bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots 10] [--assimp-files LIST]
 #include "BenchCommon.hpp"
 
 #include "vtkROS2Logic.h"
@@ -17,6 +22,11 @@
 
 #include <vtkNew.h>
 
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -24,9 +34,51 @@
 #include <string>
 #include <vector>
 
+namespace {
+
+std::vector<std::string> read_lines(const std::string& path)
+{
+  std::vector<std::string> lines;
+  std::ifstream file(path);
+  for (std::string line; std::getline(file, line);)
+  {
+    if (!line.empty())
+      lines.push_back(line);
+  }
+  return lines;
+}
+
+/// assimp's import of every file, as MeshLoader calls it (flags and properties of load_with_assimp):
+/// total milliseconds, or -1 when a file cannot be imported.
+double assimp_import_ms(const std::vector<std::string>& files)
+{
+  for (const std::string& path : files) // warm the page cache for both sides
+  {
+    std::ifstream warm(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(warm)), std::istreambuf_iterator<char>());
+  }
+  const auto start = bench::Clock::now();
+  for (const std::string& path : files)
+  {
+    Assimp::Importer importer;
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene = importer.ReadFile(
+      path, aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    if (!scene)
+    {
+      std::fprintf(stderr, "bench_robot_load: assimp could not import %s\n", path.c_str());
+      return -1;
+    }
+  }
+  return bench::ms_between(start, bench::Clock::now());
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
-  std::string urdf_path;
+  std::string urdf_path, assimp_list;
   int robots = 10;
   for (int i = 1; i + 1 < argc; i += 2)
   {
@@ -37,15 +89,20 @@ int main(int argc, char** argv)
       setenv("AMENT_PREFIX_PATH", argv[i + 1], 1);
     else if (arg == "--robots")
       robots = std::atoi(argv[i + 1]);
+    else if (arg == "--assimp-files")
+      assimp_list = argv[i + 1];
   }
   std::ifstream file(urdf_path);
   if (urdf_path.empty() || !file || robots < 1)
   {
-    std::fprintf(stderr, "usage: bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots N]\n");
+    std::fprintf(stderr, "usage: bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots N] [--assimp-files LIST]\n");
     return 2;
   }
   const std::string xml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   const std::string folder = std::filesystem::path(urdf_path).parent_path().string();
+
+  const std::vector<std::string> assimp_files = assimp_list.empty() ? std::vector<std::string>() : read_lines(assimp_list);
+  const double assimp_ms = assimp_files.empty() ? -1 : assimp_import_ms(assimp_files);
 
   vtkNew<vtkROS2Logic> logic;
   vtkROS2NodeNode* node = logic->GetDefaultROS2Node();
@@ -93,6 +150,8 @@ int main(int argc, char** argv)
     .number("rss_empty_mib", rss_empty)
     .number("rss_1_mib", rss_one)
     .number("rss_n_mib", bench::rss_mib())
+    .number("assimp_files", static_cast<double>(assimp_files.size()))
+    .number("assimp_import_ms", assimp_ms)
     .text("path", "vtkROS2RobotNode::LoadRobotDescription (parse, meshes, link and model nodes)")
     .print();
   return 0;

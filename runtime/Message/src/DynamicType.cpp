@@ -281,6 +281,19 @@ void container_reallocate(DynamicContainer& c, size_t count)
   const Element& e = *c.element;
   unsigned char* data = count ? static_cast<unsigned char*>(::operator new(count * e.size)) : nullptr;
   const size_t kept = std::min(count, c.count);
+  if (is_primitive(e.type))
+  {
+    // Plain bytes: one copy and one fill, not a call per element (a 1.6 MB PointCloud2 `data`
+    // took 100x the generated decode element by element; see the decode benchmark).
+    if (kept)
+      std::memcpy(data, c.data, kept * e.size);
+    if (count > kept)
+      std::memset(data + kept * e.size, 0, (count - kept) * e.size);
+    ::operator delete(c.data);
+    c.data = data;
+    c.count = count;
+    return;
+  }
   for (size_t i = 0; i < count; ++i)
   {
     construct_element(e, data + i * e.size);
