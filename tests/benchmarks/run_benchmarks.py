@@ -492,7 +492,9 @@ def markdown(results: dict) -> str:
            'FASTDDS_BUILTIN_TRANSPORTS=UDPv4 (our Fast DDS 2.9 cannot share memory with rclpy\'s Fast DDS 3, '
            'so the rclpy baselines are kept on UDP too: stacks are compared, not transports). '
            'Raw samples are in build/bench/results.json.', '',
-           f'Run: {m["date"]}{" (**--quick smoke run: tiny samples**)" if results.get("quick") else ""}', '',
+           f'Run: {m["date"]}{" (**--quick smoke run: tiny samples**)" if results.get("quick") else ""}'
+           + ('; sections re-run with --merge: ' + ', '.join(f'{k} {v}' for k, v in results['section_runs'].items())
+              if results.get('section_runs') and len(results['section_runs']) < len(SECTIONS) else ''), '',
            '| machine | |', '| --- | --- |',
            f'| CPU | {m["cpu"]} |', f'| cores | {m["cores"]} |', f'| RAM | {m["ram_gib"]} GiB |',
            f'| OS | {m["os"]} |', f'| compiler | {m["compiler"]} ({m["build_type"]}) |',
@@ -1125,6 +1127,8 @@ def main() -> int:
     parser.add_argument('--build', type=Path, default=Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build')))
     parser.add_argument('--render', type=Path, help='only re-write the markdown from a results JSON')
     parser.add_argument('--strict', action='store_true', help='exit 1 when any section could not run')
+    parser.add_argument('--merge', action='store_true',
+                        help='keep the other sections of an earlier results JSON (re-run some, keep the report whole)')
     parser.add_argument('--json', type=Path)
     parser.add_argument('--markdown', type=Path)
     args = parser.parse_args()
@@ -1137,6 +1141,11 @@ def main() -> int:
         return 0
 
     results: dict[str, Any] = {'machine': machine(args.build), 'quick': args.quick, 'paper': PAPER, 'errors': {}}
+    if args.merge and json_path.exists():
+        earlier = json.loads(json_path.read_text())
+        results = dict(earlier, **{k: v for k, v in results.items() if k != 'errors'})
+        results['errors'] = dict(earlier.get('errors', {}))
+        results.setdefault('section_runs', {})
     progress(f'{results["machine"]["cpu"]}, {results["machine"]["cores"]} cores, '
              f'{results["machine"]["ram_gib"]} GiB; Fast DDS {results["machine"]["fastdds"]}')
     ctx = Context(args.build, args.quick)
@@ -1145,6 +1154,8 @@ def main() -> int:
         if name not in SECTIONS:
             parser.error(f'unknown benchmark {name!r}')
         progress(f'== {name}')
+        results['errors'].pop(name, None)
+        results.setdefault('section_runs', {})[name] = time.strftime('%Y-%m-%d %H:%M:%S UTC', time.gmtime())
         try:
             results[name] = SECTIONS[name](ctx)
         except Exception as error:  # a benchmark that cannot run is reported, the others go on

@@ -173,6 +173,54 @@ TEST(SceneNode, ReferencesResolveThroughTheSceneAndDieWithTheTarget)
   EXPECT_EQ(a->GetNumberOfNodeReferences("child"), 0);
 }
 
+// The scene indexes who refers to whom (vtkROS2Scene::NoteReferrer), so a removal visits only the
+// referrers: every way a reference can come into being must reach that index.
+TEST(SceneNode, EveryWayOfReferringIsForgottenWhenTheTargetGoes)
+{
+  vtkNew<vtkROS2Scene> scene;
+  auto target = AddNodeNode(scene, "target");
+  const std::string targetID = target->GetID();
+
+  vtkNew<vtkROS2NodeNode> joinedLater; // referred before it was in any scene
+  joinedLater->SetNodeReferenceID("parent", targetID.c_str());
+  ASSERT_TRUE(scene->AddNode(joinedLater));
+
+  auto rejoined = AddNodeNode(scene, "rejoined"); // left the scene and came back
+  rejoined->SetNodeReferenceID("parent", targetID.c_str());
+  ASSERT_TRUE(scene->RemoveNode(rejoined));
+  ASSERT_TRUE(scene->AddNode(rejoined));
+
+  auto gone = AddNodeNode(scene, "gone"); // removed first: keeps its reference, out of the scene
+  gone->SetNodeReferenceID("parent", targetID.c_str());
+  ASSERT_TRUE(scene->RemoveNode(gone));
+
+  ASSERT_TRUE(scene->RemoveNode(target));
+  EXPECT_EQ(joinedLater->GetNodeReferenceID("parent"), nullptr);
+  EXPECT_EQ(rejoined->GetNodeReferenceID("parent"), nullptr);
+  EXPECT_STREQ(gone->GetNodeReferenceID("parent"), targetID.c_str());
+}
+
+TEST(SceneNode, ReferencesReadFromAFileAreForgottenWhenTheTargetGoes)
+{
+  vtkNew<vtkROS2Scene> saved;
+  auto first = AddNodeNode(saved, "first"); // written before the node it refers to
+  auto later = AddNodeNode(saved, "later");
+  first->AddNodeReferenceID("watch", later->GetID());
+  later->AddNodeReferenceID("watch", first->GetID());
+
+  vtkNew<vtkROS2Scene> restored;
+  ASSERT_TRUE(restored->ReadFromXMLString(saved->WriteToXMLString().c_str()));
+  vtkROS2SceneNode* firstBack = restored->GetFirstNodeByName("first");
+  vtkROS2SceneNode* laterBack = restored->GetFirstNodeByName("later");
+  ASSERT_NE(firstBack, nullptr);
+  ASSERT_NE(laterBack, nullptr);
+  ASSERT_EQ(firstBack->GetNodeReference("watch"), laterBack);
+  ASSERT_TRUE(restored->RemoveNode(laterBack));
+  EXPECT_EQ(firstBack->GetNodeReferenceID("watch"), nullptr);
+  restored->Clear();
+  EXPECT_EQ(restored->GetNumberOfNodes(), 0);
+}
+
 TEST(SceneNode, AReferenceOutsideASceneDoesNotResolve)
 {
   vtkNew<vtkROS2NodeNode> loose;

@@ -14,6 +14,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace
@@ -31,6 +33,9 @@ public:
   std::map<std::string, vtkROS2SceneNode*, std::less<>> ByID; // less<>: find(const char*) copies nothing
   std::map<std::string, int> NextIndexByClass; // for `<ClassName><n>` IDs
   std::string RemovalReason; // while ClearBecause runs: why the nodes leave
+  // referenced ID -> nodes of this scene that gained a reference to it (a superset: a node that
+  // dropped the reference since is visited for nothing, never missed).
+  std::unordered_map<std::string, std::unordered_set<vtkROS2SceneNode*>> Referrers;
 
   std::string UniqueID(const std::string& className)
   {
@@ -103,8 +108,11 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
     return false;
   }
   auto& nodes = this->Internals->Nodes;
-  auto it = std::find(nodes.begin(), nodes.end(), node);
-  if (it == nodes.end())
+  // From the back: Clear removes the newest node first.
+  auto last = [&nodes](vtkROS2SceneNode* wanted) {
+    return std::find(nodes.rbegin(), nodes.rend(), wanted);
+  };
+  if (last(node) == nodes.rend())
   {
     vtkErrorMacro("RemoveNode: node is not in this scene");
     return false;
@@ -114,15 +122,48 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
   const std::string id = node->GetID();
   // Lets it release ROS resources while the scene is intact.
   node->SetSceneAndID(nullptr, id.c_str(), this->Internals->RemovalReason);
-  nodes.erase(std::find(nodes.begin(), nodes.end(), node));
+  nodes.erase(std::next(last(node)).base());
   this->Internals->ByID.erase(id);
-  for (const auto& other : nodes)
+  auto& referrers = this->Internals->Referrers;
+  std::vector<std::string> roles;
+  node->GetNodeReferenceRoleList(roles);
+  for (const std::string& role : roles)
   {
-    other->ForgetReferencesTo(id.c_str());
+    for (int n = 0; n < node->GetNumberOfNodeReferences(role.c_str()); ++n)
+    {
+      const char* referenced = node->GetNthNodeReferenceID(role.c_str(), n);
+      auto entry = referenced ? referrers.find(referenced) : referrers.end();
+      if (entry != referrers.end())
+      {
+        entry->second.erase(node);
+      }
+    }
+  }
+  auto entry = referrers.find(id);
+  if (entry != referrers.end())
+  {
+    const std::unordered_set<vtkROS2SceneNode*> visit = std::move(entry->second);
+    referrers.erase(entry);
+    for (vtkROS2SceneNode* other : visit)
+    {
+      if (other->GetScene() == this)
+      {
+        other->ForgetReferencesTo(id.c_str());
+      }
+    }
   }
   this->Modified();
   this->InvokeEvent(NodeRemovedEvent, node);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2Scene::NoteReferrer(const std::string& referencedNodeID, vtkROS2SceneNode* referrer)
+{
+  if (referrer && referrer->GetScene() == this)
+  {
+    this->Internals->Referrers[referencedNodeID].insert(referrer);
+  }
 }
 
 //------------------------------------------------------------------------------

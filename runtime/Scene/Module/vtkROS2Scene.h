@@ -46,6 +46,10 @@ public:
   /// Clear, telling each node why it left (vtkROS2SceneNode::GetLeftSceneBecause): the owner of
   /// the scene is going away, so the nodes' later errors can name the cause.
   void ClearBecause(const std::string& reason);
+  /// Used by vtkROS2SceneNode when it gains a reference to `referencedNodeID`: the scene keeps
+  /// who refers to each ID, so removing a node visits only its referrers (a robot of 10 000 links
+  /// is some 30 000 nodes: visiting every node on each removal made closing it minutes long).
+  void NoteReferrer(const std::string& referencedNodeID, vtkROS2SceneNode* referrer);
 #endif
 
   int GetNumberOfNodes() const;

@@ -144,6 +144,7 @@ void vtkROS2SceneNode::SetNodeReferenceID(const char* role, const char* referenc
   else
   {
     this->Internals->References[role] = wanted;
+    this->NoteReferenceInScene(wanted.front());
   }
   ++this->ReferencesVersion;
   this->Modified();
@@ -158,6 +159,7 @@ void vtkROS2SceneNode::AddNodeReferenceID(const char* role, const char* referenc
     return;
   }
   this->Internals->References[role].emplace_back(referencedNodeID);
+  this->NoteReferenceInScene(referencedNodeID);
   ++this->ReferencesVersion;
   this->Modified();
 }
@@ -268,6 +270,22 @@ void vtkROS2SceneNode::SetSceneAndID(vtkROS2Scene* scene, const char* id, const 
   }
   this->Scene = scene;
   this->Internals->ID = id ? id : "";
+  for (const auto& role : this->Internals->References)
+  {
+    for (const std::string& referenced : role.second)
+    {
+      this->NoteReferenceInScene(referenced);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SceneNode::NoteReferenceInScene(const std::string& referencedNodeID)
+{
+  if (this->Scene)
+  {
+    this->Scene->NoteReferrer(referencedNodeID, this);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -371,6 +389,7 @@ bool vtkROS2SceneNode::ReadXML(vtkXMLDataElement* element)
       // One role, two spellings in files of earlier versions.
       const bool legacy = std::string(role) == LegacyROS2NodeReferenceRole;
       this->Internals->References[legacy ? ROS2NodeReferenceRole : role].emplace_back(id);
+      this->NoteReferenceInScene(id);
     }
   }
   ++this->ReferencesVersion;

@@ -150,6 +150,10 @@ protected:
 private:
   vtkROS2SceneNode(const vtkROS2SceneNode&) = delete;
   void operator=(const vtkROS2SceneNode&) = delete;
+#ifndef __VTK_WRAP__
+  /// Tells the scene (if any) that this node refers to `referencedNodeID` (vtkROS2Scene::NoteReferrer).
+  void NoteReferenceInScene(const std::string& referencedNodeID);
+#endif
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
