@@ -2,7 +2,7 @@
 """The benchmark suite (targets in markdown() below, results in docs/benchmarks.md): runs every measurement with its
 baseline in the same invocation, writes build/bench/results.json and docs/benchmarks.md.
 
-    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,sender_split,actions,decode,igtl,network]
+    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,sender_split,actions,decode,scale,igtl,network]
                       [--build DIR] [--json FILE] [--markdown FILE]
 
 Run through scripts/bench.sh (set-up, build, then this with the venv's python). Benchmarks
@@ -765,6 +765,35 @@ def markdown(results: dict) -> str:
                        f'{fmt(row["runtime_over_generated"], 2)} |')
         out.append('')
 
+    scale = results.get('scale')
+    if scale:
+        g, sub = scale['graph'], scale['subscribers']
+        out += ['## 12. Scale: a crowded graph, many subscribers', '',
+                f'An rclpy process holds {scale["nodes"]} nodes with {scale["topics"]} std_msgs/String topics '
+                '(tests/benchmarks/scale_peer.py). Discovery: from the creation of our ROS node until its graph queries '
+                'list every one of them (tests/benchmarks/bench_scale.cpp), beside an rclpy node joining the same '
+                'graph until `get_node_names` / `get_topic_names_and_types` list them, alternated. Then Spin() at '
+                '100 Hz with that graph known and nothing subscribed, and one `GetTopicNamesAndTypes()`.', '',
+                '| what | ours | rclpy node |', '| --- | --- | --- |',
+                f'| discovery of {scale["nodes"]} nodes / {scale["topics"]} topics, each run (ms) | '
+                f'{", ".join(f"{v:.0f}" for v in g["ours_discovery_ms"])} | '
+                f'{", ".join(f"{v:.0f}" for v in g["rclpy_discovery_ms"])} |',
+                f'| Spin(), median / p99 / max (ms, n={g["spin_ms"].get("n", 0)}) | '
+                f'{fmt(g["spin_ms"].get("median"))} / {fmt(g["spin_ms"].get("p99"))} / {fmt(g["spin_ms"].get("max"))} | |',
+                f'| GetTopicNamesAndTypes(), median (ms) | {fmt(g["query_ms"].get("median"))} | |', '',
+                f'{sub["count"]} subscriber nodes (the mapped String node) on {sub["count"]} topics an rclpy node publishes at '
+                f'100 Hz each: Spin() at 100 Hz takes every message of the last 10 ms. '
+                f'{sub["messages"]} messages in {scale["spins"]} spins; all subscribers receiving: {sub["all_receiving"]}.', '',
+                '| per spin | median | p90 | p99 | max | n |', '| --- | --- | --- | --- | --- | --- |',
+                f'| Spin() (ms) | {stat_cells(sub["spin_ms"])} |',
+                f'| messages taken | {stat_cells(sub["messages_per_spin"], 0)} |',
+                f'| spin cost per message (µs) | {stat_cells(sub["per_message_us"], 1)} |', '',
+                f'Memory: {sub["rss_per_subscriber_mib"] * 1024:.0f} KiB of RSS per subscriber node (RSS before and after '
+                f'creating the {sub["count"]}).', '']
+        ours_d, rclpy_d = statistics.median(g['ours_discovery_ms']), statistics.median(g['rclpy_discovery_ms'])
+        targets.append((f'discovery of {scale["topics"]} topics no slower than an rclpy node (medians)',
+                        f'{ours_d / rclpy_d:.2f}×', verdict(ours_d <= rclpy_d)))
+
     if targets:
         out += ['## Targets', '', '| target | measured | verdict |', '| --- | --- | --- |']
         out += [f'| {t} | {v} | {ok} |' for t, v, ok in targets]
@@ -919,6 +948,50 @@ def bench_decode(ctx: 'Context') -> dict:
                  f'{row["runtime_ms"]["median"]:.3f} ms ({row["runtime_over_generated"]:.2f}x), '
                  f'{row["bytes"]:.0f} bytes')
     return {'count': count, 'cases': cases}
+
+
+# ----------------------------------------------------------------------------- 12. scale
+def bench_scale(ctx: 'Context') -> dict:
+    """Our node on a crowded graph (tests/benchmarks/bench_scale.cpp, scale_peer.py): discovery time
+    of 50 rclpy nodes with 500 topics beside an rclpy node joining the same graph, spin and graph
+    query cost with that graph known; then 100 subscriber nodes at 100 Hz each."""
+    nodes, per_node = (5, 4) if ctx.quick else (50, 10)
+    streams = 5 if ctx.quick else 100
+    spins = 50 if ctx.quick else 500
+    peer = REPO / 'tests' / 'benchmarks' / 'scale_peer.py'
+    program = ctx.build / 'tests' / 'benchmarks' / 'bench_scale'
+    out: dict[str, Any] = {'nodes': nodes, 'topics': nodes * per_node, 'streams': streams, 'spins': spins}
+    with Domain(224, ctx.build) as session:
+        wait_ready(session.start([VENV_PYTHON, peer, 'graph', '--nodes', nodes, '--topics-per-node', per_node]),
+                   timeout=120)
+        runs = []
+        for _ in range(1 if ctx.quick else 3):  # joining the same graph, alternated
+            baseline = last_json(session.start([VENV_PYTHON, peer, 'observe', '--nodes', nodes,
+                                                '--topics', nodes * per_node]), timeout=90)
+            ours = last_json(session.start([program, '--mode', 'graph', '--nodes', nodes,
+                                            '--topics', nodes * per_node, '--spins', spins]), timeout=90 + spins / 50)
+            runs.append((ours['discovery_ms'], baseline['discovery_ms']))
+        out['graph'] = {'ours_discovery_ms': [r[0] for r in runs], 'rclpy_discovery_ms': [r[1] for r in runs],
+                        'spin_ms': summary(ours['spin_ms']), 'query_ms': summary(ours['query_ms']),
+                        'topics_seen': ours['topics_seen'], 'nodes_seen': ours['nodes_seen']}
+    g = out['graph']
+    progress(f'scale: {nodes} nodes / {nodes * per_node} topics discovered in '
+             f'{statistics.median(g["ours_discovery_ms"]):.0f} ms (rclpy node {statistics.median(g["rclpy_discovery_ms"]):.0f} ms); '
+             f'spin {g["spin_ms"]["median"]:.3f} ms, topic listing {g["query_ms"]["median"]:.2f} ms')
+    with Domain(224, ctx.build) as session:
+        wait_ready(session.start([VENV_PYTHON, peer, 'stream', '--topics', streams, '--rate', 100]), timeout=60)
+        result = last_json(session.start([program, '--mode', 'subscribers', '--topics', streams, '--spins', spins]),
+                           timeout=120 + spins / 50)
+    out['subscribers'] = {'count': result['subscribers'], 'all_receiving': bool(result['all_receiving']),
+                          'messages': result['messages'], 'spin_ms': summary(result['spin_ms']),
+                          'messages_per_spin': summary(result['messages_per_spin']),
+                          'per_message_us': summary(result['per_message_us']),
+                          'rss_per_subscriber_mib': (result['rss_after_mib'] - result['rss_before_mib']) / result['subscribers']}
+    sub = out['subscribers']
+    progress(f'scale: {streams} subscribers at 100 Hz: spin {sub["spin_ms"]["median"]:.3f} ms for '
+             f'{sub["messages_per_spin"]["median"]:.0f} messages ({sub["per_message_us"]["median"]:.1f} us each), '
+             f'{sub["rss_per_subscriber_mib"] * 1024:.0f} KiB per subscriber')
+    return out
 
 
 # ----------------------------------------------------------------------------- 9. sender split (issue 17)
@@ -1116,6 +1189,7 @@ SECTIONS: dict[str, Callable[[Context], dict]] = {
     'spin': bench_spin, 'round_trip': bench_round_trip, 'throughput': bench_throughput,
     'robot_load': bench_robot_load, 'generator': bench_generator, 'services': bench_services,
     'sender_split': bench_sender_split, 'actions': bench_actions, 'decode': bench_decode,
+    'scale': bench_scale,
     'igtl': bench_igtl, 'network': bench_network,
 }
 
