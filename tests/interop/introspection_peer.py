@@ -1,18 +1,23 @@
 """The rclpy side of the introspection parity test (tests/interop/test_introspection.py).
 
     introspection_peer.py node --node rclpy_introspect [--seconds S]
-        an rclpy node with the endpoints of introspection_runner.py (same kinds, names, types);
-        prints {"ready": true} once created, then spins for S seconds.
+        an rclpy node with the endpoints of introspection_runner.py (same kinds, names, types),
+        action server and client included; prints {"ready": true} once created, then spins for
+        S seconds.
     introspection_peer.py query NODE [NODE ...] [--wait S] [--settle S]
         a third rclpy node that asks rclpy's graph API what `ros2 node info` asks for each NODE
         (a fully qualified name such as /slicer): publishers, subscribers, service servers and
-        clients with their types. Waits until every NODE shows its /introspect endpoints (or S
+        clients with their types (rclpy.Node.get_*_names_and_types_by_node), action servers and
+        clients with their types (rclpy.action.get_action_*_names_and_types_by_node, what
+        `ros2 node info` calls). Waits until every NODE shows its /introspect endpoints (or S
         seconds), then for the lists to stay unchanged for --settle seconds, and prints one JSON
         object {node: {"publishers": {name: [types]}, "subscribers": ..., "services": ...,
-        "clients": ...}}.
+        "clients": ..., "action_servers": ..., "action_clients": ...}, "qos": {node: {"publisher
+        <topic>": [qos]...}}} (the QoS of the node's endpoints on hidden `_action/` topics).
     introspection_peer.py describe NODE [NODE ...] --types TYPE [TYPE ...] [--wait S]
         calls each NODE's ~/get_type_description (REP 2011) for each TYPE with the hash rosidl
-        made for it (share/<pkg>/<msg|srv>/<Type>.json of the venv's wheels), then with a
+        made for it (share/<pkg>/<msg|srv|action>/<Type>.json of the venv's wheels; the types
+        rosidl synthesizes, such as pkg/srv/X_Event or pkg/action/X_SendGoal, are in X.json), then with a
         well-formed hash of no type and with a malformed one. Prints one JSON object
         {node: {"available": bool, "services": [names], "types": {TYPE: response},
         "unknown": response, "malformed": response}}; a response is the message as plain JSON
@@ -28,11 +33,14 @@ import sys
 import time
 
 import rclpy
+from rclpy.action import (ActionClient, ActionServer, get_action_client_names_and_types_by_node,
+                          get_action_server_names_and_types_by_node)
 from geometry_msgs.msg import PoseStamped
 from rosidl_generator_type_description import calculate_type_hash
 from sensor_msgs.msg import Image
 from std_msgs.msg import String
 from std_srvs.srv import SetBool, Trigger
+from test_msgs.action import Fibonacci
 from type_description_interfaces.srv import GetTypeDescription
 
 KINDS = {
@@ -41,12 +49,19 @@ KINDS = {
     'services': 'get_service_names_and_types_by_node',
     'clients': 'get_client_names_and_types_by_node',
 }
+# What `ros2 node info` (ros2node.api) asks rclpy.action for.
+ACTION_KINDS = {
+    'action_servers': get_action_server_names_and_types_by_node,
+    'action_clients': get_action_client_names_and_types_by_node,
+}
 # One endpoint per kind, as both nodes create them.
 EXPECTED = {
     'publishers': '/introspect/chatter',
     'subscribers': '/introspect/pose',
     'services': '/introspect/enable',
     'clients': '/introspect/trigger',
+    'action_servers': '/introspect/compute',
+    'action_clients': '/introspect/request',
 }
 
 
@@ -57,10 +72,15 @@ def cmd_node(args: argparse.Namespace) -> int:
     node.create_subscription(Image, '/introspect/image', lambda _: None, 10)
     node.create_service(SetBool, '/introspect/enable', lambda _, response: response)
     node.create_client(Trigger, '/introspect/trigger')
+    # Never asked for a goal: the server only needs to exist (the execute callback is unused).
+    server = ActionServer(node, Fibonacci, '/introspect/compute', lambda handle: Fibonacci.Result())
+    client = ActionClient(node, Fibonacci, '/introspect/request')
     print(json.dumps({'ready': True}), flush=True)
     end = time.monotonic() + args.seconds
     while time.monotonic() < end:
         rclpy.spin_once(node, timeout_sec=0.05)
+    client.destroy()
+    server.destroy()
     node.destroy_node()
     return 0
 
@@ -69,17 +89,52 @@ def node_info(node, full_name: str) -> dict:
     namespace, _, name = full_name.rpartition('/')
     namespace = namespace or '/'
     info = {}
-    for kind, method in KINDS.items():
+    queries = {kind: (lambda method=method: getattr(node, method)(name, namespace)) for kind, method in KINDS.items()}
+    queries.update({kind: (lambda function=function: function(node, name, namespace))
+                    for kind, function in ACTION_KINDS.items()})
+    for kind, query in queries.items():
         try:
-            pairs = getattr(node, method)(name, namespace)
+            pairs = query()
         except Exception as error:  # NodeNameNonExistentError while not discovered yet
             return {'error': f'{type(error).__name__}: {error}'}
         info[kind] = {topic: sorted(types) for topic, types in sorted(pairs)}
     return info
 
 
+def action_topic_qos(node, full_name: str, info: dict) -> dict:
+    """The QoS `ros2 topic info -v` prints for the node's endpoints on its actions' hidden
+    topics (<action>/_action/feedback, status): {"publisher <topic>": [qos], ...}, as discovery
+    announced them (history and depth are not announced: UNKNOWN and 0 for remote endpoints)."""
+    namespace, _, name = full_name.rpartition('/')
+    namespace = namespace or '/'
+    result = {}
+    for side, kind, method in (('publisher', 'publishers', node.get_publishers_info_by_topic),
+                               ('subscription', 'subscribers', node.get_subscriptions_info_by_topic)):
+        for topic in info[kind]:
+            if '/_action/' not in topic:
+                continue
+            profiles = []
+            for endpoint in method(topic):
+                if endpoint.node_name != name or endpoint.node_namespace != namespace:
+                    continue
+                qos = endpoint.qos_profile
+                profiles.append({
+                    'type': endpoint.topic_type,
+                    # the USER_DATA typehash (`ros2 topic info -v`: "Topic type hash"); Jazzy
+                    # rclpy reports it too.
+                    'type_hash': str(endpoint.topic_type_hash),
+                    'reliability': qos.reliability.name, 'durability': qos.durability.name,
+                    'history': qos.history.name, 'depth': qos.depth,
+                    'liveliness': qos.liveliness.name,
+                    'deadline_ns': qos.deadline.nanoseconds, 'lifespan_ns': qos.lifespan.nanoseconds,
+                    'liveliness_lease_duration_ns': qos.liveliness_lease_duration.nanoseconds,
+                })
+            result[f'{side} {topic}'] = sorted(profiles, key=json.dumps)
+    return result
+
+
 def complete(info: dict) -> bool:
-    return 'error' not in info and all(EXPECTED[kind] in info[kind] for kind in KINDS)
+    return 'error' not in info and all(name in info[kind] for kind, name in EXPECTED.items())
 
 
 def cmd_query(args: argparse.Namespace) -> int:
@@ -95,14 +150,20 @@ def cmd_query(args: argparse.Namespace) -> int:
         if (all(complete(info) for info in result.values())
                 and time.monotonic() - stable_since >= args.settle):
             break
+    result['qos'] = {target: action_topic_qos(node, target, info) for target, info in result.items()
+                     if 'error' not in info}
     print(json.dumps(result, sort_keys=True), flush=True)
     node.destroy_node()
     return 0
 
 
 def rosidl_hash(ros_type: str) -> str:
-    """The RIHS01 hash rosidl generated for `ros_type` (pkg/msg/Type or pkg/srv/Type)."""
+    """The RIHS01 hash rosidl generated for `ros_type` (pkg/msg/Type, pkg/srv/Type,
+    pkg/action/Type, or a type rosidl synthesizes: pkg/srv/X_Event, pkg/action/X_SendGoal...,
+    found in X.json beside X's own)."""
     package, kind, name = ros_type.split('/')
+    # rosidl type names are PascalCase, without underscores: X_SendGoal_Request is in X.json.
+    name = name.split('_')[0]
     # The wheels install share/ into the venv; a sourced ROS install lists its prefixes.
     prefixes = [sys.prefix] + os.environ.get('AMENT_PREFIX_PATH', '').split(os.pathsep)
     path = next(p for p in (os.path.join(prefix, 'share', package, kind, name + '.json') for prefix in prefixes)

@@ -8,6 +8,8 @@ the same kinds, names and types as introspection_peer.py's rclpy node:
     subscriber  /introspect/image    sensor_msgs/msg/Image
     service     /introspect/enable   std_srvs/srv/SetBool
     client      /introspect/trigger  std_srvs/srv/Trigger
+    action server  /introspect/compute  test_msgs/action/Fibonacci
+    action client  /introspect/request  test_msgs/action/Fibonacci
 
     introspection_runner.py [--seconds S]
 
@@ -38,6 +40,8 @@ def main() -> int:
         'image': node.CreateAndAddSubscriberNode('Image', '/introspect/image'),
         'server': node.CreateAndAddServiceServerNode('std_srvs/srv/SetBool', '/introspect/enable'),
         'client': node.CreateAndAddServiceClientNode('std_srvs/srv/Trigger', '/introspect/trigger'),
+        'action_server': node.CreateAndAddActionServerNode('test_msgs/action/Fibonacci', '/introspect/compute'),
+        'action_client': node.CreateAndAddActionClientNode('test_msgs/action/Fibonacci', '/introspect/request'),
     }
     quiet = ros2vtk.vtkROS2NodeNode()
     logic.GetScene().AddNode(quiet)

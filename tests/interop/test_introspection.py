@@ -1,6 +1,9 @@
 """Introspection parity (issue 19): what `ros2 node info` shows for an rclpy node —
 publishers, subscribers, service servers and clients with their types, read through rclpy's
-graph API (get_*_names_and_types_by_node) — comes out the same for our node.
+graph API (get_*_names_and_types_by_node), action servers and clients with their types, read
+through rclpy.action's get_action_{server,client}_names_and_types_by_node (what `ros2 node info`
+calls) — comes out the same for our node, and so do the hidden `<action>/_action/...` topics and
+services behind the actions (with their QoS, as `ros2 topic info -v` shows it).
 
 Our node (introspection_runner.py: the VTK-wrapped API's default node /slicer) and an rclpy node
 (introspection_peer.py node) create the same endpoints; a third rclpy process queries the graph
@@ -10,7 +13,9 @@ name replaced by `~` so /slicer/get_parameters compares with /rclpy_introspect/g
 
 Then the REP 2011 type description service both serve (~/get_type_description): the same rclpy
 process asks both nodes for every type they use, with the hash rosidl made for it, and our
-answers must equal rclpy's and hash (rosidl's calculate_type_hash) to rosidl's hash.
+answers must equal rclpy's and hash (rosidl's calculate_type_hash) to rosidl's hash; for types
+rclpy's node does not serve (the services' _Event messages, an action's Goal/Result/Feedback...)
+our answer must be rclpy's refusal.
 """
 from __future__ import annotations
 
@@ -23,7 +28,9 @@ from conftest import BUILD, HERE, VENV_PYTHON, Ros, _domains
 OURS = '/slicer'
 QUIET = '/slicer_quiet'  # ours, created with start_type_description_service false
 RCLPY = '/rclpy_introspect'
-KINDS = ('publishers', 'subscribers', 'services', 'clients')
+KINDS = ('publishers', 'subscribers', 'services', 'clients', 'action_servers', 'action_clients')
+# The hidden endpoints of an action (rcl_action), in the plain topic and service lists.
+HIDDEN_ACTION = '/_action/'
 
 
 def is_default(name: str, node: str) -> bool:
@@ -61,7 +68,7 @@ def graph():
         for node in (OURS, RCLPY):
             assert 'error' not in result[node], f'{node}: {result[node]}'
         query = ros.start([str(VENV_PYTHON), str(HERE / 'introspection_peer.py'), 'describe', OURS, RCLPY, QUIET,
-                           '--types', *DESCRIBED])
+                           '--types', *DESCRIBED, *NOT_SERVED])
         code, out, err = ros.finish(query, timeout=120)
         assert code == 0 and out.strip(), err
         result['descriptions'] = json.loads(out.strip().splitlines()[-1])
@@ -72,12 +79,30 @@ def graph():
 
 def test_rclpy_reference_node_shows_what_it_created(graph):
     theirs, _ = split(graph[RCLPY], RCLPY)
-    assert theirs == {
+    visible = {kind: {n: t for n, t in listed.items() if HIDDEN_ACTION not in n} for kind, listed in theirs.items()}
+    assert visible == {
         'publishers': {'/introspect/chatter': ['std_msgs/msg/String']},
         'subscribers': {'/introspect/pose': ['geometry_msgs/msg/PoseStamped'],
                         '/introspect/image': ['sensor_msgs/msg/Image']},
         'services': {'/introspect/enable': ['std_srvs/srv/SetBool']},
         'clients': {'/introspect/trigger': ['std_srvs/srv/Trigger']},
+        'action_servers': {'/introspect/compute': ['test_msgs/action/Fibonacci']},
+        'action_clients': {'/introspect/request': ['test_msgs/action/Fibonacci']},
+    }
+    # rcl_action's hidden endpoints: the server's three services and two publishers, the
+    # client's mirror set.
+    hidden = {kind: {n: t for n, t in theirs[kind].items() if HIDDEN_ACTION in n} for kind in KINDS[:4]}
+    assert hidden == {
+        'publishers': {'/introspect/compute/_action/feedback': ['test_msgs/action/Fibonacci_FeedbackMessage'],
+                       '/introspect/compute/_action/status': ['action_msgs/msg/GoalStatusArray']},
+        'subscribers': {'/introspect/request/_action/feedback': ['test_msgs/action/Fibonacci_FeedbackMessage'],
+                        '/introspect/request/_action/status': ['action_msgs/msg/GoalStatusArray']},
+        'services': {'/introspect/compute/_action/cancel_goal': ['action_msgs/srv/CancelGoal'],
+                     '/introspect/compute/_action/get_result': ['test_msgs/action/Fibonacci_GetResult'],
+                     '/introspect/compute/_action/send_goal': ['test_msgs/action/Fibonacci_SendGoal']},
+        'clients': {'/introspect/request/_action/cancel_goal': ['action_msgs/srv/CancelGoal'],
+                    '/introspect/request/_action/get_result': ['test_msgs/action/Fibonacci_GetResult'],
+                    '/introspect/request/_action/send_goal': ['test_msgs/action/Fibonacci_SendGoal']},
     }
 
 
@@ -86,6 +111,31 @@ def test_created_endpoints_match_rclpy(graph, kind):
     ours, _ = split(graph[OURS], OURS)
     theirs, _ = split(graph[RCLPY], RCLPY)
     assert ours[kind] == theirs[kind]
+
+
+def test_ros2_node_info_actions_match_rclpy(graph):
+    """What `ros2 node info` lists under Action Servers / Action Clients, and with
+    --include-hidden the `_action/` topics and services behind them, for ours as for rclpy's."""
+    ours, theirs = graph[OURS], graph[RCLPY]
+    assert theirs['action_servers'] and theirs['action_clients']
+    for kind in ('action_servers', 'action_clients'):
+        assert ours[kind] == theirs[kind], kind
+    for kind in KINDS[:4]:
+        hidden_ours = {n: t for n, t in ours[kind].items() if HIDDEN_ACTION in n}
+        hidden_theirs = {n: t for n, t in theirs[kind].items() if HIDDEN_ACTION in n}
+        assert hidden_theirs, kind
+        assert hidden_ours == hidden_theirs, kind
+
+
+def test_action_topic_qos_matches_rclpy(graph):
+    """The QoS discovery announces for the action's feedback and status publishers and
+    subscriptions (what `ros2 topic info -v` prints), ours as rclpy's."""
+    ours, theirs = graph['qos'][OURS], graph['qos'][RCLPY]
+    assert sorted(theirs) == [f'{side} {name}' for side, name in (
+        ('publisher', '/introspect/compute/_action/feedback'), ('publisher', '/introspect/compute/_action/status'),
+        ('subscription', '/introspect/request/_action/feedback'),
+        ('subscription', '/introspect/request/_action/status'))]
+    assert ours == theirs
 
 
 # The REP 2011 type description service rclpy nodes serve (start_type_description_service,
@@ -98,6 +148,21 @@ DESCRIBED = (
     'std_srvs/srv/SetBool', 'std_srvs/srv/Trigger',
     'rcl_interfaces/msg/Log', 'rcl_interfaces/msg/ParameterEvent', 'rcl_interfaces/srv/GetParameters',
     'rcl_interfaces/srv/SetParameters', 'type_description_interfaces/srv/GetTypeDescription',
+    # an action server and client: the action type itself (rcl_action registers it), its
+    # services' and topics' types.
+    'test_msgs/action/Fibonacci', 'test_msgs/action/Fibonacci_SendGoal', 'test_msgs/action/Fibonacci_GetResult',
+    'test_msgs/action/Fibonacci_FeedbackMessage', 'action_msgs/srv/CancelGoal', 'action_msgs/msg/GoalStatusArray',
+)
+# Types the same rclpy node answers "not in use" for (checked below: the expectation is rclpy's
+# answer): messages a service or action type only nests or synthesizes, such as the _Event
+# messages of service introspection (off by default, so no publisher) and an action's
+# Goal/Result/Feedback.
+NOT_SERVED = (
+    'std_srvs/srv/SetBool_Event', 'std_srvs/srv/SetBool_Request', 'action_msgs/srv/CancelGoal_Event',
+    'test_msgs/action/Fibonacci_SendGoal_Event', 'test_msgs/action/Fibonacci_GetResult_Event',
+    'test_msgs/action/Fibonacci_SendGoal_Request', 'test_msgs/action/Fibonacci_Goal',
+    'test_msgs/action/Fibonacci_Result', 'test_msgs/action/Fibonacci_Feedback',
+    'action_msgs/msg/GoalStatus', 'action_msgs/msg/GoalInfo', 'unique_identifier_msgs/msg/UUID',
 )
 
 
@@ -135,6 +200,19 @@ def test_our_type_description_equals_rclpys(graph, ros_type):
     # type_sources were not asked for (include_type_sources false): empty on both.
     assert ours['type_sources'] == theirs['type_sources'] == []
     assert ours['extra_information'] == theirs['extra_information']
+
+
+@pytest.mark.parametrize('ros_type', NOT_SERVED)
+def test_types_rclpy_does_not_serve_we_do_not_either(graph, ros_type):
+    """A type only nested in (or synthesized beside) the types in use is refused by rclpy's
+    node (rcl's node type cache holds the endpoints' own types); ours refuses it the same way."""
+    descriptions = graph['descriptions']
+    theirs = descriptions[RCLPY]['types'][ros_type]
+    ours = descriptions[OURS]['types'][ros_type]
+    assert theirs['successful'] is False, theirs['type_description']['type_description']['type_name']
+    assert ours['successful'] is False, ours['type_description']['type_description']['type_name']
+    assert ours['failure_reason'] == theirs['failure_reason']
+    assert ours['type_description'] == theirs['type_description']
 
 
 @pytest.mark.parametrize('request_kind', ['unknown', 'malformed'])

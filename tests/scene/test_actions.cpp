@@ -13,6 +13,7 @@
 
 #include "ros2vtk/wire/CdrWriter.hpp"
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/NodeTypeCache.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
 #include "ros2vtk/wire/QoS.hpp"
@@ -265,4 +266,31 @@ TEST_F(ActionTest, SavedSceneRestoresClientAndServer)
   ASSERT_NE(server, nullptr);
   EXPECT_STREQ(server->GetActionType(), "test_msgs/action/Fibonacci");
   other->GetScene()->Clear();
+}
+
+// rcl_action registers the action type (pkg/action/X) in the node's type cache beside its
+// services' and topics' types, so ~/get_type_description serves it while a client or server
+// exists (tests/interop/test_introspection.py checks the answer against rclpy's node).
+TEST_F(ActionTest, ActionTypeIsInTheNodeTypeCacheWhileAClientOrServerExists)
+{
+  const auto* fibonacci = ros2vtk::wire::find_action_type("test_msgs/action/Fibonacci");
+  ASSERT_NE(fibonacci, nullptr);
+  ASSERT_NE(fibonacci->description, nullptr);
+  const ros2vtk::wire::NodeTypeCache& ours = this->Node->GetParticipant()->type_cache();
+  const ros2vtk::wire::NodeTypeCache& others = this->Other->GetParticipant()->type_cache();
+  const std::string sendGoalHash = fibonacci->send_goal()->type_hash;
+  EXPECT_EQ(ours.find(fibonacci->type_hash), nullptr);
+  this->MakePair("/cached");
+  EXPECT_EQ(ours.find(fibonacci->type_hash), fibonacci->description);
+  EXPECT_EQ(others.find(fibonacci->type_hash), fibonacci->description);
+  EXPECT_NE(ours.find(sendGoalHash), nullptr);
+  // A second client of the same type counts; the type stays until the last one goes.
+  ASSERT_NE(this->Node->CreateAndAddActionClientNode("test_msgs/action/Fibonacci", "/cached_too"), nullptr);
+  ASSERT_TRUE(this->Node->RemoveAndDeleteActionClientNode("/cached"));
+  EXPECT_EQ(ours.find(fibonacci->type_hash), fibonacci->description);
+  ASSERT_TRUE(this->Node->RemoveAndDeleteActionClientNode("/cached_too"));
+  EXPECT_EQ(ours.find(fibonacci->type_hash), nullptr);
+  EXPECT_EQ(ours.find(sendGoalHash), nullptr);
+  ASSERT_TRUE(this->Other->RemoveAndDeleteActionServerNode("/cached"));
+  EXPECT_EQ(others.find(fibonacci->type_hash), nullptr);
 }

@@ -18,6 +18,7 @@
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"
 #include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/NodeTypeCache.hpp"
 #include "ros2vtk/wire/QoS.hpp"
 #include "ros2vtk/wire/Service.hpp"
 #include "ros2vtk/wire/Subscription.hpp"
@@ -91,6 +92,9 @@ public:
   std::unique_ptr<ros2vtk::wire::ServiceClient> CancelClient;
   std::unique_ptr<ros2vtk::wire::Subscription> FeedbackSubscription;
   std::unique_ptr<ros2vtk::wire::Subscription> StatusSubscription;
+  // The action type (pkg/action/X) in the node's type cache while the endpoints exist, as
+  // rcl_action registers it: ~/get_type_description serves it (docs/wire-interop.md).
+  ros2vtk::wire::NodeTypeCache::Registration ActionTypeRegistration;
 
   MessagePtr Goal;         // X_Goal the next SendGoal sends
   MessagePtr GoalRequest;  // X_SendGoal_Request of the current goal
@@ -141,6 +145,7 @@ public:
     this->CancelClient.reset();
     this->FeedbackSubscription.reset();
     this->StatusSubscription.reset();
+    this->ActionTypeRegistration = ros2vtk::wire::NodeTypeCache::Registration();
   }
 };
 
@@ -216,6 +221,7 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.CancelClient = std::move(cancelClient);
   internals.FeedbackSubscription = std::move(feedback);
   internals.StatusSubscription = std::move(status);
+  internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
   this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   return true;
 }

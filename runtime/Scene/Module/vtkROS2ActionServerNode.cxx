@@ -18,6 +18,7 @@
 #include "ros2vtk/wire/MessageYaml.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 #include "ros2vtk/wire/Publisher.hpp"
+#include "ros2vtk/wire/NodeTypeCache.hpp"
 #include "ros2vtk/wire/QoS.hpp"
 #include "ros2vtk/wire/Service.hpp"
 #include "ros2vtk/wire/Subscription.hpp"
@@ -93,6 +94,9 @@ public:
   std::unique_ptr<ros2vtk::wire::ServiceServer> CancelServer;
   std::unique_ptr<ros2vtk::wire::Publisher> FeedbackPublisher;
   std::unique_ptr<ros2vtk::wire::Publisher> StatusPublisher;
+  // The action type (pkg/action/X) in the node's type cache while the endpoints exist, as
+  // rcl_action registers it: ~/get_type_description serves it (docs/wire-interop.md).
+  ros2vtk::wire::NodeTypeCache::Registration ActionTypeRegistration;
   std::vector<Goal> Goals;
   const void* Deciding = nullptr; // X_Goal under GoalReceivedEvent
   bool RejectDeciding = false;
@@ -149,6 +153,7 @@ public:
     this->CancelServer.reset();
     this->FeedbackPublisher.reset();
     this->StatusPublisher.reset();
+    this->ActionTypeRegistration = ros2vtk::wire::NodeTypeCache::Registration();
     this->ROSNode = nullptr;
   }
 };
@@ -213,6 +218,7 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.CancelServer = std::move(cancel);
   internals.FeedbackPublisher = std::move(feedback);
   internals.StatusPublisher = std::move(status);
+  internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
   internals.Goals.clear();
   this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   return true;

@@ -656,6 +656,11 @@ const NodeTypeCache& Participant::type_cache() const
   return impl_->types;
 }
 
+NodeTypeCache& Participant::type_cache()
+{
+  return impl_->types;
+}
+
 WakeUp& Participant::wake_up()
 {
   return impl_->wake_up;

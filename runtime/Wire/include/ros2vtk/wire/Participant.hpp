@@ -112,6 +112,11 @@ public:
   /// The types this node's endpoints use, with their REP 2011 descriptions (what its
   /// ~/get_type_description serves, TypeDescriptionService).
   const NodeTypeCache& type_cache() const;
+  /// For types no single endpoint carries: an action client or server registers its action
+  /// type (pkg/action/X) here while it exists, as rcl_action_client_init and
+  /// rcl_action_server_init do (rcl_node_type_cache_register_type). A registration must not
+  /// outlive this participant.
+  NodeTypeCache& type_cache();
 
   /// Raised whenever any subscription, server or client of this node queued data.
   WakeUp& wake_up();
