@@ -33,6 +33,7 @@ from rosidl_generator_type_description import calculate_type_hash
 from sensor_msgs.msg import Image
 from std_msgs.msg import String
 from std_srvs.srv import SetBool, Trigger
+from test_msgs.msg import Arrays
 from type_description_interfaces.srv import GetTypeDescription
 
 KINDS = {
@@ -55,6 +56,7 @@ def cmd_node(args: argparse.Namespace) -> int:
     node.create_publisher(String, '/introspect/chatter', 10)
     node.create_subscription(PoseStamped, '/introspect/pose', lambda _: None, 10)
     node.create_subscription(Image, '/introspect/image', lambda _: None, 10)
+    node.create_subscription(Arrays, '/introspect/arrays', lambda _: None, 10)  # array default values
     node.create_service(SetBool, '/introspect/enable', lambda _, response: response)
     node.create_client(Trigger, '/introspect/trigger')
     print(json.dumps({'ready': True}), flush=True)

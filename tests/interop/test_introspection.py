@@ -75,7 +75,8 @@ def test_rclpy_reference_node_shows_what_it_created(graph):
     assert theirs == {
         'publishers': {'/introspect/chatter': ['std_msgs/msg/String']},
         'subscribers': {'/introspect/pose': ['geometry_msgs/msg/PoseStamped'],
-                        '/introspect/image': ['sensor_msgs/msg/Image']},
+                        '/introspect/image': ['sensor_msgs/msg/Image'],
+                        '/introspect/arrays': ['test_msgs/msg/Arrays']},
         'services': {'/introspect/enable': ['std_srvs/srv/SetBool']},
         'clients': {'/introspect/trigger': ['std_srvs/srv/Trigger']},
     }
@@ -98,6 +99,7 @@ DESCRIBED = (
     'std_srvs/srv/SetBool', 'std_srvs/srv/Trigger',
     'rcl_interfaces/msg/Log', 'rcl_interfaces/msg/ParameterEvent', 'rcl_interfaces/srv/GetParameters',
     'rcl_interfaces/srv/SetParameters', 'type_description_interfaces/srv/GetTypeDescription',
+    'test_msgs/msg/Arrays',
 )
 
 
@@ -135,6 +137,21 @@ def test_our_type_description_equals_rclpys(graph, ros_type):
     # type_sources were not asked for (include_type_sources false): empty on both.
     assert ours['type_sources'] == theirs['type_sources'] == []
     assert ours['extra_information'] == theirs['extra_information']
+
+
+def test_array_default_values_are_written_as_rclpy_writes_them(graph):
+    """rclpy serves an array default as rosidl_adapter's repr() of a tuple, '(False, True, False)';
+    ours wrote '[False, True, False]' before. The whole description is compared above; this
+    names the fields, so a difference says which."""
+    descriptions = graph['descriptions']
+    defaults = {}
+    for node in (RCLPY, OURS):
+        fields = descriptions[node]['types']['test_msgs/msg/Arrays']['type_description']['type_description']['fields']
+        defaults[node] = {f['name']: f['default_value'] for f in fields if f['default_value']}
+    assert defaults[RCLPY]['bool_values_default'] == '(False, True, False)'
+    assert defaults[RCLPY]['string_values_default'] == "('', 'max value', 'min value')"
+    assert len(defaults[RCLPY]) == 14
+    assert defaults[OURS] == defaults[RCLPY]
 
 
 @pytest.mark.parametrize('request_kind', ['unknown', 'malformed'])
