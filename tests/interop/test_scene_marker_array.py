@@ -1,0 +1,58 @@
+"""visualization_msgs/MarkerArray from an rclpy publisher into our MarkerArray subscriber
+(mapping rule MarkerArray, kind marker_array): the subscriber keeps markers by (ns, id) across
+messages as RViz does. The rclpy node publishes the three messages of the byte fixtures one
+second apart (make_cdr_fixtures.py `_marker_array`): a red cube (ns a, id 1, x 1 m), a green
+sphere (a/2, x 2 m) and a blue line (b/1, (0,0) -> (0.5,0) -> (0.5,0.5) m), all 0.1 x 0.2 x 0.3 m;
+then DELETE a/1; then DELETEALL and a yellow cylinder (c/7, x -1 m). Expected values are those
+messages' values, worked out here in mm."""
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from conftest import BUILD, HERE, VENV_PYTHON
+
+# The Jazzy venv (scripts/setup.sh) has no visualization_msgs wheel: no rclpy peer there.
+pytestmark = pytest.mark.skipif(
+    not list((VENV_PYTHON.parent.parent / 'lib').glob('python3*/site-packages/visualization_msgs')),
+    reason=f'no visualization_msgs in the venv of {VENV_PYTHON}')
+
+RED, GREEN, BLUE, YELLOW = [255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 0, 255]
+CUBE_POINTS = 24  # vtkCubeSource: 4 points per face, so that each face has its own normals
+
+
+def close(a, b, tol=1e-6):
+    assert len(a) == len(b) and all(math.isclose(x, y, abs_tol=tol) for x, y in zip(a, b)), (a, b)
+
+
+def test_rclpy_marker_array_add_delete_deleteall(ros):
+    topic = '/scene_in/marker_array'
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '3',
+                      '--seconds', '30'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    peer = ros.start([str(VENV_PYTHON), str(HERE / 'marker_array_peer.py'), topic, '--gap', '1.0'])
+    code, out, err = ros.finish(ours, timeout=45)
+    ros.stop(peer)
+    assert code == 0, err
+    snapshots = json.loads(out.splitlines()[-1])['snapshots']
+    # One snapshot per message (they come a second apart, so one spin each).
+    assert [s['count'] for s in snapshots] == [1, 2, 3], snapshots
+    added, deleted, replaced = snapshots
+
+    # 1: three shapes in (ns, id) order a/1 cube, a/2 sphere, b/1 line; colours as sent.
+    assert added['markers'] == 3 and added['colors'] == [RED, GREEN, BLUE], added
+    assert added['scalars'] == 'Color' and added['lines'] == 1 and added['error'] == ''
+    # x from the line's start (0) to the sphere's far side (2 m + 0.05 m); y down to the sphere's
+    # -0.1 m and up to the line's 0.5 m; z: cube and sphere 0.3 m high about 0.
+    close(added['bounds'], [0.0, 2050.0, -100.0, 500.0, -150.0, 150.0])
+
+    # 2: DELETE a/1 drops the cube only: its colour and its 24 points are gone.
+    assert deleted['markers'] == 2 and deleted['colors'] == [GREEN, BLUE], deleted
+    assert deleted['points'] == added['points'] - CUBE_POINTS
+    close(deleted['bounds'], [0.0, 2050.0, -100.0, 500.0, -150.0, 150.0])
+
+    # 3: DELETEALL then the cylinder in the same message: the cylinder alone.
+    assert replaced['markers'] == 1 and replaced['colors'] == [YELLOW] and replaced['lines'] == 0, replaced
+    close(replaced['bounds'], [-1050.0, -950.0, -100.0, 100.0, -150.0, 150.0])
