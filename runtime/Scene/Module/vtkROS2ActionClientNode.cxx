@@ -444,7 +444,8 @@ bool vtkROS2ActionClientNode::CancelGoalById(const char* goalId)
   const vtkInternals::GoalRecord* goal = this->Internals->Find(goalId);
   if (!this->Internals->CancelClient || !goal || !goal->Active())
   {
-    vtkErrorMacro("CancelGoal: no accepted goal " << (goalId ? goalId : "") << " is running (status: "
+    const std::string which = goalId && *goalId ? std::string(goalId) + " " : std::string();
+    vtkErrorMacro("CancelGoal: no accepted goal " << which << "is running (status: "
                                                   << this->GetStatusAsStringById(goalId) << ")");
     return false;
   }
