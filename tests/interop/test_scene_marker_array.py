@@ -58,3 +58,22 @@ def test_rclpy_marker_array_add_delete_deleteall(ros):
     # 3: DELETEALL then the cylinder in the same message: the cylinder alone.
     assert replaced['markers'] == 1 and replaced['colors'] == [YELLOW] and replaced['lines'] == 0, replaced
     close(replaced['bounds'], [-1050.0, -950.0, -100.0, 100.0, -150.0, 150.0])
+
+
+def test_our_poly_data_to_rclpy_marker_array(ros):
+    """Publishing a vtkPolyData as MarkerArray: one marker, ADD, ns '' and id 0, the Marker rule's
+    LINE_STRIP of the line's points in metres (scene_runner.py's red line: 0, 100 mm, 100 x 200 mm)."""
+    echo = ros.peer('echo', '/scene_out/marker_array', 'visualization_msgs/msg/MarkerArray', '--count', '1',
+                    '--timeout', '25')
+    ros.wait_ready(echo)
+    ours = ros.scene('--seconds', '8', 'pub', 'MarkerArray', '/scene_out/marker_array')
+    code, out, err = ros.finish(echo, timeout=40)
+    ros.stop(ours)
+    assert code == 0, err
+    message = json.loads(out.splitlines()[-1])
+    assert len(message['markers']) == 1, message
+    marker = message['markers'][0]
+    assert marker['action'] == 0 and marker['ns'] == '' and marker['id'] == 0 and marker['type'] == 4
+    assert [(p['x'], p['y'], p['z']) for p in marker['points']] == [(0.0, 0.0, 0.0), (0.1, 0.0, 0.0), (0.1, 0.2, 0.0)]
+    assert marker['color'] == {'r': 1.0, 'g': 0.0, 'b': 0.0, 'a': 1.0}
+    assert marker['pose']['orientation']['w'] == 1.0

@@ -48,9 +48,14 @@ void vtkROS2SubscriberMarkerArrayNode::OnNewMessages()
       this->FoldError = error;
     }
   }
-  if (!this->FoldError.empty())
+  // Once per reason (a publisher may send the same undrawable TEXT marker at 10 Hz).
+  if (!this->FoldError.empty() && this->FoldError != this->WarnedFoldError)
   {
     vtkWarningMacro(<< "visualization_msgs/msg/MarkerArray on " << this->GetTopic() << ": " << this->FoldError);
+  }
+  if (!this->FoldError.empty())
+  {
+    this->WarnedFoldError = this->FoldError;
   }
 }
 

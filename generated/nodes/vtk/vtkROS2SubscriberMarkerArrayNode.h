@@ -66,6 +66,7 @@ protected:
   std::string LastConversionError;
   ::ros2vtk::convert::MarkerSet State; // every received message folded in (OnNewMessages)
   std::string FoldError;        // what the latest spin's messages could not apply
+  std::string WarnedFoldError;  // the last reason warned about (once per reason)
 
 private:
   vtkROS2SubscriberMarkerArrayNode(const vtkROS2SubscriberMarkerArrayNode&) = delete;
