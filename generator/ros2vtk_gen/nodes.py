@@ -124,6 +124,9 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "mapping_file": rule.mapping_file,
         "line": rule.line,
         "spec": f"mapping rule {rule.short_name} ({rule.mapping_file})",
+        # A stateful kind (marker_array) names the C++ class its subscriber folds messages into.
+        "state_class": "",
+        "state_header": "",
     }
     if kind.view:
         view.update(kind.view(rule, table))

@@ -62,11 +62,13 @@ _FIXED_DESCRIPTIONS = {
 
 def default_value_text(value: Optional[Value]) -> str:
     """A default as rosidl writes it into a type description: Python's str() of the value
-    ('1.0', 'True', '-2'), arrays as lists; '' when there is none."""
+    ('1.0', 'True', '-2'); arrays as rosidl_adapter's repr() of a tuple ('(0, 1, 255)',
+    "('', 'max value')", '(1.5,)' for one element), which the IDL parser reads back as text;
+    '' when there is none."""
     if value is None:
         return ""
-    if isinstance(value, tuple):
-        return str(list(value))
+    if isinstance(value, (tuple, list)):
+        return repr(tuple(value))
     return str(value)
 
 

@@ -7,7 +7,7 @@ import pytest
 from conftest import FIXTURES, MSG_SPECS, SHIPPED_PACKAGES
 from ros2vtk_gen.msg_parser import parse_spec_file, resolve
 from ros2vtk_gen.model import Action, Service
-from ros2vtk_gen.typehash import (action_description, hashable_description, message_description, service_description,
+from ros2vtk_gen.typehash import (action_description, default_value_text, hashable_description, message_description, service_description,
                                   type_hash)
 
 EXPECTED = {
@@ -225,6 +225,36 @@ def test_served_description_keeps_default_values_as_rosidl_writes_them(table):
     request = message_description(
         table["type_description_interfaces/srv/GetTypeDescription_Request"], table)
     assert request["type_description"]["fields"][2]["default_value"] == "True"
+
+
+def test_served_array_defaults_are_written_as_rosidl_writes_them(table):
+    # share/test_msgs/msg/Arrays.json of the Kilted (and Jazzy) test_msgs wheel, type_description_msg:
+    # rosidl_adapter writes an array default as repr() of a tuple, not of a list.
+    arrays = message_description(table["test_msgs/msg/Arrays"], table)
+    defaults = {f["name"]: f["default_value"] for f in arrays["type_description"]["fields"] if f["default_value"]}
+    assert defaults == {
+        "bool_values_default": "(False, True, False)",
+        "byte_values_default": "(0, 1, 255)",
+        "char_values_default": "(0, 1, 127)",
+        "float32_values_default": "(1.125, 0.0, -1.125)",
+        "float64_values_default": "(3.1415, 0.0, -3.1415)",
+        "int8_values_default": "(0, 127, -128)",
+        "uint8_values_default": "(0, 1, 255)",
+        "int16_values_default": "(0, 32767, -32768)",
+        "uint16_values_default": "(0, 1, 65535)",
+        "int32_values_default": "(0, 2147483647, -2147483648)",
+        "uint32_values_default": "(0, 1, 4294967295)",
+        "int64_values_default": "(0, 9223372036854775807, -9223372036854775808)",
+        "uint64_values_default": "(0, 1, 18446744073709551615)",
+        "string_values_default": "('', 'max value', 'min value')",
+    }
+
+
+def test_one_element_array_default_keeps_the_tuple_comma():
+    # rosidl_adapter.msg.to_idl_literal: repr(tuple(value)), so one element is '(1.5,)'.
+    assert default_value_text((1.5,)) == "(1.5,)"
+    assert default_value_text(("a'b",)) == '("a\'b",)'
+    assert default_value_text(None) == ""
 
 
 # Action types, from share/test_msgs/action/Fibonacci.json and NestedMessage.json of the Kilted

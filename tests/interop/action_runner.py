@@ -4,6 +4,8 @@
 
     action_runner.py goal test_msgs/action/Fibonacci /fibonacci '{order: 5}' --timeout 10
     action_runner.py goal ... --cancel-after 2      # asynchronous: SendGoal, cancel, WaitForGoal
+    action_runner.py goals test_msgs/action/Fibonacci /fibonacci '{order: 5}' '{order: 8}' [--cancel-all-after 2]
+                                                     # several goals in flight on one client, by goal id
     action_runner.py serve /fibonacci --step 0.1 --max-order 20 --count 1
 
 The server computes Fibonacci as rclpy's example server does (start from [0, 1], append one
@@ -60,6 +62,59 @@ def cmd_goal(args, logic, node) -> int:
                       'cancel_sent': cancel_sent, 'cancel_return_code': client.GetLastCancelReturnCode(),
                       'goal_id': client.GetGoalIdAsString(),
                       'accepted': client.GetNumberOfGoalsAccepted()}), flush=True)
+    return 0
+
+
+def cmd_goals(args, logic, node) -> int:
+    """Sends every YAML goal at once on one client, follows each by its goal id (events name it:
+    GetLastEventGoalId), optionally CancelAllGoals once every goal had N feedbacks, then waits
+    for all (WaitForAllGoals)."""
+    client = node.CreateAndAddActionClientNode(args.type, args.name)
+    if client is None:
+        print(json.dumps({'ready': False, 'error': 'client not created'}), flush=True)
+        return 1
+    per_goal = {}  # goal id -> {'events': {...}, 'feedbacks': [...]}
+
+    def on_event(caller, _e, name):
+        goal = caller.GetLastEventGoalId()
+        entry = per_goal.setdefault(goal, {'events': {n: 0 for n in EVENTS}, 'feedbacks': []})
+        entry['events'][name] += 1
+        if name == 'FeedbackReceivedEvent':
+            entry['feedbacks'].append(yaml.safe_load(caller.GetLastFeedbackYAMLById(goal)))
+    for name in EVENTS:
+        client.AddObserver(getattr(ros2vtk.vtkROS2ActionClientNode, name),
+                           lambda caller, e, name=name: on_event(caller, e, name))
+    ready = ros2vtk.spin_until(logic, client.IsServerReady, seconds=args.wait)
+    print(json.dumps({'ready': bool(ready)}), flush=True)
+    client.SetTimeout(args.timeout)
+    sent = []
+    for goal_yaml in args.yaml:
+        client.SendGoalYAML(goal_yaml)
+        sent.append(client.GetGoalIdAsString())
+    cancel_sent = None
+    if args.cancel_all_after:
+        ros2vtk.spin_until(logic, lambda: all(client.GetNumberOfFeedbacksById(g) >= args.cancel_all_after or
+                                              client.IsGoalDoneById(g) for g in sent), seconds=args.timeout)
+        cancel_sent = bool(client.CancelAllGoals())
+    all_done = bool(client.WaitForAllGoals(args.timeout))
+    goals = []
+    for goal in sent:
+        result_yaml = client.GetResultYAMLById(goal)
+        goals.append({'id': goal, 'status': client.GetStatusAsStringById(goal), 'done': bool(client.IsGoalDoneById(goal)),
+                      'result': yaml.safe_load(result_yaml) if client.GetResultStatusById(goal) else None,
+                      'result_status': client.GetResultStatusById(goal), 'error': client.GetGoalErrorById(goal),
+                      'feedback_count': client.GetNumberOfFeedbacksById(goal),
+                      'last_feedback': yaml.safe_load(client.GetLastFeedbackYAMLById(goal)),
+                      **per_goal.get(goal, {'events': {}, 'feedbacks': []})})
+    print(json.dumps({'goals': goals, 'all_done': all_done, 'cancel_sent': cancel_sent,
+                      'cancel_return_code': client.GetLastCancelReturnCode(),
+                      'cancel_events': per_goal.get('', {}).get('events', {}).get('CancelResponseEvent', 0),
+                      'number_of_goals': client.GetNumberOfGoals(),
+                      'nth_ids': [client.GetNthGoalId(i) for i in range(client.GetNumberOfGoals())],
+                      'current': {'id': client.GetGoalIdAsString(), 'status': client.GetStatusAsString(),
+                                  'result': yaml.safe_load(client.GetResultYAML())},
+                      'accepted': client.GetNumberOfGoalsAccepted(), 'results': client.GetNumberOfResults()}),
+          flush=True)
     return 0
 
 
@@ -121,6 +176,14 @@ def main() -> int:
     goal.add_argument('--timeout', type=float, default=10.0)
     goal.add_argument('--wait', type=float, default=15.0, help='seconds to wait for the server (0: do not)')
     goal.add_argument('--cancel-after', type=int, default=0, help='cancel after this many feedbacks')
+    goals = sub.add_parser('goals')
+    goals.add_argument('type')
+    goals.add_argument('name')
+    goals.add_argument('yaml', nargs='+')
+    goals.add_argument('--timeout', type=float, default=10.0)
+    goals.add_argument('--wait', type=float, default=15.0, help='seconds to wait for the server')
+    goals.add_argument('--cancel-all-after', type=int, default=0,
+                       help='CancelAllGoals once every goal had this many feedbacks')
     serve = sub.add_parser('serve')
     serve.add_argument('name')
     serve.add_argument('--seconds', type=float, default=20.0)
@@ -130,7 +193,7 @@ def main() -> int:
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
-    return {'goal': cmd_goal, 'serve': cmd_serve}[args.command](args, logic, node)
+    return {'goal': cmd_goal, 'goals': cmd_goals, 'serve': cmd_serve}[args.command](args, logic, node)
 
 
 if __name__ == '__main__':

@@ -41,6 +41,7 @@ from sensor_msgs.msg import Image
 from std_msgs.msg import String
 from std_srvs.srv import SetBool, Trigger
 from test_msgs.action import Fibonacci
+from test_msgs.msg import Arrays
 from type_description_interfaces.srv import GetTypeDescription
 
 KINDS = {
@@ -70,6 +71,7 @@ def cmd_node(args: argparse.Namespace) -> int:
     node.create_publisher(String, '/introspect/chatter', 10)
     node.create_subscription(PoseStamped, '/introspect/pose', lambda _: None, 10)
     node.create_subscription(Image, '/introspect/image', lambda _: None, 10)
+    node.create_subscription(Arrays, '/introspect/arrays', lambda _: None, 10)  # array default values
     node.create_service(SetBool, '/introspect/enable', lambda _, response: response)
     node.create_client(Trigger, '/introspect/trigger')
     # Never asked for a goal: the server only needs to exist (the execute callback is unused).

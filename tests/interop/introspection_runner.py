@@ -6,6 +6,7 @@ the same kinds, names and types as introspection_peer.py's rclpy node:
     publisher   /introspect/chatter  std_msgs/msg/String
     subscriber  /introspect/pose     geometry_msgs/msg/PoseStamped
     subscriber  /introspect/image    sensor_msgs/msg/Image
+    subscriber  /introspect/arrays   test_msgs/msg/Arrays (generic: its description has array defaults)
     service     /introspect/enable   std_srvs/srv/SetBool
     client      /introspect/trigger  std_srvs/srv/Trigger
     action server  /introspect/compute  test_msgs/action/Fibonacci
@@ -38,6 +39,7 @@ def main() -> int:
         'publisher': node.CreateAndAddPublisherNode('String', '/introspect/chatter'),
         'subscriber': node.CreateAndAddSubscriberNode('PoseStamped', '/introspect/pose'),
         'image': node.CreateAndAddSubscriberNode('Image', '/introspect/image'),
+        'arrays': node.CreateAndAddSubscriberNode('test_msgs/msg/Arrays', '/introspect/arrays'),
         'server': node.CreateAndAddServiceServerNode('std_srvs/srv/SetBool', '/introspect/enable'),
         'client': node.CreateAndAddServiceClientNode('std_srvs/srv/Trigger', '/introspect/trigger'),
         'action_server': node.CreateAndAddActionServerNode('test_msgs/action/Fibonacci', '/introspect/compute'),

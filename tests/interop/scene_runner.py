@@ -261,7 +261,7 @@ def vtk_sample(short: str):
         return vtk_array(vtk.vtkFloatArray, (0.5, -1.0, 0.25))
     if short == 'JoyButtons':
         return vtk_array(vtk.vtkIntArray, (0, 1, 1, 0))
-    if short == 'Marker':  # a red line through three points (mm)
+    if short in ('Marker', 'MarkerArray'):  # a red line through three points (mm)
         line = vtk.vtkPolyData()
         p = vtk.vtkPoints()
         for point in ((0.0, 0.0, 0.0), (100.0, 0.0, 0.0), (100.0, 200.0, 0.0)):

@@ -83,7 +83,8 @@ def test_rclpy_reference_node_shows_what_it_created(graph):
     assert visible == {
         'publishers': {'/introspect/chatter': ['std_msgs/msg/String']},
         'subscribers': {'/introspect/pose': ['geometry_msgs/msg/PoseStamped'],
-                        '/introspect/image': ['sensor_msgs/msg/Image']},
+                        '/introspect/image': ['sensor_msgs/msg/Image'],
+                        '/introspect/arrays': ['test_msgs/msg/Arrays']},
         'services': {'/introspect/enable': ['std_srvs/srv/SetBool']},
         'clients': {'/introspect/trigger': ['std_srvs/srv/Trigger']},
         'action_servers': {'/introspect/compute': ['test_msgs/action/Fibonacci']},
@@ -152,6 +153,7 @@ DESCRIBED = (
     # services' and topics' types.
     'test_msgs/action/Fibonacci', 'test_msgs/action/Fibonacci_SendGoal', 'test_msgs/action/Fibonacci_GetResult',
     'test_msgs/action/Fibonacci_FeedbackMessage', 'action_msgs/srv/CancelGoal', 'action_msgs/msg/GoalStatusArray',
+    'test_msgs/msg/Arrays',
 )
 # Types the same rclpy node answers "not in use" for (checked below: the expectation is rclpy's
 # answer): messages a service or action type only nests or synthesizes, such as the _Event
@@ -213,6 +215,21 @@ def test_types_rclpy_does_not_serve_we_do_not_either(graph, ros_type):
     assert ours['successful'] is False, ours['type_description']['type_description']['type_name']
     assert ours['failure_reason'] == theirs['failure_reason']
     assert ours['type_description'] == theirs['type_description']
+
+
+def test_array_default_values_are_written_as_rclpy_writes_them(graph):
+    """rclpy serves an array default as rosidl_adapter's repr() of a tuple, '(False, True, False)';
+    ours wrote '[False, True, False]' before. The whole description is compared above; this
+    names the fields, so a difference says which."""
+    descriptions = graph['descriptions']
+    defaults = {}
+    for node in (RCLPY, OURS):
+        fields = descriptions[node]['types']['test_msgs/msg/Arrays']['type_description']['type_description']['fields']
+        defaults[node] = {f['name']: f['default_value'] for f in fields if f['default_value']}
+    assert defaults[RCLPY]['bool_values_default'] == '(False, True, False)'
+    assert defaults[RCLPY]['string_values_default'] == "('', 'max value', 'min value')"
+    assert len(defaults[RCLPY]) == 14
+    assert defaults[OURS] == defaults[RCLPY]
 
 
 @pytest.mark.parametrize('request_kind', ['unknown', 'malformed'])

@@ -102,6 +102,53 @@ def test_missing_action_server_gives_our_client_a_clear_timeout(ros):
     assert result['events']['GoalFailedEvent'] == 1 and result['events']['GoalResponseEvent'] == 0
 
 
+def test_our_client_has_two_goals_in_flight_and_both_results(ros):
+    """One client, two goals sent back to back (rclpy's server runs them side by side on its
+    multi-threaded executor): each is followed by its goal id, each gets its own feedback and
+    result; the single-goal API reads the last goal sent."""
+    server = rclpy_server(ros, '/fibonacci_pair', '--step', '0.1', '--seconds', '40')
+    result = run_client(ros, 'goals', 'test_msgs/action/Fibonacci', '/fibonacci_pair', '{order: 5}', '{order: 8}',
+                        '--timeout', '20')
+    assert result['all_done'] is True, result
+    first, second = result['goals']
+    assert first['id'] != second['id'] and len(first['id']) == len(second['id']) == 32
+    assert result['number_of_goals'] == 2 and result['nth_ids'] == [first['id'], second['id']]
+    for goal, order in ((first, 5), (second, 8)):
+        expected = fibonacci_feedbacks(order)
+        assert goal['status'] == 'succeeded' and goal['result_status'] == STATUS_SUCCEEDED, goal
+        assert goal['result'] == {'sequence': expected[-1]} and goal['error'] == ''
+        # Feedback of each goal only (the topic carries both): an in-order suffix ending with the
+        # last step (an early one may be sent before our reader matched, as with rclpy clients).
+        sequences = [f['sequence'] for f in goal['feedbacks']]
+        assert 1 <= len(sequences) == goal['feedback_count'] and sequences == expected[-len(sequences):], goal
+        assert goal['last_feedback'] == {'sequence': expected[-1]}
+        assert goal['events']['GoalResponseEvent'] == 1 and goal['events']['ResultReceivedEvent'] == 1, goal
+        assert goal['events']['GoalFailedEvent'] == 0
+    assert result['accepted'] == 2 and result['results'] == 2
+    # The single-goal API: the last goal sent.
+    assert result['current']['id'] == second['id'] and result['current']['status'] == 'succeeded'
+    assert result['current']['result'] == {'sequence': fibonacci_feedbacks(8)[-1]}
+    ros.stop(server)
+
+
+def test_our_client_cancels_all_goals_at_once(ros):
+    """CancelAllGoals sends one CancelGoal request with a zero goal id and a zero stamp (rclcpp's
+    async_cancel_all_goals): rclpy's server cancels both running goals."""
+    server = rclpy_server(ros, '/slow_pair', '--step', '0.3', '--seconds', '40')
+    result = run_client(ros, 'goals', 'test_msgs/action/Fibonacci', '/slow_pair', '{order: 20}', '{order: 25}',
+                        '--timeout', '20', '--cancel-all-after', '2')
+    assert result['cancel_sent'] is True and result['cancel_return_code'] == 0, result  # ERROR_NONE
+    assert result['cancel_events'] == 1
+    assert result['all_done'] is True
+    for goal, order in zip(result['goals'], (20, 25)):
+        assert goal['status'] == 'canceled' and goal['result_status'] == STATUS_CANCELED, goal
+        full = fibonacci_feedbacks(order)[-1]
+        partial = goal['result']['sequence']
+        assert 3 <= len(partial) < len(full) and partial == full[:len(partial)], goal
+        assert goal['feedback_count'] >= 2
+    ros.stop(server)
+
+
 # -- our server, rclpy ActionClient ------------------------------------------------------------
 
 def our_server(ros, *args: str):

@@ -7,8 +7,10 @@
 #include "vtkROS2SceneNode.h"
 
 #include "vtkMatrix4x4.h"
+#include "vtkCellData.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include <gtest/gtest.h>
@@ -87,4 +89,51 @@ TEST(DownstreamNodes, SinglePointScaledBothWays)
   points->InsertNextPoint(1.0, 2.0, 3.0);
   EXPECT_FALSE(ros2vtk::nodes::VTKToROS2(points, back, 1000.0, &error));
   EXPECT_NE(error.find("exactly one point"), std::string::npos) << error;
+}
+
+TEST(DownstreamNodes, MarkerArrayKindWithOwnFieldNamesKeepsBlipsByKey)
+{
+  using Blip = ros2vtk::ros2vtk_nodes_test_msgs::msg::Blip;
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::BlipArray added;
+  for (int number : { 1, 2 })
+  {
+    Blip blip;
+    blip.group = "lab";
+    blip.number = number;
+    blip.op = Blip::ADD;
+    blip.shape = Blip::CUBE;
+    blip.at.x = 0.1 * number; // 100 mm, 200 mm
+    blip.facing.w = 1.0;
+    blip.size.x = blip.size.y = blip.size.z = 0.01;
+    blip.tint.r = blip.tint.a = 1.0f;
+    added.blips.push_back(blip);
+  }
+  ros2vtk::convert::MarkerSet kept;
+  std::string error;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(added, kept, &error)) << error;
+  EXPECT_EQ(kept.size(), 2u);
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::BlipArray removed;
+  removed.blips.resize(1);
+  removed.blips[0].group = "lab";
+  removed.blips[0].number = 1;
+  removed.blips[0].op = Blip::DELETE;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(removed, kept, &error)) << error;
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_TRUE(kept.contains("lab", 2));
+  vtkNew<vtkPolyData> drawn;
+  ASSERT_TRUE(kept.to_poly_data(1000.0, drawn, &error)) << error;
+  double bounds[6];
+  drawn->GetBounds(bounds);
+  EXPECT_NEAR(bounds[0], 195.0, 1e-9); // the second cube: 10 mm about x = 200 mm
+  EXPECT_NEAR(bounds[1], 205.0, 1e-9);
+  EXPECT_NE(drawn->GetCellData()->GetArray("MarkerIndex"), nullptr);
+
+  // Out: one ADD blip, the poly data's points as POINTS, back in metres.
+  ros2vtk::ros2vtk_nodes_test_msgs::msg::BlipArray out;
+  ASSERT_TRUE(ros2vtk::nodes::VTKToROS2(drawn, out, 1000.0, &error)) << error;
+  ASSERT_EQ(out.blips.size(), 1u);
+  EXPECT_EQ(out.blips[0].op, Blip::ADD);
+  EXPECT_EQ(out.blips[0].shape, Blip::POINTS);
+  EXPECT_EQ(out.blips[0].path.size(), static_cast<size_t>(drawn->GetNumberOfPoints()));
+  EXPECT_NEAR(out.blips[0].path[0].x, drawn->GetPoint(0)[0] / 1000.0, 1e-12);
 }

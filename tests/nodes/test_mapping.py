@@ -154,6 +154,23 @@ def test_points_kind_on_a_single_message_names_the_point_kind(tmp_path, table):
     assert "with ," not in error
 
 
+def test_marker_array_kind_reads_each_marker_and_names_its_state(table):
+    """kind marker_array: the Marker roles plus ns, id and action inside each element of the
+    sequence; lengths inside the elements; its view names the state class a subscriber keeps."""
+    from ros2vtk_gen.nodes import rule_view
+    rules = {rule.short_name: rule for rule in load_rules(SHIPPED_MAPPINGS, table)}
+    rule = rules["MarkerArray"]
+    assert rule.kind == "marker_array" and rule.roles["sequence"].path == "markers"
+    assert {name: role.path for name, role in rule.element_roles.items()} == {
+        "ns": "ns", "id": "id", "action": "action", "type": "type", "position": "pose.position",
+        "orientation": "pose.orientation", "scale": "scale", "color": "color", "points": "points"}
+    assert sorted(rule.scaled_roles) == ["points", "position", "scale"]
+    view = rule_view(rule, table)
+    assert view["state_class"] == "::ros2vtk::convert::MarkerSet"
+    assert view["state_header"] == "ros2vtk/convert/Marker.hpp"
+    assert rule_view(rules["Marker"], table)["state_class"] == ""  # every other kind: stateless
+
+
 def test_matrix3x3_sequence_array_and_polyline_kinds(tmp_path, table):
     """CameraInfo's K (float64[9]) <-> vtkMatrix3x3, its D (float64[]) and Joy's axes
     (float32[]) and buttons (int32[]) <-> the VTK array of their element type, a Path's

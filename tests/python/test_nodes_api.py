@@ -6,8 +6,8 @@ from __future__ import annotations
 import time
 
 import pytest
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
-from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkImageData, vtkPolyData
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
 from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
 
@@ -157,3 +157,55 @@ def test_generic_publish_object_and_value_reach_the_typed_publish_or_say_why_not
     assert int_sub.GetLastMessage() == -7
     assert (pose_pub.GetNumberOfMessagesSent(), text_pub.GetNumberOfMessagesSent(), int_pub.GetNumberOfMessagesSent()) \
         == (1, 1, 1)
+
+
+def test_marker_array_subscriber_keeps_markers_and_names_what_it_cannot_draw(logic):
+    """The MarkerArray subscriber (kind marker_array) folds every message into the markers it
+    keeps: a TEXT marker is left out and named, the cube stays; metres when not scaling; our
+    MarkerArray publisher's ADD (ns '', id 0) is one more kept marker."""
+    import yaml
+    import ros2vtk
+    node = logic.GetDefaultROS2Node()
+    pub = ros2vtk.vtkROS2PublisherGenericNode()
+    logic.GetScene().AddNode(pub)
+    pub.SetROSType('visualization_msgs/msg/MarkerArray')
+    pub.AddToROS2Node(node.GetID(), '/py_markers')
+    sub = node.CreateAndAddSubscriberNode('MarkerArray', '/py_markers')
+    connect(logic, pub, sub)
+    cube = {'ns': 'a', 'id': 1, 'type': 1, 'action': 0, 'pose': {'position': {'x': 1.0}, 'orientation': {'w': 1.0}},
+            'scale': {'x': 0.1, 'y': 0.1, 'z': 0.1}, 'color': {'r': 1.0, 'a': 1.0}}
+    text = {'ns': 'a', 'id': 2, 'type': 9, 'action': 0, 'pose': {'orientation': {'w': 1.0}},
+            'scale': {'z': 0.1}, 'text': 'label'}
+    assert pub.PublishYAML(yaml.safe_dump({'markers': [cube, text]}))
+    assert spin_until(logic, lambda: sub.GetNumberOfMessages() == 1)
+    drawn = sub.GetLastMessage()
+    assert drawn is not None and drawn.GetBounds()[:2] == pytest.approx((950.0, 1050.0))
+    assert "ns 'a', id 2" in sub.GetLastConversionError() and 'not supported' in sub.GetLastConversionError()
+    sub.ScaleLengthsOff()
+    assert sub.GetLastMessage().GetBounds()[:2] == pytest.approx((0.95, 1.05))
+    sub.ScaleLengthsOn()
+    # Our own MarkerArray publisher: a two-point line, ADD under ('', 0); the cube is still kept.
+    assert node.RemoveAndDeletePublisherNode('/py_markers')  # one publisher per topic and node
+    typed = node.CreateAndAddPublisherNode('MarkerArray', '/py_markers')
+    assert spin_until(logic, lambda: typed.GetNumberOfMatchedSubscriptions() > 0)
+    line = vtkPolyData()
+    points = vtkPoints()
+    points.InsertNextPoint(0.0, 0.0, 0.0)
+    points.InsertNextPoint(0.0, 500.0, 0.0)
+    line.SetPoints(points)
+    cells = vtkCellArray()
+    cells.InsertNextCell(2)
+    cells.InsertCellPoint(0)
+    cells.InsertCellPoint(1)
+    line.SetLines(cells)
+    assert typed.Publish(line) == 1
+    assert spin_until(logic, lambda: sub.GetNumberOfMessages() == 2)
+    drawn = sub.GetLastMessage()
+    index = drawn.GetCellData().GetArray('MarkerIndex')
+    assert {int(index.GetValue(c)) for c in range(drawn.GetNumberOfCells())} == {0, 1}  # ('', 0) and ('a', 1)
+    assert drawn.GetBounds()[3] == pytest.approx(500.0)
+    assert sub.GetLastConversionError() == ''  # the latest message applied entirely
+    # GetNewMessage(i) draws message i alone: the line only.
+    assert sub.GetNumberOfNewMessages() == 1
+    alone = sub.GetNewMessage(0)
+    assert alone.GetNumberOfPoints() == 2

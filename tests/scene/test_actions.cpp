@@ -123,6 +123,57 @@ TEST_F(ActionTest, CancelRequestedAndConfirmed)
   EXPECT_FALSE(this->Client->CancelGoal()) << "the goal is over";
 }
 
+TEST_F(ActionTest, TwoGoalsInFlightEachByIdAndCancelAll)
+{
+  this->MakePair("/pair");
+  std::string feedbackGoal;
+  vtkNew<vtkCallbackCommand> onFeedback;
+  onFeedback->SetClientData(&feedbackGoal);
+  onFeedback->SetCallback([](vtkObject* caller, unsigned long, void* goal, void*) {
+    *static_cast<std::string*>(goal) = static_cast<vtkROS2ActionClientNode*>(caller)->GetLastEventGoalId();
+  });
+  this->Client->AddObserver(vtkROS2ActionClientNode::FeedbackReceivedEvent, onFeedback);
+
+  ASSERT_GT(this->Client->SendGoalYAML("{order: 3}"), 0);
+  const std::string first = this->Client->GetGoalIdAsString();
+  ASSERT_GT(this->Client->SendGoalYAML("{order: 4}"), 0);
+  const std::string second = this->Client->GetGoalIdAsString();
+  ASSERT_NE(first, second);
+  EXPECT_EQ(this->Client->GetNumberOfGoals(), 2);
+  EXPECT_EQ(this->Client->GetNthGoalId(0), first);
+  EXPECT_EQ(this->Client->GetNthGoalId(1), second);
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfGoalsAccepted() == 2; }))
+    << this->Client->GetStatusAsStringById(first.c_str()) << ", " << this->Client->GetStatusAsString();
+
+  // The server's current goal is the oldest running one: feedback and result for the first.
+  ASSERT_EQ(this->Server->GetGoalIdAsString(), first);
+  ASSERT_TRUE(this->Server->PublishFeedbackYAML("{sequence: [0, 1, 1]}"));
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfFeedbacksById(first.c_str()) == 1; }));
+  EXPECT_EQ(feedbackGoal, first);
+  EXPECT_EQ(this->Client->GetNumberOfFeedbacksById(second.c_str()), 0);
+  EXPECT_EQ(this->Client->GetNumberOfFeedbacks(), 0) << "the single-goal API reads the last goal sent";
+  ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2]}"));
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->IsGoalDoneById(first.c_str()); }));
+  EXPECT_EQ(this->Client->GetGoalStatusById(first.c_str()), vtkROS2ActionClientNode::Succeeded);
+  EXPECT_EQ(this->Client->GetResultYAMLById(first.c_str()), "sequence:\n- 0\n- 1\n- 1\n- 2\n");
+  EXPECT_FALSE(this->Client->IsGoalDone());
+  EXPECT_FALSE(this->Client->AreAllGoalsDone());
+
+  // Cancel-all: one request with a zero id and stamp; the server cancels what still runs.
+  ASSERT_EQ(this->Server->GetGoalIdAsString(), second);
+  ASSERT_TRUE(this->Client->CancelAllGoals());
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->IsCancelRequested(); }));
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetLastCancelReturnCode() == 0; }));
+  ASSERT_TRUE(this->Server->ConfirmGoalCanceled("{sequence: [0, 1]}"));
+  ASSERT_TRUE(this->Client->WaitForAllGoals(10.0));
+  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Canceled);
+  EXPECT_EQ(this->Client->GetResultStatusById(second.c_str()), 5);
+  EXPECT_EQ(this->Client->GetGoalStatusById(first.c_str()), vtkROS2ActionClientNode::Succeeded);
+  EXPECT_EQ(this->Client->GetNumberOfResults(), 2);
+  EXPECT_EQ(this->Client->GetGoalStatusById("not a goal"), vtkROS2ActionClientNode::Idle);
+  EXPECT_FALSE(this->Client->CancelGoalById(first.c_str())) << "the goal is over";
+}
+
 TEST_F(ActionTest, RejectedGoalAndBlockingSend)
 {
   this->MakePair("/picky");

@@ -44,6 +44,8 @@
 #include "ros2vtk/std_msgs/msg/int64_multi_array.hpp"
 #include "ros2vtk/std_msgs/msg/string.hpp"
 #include "ros2vtk/visualization_msgs/msg/marker.hpp"
+#include "ros2vtk/visualization_msgs/msg/marker_array.hpp"
+#include "ros2vtk/convert/Marker.hpp" // the state a subscriber folds messages into
 
 #include <string>
 
@@ -275,6 +277,16 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+
+// MarkerArray: visualization_msgs/msg/MarkerArray <-> vtkPolyData (kind marker_array, visualization_msgs.toml; lengths: position, scale, points).
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, vtkPolyData* object,
+  double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+/// Folds `message` into `state` (what a display keeps across messages); false with the first
+/// reason when a part of it could not be applied (the rest is applied).
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, ::ros2vtk::convert::MarkerSet& state,
+  std::string* error = nullptr);
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::MarkerArray& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 
 } // namespace nodes

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -1148,6 +1149,131 @@ bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& 
     message.points[i].x = marker.points[3 * i];
     message.points[i].y = marker.points[3 * i + 1];
     message.points[i].z = marker.points[3 * i + 2];
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// MarkerArray: visualization_msgs/msg/MarkerArray <-> vtkPolyData (kind marker_array)
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, ::ros2vtk::convert::MarkerSet& state, std::string* error)
+{
+  bool ok = true;
+  for (const auto& element : message.markers)
+  {
+    using Element = std::decay_t<decltype(element)>;
+    if (element.action == Element::DELETEALL)
+    {
+      state.clear();
+      continue;
+    }
+    if (element.action == Element::DELETE)
+    {
+      state.remove(element.ns, element.id);
+      continue;
+    }
+    if (element.action != Element::ADD && element.action != Element::MODIFY)
+    {
+      if (ok && error)
+      {
+        *error = "marker (ns '" + element.ns + "', id " + std::to_string(element.id) +
+          "): unknown action " + std::to_string(element.action);
+      }
+      ok = false;
+      continue;
+    }
+    ::ros2vtk::convert::Marker marker;
+    switch (element.type)
+    {
+      case Element::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
+      case Element::CUBE: marker.shape = ::ros2vtk::convert::MarkerShape::Cube; break;
+      case Element::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
+      case Element::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
+      case Element::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
+      case Element::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
+      default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
+    }
+    marker.position[0] = element.pose.position.x;
+    marker.position[1] = element.pose.position.y;
+    marker.position[2] = element.pose.position.z;
+    marker.orientation[0] = element.pose.orientation.x;
+    marker.orientation[1] = element.pose.orientation.y;
+    marker.orientation[2] = element.pose.orientation.z;
+    marker.orientation[3] = element.pose.orientation.w;
+    marker.scale[0] = element.scale.x;
+    marker.scale[1] = element.scale.y;
+    marker.scale[2] = element.scale.z;
+    marker.color[0] = element.color.r;
+    marker.color[1] = element.color.g;
+    marker.color[2] = element.color.b;
+    marker.color[3] = element.color.a;
+    marker.points.reserve(3 * element.points.size());
+    for (const auto& point : element.points)
+    {
+      marker.points.push_back(point.x);
+      marker.points.push_back(point.y);
+      marker.points.push_back(point.z);
+    }
+    std::string reason;
+    if (!state.add(element.ns, element.id, marker, &reason))
+    {
+      if (ok && error)
+      {
+        *error = reason;
+      }
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, vtkPolyData* object,
+  double lengthScale, std::string* error)
+{
+  // One message alone: its actions applied to an empty set; any marker it cannot draw fails it.
+  ::ros2vtk::convert::MarkerSet markers;
+  if (!ROS2ToVTK(message, markers, error))
+  {
+    return false;
+  }
+  return markers.to_poly_data(lengthScale, object, error);
+}
+
+bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::MarkerArray& message,
+  double lengthScale, std::string* error)
+{
+  // One marker (ADD, ns "", id 0): the Marker rule's LINE_STRIP or POINTS of the poly data.
+  ::ros2vtk::convert::Marker marker;
+  if (!::ros2vtk::convert::poly_data_to_marker(object, lengthScale, &marker, error))
+  {
+    return false;
+  }
+  message.markers.resize(1);
+  auto& element = message.markers[0];
+  using Element = std::decay_t<decltype(element)>;
+  element.action = Element::ADD;
+  element.ns.clear();
+  element.id = 0;
+  element.type = marker.shape == ::ros2vtk::convert::MarkerShape::LineStrip ? Element::LINE_STRIP : Element::POINTS;
+  element.pose.position.x = marker.position[0];
+  element.pose.position.y = marker.position[1];
+  element.pose.position.z = marker.position[2];
+  element.pose.orientation.x = marker.orientation[0];
+  element.pose.orientation.y = marker.orientation[1];
+  element.pose.orientation.z = marker.orientation[2];
+  element.pose.orientation.w = marker.orientation[3];
+  element.scale.x = marker.scale[0];
+  element.scale.y = marker.scale[1];
+  element.scale.z = marker.scale[2];
+  element.color.r = static_cast<float>(marker.color[0]);
+  element.color.g = static_cast<float>(marker.color[1]);
+  element.color.b = static_cast<float>(marker.color[2]);
+  element.color.a = static_cast<float>(marker.color[3]);
+  element.points.resize(marker.points.size() / 3);
+  for (size_t i = 0; i < element.points.size(); ++i)
+  {
+    element.points[i].x = marker.points[3 * i];
+    element.points[i].y = marker.points[3 * i + 1];
+    element.points[i].z = marker.points[3 * i + 2];
   }
   return true;
 }

@@ -76,6 +76,8 @@
 #include "vtkROS2SubscriberDoubleTableNode.h"
 #include "vtkROS2PublisherMarkerNode.h"
 #include "vtkROS2SubscriberMarkerNode.h"
+#include "vtkROS2PublisherMarkerArrayNode.h"
+#include "vtkROS2SubscriberMarkerArrayNode.h"
 
 #include "vtkSetGet.h" // for vtkGenericWarningMacro
 
@@ -255,6 +257,10 @@ extern "C" ROS2VTKNODES_EXPORT void ros2vtk_register_ros2vtkNodes_nodes()
       &CreateNode<vtkROS2PublisherMarkerNode> },
     { "Marker", "vtkROS2SubscriberMarkerNode", "visualization_msgs/msg/Marker", NodeDirection::Subscriber,
       &CreateNode<vtkROS2SubscriberMarkerNode> },
+    { "MarkerArray", "vtkROS2PublisherMarkerArrayNode", "visualization_msgs/msg/MarkerArray", NodeDirection::Publisher,
+      &CreateNode<vtkROS2PublisherMarkerArrayNode> },
+    { "MarkerArray", "vtkROS2SubscriberMarkerArrayNode", "visualization_msgs/msg/MarkerArray", NodeDirection::Subscriber,
+      &CreateNode<vtkROS2SubscriberMarkerArrayNode> },
   };
   auto& registry = ros2vtk::scene::NodeClassRegistry::instance();
   for (const NodeClassInfo& info : classes)

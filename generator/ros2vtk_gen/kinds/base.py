@@ -66,7 +66,10 @@ QUATERNION = struct(x=prim("float64"), y=prim("float64"), z=prim("float64"), w=p
 #   check(vtk_type, roles, table, fail)          rules a Shape cannot say
 #   scalable_paths(roles, element_roles) -> {path: role}   what `lengths` may list
 #   shape_hint(resolved) -> str                  appended to a role's shape error
-#   view(rule, table) -> dict                    extra template values (nodes.rule_view)
+#   view(rule, table) -> dict                    extra template values (nodes.rule_view); a
+#                                                stateful kind returns state_class / state_header
+#                                                (the C++ state its subscriber folds messages into,
+#                                                see marker_array.py and docs/extending.md)
 Check = Callable[..., None]
 
 

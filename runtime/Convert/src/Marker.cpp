@@ -5,7 +5,10 @@
 
 #include "Validation.hpp"
 
+#include <vtkAppendPolyData.h>
 #include <vtkArrowSource.h>
+#include <vtkCellData.h>
+#include <vtkIntArray.h>
 #include <vtkCellArray.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
@@ -223,6 +226,75 @@ bool poly_data_to_marker(vtkPolyData* poly_data, double length_scale, Marker* ma
     }
   }
   *marker = std::move(out);
+  return true;
+}
+
+bool MarkerSet::add(const std::string& ns, int id, const Marker& marker, std::string* error)
+{
+  const auto key = std::make_pair(ns, id);
+  vtkNew<vtkPolyData> check;
+  std::string reason;
+  if (!marker_to_poly_data(marker, 1.0, check, &reason))
+  {
+    this->markers.erase(key);
+    if (error)
+    {
+      *error = "marker (ns '" + ns + "', id " + std::to_string(id) + "): " + reason;
+    }
+    return false;
+  }
+  this->markers[key] = marker;
+  return true;
+}
+
+bool MarkerSet::remove(const std::string& ns, int id)
+{
+  return this->markers.erase(std::make_pair(ns, id)) != 0;
+}
+
+bool MarkerSet::to_poly_data(double length_scale, vtkPolyData* poly_data, std::string* error) const
+{
+  const char* where = "MarkerSet::to_poly_data";
+  if (!poly_data)
+  {
+    return fail(error, where, "output poly data is null");
+  }
+  if (!detail::check_length_scale(length_scale, where, error))
+  {
+    return false;
+  }
+  if (this->markers.empty())
+  {
+    poly_data->Initialize();
+    return true;
+  }
+  vtkNew<vtkAppendPolyData> append;
+  int index = 0;
+  for (const auto& entry : this->markers)
+  {
+    vtkNew<vtkPolyData> piece;
+    std::string reason;
+    if (!marker_to_poly_data(entry.second, length_scale, piece, &reason))
+    {
+      // add() checked it at scale 1; only a scale overflowing to infinity gets here.
+      return fail(error, where, "marker (ns '" + entry.first.first + "', id " +
+          std::to_string(entry.first.second) + "): " + reason);
+    }
+    // Only the arrays every piece has survive the append: keep the colour, drop the rest.
+    vtkDataArray* color = piece->GetPointData()->GetArray("Color");
+    vtkSmartPointer<vtkDataArray> keep = color;
+    piece->GetPointData()->Initialize();
+    piece->GetPointData()->SetScalars(keep);
+    piece->GetCellData()->Initialize();
+    vtkNew<vtkIntArray> markerIndex;
+    markerIndex->SetName("MarkerIndex");
+    markerIndex->SetNumberOfTuples(piece->GetNumberOfCells());
+    markerIndex->FillValue(index++);
+    piece->GetCellData()->AddArray(markerIndex);
+    append->AddInputData(piece);
+  }
+  append->Update();
+  poly_data->ShallowCopy(append->GetOutput());
   return true;
 }
 

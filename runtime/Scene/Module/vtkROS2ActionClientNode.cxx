@@ -34,8 +34,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <random>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkROS2ActionClientNode);
@@ -59,6 +61,18 @@ std::string FormatSeconds(double seconds)
   std::ostringstream text;
   text << seconds << " s";
   return text.str();
+}
+
+std::string IdText(const UUID& id)
+{
+  std::string text;
+  char digits[3];
+  for (const uint8_t byte : id.uuid)
+  {
+    std::snprintf(digits, sizeof(digits), "%02x", byte);
+    text += digits;
+  }
+  return text;
 }
 
 UUID RandomGoalId()
@@ -96,21 +110,40 @@ public:
   // rcl_action registers it: ~/get_type_description serves it (docs/wire-interop.md).
   ros2vtk::wire::NodeTypeCache::Registration ActionTypeRegistration;
 
-  MessagePtr Goal;         // X_Goal the next SendGoal sends
-  MessagePtr GoalRequest;  // X_SendGoal_Request of the current goal
-  MessagePtr LastFeedback; // X_Feedback
-  MessagePtr Result;       // X_Result
-  bool HasGoal = false;
-  UUID GoalId;
-  int State = vtkROS2ActionClientNode::Idle;
-  int ResultStatus = 0;
+  MessagePtr Goal;          // X_Goal the next SendGoal sends
+  MessagePtr BlankFeedback; // X_Feedback and X_Result shown before the first goal
+  MessagePtr BlankResult;
+
+  /// One goal sent by this client (rclpy's ClientGoalHandle): tracked until the node goes.
+  struct GoalRecord
+  {
+    UUID GoalId;
+    std::string IdText;      // 32 hex digits
+    MessagePtr GoalRequest;  // X_SendGoal_Request
+    MessagePtr LastFeedback; // X_Feedback
+    MessagePtr Result;       // X_Result
+    int State = vtkROS2ActionClientNode::Idle;
+    int ResultStatus = 0;
+    int64_t GoalSequence = -1;
+    int64_t ResultSequence = -1;
+    Clock::time_point Deadline;
+    double GoalTimeout = 0;
+    vtkTypeInt64 Feedbacks = 0;
+    std::string Error;
+
+    bool Active() const
+    {
+      return this->State == vtkROS2ActionClientNode::Accepted || this->State == vtkROS2ActionClientNode::Executing ||
+        this->State == vtkROS2ActionClientNode::Canceling;
+    }
+  };
+  std::vector<std::unique_ptr<GoalRecord>> Goals; // in the order sent
+  GoalRecord* Current = nullptr;                  // the last goal sent (the single-goal API)
+  std::string EventGoalId;                        // the goal of the event being invoked
+
   int LastCancelReturnCode = -1;
-  int64_t GoalSequence = -1;
-  int64_t ResultSequence = -1;
   int64_t CancelSequence = -1;
-  Clock::time_point Deadline;
   Clock::time_point CancelDeadline;
-  double GoalTimeout = 0;
   double Timeout = 5.0;
   std::string LastError;
   vtkTypeInt64 GoalsSent = 0;
@@ -132,11 +165,20 @@ public:
       this->StatusSubscription->matched_publications() > 0;
   }
 
-  bool GoalActive() const
+  bool GoalActive() const { return this->Current && this->Current->Active(); }
+
+  GoalRecord* Find(const char* id)
   {
-    return this->State == vtkROS2ActionClientNode::Accepted || this->State == vtkROS2ActionClientNode::Executing ||
-      this->State == vtkROS2ActionClientNode::Canceling;
+    for (auto& goal : this->Goals)
+    {
+      if (id && goal->IdText == id)
+      {
+        return goal.get();
+      }
+    }
+    return nullptr;
   }
+  const GoalRecord* Find(const char* id) const { return const_cast<vtkInternals*>(this)->Find(id); }
 
   void Release()
   {
@@ -207,9 +249,8 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   if (internals.Type != support || !internals.Goal)
   {
     internals.Goal = NewMessage(*support->goal());
-    internals.GoalRequest = NewMessage(*sendGoal.request());
-    internals.LastFeedback = NewMessage(*support->feedback());
-    internals.Result = NewMessage(*support->result());
+    internals.BlankFeedback = NewMessage(*support->feedback());
+    internals.BlankResult = NewMessage(*support->result());
   }
   internals.Type = support;
   internals.TypeName = support->ros_type;
@@ -230,10 +271,13 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
 void vtkROS2ActionClientNode::Detach()
 {
   vtkInternals& internals = *this->Internals;
-  if (internals.State == WaitingForServer || internals.State == WaitingForAcceptance)
+  for (auto& goal : internals.Goals)
   {
-    internals.State = Failed;
-    internals.LastError = "the ROS node was destroyed before the goal was answered";
+    if (goal->State == WaitingForServer || goal->State == WaitingForAcceptance)
+    {
+      goal->State = Failed;
+      goal->Error = internals.LastError = "the ROS node was destroyed before the goal was answered";
+    }
   }
   internals.Release();
 }
@@ -360,28 +404,29 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
   }
   const ros2vtk::wire::ActionTypeSupport& type = *internals.Type;
   ++internals.GoalsSent;
-  internals.GoalId = RandomGoalId();
-  internals.HasGoal = true;
-  internals.GoalRequest = NewMessage(*type.send_goal()->request());
-  member<UUID>(internals.GoalRequest.get(), internals.At.SendGoalId) = internals.GoalId;
-  type.goal()->copy(internals.Goal.get(), static_cast<char*>(internals.GoalRequest.get()) + internals.At.SendGoalGoal);
-  internals.LastFeedback = NewMessage(*type.feedback());
-  internals.Result = NewMessage(*type.result());
-  internals.Feedbacks = 0;
-  internals.ResultStatus = 0;
+  // Earlier goals stay tracked (by id); this one becomes the current goal.
+  internals.Goals.push_back(std::make_unique<vtkInternals::GoalRecord>());
+  vtkInternals::GoalRecord& goal = *internals.Goals.back();
+  internals.Current = &goal;
+  goal.GoalId = RandomGoalId();
+  goal.IdText = IdText(goal.GoalId);
+  goal.GoalRequest = NewMessage(*type.send_goal()->request());
+  member<UUID>(goal.GoalRequest.get(), internals.At.SendGoalId) = goal.GoalId;
+  type.goal()->copy(internals.Goal.get(), static_cast<char*>(goal.GoalRequest.get()) + internals.At.SendGoalGoal);
+  goal.LastFeedback = NewMessage(*type.feedback());
+  goal.Result = NewMessage(*type.result());
   internals.LastCancelReturnCode = -1;
-  internals.GoalSequence = internals.ResultSequence = internals.CancelSequence = -1;
   internals.LastError.clear();
-  internals.GoalTimeout = internals.Timeout;
-  internals.Deadline =
+  goal.GoalTimeout = internals.Timeout;
+  goal.Deadline =
     Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
   // Written at once when the server is there; otherwise on the spin that sees it (requests
   // are volatile: one written before the server's reader matched would be lost).
-  internals.State = WaitingForServer;
+  goal.State = WaitingForServer;
   if (internals.ServerReady())
   {
-    internals.GoalSequence = internals.SendGoalClient->send_request(internals.GoalRequest.get());
-    internals.State = internals.GoalSequence >= 0 ? WaitingForAcceptance : WaitingForServer;
+    goal.GoalSequence = internals.SendGoalClient->send_request(goal.GoalRequest.get());
+    goal.State = goal.GoalSequence >= 0 ? WaitingForAcceptance : WaitingForServer;
   }
   this->Modified();
   return internals.GoalsSent;
@@ -396,15 +441,44 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoalYAML(const char* yaml)
 //------------------------------------------------------------------------------
 bool vtkROS2ActionClientNode::CancelGoal()
 {
-  vtkInternals& internals = *this->Internals;
-  if (!internals.CancelClient || !internals.GoalActive())
+  return this->CancelGoalById(this->Internals->Current ? this->Internals->Current->IdText.c_str() : "");
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::CancelGoalById(const char* goalId)
+{
+  const vtkInternals::GoalRecord* goal = this->Internals->Find(goalId);
+  if (!this->Internals->CancelClient || !goal || !goal->Active())
   {
-    vtkErrorMacro("CancelGoal: no accepted goal is running (status: " << this->GetStatusAsString() << ")");
+    const std::string which = goalId && *goalId ? std::string(goalId) + " " : std::string();
+    vtkErrorMacro("CancelGoal: no accepted goal " << which << "is running (status: "
+                                                  << this->GetStatusAsStringById(goalId) << ")");
     return false;
   }
   ros2vtk::action_msgs::srv::CancelGoal_Request request;
-  request.goal_info.goal_id = internals.GoalId; // stamp 0: this goal only
-  internals.CancelSequence = internals.CancelClient->send_request(&request);
+  request.goal_info.goal_id = goal->GoalId; // stamp 0: this goal only
+  return this->SendCancelRequest(&request);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::CancelAllGoals()
+{
+  if (!this->Internals->CancelClient)
+  {
+    vtkErrorMacro("CancelAllGoals: the client is not attached to a created ROS node");
+    return false;
+  }
+  // Zero goal id and zero stamp: every goal of the server (rcl_action_process_cancel_request),
+  // as rclcpp's async_cancel_all_goals.
+  ros2vtk::action_msgs::srv::CancelGoal_Request request;
+  return this->SendCancelRequest(&request);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::SendCancelRequest(const void* request)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.CancelSequence = internals.CancelClient->send_request(request);
   if (internals.CancelSequence < 0)
   {
     internals.LastError = "Fast DDS refused to write the cancel request to " + internals.ResolvedName;
@@ -423,22 +497,32 @@ int vtkROS2ActionClientNode::ProcessAction()
   {
     return 0;
   }
-  std::vector<unsigned long> events;
+  // (event, goal id) in the order they happened; observers read GetLastEventGoalId.
+  std::vector<std::pair<unsigned long, std::string>> events;
   const Clock::time_point now = Clock::now();
+  using GoalRecord = vtkInternals::GoalRecord;
+  auto fail = [&](GoalRecord& goal, const std::string& error) {
+    goal.Error = internals.LastError = error;
+  };
 
-  // A goal waiting for the server goes out on the first spin that sees it.
-  if (internals.State == WaitingForServer && internals.ServerReady())
+  // Goals waiting for the server go out on the first spin that sees it.
+  const bool ready = internals.ServerReady();
+  for (auto& goal : internals.Goals)
   {
-    internals.GoalSequence = internals.SendGoalClient->send_request(internals.GoalRequest.get());
-    if (internals.GoalSequence < 0)
+    if (goal->State != WaitingForServer || !ready)
     {
-      internals.State = Failed;
-      internals.LastError = "Fast DDS refused to write the goal to " + internals.ResolvedName;
-      events.push_back(GoalFailedEvent);
+      continue;
+    }
+    goal->GoalSequence = internals.SendGoalClient->send_request(goal->GoalRequest.get());
+    if (goal->GoalSequence < 0)
+    {
+      goal->State = Failed;
+      fail(*goal, "Fast DDS refused to write the goal to " + internals.ResolvedName);
+      events.emplace_back(GoalFailedEvent, goal->IdText);
     }
     else
     {
-      internals.State = WaitingForAcceptance;
+      goal->State = WaitingForAcceptance;
     }
   }
 
@@ -446,45 +530,56 @@ int vtkROS2ActionClientNode::ProcessAction()
   internals.SendGoalClient->take(responses);
   for (auto& response : responses)
   {
-    if (internals.State != WaitingForAcceptance || response.sequence_number != internals.GoalSequence)
+    GoalRecord* goal = nullptr;
+    for (auto& candidate : internals.Goals)
     {
-      continue; // an earlier goal's answer, or a second server's duplicate
+      if (candidate->State == WaitingForAcceptance && response.sequence_number == candidate->GoalSequence)
+      {
+        goal = candidate.get();
+      }
+    }
+    if (!goal)
+    {
+      continue; // a second server's duplicate, or an answer after the timeout
     }
     if (member<bool>(response.response.get(), internals.At.Accepted))
     {
-      internals.State = Accepted;
+      goal->State = Accepted;
       ++internals.GoalsAccepted;
       auto request = NewMessage(*internals.Type->get_result()->request());
-      member<UUID>(request.get(), internals.At.GetResultId) = internals.GoalId;
+      member<UUID>(request.get(), internals.At.GetResultId) = goal->GoalId;
       // Asked at once (as rclcpp does with a result callback); the server answers when done.
-      internals.ResultSequence = internals.GetResultClient->send_request(request.get());
-      if (internals.ResultSequence < 0)
+      goal->ResultSequence = internals.GetResultClient->send_request(request.get());
+      if (goal->ResultSequence < 0)
       {
-        internals.State = Failed;
-        internals.LastError = "Fast DDS refused to write the result request to " + internals.ResolvedName;
+        goal->State = Failed;
+        fail(*goal, "Fast DDS refused to write the result request to " + internals.ResolvedName);
       }
     }
     else
     {
-      internals.State = Rejected;
-      internals.LastError = "goal rejected by " + internals.ResolvedName;
+      goal->State = Rejected;
+      fail(*goal, "goal rejected by " + internals.ResolvedName);
     }
-    events.push_back(GoalResponseEvent);
+    events.emplace_back(GoalResponseEvent, goal->IdText);
   }
 
   std::vector<MessagePtr> messages;
   internals.FeedbackSubscription->take(messages);
   for (auto& message : messages)
   {
-    if (!internals.HasGoal || internals.State == WaitingForServer ||
-      member<UUID>(message.get(), internals.At.FeedbackId) != internals.GoalId)
+    const UUID& id = member<UUID>(message.get(), internals.At.FeedbackId);
+    for (auto& goal : internals.Goals)
     {
-      continue; // feedback goes to every client; each keeps its own goals' (docs/wire-notes.md §8.3)
+      if (goal->State == WaitingForServer || goal->GoalId != id)
+      {
+        continue; // feedback goes to every client; each keeps its own goals' (docs/wire-notes.md §8.3)
+      }
+      internals.Type->feedback()->copy(
+        static_cast<const char*>(message.get()) + internals.At.FeedbackFeedback, goal->LastFeedback.get());
+      ++goal->Feedbacks;
+      events.emplace_back(FeedbackReceivedEvent, goal->IdText);
     }
-    internals.Type->feedback()->copy(
-      static_cast<const char*>(message.get()) + internals.At.FeedbackFeedback, internals.LastFeedback.get());
-    ++internals.Feedbacks;
-    events.push_back(FeedbackReceivedEvent);
   }
 
   messages.clear();
@@ -494,23 +589,26 @@ int vtkROS2ActionClientNode::ProcessAction()
     const auto& array = *static_cast<const ros2vtk::action_msgs::msg::GoalStatusArray*>(message.get());
     for (const auto& status : array.status_list)
     {
-      if (!internals.GoalActive() || status.goal_info.goal_id != internals.GoalId)
+      for (auto& goal : internals.Goals)
       {
-        continue;
-      }
-      // Terminal states come with the result (its own status); the topic gives the way there.
-      const int before = internals.State;
-      if (status.status == GoalStatus::STATUS_EXECUTING && internals.State == Accepted)
-      {
-        internals.State = Executing;
-      }
-      else if (status.status == GoalStatus::STATUS_CANCELING)
-      {
-        internals.State = Canceling;
-      }
-      if (internals.State != before)
-      {
-        this->Modified();
+        if (!goal->Active() || status.goal_info.goal_id != goal->GoalId)
+        {
+          continue;
+        }
+        // Terminal states come with the result (its own status); the topic gives the way there.
+        const int before = goal->State;
+        if (status.status == GoalStatus::STATUS_EXECUTING && goal->State == Accepted)
+        {
+          goal->State = Executing;
+        }
+        else if (status.status == GoalStatus::STATUS_CANCELING)
+        {
+          goal->State = Canceling;
+        }
+        if (goal->State != before)
+        {
+          this->Modified();
+        }
       }
     }
   }
@@ -519,25 +617,33 @@ int vtkROS2ActionClientNode::ProcessAction()
   internals.GetResultClient->take(responses);
   for (auto& response : responses)
   {
-    if (!internals.GoalActive() || response.sequence_number != internals.ResultSequence)
+    GoalRecord* goal = nullptr;
+    for (auto& candidate : internals.Goals)
+    {
+      if (candidate->Active() && response.sequence_number == candidate->ResultSequence)
+      {
+        goal = candidate.get();
+      }
+    }
+    if (!goal)
     {
       continue;
     }
     const void* answer = response.response.get();
-    internals.ResultStatus = member<int8_t>(answer, internals.At.ResultStatus);
-    internals.Type->result()->copy(static_cast<const char*>(answer) + internals.At.ResultResult, internals.Result.get());
+    goal->ResultStatus = member<int8_t>(answer, internals.At.ResultStatus);
+    internals.Type->result()->copy(static_cast<const char*>(answer) + internals.At.ResultResult, goal->Result.get());
     ++internals.Results;
-    switch (internals.ResultStatus)
+    switch (goal->ResultStatus)
     {
-      case GoalStatus::STATUS_SUCCEEDED: internals.State = Succeeded; break;
-      case GoalStatus::STATUS_CANCELED: internals.State = Canceled; break;
-      case GoalStatus::STATUS_ABORTED: internals.State = Aborted; break;
+      case GoalStatus::STATUS_SUCCEEDED: goal->State = Succeeded; break;
+      case GoalStatus::STATUS_CANCELED: goal->State = Canceled; break;
+      case GoalStatus::STATUS_ABORTED: goal->State = Aborted; break;
       default:
-        internals.State = Failed;
-        internals.LastError = internals.ResolvedName + " sent a result with status " +
-          std::to_string(internals.ResultStatus) + " (not succeeded, canceled or aborted)";
+        goal->State = Failed;
+        fail(*goal, internals.ResolvedName + " sent a result with status " + std::to_string(goal->ResultStatus) +
+            " (not succeeded, canceled or aborted)");
     }
-    events.push_back(ResultReceivedEvent);
+    events.emplace_back(ResultReceivedEvent, goal->IdText);
   }
 
   responses.clear();
@@ -556,24 +662,27 @@ int vtkROS2ActionClientNode::ProcessAction()
       internals.LastError = internals.ResolvedName + " refused to cancel the goal (return code " +
         std::to_string(internals.LastCancelReturnCode) + ")";
     }
-    events.push_back(CancelResponseEvent);
+    events.emplace_back(CancelResponseEvent, "");
   }
   if (internals.CancelSequence >= 0 && now >= internals.CancelDeadline)
   {
     internals.CancelSequence = -1;
     internals.LastError = "timed out: " + internals.ResolvedName + " did not answer the cancel request within " +
       FormatSeconds(internals.Timeout);
-    events.push_back(CancelResponseEvent);
+    events.emplace_back(CancelResponseEvent, "");
   }
 
-  if ((internals.State == WaitingForServer || internals.State == WaitingForAcceptance) && now >= internals.Deadline)
+  for (auto& goal : internals.Goals)
   {
-    internals.LastError = internals.State == WaitingForServer
-      ? "timed out: no server for " + internals.ResolvedName + " (" + internals.TypeName + ") appeared within " +
-        FormatSeconds(internals.GoalTimeout)
-      : "timed out: " + internals.ResolvedName + " did not answer the goal within " + FormatSeconds(internals.GoalTimeout);
-    internals.State = TimedOut;
-    events.push_back(GoalFailedEvent);
+    if ((goal->State == WaitingForServer || goal->State == WaitingForAcceptance) && now >= goal->Deadline)
+    {
+      fail(*goal, goal->State == WaitingForServer
+          ? "timed out: no server for " + internals.ResolvedName + " (" + internals.TypeName + ") appeared within " +
+            FormatSeconds(goal->GoalTimeout)
+          : "timed out: " + internals.ResolvedName + " did not answer the goal within " + FormatSeconds(goal->GoalTimeout));
+      goal->State = TimedOut;
+      events.emplace_back(GoalFailedEvent, goal->IdText);
+    }
   }
 
   const uint64_t rejected =
@@ -596,10 +705,12 @@ int vtkROS2ActionClientNode::ProcessAction()
     return 0;
   }
   this->Modified();
-  for (const unsigned long event : events)
+  for (const auto& event : events)
   {
-    this->InvokeEvent(event);
+    internals.EventGoalId = event.second;
+    this->InvokeEvent(event.first);
   }
+  internals.EventGoalId.clear();
   return static_cast<int>(events.size());
 }
 
@@ -687,7 +798,8 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
     vtkErrorMacro("SendGoalAndWait " << this->GetActionName() << ": " << internals.LastError);
     return "";
   }
-  if (internals.Results == 0 || internals.State == Rejected || internals.State == TimedOut || internals.State == Failed)
+  const int state = this->GetGoalStatus();
+  if (state == Rejected || state == TimedOut || state == Failed)
   {
     vtkErrorMacro("SendGoalAndWait " << this->GetActionName() << ": " << internals.LastError);
     return "";
@@ -707,44 +819,64 @@ bool vtkROS2ActionClientNode::WaitForGoal(double timeoutSeconds)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+const char* StateText(int state)
+{
+  switch (state)
+  {
+    case vtkROS2ActionClientNode::WaitingForServer: return "waiting for server";
+    case vtkROS2ActionClientNode::WaitingForAcceptance: return "waiting for acceptance";
+    case vtkROS2ActionClientNode::Rejected: return "rejected";
+    case vtkROS2ActionClientNode::Accepted: return "accepted";
+    case vtkROS2ActionClientNode::Executing: return "executing";
+    case vtkROS2ActionClientNode::Canceling: return "canceling";
+    case vtkROS2ActionClientNode::Succeeded: return "succeeded";
+    case vtkROS2ActionClientNode::Canceled: return "canceled";
+    case vtkROS2ActionClientNode::Aborted: return "aborted";
+    case vtkROS2ActionClientNode::TimedOut: return "timed out";
+    case vtkROS2ActionClientNode::Failed: return "failed";
+    default: return "idle";
+  }
+}
+
+bool StateDone(int state)
+{
+  switch (state)
+  {
+    case vtkROS2ActionClientNode::Rejected:
+    case vtkROS2ActionClientNode::Succeeded:
+    case vtkROS2ActionClientNode::Canceled:
+    case vtkROS2ActionClientNode::Aborted:
+    case vtkROS2ActionClientNode::TimedOut:
+    case vtkROS2ActionClientNode::Failed: return true;
+    default: return false;
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ActionClientNode::CurrentGoalId() const
+{
+  return this->Internals->Current ? this->Internals->Current->IdText.c_str() : "";
+}
+
+//------------------------------------------------------------------------------
 int vtkROS2ActionClientNode::GetGoalStatus() const
 {
-  return this->Internals->State;
+  return this->GetGoalStatusById(this->CurrentGoalId());
 }
 
 //------------------------------------------------------------------------------
 const char* vtkROS2ActionClientNode::GetStatusAsString() const
 {
-  switch (this->Internals->State)
-  {
-    case WaitingForServer: return "waiting for server";
-    case WaitingForAcceptance: return "waiting for acceptance";
-    case Rejected: return "rejected";
-    case Accepted: return "accepted";
-    case Executing: return "executing";
-    case Canceling: return "canceling";
-    case Succeeded: return "succeeded";
-    case Canceled: return "canceled";
-    case Aborted: return "aborted";
-    case TimedOut: return "timed out";
-    case Failed: return "failed";
-    default: return "idle";
-  }
+  return StateText(this->GetGoalStatus());
 }
 
 //------------------------------------------------------------------------------
 bool vtkROS2ActionClientNode::IsGoalDone() const
 {
-  switch (this->Internals->State)
-  {
-    case Rejected:
-    case Succeeded:
-    case Canceled:
-    case Aborted:
-    case TimedOut:
-    case Failed: return true;
-    default: return false;
-  }
+  return StateDone(this->GetGoalStatus());
 }
 
 //------------------------------------------------------------------------------
@@ -756,41 +888,31 @@ const char* vtkROS2ActionClientNode::GetLastError() const
 //------------------------------------------------------------------------------
 std::string vtkROS2ActionClientNode::GetGoalIdAsString() const
 {
-  if (!this->Internals->HasGoal)
-  {
-    return "";
-  }
-  std::string text;
-  char digits[3];
-  for (const uint8_t byte : this->Internals->GoalId.uuid)
-  {
-    std::snprintf(digits, sizeof(digits), "%02x", byte);
-    text += digits;
-  }
-  return text;
+  return this->CurrentGoalId();
 }
 
 //------------------------------------------------------------------------------
 vtkTypeInt64 vtkROS2ActionClientNode::GetNumberOfFeedbacks() const
 {
-  return this->Internals->Feedbacks;
+  return this->GetNumberOfFeedbacksById(this->CurrentGoalId());
 }
 
 //------------------------------------------------------------------------------
 std::string vtkROS2ActionClientNode::GetLastFeedbackYAML() const
 {
-  const vtkInternals& internals = *this->Internals;
-  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->feedback(), internals.LastFeedback.get()) : "";
+  return this->GetLastFeedbackYAMLById(this->CurrentGoalId());
 }
 
 //------------------------------------------------------------------------------
 std::string vtkROS2ActionClientNode::GetFeedbackField(const char* path) const
 {
   const vtkInternals& internals = *this->Internals;
+  const auto* goal = internals.Find(this->CurrentGoalId());
   std::string value;
   std::string error;
   if (!internals.Type || !path ||
-    !ros2vtk::scene::get_field_as_text(*internals.Type->feedback(), internals.LastFeedback.get(), path, value, &error))
+    !ros2vtk::scene::get_field_as_text(*internals.Type->feedback(),
+      goal ? goal->LastFeedback.get() : internals.BlankFeedback.get(), path, value, &error))
   {
     vtkErrorMacro("GetFeedbackField: " << (internals.Type ? error : "the client has no action type yet"));
     return "";
@@ -801,18 +923,127 @@ std::string vtkROS2ActionClientNode::GetFeedbackField(const char* path) const
 //------------------------------------------------------------------------------
 std::string vtkROS2ActionClientNode::GetResultYAML() const
 {
-  const vtkInternals& internals = *this->Internals;
-  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->result(), internals.Result.get()) : "";
+  return this->GetResultYAMLById(this->CurrentGoalId());
 }
 
 //------------------------------------------------------------------------------
 std::string vtkROS2ActionClientNode::GetResultField(const char* path) const
 {
+  return this->GetResultFieldById(this->CurrentGoalId(), path);
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ActionClientNode::GetResultStatus() const
+{
+  return this->GetResultStatusById(this->CurrentGoalId());
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ActionClientNode::GetNumberOfGoals() const
+{
+  return static_cast<int>(this->Internals->Goals.size());
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ActionClientNode::GetNthGoalId(int i) const
+{
+  const auto& goals = this->Internals->Goals;
+  return i >= 0 && i < static_cast<int>(goals.size()) ? goals[static_cast<size_t>(i)]->IdText : std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ActionClientNode::GetLastEventGoalId() const
+{
+  return this->Internals->EventGoalId;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ActionClientNode::GetGoalStatusById(const char* goalId) const
+{
+  const auto* goal = this->Internals->Find(goalId);
+  return goal ? goal->State : Idle;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2ActionClientNode::GetStatusAsStringById(const char* goalId) const
+{
+  return StateText(this->GetGoalStatusById(goalId));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::IsGoalDoneById(const char* goalId) const
+{
+  return StateDone(this->GetGoalStatusById(goalId));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::AreAllGoalsDone() const
+{
+  for (const auto& goal : this->Internals->Goals)
+  {
+    if (!StateDone(goal->State))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::WaitForAllGoals(double timeoutSeconds)
+{
+  if (!(timeoutSeconds > 0) || !std::isfinite(timeoutSeconds))
+  {
+    vtkErrorMacro("WaitForAllGoals: " << timeoutSeconds << " is not a positive number of seconds");
+    return false;
+  }
+  return this->SpinSceneUntil(timeoutSeconds, [](const vtkROS2ActionClientNode* self) { return self->AreAllGoalsDone(); });
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ActionClientNode::GetGoalErrorById(const char* goalId) const
+{
+  const auto* goal = this->Internals->Find(goalId);
+  return goal ? goal->Error : std::string();
+}
+
+//------------------------------------------------------------------------------
+vtkTypeInt64 vtkROS2ActionClientNode::GetNumberOfFeedbacksById(const char* goalId) const
+{
+  const auto* goal = this->Internals->Find(goalId);
+  return goal ? goal->Feedbacks : 0;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ActionClientNode::GetLastFeedbackYAMLById(const char* goalId) const
+{
   const vtkInternals& internals = *this->Internals;
+  const auto* goal = internals.Find(goalId);
+  return internals.Type
+    ? ros2vtk::wire::to_yaml(*internals.Type->feedback(), goal ? goal->LastFeedback.get() : internals.BlankFeedback.get())
+    : "";
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ActionClientNode::GetResultYAMLById(const char* goalId) const
+{
+  const vtkInternals& internals = *this->Internals;
+  const auto* goal = internals.Find(goalId);
+  return internals.Type
+    ? ros2vtk::wire::to_yaml(*internals.Type->result(), goal ? goal->Result.get() : internals.BlankResult.get())
+    : "";
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2ActionClientNode::GetResultFieldById(const char* goalId, const char* path) const
+{
+  const vtkInternals& internals = *this->Internals;
+  const auto* goal = internals.Find(goalId);
   std::string value;
   std::string error;
   if (!internals.Type || !path ||
-    !ros2vtk::scene::get_field_as_text(*internals.Type->result(), internals.Result.get(), path, value, &error))
+    !ros2vtk::scene::get_field_as_text(
+      *internals.Type->result(), goal ? goal->Result.get() : internals.BlankResult.get(), path, value, &error))
   {
     vtkErrorMacro("GetResultField: " << (internals.Type ? error : "the client has no action type yet"));
     return "";
@@ -821,9 +1052,10 @@ std::string vtkROS2ActionClientNode::GetResultField(const char* path) const
 }
 
 //------------------------------------------------------------------------------
-int vtkROS2ActionClientNode::GetResultStatus() const
+int vtkROS2ActionClientNode::GetResultStatusById(const char* goalId) const
 {
-  return this->Internals->ResultStatus;
+  const auto* goal = this->Internals->Find(goalId);
+  return goal ? goal->ResultStatus : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -890,7 +1122,8 @@ void vtkROS2ActionClientNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ActionType: " << this->Internals->TypeName << "\n";
   os << indent << "ServerReady: " << this->IsServerReady() << "\n";
   os << indent << "Status: " << this->GetStatusAsString() << "\n";
-  os << indent << "Feedbacks: " << this->Internals->Feedbacks << "\n";
+  os << indent << "Feedbacks: " << this->GetNumberOfFeedbacks() << "\n";
+  os << indent << "Goals: " << this->Internals->Goals.size() << "\n";
 }
 
 //------------------------------------------------------------------------------

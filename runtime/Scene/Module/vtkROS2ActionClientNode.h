@@ -11,8 +11,9 @@
 // `<action>/_action/send_goal`, `get_result` and `cancel_goal`, the feedback topic and the
 // transient-local status topic. Goals, results and feedback are YAML through the action's
 // generated tables (wire::ActionTypeSupport), so one class serves every generated action type.
-// One goal is tracked at a time: sending a new goal stops tracking the previous one (it is not
-// canceled).
+// Several goals may be in flight (as with rclpy's ActionClient): each is tracked by its goal id
+// (GetNthGoalId, the ...ById accessors); the single-goal API (GetGoalStatus, GetResultYAML,
+// CancelGoal...) reads the last goal sent. CancelAllGoals asks the server to cancel every goal.
 #ifndef vtkROS2ActionClientNode_h
 #define vtkROS2ActionClientNode_h
 
@@ -94,6 +95,11 @@ public:
   /// Asks the server to cancel the current goal (action_msgs/srv/CancelGoal with its id). False
   /// when there is no accepted, unfinished goal.
   bool CancelGoal();
+  /// The same for goal `goalId` (32 hex digits, GetNthGoalId).
+  bool CancelGoalById(const char* goalId);
+  /// Asks the server to cancel every goal it has (zero goal id and zero stamp, as rclcpp's
+  /// async_cancel_all_goals): the goals of other clients of the action too. False when not attached.
+  bool CancelAllGoals();
 
   /// For scripts: sends `goalYAML` and spins every ROS node of the scene until the result
   /// arrives, the goal is rejected or `timeoutSeconds` (<= 0: GetTimeout()) pass. Returns the
@@ -103,6 +109,9 @@ public:
   /// Spins the scene until the current goal is finished (result, rejection, failure) or
   /// `timeoutSeconds` pass; true when it is finished.
   bool WaitForGoal(double timeoutSeconds);
+  /// The same for every goal sent; true when all are finished.
+  bool WaitForAllGoals(double timeoutSeconds);
+  bool AreAllGoalsDone() const;
 
   int GetGoalStatus() const;
   /// "idle", "waiting for server", "waiting for acceptance", "rejected", "accepted",
@@ -133,6 +142,24 @@ public:
   /// return_code of the newest cancel response (action_msgs/srv/CancelGoal: 0 none, 1
   /// rejected, 2 unknown goal id, 3 goal terminated); -1 before one.
   int GetLastCancelReturnCode() const;
+  ///@{
+  /// Every goal sent, in order (tracked until the node is removed), and each one's state by id
+  /// ("" or an unknown id: idle, blank YAML, 0). GetLastEventGoalId: inside an observer, the goal
+  /// the event is about ("" for CancelResponseEvent).
+  int GetNumberOfGoals() const;
+  std::string GetNthGoalId(int i) const;
+  std::string GetLastEventGoalId() const;
+  int GetGoalStatusById(const char* goalId) const;
+  const char* GetStatusAsStringById(const char* goalId) const;
+  bool IsGoalDoneById(const char* goalId) const;
+  std::string GetGoalErrorById(const char* goalId) const;
+  vtkTypeInt64 GetNumberOfFeedbacksById(const char* goalId) const;
+  std::string GetLastFeedbackYAMLById(const char* goalId) const;
+  std::string GetResultYAMLById(const char* goalId) const;
+  std::string GetResultFieldById(const char* goalId, const char* path) const;
+  int GetResultStatusById(const char* goalId) const;
+  ///@}
+
   /// Goals sent, goals accepted, results received.
   vtkTypeInt64 GetNumberOfGoalsSent() const;
   vtkTypeInt64 GetNumberOfGoalsAccepted() const;
@@ -167,6 +194,8 @@ private:
   void operator=(const vtkROS2ActionClientNode&) = delete;
 
   bool SpinSceneUntil(double timeoutSeconds, bool (*done)(const vtkROS2ActionClientNode*));
+  bool SendCancelRequest(const void* request);
+  const char* CurrentGoalId() const;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

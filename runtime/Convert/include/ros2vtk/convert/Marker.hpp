@@ -7,7 +7,9 @@
 #ifndef ros2vtk_convert_Marker_hpp
 #define ros2vtk_convert_Marker_hpp
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkPolyData;
@@ -48,6 +50,39 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
 /// and the colour of the first tuple of its "Color" array (opaque white without one).
 bool poly_data_to_marker(vtkPolyData* poly_data, double length_scale, Marker* marker,
   std::string* error);
+
+/// The markers a display keeps, as RViz does for a MarkerArray topic: each marker under its
+/// (namespace, id), replaced by a later ADD of the same key, dropped by DELETE of that key, all
+/// dropped by DELETEALL. The kind `marker_array` folds every received message into one (the
+/// subscriber node owns it) and draws it with to_poly_data. Markers are kept as received (in
+/// the message's units); scaling happens when drawn.
+class MarkerSet
+{
+public:
+  /// Adds `marker` under (ns, id), replacing what was there. A marker that cannot be drawn
+  /// (unsupported type, zero size, non-unit quaternion...) is refused with a reason, and the
+  /// key is then dropped (the sender replaced the old marker; RViz shows none either).
+  bool add(const std::string& ns, int id, const Marker& marker, std::string* error);
+  /// Drops (ns, id); false when no such marker was kept (not an error for a display).
+  bool remove(const std::string& ns, int id);
+  /// Drops every marker (DELETEALL).
+  void clear() { this->markers.clear(); }
+  size_t size() const { return this->markers.size(); }
+  bool contains(const std::string& ns, int id) const
+  {
+    return this->markers.count(std::make_pair(ns, id)) != 0;
+  }
+
+  /// Every kept marker drawn (marker_to_poly_data) and appended into `poly_data`, in (ns, id)
+  /// order: the points of each, its cells (vertices, lines, polygons), its colour in the RGBA
+  /// point array "Color" (the scalars), and an int cell array "MarkerIndex" numbering the
+  /// markers in that order. No marker: an empty poly data. False (output untouched) only on a
+  /// bad length scale or a null output.
+  bool to_poly_data(double length_scale, vtkPolyData* poly_data, std::string* error) const;
+
+private:
+  std::map<std::pair<std::string, int>, Marker> markers;
+};
 
 } // namespace convert
 } // namespace ros2vtk

@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""Our side of tests/interop/test_scene_marker_array.py: a MarkerArray subscriber node (the
+VTK-wrapped API) on TOPIC; after each spin that brought messages it records what
+GetLastMessage() draws (markers kept, points, each marker's colour, bounds in mm). Prints
+{"ready": true}, then one JSON object with the snapshots once COUNT messages arrived (or S seconds).
+
+    marker_array_runner.py TOPIC [--count N] [--seconds S]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+
+import ros2vtk
+
+
+def snapshot(sub) -> dict:
+    drawn = sub.GetLastMessage()
+    if drawn is None:
+        return {'count': sub.GetNumberOfMessages(), 'drawn': None, 'error': sub.GetLastConversionError()}
+    index = drawn.GetCellData().GetArray('MarkerIndex')
+    color = drawn.GetPointData().GetScalars()
+    colors = {}
+    for cell in range(drawn.GetNumberOfCells()):
+        marker = int(index.GetValue(cell))
+        if marker not in colors:
+            point = drawn.GetCell(cell).GetPointId(0)
+            colors[marker] = [int(color.GetComponent(point, c)) for c in range(4)]
+    return {'count': sub.GetNumberOfMessages(), 'markers': len(colors),
+            'colors': [colors[k] for k in sorted(colors)], 'points': drawn.GetNumberOfPoints(),
+            'lines': drawn.GetNumberOfLines(), 'bounds': list(drawn.GetBounds()),
+            'scalars': color.GetName() if color else None, 'error': sub.GetLastConversionError()}
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument('topic')
+    parser.add_argument('--count', type=int, default=3)
+    parser.add_argument('--seconds', type=float, default=30.0)
+    args = parser.parse_args()
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    sub = node.CreateAndAddSubscriberNode('MarkerArray', args.topic)
+    print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
+    snapshots = []
+    end = time.monotonic() + args.seconds
+    seen = 0
+    while time.monotonic() < end and seen < args.count:
+        logic.SpinOnWakeUp(0.05)
+        if sub.GetNumberOfMessages() != seen:
+            seen = sub.GetNumberOfMessages()
+            snapshots.append(snapshot(sub))
+    print(json.dumps({'snapshots': snapshots}), flush=True)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
