@@ -2,7 +2,7 @@
 """The benchmark suite (targets in markdown() below, results in docs/benchmarks.md): runs every measurement with its
 baseline in the same invocation, writes build/bench/results.json and docs/benchmarks.md.
 
-    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,sender_split,actions,decode,scale,igtl,network]
+    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,sender_split,actions,decode,scale,frame,igtl,network]
                       [--build DIR] [--json FILE] [--markdown FILE]
 
 Run through scripts/bench.sh (set-up, build, then this with the venv's python). Benchmarks
@@ -794,6 +794,24 @@ def markdown(results: dict) -> str:
         targets.append((f'discovery of {scale["topics"]} topics no slower than an rclpy node (medians)',
                         f'{ours_d / rclpy_d:.2f}×', verdict(ours_d <= rclpy_d)))
 
+    frame = results.get('frame')
+    if frame:
+        first = next(iter(frame['robots'].values()))
+        out += ['## 13. The app\'s 3D view: frame time with robots moving', '',
+                f'tests/benchmarks/bench_frame.py: {frame["urdf"]} robots (ros2vtk-sim-robot, tf at 100 Hz) in the app\'s '
+                f'{first["size"][0]}×{first["size"][1]} 3D view, {frame["frames"]} frames at 30 Hz, each: '
+                '`vtkROS2Logic.Spin()`, the display manager\'s `Update()`, `Render()`, from Python as the app does. '
+                'Baseline: the same actors (mappers and properties) in a bare renderer of the same size, every actor '
+                f'turned each frame, `Render()` alone. GL: {"; ".join(first["gl"])}. Times in ms, medians (p99).', '',
+                '| robots | actors | spin | display update | render | whole frame | bare VTK render | frame / bare |',
+                '| --- | --- | --- | --- | --- | --- | --- | --- |']
+        cell = lambda s_: f'{fmt(s_.get("median"))} ({fmt(s_.get("p99"))})'
+        for robots, row in frame['robots'].items():
+            out.append(f'| {robots} | {row["actors"]} | {cell(row["spin_ms"])} | {cell(row["update_ms"])} | '
+                       f'{cell(row["render_ms"])} | {cell(row["frame_ms"])} | {cell(row["bare_render_ms"])} | '
+                       f'{fmt(row["frame_over_bare"], 2)} |')
+        out.append('')
+
     if targets:
         out += ['## Targets', '', '| target | measured | verdict |', '| --- | --- | --- |']
         out += [f'| {t} | {v} | {ok} |' for t, v, ok in targets]
@@ -994,6 +1012,32 @@ def bench_scale(ctx: 'Context') -> dict:
     return out
 
 
+# ----------------------------------------------------------------------------- 13. frame time
+def bench_frame(ctx: 'Context') -> dict:
+    """The app's frame (spin, display update, render of the 3D view) with 1 and 10 sim robots
+    moving, beside a bare VTK render of the same actors (tests/benchmarks/bench_frame.py)."""
+    urdf = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
+    frames = 20 if ctx.quick else 300
+    results = {}
+    for index, robots in enumerate((1,) if ctx.quick else (1, 10)):
+        with Domain(200 + index, ctx.build) as domain:
+            for i in range(1, robots + 1):
+                domain.start([ctx.build / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', urdf, '--rate', '100',
+                              '--namespace', f'/robot{i}', '--frame-prefix', f'robot{i}/'])
+            result = last_json(domain.start([SYSTEM_PYTHON, REPO / 'tests' / 'benchmarks' / 'bench_frame.py',
+                                             '--robots', robots, '--frames', frames]),
+                               timeout=180 + frames / 10)
+        row = {key: result[key] for key in ('robots', 'loaded', 'links', 'actors', 'size', 'gl')}
+        for key in ('spin_ms', 'update_ms', 'render_ms', 'frame_ms', 'bare_render_ms', 'messages'):
+            row[key] = summary(result[key])
+        row['frame_over_bare'] = row['frame_ms']['median'] / row['bare_render_ms']['median']
+        results[str(robots)] = row
+        progress(f'frame, {robots:2d} robot(s), {row["actors"]} actors: frame {row["frame_ms"]["median"]:.2f} ms '
+                 f'(spin {row["spin_ms"]["median"]:.2f}, update {row["update_ms"]["median"]:.2f}, render '
+                 f'{row["render_ms"]["median"]:.2f}); bare VTK render {row["bare_render_ms"]["median"]:.2f} ms')
+    return {'urdf': str(urdf.relative_to(REPO)), 'frames': frames, 'robots': results}
+
+
 # ----------------------------------------------------------------------------- 9. sender split (issue 17)
 SPLIT_STREAMS = [
     ('pose_1khz', 'PoseStamped', 1000, 5.0, []),
@@ -1189,7 +1233,7 @@ SECTIONS: dict[str, Callable[[Context], dict]] = {
     'spin': bench_spin, 'round_trip': bench_round_trip, 'throughput': bench_throughput,
     'robot_load': bench_robot_load, 'generator': bench_generator, 'services': bench_services,
     'sender_split': bench_sender_split, 'actions': bench_actions, 'decode': bench_decode,
-    'scale': bench_scale,
+    'scale': bench_scale, 'frame': bench_frame,
     'igtl': bench_igtl, 'network': bench_network,
 }
 
