@@ -5,9 +5,9 @@
 // unique_identifier_msgs and the member names rosidl gives every synthesized type) is named here.
 #include "vtkROS2ActionClientNode.h"
 
-#include "ActionMembers.hpp"
-#include "MessageFields.hpp"
-#include "RateLimitedReport.hpp"
+#include "Internal/ActionMembers.hpp"
+#include "Internal/MessageFields.hpp"
+#include "Internal/RateLimitedReport.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 

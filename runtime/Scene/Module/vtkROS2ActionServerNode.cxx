@@ -4,9 +4,9 @@
 // fixed action protocol (action_msgs, unique_identifier_msgs) is named here.
 #include "vtkROS2ActionServerNode.h"
 
-#include "ActionMembers.hpp"
-#include "MessageFields.hpp"
-#include "RateLimitedReport.hpp"
+#include "Internal/ActionMembers.hpp"
+#include "Internal/MessageFields.hpp"
+#include "Internal/RateLimitedReport.hpp"
 #include "vtkROS2NodeNode.h"
 
 #include "ros2vtk/action_msgs/msg/goal_status.hpp"

@@ -4,7 +4,7 @@
 
 #include "vtkROS2Message.h"
 
-#include "MessageFields.hpp"
+#include "Internal/MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
