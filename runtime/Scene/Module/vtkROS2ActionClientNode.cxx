@@ -83,9 +83,6 @@ class vtkROS2ActionClientNode::vtkInternals
 {
 public:
   const ros2vtk::wire::ActionTypeSupport* Type = nullptr;
-  std::string TypeName;   // as given (saved with the scene)
-  std::string ActionName; // as given
-  std::string ResolvedName;
   ros2vtk::scene::ActionMembers At; // where the synthesized members sit in this action's types
   std::unique_ptr<ros2vtk::wire::ServiceClient> SendGoalClient;
   std::unique_ptr<ros2vtk::wire::ServiceClient> GetResultClient;
@@ -111,7 +108,6 @@ public:
   Clock::time_point Deadline;
   Clock::time_point CancelDeadline;
   double GoalTimeout = 0;
-  double Timeout = 5.0;
   std::string LastError;
   vtkTypeInt64 GoalsSent = 0;
   vtkTypeInt64 GoalsAccepted = 0;
@@ -151,7 +147,8 @@ public:
 
 //------------------------------------------------------------------------------
 vtkROS2ActionClientNode::vtkROS2ActionClientNode()
-  : Internals(new vtkInternals)
+  : vtkROS2EndpointNode("action", "timeout")
+  , Internals(new vtkInternals)
 {
 }
 
@@ -212,9 +209,6 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     internals.Result = NewMessage(*support->result());
   }
   internals.Type = support;
-  internals.TypeName = support->ros_type;
-  internals.ActionName = action;
-  internals.ResolvedName = resolved;
   internals.At = at;
   internals.SendGoalClient = std::move(sendGoalClient);
   internals.GetResultClient = std::move(getResultClient);
@@ -222,7 +216,7 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.FeedbackSubscription = std::move(feedback);
   internals.StatusSubscription = std::move(status);
   internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
-  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
+  this->EndpointAttached(rosNode, support->ros_type, action, resolved);
   return true;
 }
 
@@ -239,33 +233,9 @@ void vtkROS2ActionClientNode::Detach()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::OnRemovedFromScene()
+bool vtkROS2ActionClientNode::IsEndpointAttached() const
 {
-  this->Detach();
-  this->Superclass::OnRemovedFromScene();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::OnSceneRestored()
-{
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->SendGoalClient && !this->Internals->TypeName.empty())
-  {
-    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ActionName);
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionClientNode::GetActionName() const
-{
-  const vtkInternals& internals = *this->Internals;
-  return internals.SendGoalClient ? internals.ResolvedName.c_str() : internals.ActionName.c_str();
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionClientNode::GetActionType() const
-{
-  return this->Internals->TypeName.c_str();
+  return this->Internals->SendGoalClient != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -329,27 +299,6 @@ void vtkROS2ActionClientNode::ResetGoal()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::SetTimeout(double seconds)
-{
-  if (!(seconds > 0) || !std::isfinite(seconds))
-  {
-    vtkErrorMacro("SetTimeout: " << seconds << " is not a positive number of seconds");
-    return;
-  }
-  if (seconds != this->Internals->Timeout)
-  {
-    this->Internals->Timeout = seconds;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-double vtkROS2ActionClientNode::GetTimeout() const
-{
-  return this->Internals->Timeout;
-}
-
-//------------------------------------------------------------------------------
 vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
 {
   vtkInternals& internals = *this->Internals;
@@ -372,9 +321,9 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
   internals.LastCancelReturnCode = -1;
   internals.GoalSequence = internals.ResultSequence = internals.CancelSequence = -1;
   internals.LastError.clear();
-  internals.GoalTimeout = internals.Timeout;
+  internals.GoalTimeout = this->EndpointTimeout;
   internals.Deadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
+    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
   // Written at once when the server is there; otherwise on the spin that sees it (requests
   // are volatile: one written before the server's reader matched would be lost).
   internals.State = WaitingForServer;
@@ -407,11 +356,11 @@ bool vtkROS2ActionClientNode::CancelGoal()
   internals.CancelSequence = internals.CancelClient->send_request(&request);
   if (internals.CancelSequence < 0)
   {
-    internals.LastError = "Fast DDS refused to write the cancel request to " + internals.ResolvedName;
+    internals.LastError = "Fast DDS refused to write the cancel request to " + std::string(this->GetActionName());
     return false;
   }
   internals.CancelDeadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
+    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
   return true;
 }
 
@@ -433,7 +382,7 @@ int vtkROS2ActionClientNode::ProcessAction()
     if (internals.GoalSequence < 0)
     {
       internals.State = Failed;
-      internals.LastError = "Fast DDS refused to write the goal to " + internals.ResolvedName;
+      internals.LastError = "Fast DDS refused to write the goal to " + std::string(this->GetActionName());
       events.push_back(GoalFailedEvent);
     }
     else
@@ -461,13 +410,13 @@ int vtkROS2ActionClientNode::ProcessAction()
       if (internals.ResultSequence < 0)
       {
         internals.State = Failed;
-        internals.LastError = "Fast DDS refused to write the result request to " + internals.ResolvedName;
+        internals.LastError = "Fast DDS refused to write the result request to " + std::string(this->GetActionName());
       }
     }
     else
     {
       internals.State = Rejected;
-      internals.LastError = "goal rejected by " + internals.ResolvedName;
+      internals.LastError = "goal rejected by " + std::string(this->GetActionName());
     }
     events.push_back(GoalResponseEvent);
   }
@@ -534,7 +483,7 @@ int vtkROS2ActionClientNode::ProcessAction()
       case GoalStatus::STATUS_ABORTED: internals.State = Aborted; break;
       default:
         internals.State = Failed;
-        internals.LastError = internals.ResolvedName + " sent a result with status " +
+        internals.LastError = std::string(this->GetActionName()) + " sent a result with status " +
           std::to_string(internals.ResultStatus) + " (not succeeded, canceled or aborted)";
     }
     events.push_back(ResultReceivedEvent);
@@ -553,7 +502,7 @@ int vtkROS2ActionClientNode::ProcessAction()
       static_cast<const ros2vtk::action_msgs::srv::CancelGoal_Response*>(response.response.get())->return_code;
     if (internals.LastCancelReturnCode != 0)
     {
-      internals.LastError = internals.ResolvedName + " refused to cancel the goal (return code " +
+      internals.LastError = std::string(this->GetActionName()) + " refused to cancel the goal (return code " +
         std::to_string(internals.LastCancelReturnCode) + ")";
     }
     events.push_back(CancelResponseEvent);
@@ -561,17 +510,17 @@ int vtkROS2ActionClientNode::ProcessAction()
   if (internals.CancelSequence >= 0 && now >= internals.CancelDeadline)
   {
     internals.CancelSequence = -1;
-    internals.LastError = "timed out: " + internals.ResolvedName + " did not answer the cancel request within " +
-      FormatSeconds(internals.Timeout);
+    internals.LastError = "timed out: " + std::string(this->GetActionName()) + " did not answer the cancel request within " +
+      FormatSeconds(this->EndpointTimeout);
     events.push_back(CancelResponseEvent);
   }
 
   if ((internals.State == WaitingForServer || internals.State == WaitingForAcceptance) && now >= internals.Deadline)
   {
     internals.LastError = internals.State == WaitingForServer
-      ? "timed out: no server for " + internals.ResolvedName + " (" + internals.TypeName + ") appeared within " +
+      ? "timed out: no server for " + std::string(this->GetActionName()) + " (" + std::string(this->GetActionType()) + ") appeared within " +
         FormatSeconds(internals.GoalTimeout)
-      : "timed out: " + internals.ResolvedName + " did not answer the goal within " + FormatSeconds(internals.GoalTimeout);
+      : "timed out: " + std::string(this->GetActionName()) + " did not answer the goal within " + FormatSeconds(internals.GoalTimeout);
     internals.State = TimedOut;
     events.push_back(GoalFailedEvent);
   }
@@ -586,7 +535,7 @@ int vtkROS2ActionClientNode::ProcessAction()
     const std::string reason = internals.StatusSubscription->last_rejection().empty()
       ? internals.FeedbackSubscription->last_rejection()
       : internals.StatusSubscription->last_rejection();
-    vtkWarningMacro("action '" << internals.ResolvedName << "': " << due
+    vtkWarningMacro("action '" << this->GetActionName() << "': " << due
                                << " malformed feedback/status sample(s) rejected (total " << internals.Rejected
                                << "; latest: " << reason << ")");
   }
@@ -667,11 +616,11 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
     vtkErrorMacro("SendGoalAndWait: already waiting on this action client (called from an observer?)");
     return "";
   }
-  const double seconds = timeoutSeconds > 0 && std::isfinite(timeoutSeconds) ? timeoutSeconds : internals.Timeout;
-  const double savedTimeout = internals.Timeout;
-  internals.Timeout = seconds; // the goal's own deadline for server and acceptance
+  const double seconds = timeoutSeconds > 0 && std::isfinite(timeoutSeconds) ? timeoutSeconds : this->EndpointTimeout;
+  const double savedTimeout = this->EndpointTimeout;
+  this->EndpointTimeout = seconds; // the goal's own deadline for server and acceptance
   const vtkTypeInt64 goal = this->SendGoalYAML(goalYAML);
-  internals.Timeout = savedTimeout;
+  this->EndpointTimeout = savedTimeout;
   if (goal < 0)
   {
     internals.LastError = "invalid goal YAML";
@@ -681,7 +630,7 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
   {
     if (internals.LastError.empty())
     {
-      internals.LastError = "timed out: " + internals.ResolvedName + " sent no result within " + FormatSeconds(seconds) +
+      internals.LastError = "timed out: " + std::string(this->GetActionName()) + " sent no result within " + FormatSeconds(seconds) +
         " (the goal is " + this->GetStatusAsString() + ")";
     }
     vtkErrorMacro("SendGoalAndWait " << this->GetActionName() << ": " << internals.LastError);
@@ -851,43 +800,9 @@ vtkTypeInt64 vtkROS2ActionClientNode::GetNumberOfResults() const
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::WriteXML(vtkXMLDataElement* element)
-{
-  this->Superclass::WriteXML(element);
-  element->SetAttribute("actionType", this->Internals->TypeName.c_str());
-  element->SetAttribute("actionName", this->Internals->ActionName.c_str());
-  element->SetDoubleAttribute("timeout", this->Internals->Timeout);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2ActionClientNode::ReadXML(vtkXMLDataElement* element)
-{
-  if (!this->Superclass::ReadXML(element))
-  {
-    return false;
-  }
-  if (const char* type = element->GetAttribute("actionType"))
-  {
-    this->Internals->TypeName = type;
-  }
-  if (const char* name = element->GetAttribute("actionName"))
-  {
-    this->Internals->ActionName = name;
-  }
-  double timeout = 0;
-  if (element->GetScalarAttribute("timeout", timeout) && timeout > 0 && std::isfinite(timeout))
-  {
-    this->Internals->Timeout = timeout;
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkROS2ActionClientNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ActionName: " << this->GetActionName() << "\n";
-  os << indent << "ActionType: " << this->Internals->TypeName << "\n";
   os << indent << "ServerReady: " << this->IsServerReady() << "\n";
   os << indent << "Status: " << this->GetStatusAsString() << "\n";
   os << indent << "Feedbacks: " << this->Internals->Feedbacks << "\n";

@@ -84,9 +84,6 @@ public:
   };
 
   const ros2vtk::wire::ActionTypeSupport* Type = nullptr;
-  std::string TypeName;
-  std::string ActionName;
-  std::string ResolvedName;
   ros2vtk::scene::ActionMembers At;
   vtkROS2NodeNode* ROSNode = nullptr;
   std::unique_ptr<ros2vtk::wire::ServiceServer> SendGoalServer;
@@ -160,7 +157,8 @@ public:
 
 //------------------------------------------------------------------------------
 vtkROS2ActionServerNode::vtkROS2ActionServerNode()
-  : Internals(new vtkInternals)
+  : vtkROS2EndpointNode("action", nullptr)
+  , Internals(new vtkInternals)
 {
 }
 
@@ -208,9 +206,6 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     return false;
   }
   internals.Type = support;
-  internals.TypeName = support->ros_type;
-  internals.ActionName = action;
-  internals.ResolvedName = resolved;
   internals.At = at;
   internals.ROSNode = rosNode;
   internals.SendGoalServer = std::move(sendGoal);
@@ -220,7 +215,7 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.StatusPublisher = std::move(status);
   internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
   internals.Goals.clear();
-  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
+  this->EndpointAttached(rosNode, support->ros_type, action, resolved);
   return true;
 }
 
@@ -231,33 +226,9 @@ void vtkROS2ActionServerNode::Detach()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionServerNode::OnRemovedFromScene()
+bool vtkROS2ActionServerNode::IsEndpointAttached() const
 {
-  this->Detach();
-  this->Superclass::OnRemovedFromScene();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2ActionServerNode::OnSceneRestored()
-{
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->SendGoalServer && !this->Internals->TypeName.empty())
-  {
-    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ActionName);
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionServerNode::GetActionName() const
-{
-  const vtkInternals& internals = *this->Internals;
-  return internals.SendGoalServer ? internals.ResolvedName.c_str() : internals.ActionName.c_str();
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionServerNode::GetActionType() const
-{
-  return this->Internals->TypeName.c_str();
+  return this->Internals->SendGoalServer != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -384,7 +355,7 @@ int vtkROS2ActionServerNode::ProcessRequests()
     {
       reason = reason.empty() ? server->last_rejection() : reason;
     }
-    vtkWarningMacro("action '" << internals.ResolvedName << "': " << due << " malformed request(s) rejected (total "
+    vtkWarningMacro("action '" << this->GetActionName() << "': " << due << " malformed request(s) rejected (total "
                                << internals.Malformed << "; latest: " << reason << ")");
   }
 
@@ -576,37 +547,9 @@ int vtkROS2ActionServerNode::GetNumberOfActiveGoals() const
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionServerNode::WriteXML(vtkXMLDataElement* element)
-{
-  this->Superclass::WriteXML(element);
-  element->SetAttribute("actionType", this->Internals->TypeName.c_str());
-  element->SetAttribute("actionName", this->Internals->ActionName.c_str());
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2ActionServerNode::ReadXML(vtkXMLDataElement* element)
-{
-  if (!this->Superclass::ReadXML(element))
-  {
-    return false;
-  }
-  if (const char* type = element->GetAttribute("actionType"))
-  {
-    this->Internals->TypeName = type;
-  }
-  if (const char* name = element->GetAttribute("actionName"))
-  {
-    this->Internals->ActionName = name;
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkROS2ActionServerNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ActionName: " << this->GetActionName() << "\n";
-  os << indent << "ActionType: " << this->Internals->TypeName << "\n";
   os << indent << "Goals: " << this->Internals->Goals.size() << "\n";
 }
 
