@@ -165,37 +165,27 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   }
   ros2vtk::wire::Participant& participant = *rosNode->GetParticipant();
   std::string error;
-  const ros2vtk::wire::ActionTypeSupport* support = ros2vtk::wire::find_action_type(type, &error);
-  std::string resolved;
-  if (!support || !participant.resolve_name(action, resolved, &error))
+  ros2vtk::scene::ActionEndpoints endpoints;
+  if (!ros2vtk::scene::find_action_endpoints(participant, type, action, endpoints, &error))
   {
     vtkErrorMacro("action client " << action << ": " << error);
     return false;
   }
-  ros2vtk::scene::ActionMembers at;
-  if (!ros2vtk::scene::find_action_members(*support, at, &error))
-  {
-    vtkErrorMacro("action client " << action << ": " << error);
-    return false;
-  }
+  const ros2vtk::wire::ActionTypeSupport* support = endpoints.Type;
   const auto& sendGoal = *support->send_goal();
-  const auto& getResult = *support->get_result();
-  const auto& feedbackMessage = *support->feedback_message();
-  // rcl_action's endpoints and default QoS (docs/wire-notes.md §8.1).
-  const std::string prefix = resolved + "/_action/";
-  const auto services = ros2vtk::wire::QoS::services();
-  auto sendGoalClient = participant.create_service_client(sendGoal, prefix + "send_goal", services, &error);
-  auto getResultClient =
-    sendGoalClient ? participant.create_service_client(getResult, prefix + "get_result", services, &error) : nullptr;
-  auto cancelClient = getResultClient
-    ? participant.create_service_client(*support->cancel_goal(), prefix + "cancel_goal", services, &error)
+  auto sendGoalClient = participant.create_service_client(sendGoal, endpoints.SendGoal, endpoints.ServiceQoS, &error);
+  auto getResultClient = sendGoalClient
+    ? participant.create_service_client(*support->get_result(), endpoints.GetResult, endpoints.ServiceQoS, &error)
     : nullptr;
-  auto feedback = cancelClient ? participant.create_subscription(feedbackMessage, prefix + "feedback",
-                                   ros2vtk::wire::QoS::default_profile(), &error)
+  auto cancelClient = getResultClient
+    ? participant.create_service_client(*support->cancel_goal(), endpoints.CancelGoal, endpoints.ServiceQoS, &error)
+    : nullptr;
+  auto feedback = cancelClient ? participant.create_subscription(*support->feedback_message(), endpoints.Feedback,
+                                   endpoints.FeedbackQoS, &error)
                                : nullptr;
-  auto status = feedback ? participant.create_subscription(*support->status(), prefix + "status",
-                             ros2vtk::wire::QoS::transient_local(1), &error)
-                         : nullptr;
+  auto status = feedback
+    ? participant.create_subscription(*support->status(), endpoints.Status, endpoints.StatusQoS, &error)
+    : nullptr;
   if (!status)
   {
     vtkErrorMacro("action client " << action << ": " << error);
@@ -209,14 +199,14 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     internals.Result = NewMessage(*support->result());
   }
   internals.Type = support;
-  internals.At = at;
+  internals.At = endpoints.At;
   internals.SendGoalClient = std::move(sendGoalClient);
   internals.GetResultClient = std::move(getResultClient);
   internals.CancelClient = std::move(cancelClient);
   internals.FeedbackSubscription = std::move(feedback);
   internals.StatusSubscription = std::move(status);
   internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
-  this->EndpointAttached(rosNode, support->ros_type, action, resolved);
+  this->EndpointAttached(rosNode, support->ros_type, action, endpoints.ResolvedName);
   return true;
 }
 

@@ -175,38 +175,34 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   }
   ros2vtk::wire::Participant& participant = *rosNode->GetParticipant();
   std::string error;
-  const ros2vtk::wire::ActionTypeSupport* support = ros2vtk::wire::find_action_type(type, &error);
-  std::string resolved;
-  ros2vtk::scene::ActionMembers at;
-  if (!support || !participant.resolve_name(action, resolved, &error) ||
-    !ros2vtk::scene::find_action_members(*support, at, &error))
+  ros2vtk::scene::ActionEndpoints endpoints;
+  if (!ros2vtk::scene::find_action_endpoints(participant, type, action, endpoints, &error))
   {
     vtkErrorMacro("action server " << action << ": " << error);
     return false;
   }
-  // rcl_action's endpoints and default QoS (docs/wire-notes.md §8.1).
-  const std::string prefix = resolved + "/_action/";
-  const auto services = ros2vtk::wire::QoS::services();
-  auto sendGoal = participant.create_service_server(*support->send_goal(), prefix + "send_goal", services, &error);
+  const ros2vtk::wire::ActionTypeSupport* support = endpoints.Type;
+  auto sendGoal =
+    participant.create_service_server(*support->send_goal(), endpoints.SendGoal, endpoints.ServiceQoS, &error);
   auto getResult = sendGoal
-    ? participant.create_service_server(*support->get_result(), prefix + "get_result", services, &error)
+    ? participant.create_service_server(*support->get_result(), endpoints.GetResult, endpoints.ServiceQoS, &error)
     : nullptr;
   auto cancel = getResult
-    ? participant.create_service_server(*support->cancel_goal(), prefix + "cancel_goal", services, &error)
+    ? participant.create_service_server(*support->cancel_goal(), endpoints.CancelGoal, endpoints.ServiceQoS, &error)
     : nullptr;
-  auto feedback = cancel ? participant.create_publisher(*support->feedback_message(), prefix + "feedback",
-                             ros2vtk::wire::QoS::default_profile(), &error)
+  auto feedback = cancel ? participant.create_publisher(*support->feedback_message(), endpoints.Feedback,
+                             endpoints.FeedbackQoS, &error)
                          : nullptr;
-  auto status = feedback ? participant.create_publisher(*support->status(), prefix + "status",
-                             ros2vtk::wire::QoS::transient_local(1), &error)
-                         : nullptr;
+  auto status = feedback
+    ? participant.create_publisher(*support->status(), endpoints.Status, endpoints.StatusQoS, &error)
+    : nullptr;
   if (!status)
   {
     vtkErrorMacro("action server " << action << ": " << error);
     return false;
   }
   internals.Type = support;
-  internals.At = at;
+  internals.At = endpoints.At;
   internals.ROSNode = rosNode;
   internals.SendGoalServer = std::move(sendGoal);
   internals.GetResultServer = std::move(getResult);
@@ -215,7 +211,7 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.StatusPublisher = std::move(status);
   internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
   internals.Goals.clear();
-  this->EndpointAttached(rosNode, support->ros_type, action, resolved);
+  this->EndpointAttached(rosNode, support->ros_type, action, endpoints.ResolvedName);
   return true;
 }
 
