@@ -10,7 +10,7 @@
 #include "FuzzDriver.hpp"
 
 #include "SampleType.hpp"
-#include "SceneXmlReader.hpp"
+#include "Internal/SceneXmlReader.hpp"
 
 #include "ros2vtk/convert/MultiArray.hpp"
 #include "ros2vtk/robot/KinematicTree.hpp"

@@ -260,6 +260,45 @@ def test_scene_file_of_the_previous_version_loads(logic, ros2vtk, tmp_path):
     assert 'role="ROS2Node"' not in written and written.count('role="ros2Node"') == 5
 
 
+def test_endpoint_nodes_of_the_version_before_their_base_class_load(logic, ros2vtk):
+    """tests/scene/data/endpoint_nodes_before_base_class.xml was written by the version before
+    vtkROS2EndpointNode (main at f7f938e: a service client and server, an action client and
+    server, with non-default timeouts). Every property comes back, each node re-attaches to its
+    ROS node and is found by name, and writing the scene again gives the same attributes."""
+    import xml.etree.ElementTree as ET
+    from pathlib import Path
+    fixture = Path(__file__).resolve().parents[1] / 'scene' / 'data' / 'endpoint_nodes_before_base_class.xml'
+    scene = logic.GetScene()
+    assert scene.ReadFromXMLFile(str(fixture))
+    node = logic.GetDefaultROS2Node()
+    assert node.GetID() == 'vtkROS2NodeNode1' and node.IsCreated()
+    client = node.GetServiceClientNodeByService('/enable')
+    server = node.GetServiceServerNodeByService('/enable')
+    action_client = node.GetActionClientNodeByAction('/fibonacci')
+    action_server = node.GetActionServerNodeByAction('/fibonacci')
+    for child in (client, server, action_client, action_server):
+        assert child is not None
+        assert isinstance(child, ros2vtk.vtkROS2EndpointNode)
+        assert child.GetROS2Node() is node
+        assert child.GetROS2NodeChildKey() == ('/enable' if 'Service' in child.GetClassName() else '/fibonacci')
+    assert (client.GetServiceName(), client.GetServiceType(), client.GetTimeout()) == \
+        ('/enable', 'std_srvs/srv/SetBool', 3.0)
+    assert (server.GetServiceName(), server.GetServiceType(), server.GetResponseTimeout()) == \
+        ('/enable', 'std_srvs/srv/SetBool', 2.5)
+    assert not server.GetAnswerUnansweredWithDefault()
+    assert (action_client.GetActionName(), action_client.GetActionType(), action_client.GetTimeout()) == \
+        ('/fibonacci', 'test_msgs/action/Fibonacci', 4.0)
+    assert (action_server.GetActionName(), action_server.GetActionType()) == ('/fibonacci', 'test_msgs/action/Fibonacci')
+    # Re-attached: the wire endpoints exist again (a client and a server of one process match).
+    assert ros2vtk.spin_until(logic, client.IsServiceReady, seconds=10)
+    assert ros2vtk.spin_until(logic, action_client.IsServerReady, seconds=10)
+
+    def endpoints(text):
+        return {element.tag: element.attrib for element in ET.fromstring(text)
+                if element.tag.startswith(('vtkROS2Service', 'vtkROS2Action'))}
+    assert endpoints(scene.WriteToXMLString()) == endpoints(fixture.read_text())
+
+
 def test_type_description_service_switch_is_read_only_and_saved(logic, ros2vtk):
     # rclpy's start_type_description_service: default true, read-only once the node exists.
     import vtk

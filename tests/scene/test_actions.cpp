@@ -9,7 +9,7 @@
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
-#include "ActionMembers.hpp"
+#include "Internal/ActionMembers.hpp"
 
 #include "ros2vtk/wire/CdrWriter.hpp"
 #include "ros2vtk/wire/MessageTypeSupport.hpp"

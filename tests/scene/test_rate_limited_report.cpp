@@ -1,4 +1,4 @@
-#include "RateLimitedReport.hpp"
+#include "Internal/RateLimitedReport.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // is checked by counts: the largest document inside a limit reads, one more element, level or
 // attribute is refused with a reason, before any VTK element exists. Times are in
 // bench_scene_xml (a benchmark, not a test).
-#include "SceneXmlReader.hpp"
+#include "Internal/SceneXmlReader.hpp"
 
 #include <vtkXMLDataElement.h>
 

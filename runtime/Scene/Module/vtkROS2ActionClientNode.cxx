@@ -5,9 +5,9 @@
 // unique_identifier_msgs and the member names rosidl gives every synthesized type) is named here.
 #include "vtkROS2ActionClientNode.h"
 
-#include "ActionMembers.hpp"
-#include "MessageFields.hpp"
-#include "RateLimitedReport.hpp"
+#include "Internal/ActionMembers.hpp"
+#include "Internal/MessageFields.hpp"
+#include "Internal/RateLimitedReport.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -97,9 +97,6 @@ class vtkROS2ActionClientNode::vtkInternals
 {
 public:
   const ros2vtk::wire::ActionTypeSupport* Type = nullptr;
-  std::string TypeName;   // as given (saved with the scene)
-  std::string ActionName; // as given
-  std::string ResolvedName;
   ros2vtk::scene::ActionMembers At; // where the synthesized members sit in this action's types
   std::unique_ptr<ros2vtk::wire::ServiceClient> SendGoalClient;
   std::unique_ptr<ros2vtk::wire::ServiceClient> GetResultClient;
@@ -144,7 +141,6 @@ public:
   int LastCancelReturnCode = -1;
   int64_t CancelSequence = -1;
   Clock::time_point CancelDeadline;
-  double Timeout = 5.0;
   std::string LastError;
   vtkTypeInt64 GoalsSent = 0;
   vtkTypeInt64 GoalsAccepted = 0;
@@ -193,7 +189,8 @@ public:
 
 //------------------------------------------------------------------------------
 vtkROS2ActionClientNode::vtkROS2ActionClientNode()
-  : Internals(new vtkInternals)
+  : vtkROS2EndpointNode("action", "timeout")
+  , Internals(new vtkInternals)
 {
 }
 
@@ -210,37 +207,27 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   }
   ros2vtk::wire::Participant& participant = *rosNode->GetParticipant();
   std::string error;
-  const ros2vtk::wire::ActionTypeSupport* support = ros2vtk::wire::find_action_type(type, &error);
-  std::string resolved;
-  if (!support || !participant.resolve_name(action, resolved, &error))
+  ros2vtk::scene::ActionEndpoints endpoints;
+  if (!ros2vtk::scene::find_action_endpoints(participant, type, action, endpoints, &error))
   {
     vtkErrorMacro("action client " << action << ": " << error);
     return false;
   }
-  ros2vtk::scene::ActionMembers at;
-  if (!ros2vtk::scene::find_action_members(*support, at, &error))
-  {
-    vtkErrorMacro("action client " << action << ": " << error);
-    return false;
-  }
+  const ros2vtk::wire::ActionTypeSupport* support = endpoints.Type;
   const auto& sendGoal = *support->send_goal();
-  const auto& getResult = *support->get_result();
-  const auto& feedbackMessage = *support->feedback_message();
-  // rcl_action's endpoints and default QoS (docs/wire-notes.md §8.1).
-  const std::string prefix = resolved + "/_action/";
-  const auto services = ros2vtk::wire::QoS::services();
-  auto sendGoalClient = participant.create_service_client(sendGoal, prefix + "send_goal", services, &error);
-  auto getResultClient =
-    sendGoalClient ? participant.create_service_client(getResult, prefix + "get_result", services, &error) : nullptr;
-  auto cancelClient = getResultClient
-    ? participant.create_service_client(*support->cancel_goal(), prefix + "cancel_goal", services, &error)
+  auto sendGoalClient = participant.create_service_client(sendGoal, endpoints.SendGoal, endpoints.ServiceQoS, &error);
+  auto getResultClient = sendGoalClient
+    ? participant.create_service_client(*support->get_result(), endpoints.GetResult, endpoints.ServiceQoS, &error)
     : nullptr;
-  auto feedback = cancelClient ? participant.create_subscription(feedbackMessage, prefix + "feedback",
-                                   ros2vtk::wire::QoS::default_profile(), &error)
+  auto cancelClient = getResultClient
+    ? participant.create_service_client(*support->cancel_goal(), endpoints.CancelGoal, endpoints.ServiceQoS, &error)
+    : nullptr;
+  auto feedback = cancelClient ? participant.create_subscription(*support->feedback_message(), endpoints.Feedback,
+                                   endpoints.FeedbackQoS, &error)
                                : nullptr;
-  auto status = feedback ? participant.create_subscription(*support->status(), prefix + "status",
-                             ros2vtk::wire::QoS::transient_local(1), &error)
-                         : nullptr;
+  auto status = feedback
+    ? participant.create_subscription(*support->status(), endpoints.Status, endpoints.StatusQoS, &error)
+    : nullptr;
   if (!status)
   {
     vtkErrorMacro("action client " << action << ": " << error);
@@ -253,17 +240,14 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     internals.BlankResult = NewMessage(*support->result());
   }
   internals.Type = support;
-  internals.TypeName = support->ros_type;
-  internals.ActionName = action;
-  internals.ResolvedName = resolved;
-  internals.At = at;
+  internals.At = endpoints.At;
   internals.SendGoalClient = std::move(sendGoalClient);
   internals.GetResultClient = std::move(getResultClient);
   internals.CancelClient = std::move(cancelClient);
   internals.FeedbackSubscription = std::move(feedback);
   internals.StatusSubscription = std::move(status);
   internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
-  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
+  this->EndpointAttached(rosNode, support->ros_type, action, endpoints.ResolvedName);
   return true;
 }
 
@@ -283,33 +267,9 @@ void vtkROS2ActionClientNode::Detach()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::OnRemovedFromScene()
+bool vtkROS2ActionClientNode::IsEndpointAttached() const
 {
-  this->Detach();
-  this->Superclass::OnRemovedFromScene();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::OnSceneRestored()
-{
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->SendGoalClient && !this->Internals->TypeName.empty())
-  {
-    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ActionName);
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionClientNode::GetActionName() const
-{
-  const vtkInternals& internals = *this->Internals;
-  return internals.SendGoalClient ? internals.ResolvedName.c_str() : internals.ActionName.c_str();
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionClientNode::GetActionType() const
-{
-  return this->Internals->TypeName.c_str();
+  return this->Internals->SendGoalClient != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -373,27 +333,6 @@ void vtkROS2ActionClientNode::ResetGoal()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::SetTimeout(double seconds)
-{
-  if (!(seconds > 0) || !std::isfinite(seconds))
-  {
-    vtkErrorMacro("SetTimeout: " << seconds << " is not a positive number of seconds");
-    return;
-  }
-  if (seconds != this->Internals->Timeout)
-  {
-    this->Internals->Timeout = seconds;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-double vtkROS2ActionClientNode::GetTimeout() const
-{
-  return this->Internals->Timeout;
-}
-
-//------------------------------------------------------------------------------
 vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
 {
   vtkInternals& internals = *this->Internals;
@@ -417,9 +356,9 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
   goal.Result = NewMessage(*type.result());
   internals.LastCancelReturnCode = -1;
   internals.LastError.clear();
-  goal.GoalTimeout = internals.Timeout;
+  goal.GoalTimeout = this->EndpointTimeout;
   goal.Deadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
+    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
   // Written at once when the server is there; otherwise on the spin that sees it (requests
   // are volatile: one written before the server's reader matched would be lost).
   goal.State = WaitingForServer;
@@ -481,11 +420,11 @@ bool vtkROS2ActionClientNode::SendCancelRequest(const void* request)
   internals.CancelSequence = internals.CancelClient->send_request(request);
   if (internals.CancelSequence < 0)
   {
-    internals.LastError = "Fast DDS refused to write the cancel request to " + internals.ResolvedName;
+    internals.LastError = "Fast DDS refused to write the cancel request to " + std::string(this->GetActionName());
     return false;
   }
   internals.CancelDeadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
+    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
   return true;
 }
 
@@ -517,7 +456,7 @@ int vtkROS2ActionClientNode::ProcessAction()
     if (goal->GoalSequence < 0)
     {
       goal->State = Failed;
-      fail(*goal, "Fast DDS refused to write the goal to " + internals.ResolvedName);
+      fail(*goal, "Fast DDS refused to write the goal to " + std::string(this->GetActionName()));
       events.emplace_back(GoalFailedEvent, goal->IdText);
     }
     else
@@ -553,13 +492,13 @@ int vtkROS2ActionClientNode::ProcessAction()
       if (goal->ResultSequence < 0)
       {
         goal->State = Failed;
-        fail(*goal, "Fast DDS refused to write the result request to " + internals.ResolvedName);
+        fail(*goal, "Fast DDS refused to write the result request to " + std::string(this->GetActionName()));
       }
     }
     else
     {
       goal->State = Rejected;
-      fail(*goal, "goal rejected by " + internals.ResolvedName);
+      fail(*goal, "goal rejected by " + std::string(this->GetActionName()));
     }
     events.emplace_back(GoalResponseEvent, goal->IdText);
   }
@@ -640,7 +579,7 @@ int vtkROS2ActionClientNode::ProcessAction()
       case GoalStatus::STATUS_ABORTED: goal->State = Aborted; break;
       default:
         goal->State = Failed;
-        fail(*goal, internals.ResolvedName + " sent a result with status " + std::to_string(goal->ResultStatus) +
+        fail(*goal, std::string(this->GetActionName()) + " sent a result with status " + std::to_string(goal->ResultStatus) +
             " (not succeeded, canceled or aborted)");
     }
     events.emplace_back(ResultReceivedEvent, goal->IdText);
@@ -659,7 +598,7 @@ int vtkROS2ActionClientNode::ProcessAction()
       static_cast<const ros2vtk::action_msgs::srv::CancelGoal_Response*>(response.response.get())->return_code;
     if (internals.LastCancelReturnCode != 0)
     {
-      internals.LastError = internals.ResolvedName + " refused to cancel the goal (return code " +
+      internals.LastError = std::string(this->GetActionName()) + " refused to cancel the goal (return code " +
         std::to_string(internals.LastCancelReturnCode) + ")";
     }
     events.emplace_back(CancelResponseEvent, "");
@@ -667,8 +606,8 @@ int vtkROS2ActionClientNode::ProcessAction()
   if (internals.CancelSequence >= 0 && now >= internals.CancelDeadline)
   {
     internals.CancelSequence = -1;
-    internals.LastError = "timed out: " + internals.ResolvedName + " did not answer the cancel request within " +
-      FormatSeconds(internals.Timeout);
+    internals.LastError = "timed out: " + std::string(this->GetActionName()) + " did not answer the cancel request within " +
+      FormatSeconds(this->EndpointTimeout);
     events.emplace_back(CancelResponseEvent, "");
   }
 
@@ -677,9 +616,9 @@ int vtkROS2ActionClientNode::ProcessAction()
     if ((goal->State == WaitingForServer || goal->State == WaitingForAcceptance) && now >= goal->Deadline)
     {
       fail(*goal, goal->State == WaitingForServer
-          ? "timed out: no server for " + internals.ResolvedName + " (" + internals.TypeName + ") appeared within " +
+          ? "timed out: no server for " + std::string(this->GetActionName()) + " (" + std::string(this->GetActionType()) + ") appeared within " +
             FormatSeconds(goal->GoalTimeout)
-          : "timed out: " + internals.ResolvedName + " did not answer the goal within " + FormatSeconds(goal->GoalTimeout));
+          : "timed out: " + std::string(this->GetActionName()) + " did not answer the goal within " + FormatSeconds(goal->GoalTimeout));
       goal->State = TimedOut;
       events.emplace_back(GoalFailedEvent, goal->IdText);
     }
@@ -695,7 +634,7 @@ int vtkROS2ActionClientNode::ProcessAction()
     const std::string reason = internals.StatusSubscription->last_rejection().empty()
       ? internals.FeedbackSubscription->last_rejection()
       : internals.StatusSubscription->last_rejection();
-    vtkWarningMacro("action '" << internals.ResolvedName << "': " << due
+    vtkWarningMacro("action '" << this->GetActionName() << "': " << due
                                << " malformed feedback/status sample(s) rejected (total " << internals.Rejected
                                << "; latest: " << reason << ")");
   }
@@ -778,11 +717,11 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
     vtkErrorMacro("SendGoalAndWait: already waiting on this action client (called from an observer?)");
     return "";
   }
-  const double seconds = timeoutSeconds > 0 && std::isfinite(timeoutSeconds) ? timeoutSeconds : internals.Timeout;
-  const double savedTimeout = internals.Timeout;
-  internals.Timeout = seconds; // the goal's own deadline for server and acceptance
+  const double seconds = timeoutSeconds > 0 && std::isfinite(timeoutSeconds) ? timeoutSeconds : this->EndpointTimeout;
+  const double savedTimeout = this->EndpointTimeout;
+  this->EndpointTimeout = seconds; // the goal's own deadline for server and acceptance
   const vtkTypeInt64 goal = this->SendGoalYAML(goalYAML);
-  internals.Timeout = savedTimeout;
+  this->EndpointTimeout = savedTimeout;
   if (goal < 0)
   {
     internals.LastError = "invalid goal YAML";
@@ -792,7 +731,7 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
   {
     if (internals.LastError.empty())
     {
-      internals.LastError = "timed out: " + internals.ResolvedName + " sent no result within " + FormatSeconds(seconds) +
+      internals.LastError = "timed out: " + std::string(this->GetActionName()) + " sent no result within " + FormatSeconds(seconds) +
         " (the goal is " + this->GetStatusAsString() + ")";
     }
     vtkErrorMacro("SendGoalAndWait " << this->GetActionName() << ": " << internals.LastError);
@@ -1083,43 +1022,9 @@ vtkTypeInt64 vtkROS2ActionClientNode::GetNumberOfResults() const
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionClientNode::WriteXML(vtkXMLDataElement* element)
-{
-  this->Superclass::WriteXML(element);
-  element->SetAttribute("actionType", this->Internals->TypeName.c_str());
-  element->SetAttribute("actionName", this->Internals->ActionName.c_str());
-  element->SetDoubleAttribute("timeout", this->Internals->Timeout);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2ActionClientNode::ReadXML(vtkXMLDataElement* element)
-{
-  if (!this->Superclass::ReadXML(element))
-  {
-    return false;
-  }
-  if (const char* type = element->GetAttribute("actionType"))
-  {
-    this->Internals->TypeName = type;
-  }
-  if (const char* name = element->GetAttribute("actionName"))
-  {
-    this->Internals->ActionName = name;
-  }
-  double timeout = 0;
-  if (element->GetScalarAttribute("timeout", timeout) && timeout > 0 && std::isfinite(timeout))
-  {
-    this->Internals->Timeout = timeout;
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkROS2ActionClientNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ActionName: " << this->GetActionName() << "\n";
-  os << indent << "ActionType: " << this->Internals->TypeName << "\n";
   os << indent << "ServerReady: " << this->IsServerReady() << "\n";
   os << indent << "Status: " << this->GetStatusAsString() << "\n";
   os << indent << "Feedbacks: " << this->GetNumberOfFeedbacks() << "\n";

@@ -18,7 +18,7 @@
 #define vtkROS2ActionClientNode_h
 
 #include "ros2vtkSceneModule.h" // for export macro
-#include "vtkROS2SceneNode.h"
+#include "vtkROS2EndpointNode.h"
 
 #include "vtkCommand.h" // for vtkCommand::UserEvent
 
@@ -27,11 +27,11 @@
 
 class vtkROS2NodeNode;
 
-class ROS2VTKSCENE_EXPORT vtkROS2ActionClientNode : public vtkROS2SceneNode
+class ROS2VTKSCENE_EXPORT vtkROS2ActionClientNode : public vtkROS2EndpointNode
 {
 public:
   static vtkROS2ActionClientNode* New();
-  vtkTypeMacro(vtkROS2ActionClientNode, vtkROS2SceneNode);
+  vtkTypeMacro(vtkROS2ActionClientNode, vtkROS2EndpointNode);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum
@@ -67,8 +67,8 @@ public:
   };
 
   /// "/fibonacci" (resolved) and "test_msgs/action/Fibonacci".
-  const char* GetActionName() const;
-  const char* GetActionType() const;
+  const char* GetActionName() const { return this->GetEndpointName(); }
+  const char* GetActionType() const { return this->GetEndpointType(); }
   /// True when the server's three services are matched and it publishes feedback and status
   /// (rcl_action_server_is_available).
   bool IsServerReady() const;
@@ -84,8 +84,8 @@ public:
 
   /// Seconds a goal may wait for a server and for its acceptance, and a cancel request for its
   /// answer (default 5). The result itself has no deadline (goals may run for long).
-  void SetTimeout(double seconds);
-  double GetTimeout() const;
+  void SetTimeout(double seconds) { this->SetEndpointTimeout("SetTimeout", seconds); }
+  double GetTimeout() const { return this->EndpointTimeout; }
 
   /// Sends the goal set above with a new random goal id; the answer arrives on a later Spin.
   /// Returns the goal's number in this client (> 0), or -1 when not attached.
@@ -165,29 +165,22 @@ public:
   vtkTypeInt64 GetNumberOfGoalsAccepted() const;
   vtkTypeInt64 GetNumberOfResults() const;
 
-  void WriteXML(vtkXMLDataElement* element) override;
-  bool ReadXML(vtkXMLDataElement* element) override;
-  void OnSceneRestored() override;
-
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type ("pkg/action/X" or "pkg/X"), creates the wire
   /// endpoints on `rosNode`. False with vtkErrorMacro otherwise.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action);
+  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action) override;
   /// Releases the wire endpoints (the ROS node is being destroyed); the node stays in the scene.
-  void Detach();
+  void Detach() override;
   /// Per Spin: sends a waiting goal once the server is there, takes answers, feedback, status.
   int ProcessAction();
 #endif
 
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessAction(); }
-  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
-  /// Index key among the ROS node's action clients.
-  std::string GetROS2NodeChildKey() const override { return this->GetActionName(); }
 
 protected:
   vtkROS2ActionClientNode();
   ~vtkROS2ActionClientNode() override;
-  void OnRemovedFromScene() override;
+  bool IsEndpointAttached() const override;
 
 private:
   vtkROS2ActionClientNode(const vtkROS2ActionClientNode&) = delete;

@@ -4,9 +4,9 @@
 // fixed action protocol (action_msgs, unique_identifier_msgs) is named here.
 #include "vtkROS2ActionServerNode.h"
 
-#include "ActionMembers.hpp"
-#include "MessageFields.hpp"
-#include "RateLimitedReport.hpp"
+#include "Internal/ActionMembers.hpp"
+#include "Internal/MessageFields.hpp"
+#include "Internal/RateLimitedReport.hpp"
 #include "vtkROS2NodeNode.h"
 
 #include "ros2vtk/action_msgs/msg/goal_status.hpp"
@@ -84,9 +84,6 @@ public:
   };
 
   const ros2vtk::wire::ActionTypeSupport* Type = nullptr;
-  std::string TypeName;
-  std::string ActionName;
-  std::string ResolvedName;
   ros2vtk::scene::ActionMembers At;
   vtkROS2NodeNode* ROSNode = nullptr;
   std::unique_ptr<ros2vtk::wire::ServiceServer> SendGoalServer;
@@ -160,7 +157,8 @@ public:
 
 //------------------------------------------------------------------------------
 vtkROS2ActionServerNode::vtkROS2ActionServerNode()
-  : Internals(new vtkInternals)
+  : vtkROS2EndpointNode("action", nullptr)
+  , Internals(new vtkInternals)
 {
 }
 
@@ -177,41 +175,34 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   }
   ros2vtk::wire::Participant& participant = *rosNode->GetParticipant();
   std::string error;
-  const ros2vtk::wire::ActionTypeSupport* support = ros2vtk::wire::find_action_type(type, &error);
-  std::string resolved;
-  ros2vtk::scene::ActionMembers at;
-  if (!support || !participant.resolve_name(action, resolved, &error) ||
-    !ros2vtk::scene::find_action_members(*support, at, &error))
+  ros2vtk::scene::ActionEndpoints endpoints;
+  if (!ros2vtk::scene::find_action_endpoints(participant, type, action, endpoints, &error))
   {
     vtkErrorMacro("action server " << action << ": " << error);
     return false;
   }
-  // rcl_action's endpoints and default QoS (docs/wire-notes.md §8.1).
-  const std::string prefix = resolved + "/_action/";
-  const auto services = ros2vtk::wire::QoS::services();
-  auto sendGoal = participant.create_service_server(*support->send_goal(), prefix + "send_goal", services, &error);
+  const ros2vtk::wire::ActionTypeSupport* support = endpoints.Type;
+  auto sendGoal =
+    participant.create_service_server(*support->send_goal(), endpoints.SendGoal, endpoints.ServiceQoS, &error);
   auto getResult = sendGoal
-    ? participant.create_service_server(*support->get_result(), prefix + "get_result", services, &error)
+    ? participant.create_service_server(*support->get_result(), endpoints.GetResult, endpoints.ServiceQoS, &error)
     : nullptr;
   auto cancel = getResult
-    ? participant.create_service_server(*support->cancel_goal(), prefix + "cancel_goal", services, &error)
+    ? participant.create_service_server(*support->cancel_goal(), endpoints.CancelGoal, endpoints.ServiceQoS, &error)
     : nullptr;
-  auto feedback = cancel ? participant.create_publisher(*support->feedback_message(), prefix + "feedback",
-                             ros2vtk::wire::QoS::default_profile(), &error)
+  auto feedback = cancel ? participant.create_publisher(*support->feedback_message(), endpoints.Feedback,
+                             endpoints.FeedbackQoS, &error)
                          : nullptr;
-  auto status = feedback ? participant.create_publisher(*support->status(), prefix + "status",
-                             ros2vtk::wire::QoS::transient_local(1), &error)
-                         : nullptr;
+  auto status = feedback
+    ? participant.create_publisher(*support->status(), endpoints.Status, endpoints.StatusQoS, &error)
+    : nullptr;
   if (!status)
   {
     vtkErrorMacro("action server " << action << ": " << error);
     return false;
   }
   internals.Type = support;
-  internals.TypeName = support->ros_type;
-  internals.ActionName = action;
-  internals.ResolvedName = resolved;
-  internals.At = at;
+  internals.At = endpoints.At;
   internals.ROSNode = rosNode;
   internals.SendGoalServer = std::move(sendGoal);
   internals.GetResultServer = std::move(getResult);
@@ -220,7 +211,7 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.StatusPublisher = std::move(status);
   internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
   internals.Goals.clear();
-  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
+  this->EndpointAttached(rosNode, support->ros_type, action, endpoints.ResolvedName);
   return true;
 }
 
@@ -231,33 +222,9 @@ void vtkROS2ActionServerNode::Detach()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionServerNode::OnRemovedFromScene()
+bool vtkROS2ActionServerNode::IsEndpointAttached() const
 {
-  this->Detach();
-  this->Superclass::OnRemovedFromScene();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2ActionServerNode::OnSceneRestored()
-{
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->SendGoalServer && !this->Internals->TypeName.empty())
-  {
-    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ActionName);
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionServerNode::GetActionName() const
-{
-  const vtkInternals& internals = *this->Internals;
-  return internals.SendGoalServer ? internals.ResolvedName.c_str() : internals.ActionName.c_str();
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ActionServerNode::GetActionType() const
-{
-  return this->Internals->TypeName.c_str();
+  return this->Internals->SendGoalServer != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -384,7 +351,7 @@ int vtkROS2ActionServerNode::ProcessRequests()
     {
       reason = reason.empty() ? server->last_rejection() : reason;
     }
-    vtkWarningMacro("action '" << internals.ResolvedName << "': " << due << " malformed request(s) rejected (total "
+    vtkWarningMacro("action '" << this->GetActionName() << "': " << due << " malformed request(s) rejected (total "
                                << internals.Malformed << "; latest: " << reason << ")");
   }
 
@@ -576,37 +543,9 @@ int vtkROS2ActionServerNode::GetNumberOfActiveGoals() const
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ActionServerNode::WriteXML(vtkXMLDataElement* element)
-{
-  this->Superclass::WriteXML(element);
-  element->SetAttribute("actionType", this->Internals->TypeName.c_str());
-  element->SetAttribute("actionName", this->Internals->ActionName.c_str());
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2ActionServerNode::ReadXML(vtkXMLDataElement* element)
-{
-  if (!this->Superclass::ReadXML(element))
-  {
-    return false;
-  }
-  if (const char* type = element->GetAttribute("actionType"))
-  {
-    this->Internals->TypeName = type;
-  }
-  if (const char* name = element->GetAttribute("actionName"))
-  {
-    this->Internals->ActionName = name;
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkROS2ActionServerNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ActionName: " << this->GetActionName() << "\n";
-  os << indent << "ActionType: " << this->Internals->TypeName << "\n";
   os << indent << "Goals: " << this->Internals->Goals.size() << "\n";
 }
 

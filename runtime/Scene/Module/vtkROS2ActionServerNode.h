@@ -18,7 +18,7 @@
 #define vtkROS2ActionServerNode_h
 
 #include "ros2vtkSceneModule.h" // for export macro
-#include "vtkROS2SceneNode.h"
+#include "vtkROS2EndpointNode.h"
 
 #include "vtkCommand.h" // for vtkCommand::UserEvent
 
@@ -27,11 +27,11 @@
 
 class vtkROS2NodeNode;
 
-class ROS2VTKSCENE_EXPORT vtkROS2ActionServerNode : public vtkROS2SceneNode
+class ROS2VTKSCENE_EXPORT vtkROS2ActionServerNode : public vtkROS2EndpointNode
 {
 public:
   static vtkROS2ActionServerNode* New();
-  vtkTypeMacro(vtkROS2ActionServerNode, vtkROS2SceneNode);
+  vtkTypeMacro(vtkROS2ActionServerNode, vtkROS2EndpointNode);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum
@@ -43,8 +43,8 @@ public:
     CancelRequestedEvent = vtkCommand::UserEvent + 91
   };
 
-  const char* GetActionName() const;
-  const char* GetActionType() const;
+  const char* GetActionName() const { return this->GetEndpointName(); }
+  const char* GetActionType() const { return this->GetEndpointType(); }
 
   /// While GoalReceivedEvent runs: refuse the goal being decided. False outside the event.
   bool RejectGoal();
@@ -83,26 +83,20 @@ public:
   int GetNumberOfGoals() const;
   int GetNumberOfActiveGoals() const;
 
-  void WriteXML(vtkXMLDataElement* element) override;
-  bool ReadXML(vtkXMLDataElement* element) override;
-  void OnSceneRestored() override;
-
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type, creates the wire endpoints on `rosNode`.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action);
-  void Detach();
+  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action) override;
+  void Detach() override;
   /// Per Spin: takes goal, result and cancel requests and answers them.
   int ProcessRequests();
 #endif
 
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
-  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
-  std::string GetROS2NodeChildKey() const override { return this->GetActionName(); }
 
 protected:
   vtkROS2ActionServerNode();
   ~vtkROS2ActionServerNode() override;
-  void OnRemovedFromScene() override;
+  bool IsEndpointAttached() const override;
 
 private:
   vtkROS2ActionServerNode(const vtkROS2ActionServerNode&) = delete;

@@ -2,8 +2,8 @@
 // paths are resolved by MessageFields over the generated introspection tables.
 #include "vtkROS2Message.h"
 
-#include "GenericMessageType.hpp"
-#include "MessageFields.hpp"
+#include "Internal/GenericMessageType.hpp"
+#include "Internal/MessageFields.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"

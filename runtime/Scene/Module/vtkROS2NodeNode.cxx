@@ -19,7 +19,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 
-#include "RateLimitedReport.hpp"
+#include "Internal/RateLimitedReport.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #include "vtkROS2RobotNode.h"
 
-#include "RobotJointStateDriver.hpp"
+#include "Internal/RobotJointStateDriver.hpp"
 
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2NodeNode.h"

@@ -1,7 +1,7 @@
 #include "vtkROS2Scene.h"
 
 #include "NodeClassRegistry.hpp"
-#include "SceneXmlReader.hpp"
+#include "Internal/SceneXmlReader.hpp"
 #include "vtkROS2SceneNode.h"
 
 #include "vtkCollection.h"

@@ -4,7 +4,7 @@
 
 #include "vtkROS2Message.h"
 
-#include "MessageFields.hpp"
+#include "Internal/MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -70,15 +70,12 @@ public:
   };
 
   const ros2vtk::wire::ServiceTypeSupport* Type = nullptr;
-  std::string TypeName;    // as given (saved with the scene)
-  std::string ServiceName; // as given
   std::unique_ptr<ros2vtk::wire::ServiceClient> Client;
   MessagePtr Request;
   MessagePtr LastResponse;
   vtkTypeInt64 LastResponseRequestId = 0;
   std::vector<Pending> Pendings;
   vtkTypeInt64 NextId = 1;
-  double Timeout = 5.0;
   int Status = vtkROS2ServiceClientNode::Idle;
   std::string LastError;
   vtkTypeInt64 Responses = 0;
@@ -91,7 +88,8 @@ public:
 
 //------------------------------------------------------------------------------
 vtkROS2ServiceClientNode::vtkROS2ServiceClientNode()
-  : Internals(new vtkInternals)
+  : vtkROS2EndpointNode("service", "timeout")
+  , Internals(new vtkInternals)
 {
 }
 
@@ -126,10 +124,8 @@ bool vtkROS2ServiceClientNode::Attach(vtkROS2NodeNode* rosNode, const std::strin
     internals.LastResponse = NewMessage(*support->response());
   }
   internals.Type = support;
-  internals.TypeName = support->ros_type;
-  internals.ServiceName = service;
   internals.Client = std::move(client);
-  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
+  this->EndpointAttached(rosNode, support->ros_type, service, internals.Client->service_name());
   return true;
 }
 
@@ -141,33 +137,9 @@ void vtkROS2ServiceClientNode::Detach()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ServiceClientNode::OnRemovedFromScene()
+bool vtkROS2ServiceClientNode::IsEndpointAttached() const
 {
-  this->Detach();
-  this->Superclass::OnRemovedFromScene();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2ServiceClientNode::OnSceneRestored()
-{
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->Client && !this->Internals->TypeName.empty())
-  {
-    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ServiceName);
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ServiceClientNode::GetServiceName() const
-{
-  return this->Internals->Client ? this->Internals->Client->service_name().c_str()
-                                 : this->Internals->ServiceName.c_str();
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ServiceClientNode::GetServiceType() const
-{
-  return this->Internals->TypeName.c_str();
+  return this->Internals->Client != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -256,27 +228,6 @@ void vtkROS2ServiceClientNode::ResetRequest()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ServiceClientNode::SetTimeout(double seconds)
-{
-  if (!(seconds > 0) || !std::isfinite(seconds))
-  {
-    vtkErrorMacro("SetTimeout: " << seconds << " is not a positive number of seconds");
-    return;
-  }
-  if (seconds != this->Internals->Timeout)
-  {
-    this->Internals->Timeout = seconds;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-double vtkROS2ServiceClientNode::GetTimeout() const
-{
-  return this->Internals->Timeout;
-}
-
-//------------------------------------------------------------------------------
 vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest()
 {
   vtkInternals& internals = *this->Internals;
@@ -289,9 +240,9 @@ vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest()
   vtkInternals::Pending pending;
   pending.Id = internals.NextId++;
   pending.Request = CopyMessage(*internals.Type->request(), internals.Request.get());
-  pending.TimeoutSeconds = internals.Timeout;
+  pending.TimeoutSeconds = this->EndpointTimeout;
   pending.Deadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.Timeout));
+    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
   // Written at once when a server is there; otherwise on the spin that sees one.
   if (internals.Client->is_server_available())
   {
@@ -412,7 +363,7 @@ int vtkROS2ServiceClientNode::ProcessResponses()
     {
       failed.emplace_back(it->Id,
         it->Sequence < 0
-          ? "timed out: no server for " + internals.Client->service_name() + " (" + internals.TypeName +
+          ? "timed out: no server for " + internals.Client->service_name() + " (" + std::string(this->GetServiceType()) +
               ") appeared within " + FormatSeconds(it->TimeoutSeconds)
           : "timed out: " + internals.Client->service_name() + " sent no response within " +
               FormatSeconds(it->TimeoutSeconds));
@@ -461,13 +412,13 @@ std::string vtkROS2ServiceClientNode::Call(const char* requestYAML, double timeo
     vtkErrorMacro("Call: already inside a Call of this client (call from an observer?)");
     return "";
   }
-  const double savedTimeout = internals.Timeout;
+  const double savedTimeout = this->EndpointTimeout;
   if (timeoutSeconds > 0 && std::isfinite(timeoutSeconds))
   {
-    internals.Timeout = timeoutSeconds;
+    this->EndpointTimeout = timeoutSeconds;
   }
   const vtkTypeInt64 id = this->SendAsyncRequestYAML(requestYAML);
-  internals.Timeout = savedTimeout;
+  this->EndpointTimeout = savedTimeout;
   if (id < 0)
   {
     internals.Status = Failed;
@@ -594,43 +545,9 @@ vtkTypeInt64 vtkROS2ServiceClientNode::GetNumberOfFailures() const
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ServiceClientNode::WriteXML(vtkXMLDataElement* element)
-{
-  this->Superclass::WriteXML(element);
-  element->SetAttribute("serviceType", this->Internals->TypeName.c_str());
-  element->SetAttribute("serviceName", this->Internals->ServiceName.c_str());
-  element->SetDoubleAttribute("timeout", this->Internals->Timeout);
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2ServiceClientNode::ReadXML(vtkXMLDataElement* element)
-{
-  if (!this->Superclass::ReadXML(element))
-  {
-    return false;
-  }
-  if (const char* type = element->GetAttribute("serviceType"))
-  {
-    this->Internals->TypeName = type;
-  }
-  if (const char* name = element->GetAttribute("serviceName"))
-  {
-    this->Internals->ServiceName = name;
-  }
-  double timeout = 0;
-  if (element->GetScalarAttribute("timeout", timeout) && timeout > 0)
-  {
-    this->Internals->Timeout = timeout;
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkROS2ServiceClientNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ServiceName: " << this->GetServiceName() << "\n";
-  os << indent << "ServiceType: " << this->Internals->TypeName << "\n";
   os << indent << "Ready: " << this->IsServiceReady() << "\n";
   os << indent << "Status: " << this->GetStatusAsString() << "\n";
   os << indent << "PendingRequests: " << this->Internals->Pendings.size() << "\n";

@@ -15,7 +15,7 @@
 #define vtkROS2ServiceClientNode_h
 
 #include "ros2vtkSceneModule.h" // for export macro
-#include "vtkROS2SceneNode.h"
+#include "vtkROS2EndpointNode.h"
 
 #include "vtkCommand.h"         // for vtkCommand::UserEvent
 #include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
@@ -26,11 +26,11 @@
 class vtkROS2Message;
 class vtkROS2NodeNode;
 
-class ROS2VTKSCENE_EXPORT vtkROS2ServiceClientNode : public vtkROS2SceneNode
+class ROS2VTKSCENE_EXPORT vtkROS2ServiceClientNode : public vtkROS2EndpointNode
 {
 public:
   static vtkROS2ServiceClientNode* New();
-  vtkTypeMacro(vtkROS2ServiceClientNode, vtkROS2SceneNode);
+  vtkTypeMacro(vtkROS2ServiceClientNode, vtkROS2EndpointNode);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum
@@ -53,8 +53,8 @@ public:
   };
 
   /// "/enable" (resolved) and "std_srvs/srv/SetBool".
-  const char* GetServiceName() const;
-  const char* GetServiceType() const;
+  const char* GetServiceName() const { return this->GetEndpointName(); }
+  const char* GetServiceType() const { return this->GetEndpointType(); }
   /// True while a server's request reader and reply writer are matched.
   bool IsServiceReady() const;
 
@@ -73,8 +73,8 @@ public:
   ///@}
 
   /// Seconds a request may wait for a server and its response (default 5).
-  void SetTimeout(double seconds);
-  double GetTimeout() const;
+  void SetTimeout(double seconds) { this->SetEndpointTimeout("SetTimeout", seconds); }
+  double GetTimeout() const { return this->EndpointTimeout; }
 
   /// Sends the request set above; the response or the failure arrives on a later Spin of the
   /// ROS node. Returns the request's id (> 0), or -1 when not attached to a created ROS node.
@@ -123,32 +123,23 @@ public:
   ///@}
 
 
-  void WriteXML(vtkXMLDataElement* element) override;
-  bool ReadXML(vtkXMLDataElement* element) override;
-  void OnSceneRestored() override;
-
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type ("pkg/srv/T" or "pkg/T"), creates the wire
   /// client on `rosNode` and registers the per-spin work. False with vtkErrorMacro otherwise.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service);
+  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service) override;
   /// Releases the wire client (the ROS node is being destroyed); the node stays in the scene.
-  void Detach();
+  void Detach() override;
   /// Per Spin: takes responses, sends requests whose server appeared, fails expired ones.
   int ProcessResponses();
 #endif
 
-
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes responses.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessResponses(); }
-  /// Destroy hook: the wire endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
-  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
-  /// Index key among the ROS node's service clients.
-  std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
 
 protected:
   vtkROS2ServiceClientNode();
   ~vtkROS2ServiceClientNode() override;
-  void OnRemovedFromScene() override;
+  bool IsEndpointAttached() const override;
 
 private:
   vtkROS2ServiceClientNode(const vtkROS2ServiceClientNode&) = delete;

@@ -4,7 +4,7 @@
 
 #include "vtkROS2Message.h"
 
-#include "MessageFields.hpp"
+#include "Internal/MessageFields.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -47,12 +47,9 @@ public:
   };
 
   const ros2vtk::wire::ServiceTypeSupport* Type = nullptr;
-  std::string TypeName;
-  std::string ServiceName;
   std::unique_ptr<ros2vtk::wire::ServiceServer> Server;
   std::list<Pending> Pendings; // stable addresses while observers run
   Pending* InEvent = nullptr;  // the request whose event is firing
-  double ResponseTimeout = 5.0;
   bool AnswerWithDefault = true;
   vtkTypeInt64 Requests = 0;
   vtkTypeInt64 Responses = 0;
@@ -71,7 +68,8 @@ public:
 
 //------------------------------------------------------------------------------
 vtkROS2ServiceServerNode::vtkROS2ServiceServerNode()
-  : Internals(new vtkInternals)
+  : vtkROS2EndpointNode("service", "responseTimeout")
+  , Internals(new vtkInternals)
 {
 }
 
@@ -101,11 +99,9 @@ bool vtkROS2ServiceServerNode::Attach(vtkROS2NodeNode* rosNode, const std::strin
     return false;
   }
   internals.Type = support;
-  internals.TypeName = support->ros_type;
-  internals.ServiceName = service;
   internals.Server = std::move(server);
   internals.RejectedSeen = 0;
-  this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
+  this->EndpointAttached(rosNode, support->ros_type, service, internals.Server->service_name());
   return true;
 }
 
@@ -118,33 +114,9 @@ void vtkROS2ServiceServerNode::Detach()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ServiceServerNode::OnRemovedFromScene()
+bool vtkROS2ServiceServerNode::IsEndpointAttached() const
 {
-  this->Detach();
-  this->Superclass::OnRemovedFromScene();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2ServiceServerNode::OnSceneRestored()
-{
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->Server && !this->Internals->TypeName.empty())
-  {
-    this->Attach(rosNode, this->Internals->TypeName, this->Internals->ServiceName);
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ServiceServerNode::GetServiceName() const
-{
-  return this->Internals->Server ? this->Internals->Server->service_name().c_str()
-                                 : this->Internals->ServiceName.c_str();
-}
-
-//------------------------------------------------------------------------------
-const char* vtkROS2ServiceServerNode::GetServiceType() const
-{
-  return this->Internals->TypeName.c_str();
+  return this->Internals->Server != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -323,7 +295,7 @@ int vtkROS2ServiceServerNode::ProcessRequests()
     }
   }
   // Requests left unanswered past the timeout.
-  const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(internals.ResponseTimeout));
+  const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
   const Clock::time_point now = Clock::now();
   while (!internals.Pendings.empty() && now - internals.Pendings.front().Received >= timeout)
   {
@@ -334,14 +306,14 @@ int vtkROS2ServiceServerNode::ProcessRequests()
     if (internals.AnswerWithDefault)
     {
       vtkWarningMacro("service " << this->GetServiceName() << ": request unanswered after "
-                                 << internals.ResponseTimeout << " s, sending the default response");
+                                 << this->EndpointTimeout << " s, sending the default response");
       MessagePtr blank(&responseType, responseType.create());
       internals.Server->send_response(pending.Id, blank.get());
     }
     else
     {
       vtkErrorMacro("service " << this->GetServiceName() << ": request unanswered after "
-                               << internals.ResponseTimeout << " s, dropped without a response");
+                               << this->EndpointTimeout << " s, dropped without a response");
     }
   }
   if (handled)
@@ -352,22 +324,6 @@ int vtkROS2ServiceServerNode::ProcessRequests()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2ServiceServerNode::SetResponseTimeout(double seconds)
-{
-  if (!(seconds > 0) || !std::isfinite(seconds))
-  {
-    vtkErrorMacro("SetResponseTimeout: " << seconds << " is not a positive number of seconds");
-    return;
-  }
-  this->Internals->ResponseTimeout = seconds;
-  this->Modified();
-}
-
-double vtkROS2ServiceServerNode::GetResponseTimeout() const
-{
-  return this->Internals->ResponseTimeout;
-}
-
 void vtkROS2ServiceServerNode::SetAnswerUnansweredWithDefault(bool answer)
 {
   this->Internals->AnswerWithDefault = answer;
@@ -413,9 +369,6 @@ std::string vtkROS2ServiceServerNode::GetLastRejection() const
 void vtkROS2ServiceServerNode::WriteXML(vtkXMLDataElement* element)
 {
   this->Superclass::WriteXML(element);
-  element->SetAttribute("serviceType", this->Internals->TypeName.c_str());
-  element->SetAttribute("serviceName", this->Internals->ServiceName.c_str());
-  element->SetDoubleAttribute("responseTimeout", this->Internals->ResponseTimeout);
   element->SetIntAttribute("answerUnansweredWithDefault", this->Internals->AnswerWithDefault ? 1 : 0);
 }
 
@@ -425,19 +378,6 @@ bool vtkROS2ServiceServerNode::ReadXML(vtkXMLDataElement* element)
   if (!this->Superclass::ReadXML(element))
   {
     return false;
-  }
-  if (const char* type = element->GetAttribute("serviceType"))
-  {
-    this->Internals->TypeName = type;
-  }
-  if (const char* name = element->GetAttribute("serviceName"))
-  {
-    this->Internals->ServiceName = name;
-  }
-  double timeout = 0;
-  if (element->GetScalarAttribute("responseTimeout", timeout) && timeout > 0)
-  {
-    this->Internals->ResponseTimeout = timeout;
   }
   int answer = 1;
   if (element->GetScalarAttribute("answerUnansweredWithDefault", answer))
@@ -451,8 +391,6 @@ bool vtkROS2ServiceServerNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2ServiceServerNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ServiceName: " << this->GetServiceName() << "\n";
-  os << indent << "ServiceType: " << this->Internals->TypeName << "\n";
   os << indent << "Requests: " << this->Internals->Requests << "\n";
   os << indent << "Responses: " << this->Internals->Responses << "\n";
   os << indent << "PendingRequests: " << this->Internals->Pendings.size() << "\n";

@@ -15,7 +15,7 @@
 #define vtkROS2ServiceServerNode_h
 
 #include "ros2vtkSceneModule.h" // for export macro
-#include "vtkROS2SceneNode.h"
+#include "vtkROS2EndpointNode.h"
 
 #include "vtkCommand.h" // for vtkCommand::UserEvent
 
@@ -25,11 +25,11 @@
 class vtkROS2Message;
 class vtkROS2NodeNode;
 
-class ROS2VTKSCENE_EXPORT vtkROS2ServiceServerNode : public vtkROS2SceneNode
+class ROS2VTKSCENE_EXPORT vtkROS2ServiceServerNode : public vtkROS2EndpointNode
 {
 public:
   static vtkROS2ServiceServerNode* New();
-  vtkTypeMacro(vtkROS2ServiceServerNode, vtkROS2SceneNode);
+  vtkTypeMacro(vtkROS2ServiceServerNode, vtkROS2EndpointNode);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum
@@ -39,8 +39,8 @@ public:
   };
 
   /// "/enable" (resolved) and "std_srvs/srv/SetBool".
-  const char* GetServiceName() const;
-  const char* GetServiceType() const;
+  const char* GetServiceName() const { return this->GetEndpointName(); }
+  const char* GetServiceType() const { return this->GetEndpointType(); }
 
   ///@{
   /// The request being handled: the one whose event is firing, else the oldest pending one.
@@ -66,8 +66,8 @@ public:
   bool SendResponseYAML(const char* yaml);
 
   /// Seconds a request may stay unanswered (default 5).
-  void SetResponseTimeout(double seconds);
-  double GetResponseTimeout() const;
+  void SetResponseTimeout(double seconds) { this->SetEndpointTimeout("SetResponseTimeout", seconds); }
+  double GetResponseTimeout() const { return this->EndpointTimeout; }
   /// What happens to a request unanswered at the timeout: the default response (true, a
   /// warning is logged) or no response at all (false, an error is logged).
   void SetAnswerUnansweredWithDefault(bool answer);
@@ -83,30 +83,25 @@ public:
   std::string GetLastRejection() const;
 
 
+  /// Saves and reads answerUnansweredWithDefault (the rest: vtkROS2EndpointNode).
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
-  void OnSceneRestored() override;
 
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: see vtkROS2ServiceClientNode::Attach.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service);
-  void Detach();
+  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service) override;
+  void Detach() override;
   /// Per Spin: takes requests, fires the events, sends responses, expires unanswered requests.
   int ProcessRequests();
 #endif
 
-
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): answers requests.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
-  /// Destroy hook: the wire endpoint lives in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
-  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
-  /// Index key among the ROS node's service servers.
-  std::string GetROS2NodeChildKey() const override { return this->GetServiceName(); }
 
 protected:
   vtkROS2ServiceServerNode();
   ~vtkROS2ServiceServerNode() override;
-  void OnRemovedFromScene() override;
+  bool IsEndpointAttached() const override;
 
 private:
   vtkROS2ServiceServerNode(const vtkROS2ServiceServerNode&) = delete;

@@ -2,7 +2,7 @@
 
 #include "vtkROS2NodeNode.h"
 
-#include "GenericMessageType.hpp"
+#include "Internal/GenericMessageType.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/Participant.hpp"

@@ -5,7 +5,7 @@
 
 #include "vtkROS2Message.h"
 
-#include "RateLimitedReport.hpp"
+#include "Internal/RateLimitedReport.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"

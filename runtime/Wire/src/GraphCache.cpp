@@ -264,20 +264,10 @@ std::vector<PublisherInfo> GraphCache::remote_publishers(const std::string& dds_
     PublisherInfo info;
     info.ros_type = dds_type_to_ros(entry.second.dds_type);
     info.type_hash = entry.second.type_hash;
-    for (const auto& participant : remote_nodes_)
+    if (const NodeInfo* node = remote_node_of_writer_locked(entry.first))
     {
-      if (!std::equal(participant.first.begin(), participant.first.begin() + 12, entry.first.begin()))
-      {
-        continue;
-      }
-      for (const NodeInfo& node : participant.second)
-      {
-        if (std::find(node.writers.begin(), node.writers.end(), entry.first) != node.writers.end())
-        {
-          info.node_name = node.node_name;
-          info.node_namespace = node.node_namespace;
-        }
-      }
+      info.node_name = node->node_name;
+      info.node_namespace = node->node_namespace;
     }
     result.push_back(std::move(info));
   }
@@ -291,20 +281,26 @@ std::string full_node_name(const std::string& ns, const std::string& name)
 }
 } // namespace
 
-std::string GraphCache::node_of_writer_locked(const Gid& gid) const
+const GraphCache::NodeInfo* GraphCache::remote_node_of_writer_locked(const Gid& gid) const
 {
-  const auto local = local_endpoints_.find(gid);
-  if (local != local_endpoints_.end() && local->second.is_writer)
-    return full_node_name(node_namespace_, node_name_);
   for (const auto& participant : remote_nodes_)
   {
     for (const auto& node : participant.second)
     {
       if (std::find(node.writers.begin(), node.writers.end(), gid) != node.writers.end())
-        return full_node_name(node.node_namespace, node.node_name);
+        return &node;
     }
   }
-  return std::string();
+  return nullptr;
+}
+
+std::string GraphCache::node_of_writer_locked(const Gid& gid) const
+{
+  const auto local = local_endpoints_.find(gid);
+  if (local != local_endpoints_.end() && local->second.is_writer)
+    return full_node_name(node_namespace_, node_name_);
+  const NodeInfo* node = remote_node_of_writer_locked(gid);
+  return node ? full_node_name(node->node_namespace, node->node_name) : std::string();
 }
 
 std::string GraphCache::node_of_writer(const Gid& gid) const

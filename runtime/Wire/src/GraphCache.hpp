@@ -110,7 +110,10 @@ private:
   std::map<Gid, Endpoint> remote_endpoints_;
   std::map<Gid, std::vector<NodeInfo>> remote_nodes_; ///< by participant gid
 
-  /// Caller holds mutex_.
+  /// The remote node whose announcement lists writer `gid`, or nullptr. The one search both
+  /// remote_publishers and node_of_writer make. Caller holds mutex_.
+  const NodeInfo* remote_node_of_writer_locked(const Gid& gid) const;
+  /// "/ns/name" of the node owning writer `gid` (ours or a remote one), or "". Caller holds mutex_.
   std::string node_of_writer_locked(const Gid& gid) const;
 };
 

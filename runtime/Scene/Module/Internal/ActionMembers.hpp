@@ -6,11 +6,15 @@
 #define ros2vtk_scene_ActionMembers_hpp
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
+#include "ros2vtk/wire/QoS.hpp"
 
 #include <cstddef>
 #include <string>
 
 namespace ros2vtk {
+namespace wire {
+class Participant;
+}
 namespace scene {
 
 struct ActionMembers
@@ -26,6 +30,25 @@ struct ActionMembers
 /// members of rosidl's action synthesis, or does not use the action_msgs,
 /// unique_identifier_msgs and builtin_interfaces types of ros2vtk::Messages.
 bool find_action_members(const wire::ActionTypeSupport& type, ActionMembers& members, std::string* error);
+
+/// What an action client and its server agree on before creating their endpoints: the action's
+/// generated tables, its resolved name, where the synthesized members sit, and rcl_action's
+/// endpoint names and QoS (docs/wire-notes.md §8.1), kept here once so the two sides cannot drift.
+struct ActionEndpoints
+{
+  const wire::ActionTypeSupport* Type = nullptr;
+  std::string ResolvedName;
+  ActionMembers At;
+  std::string SendGoal, GetResult, CancelGoal, Feedback, Status; // <resolved>/_action/<endpoint>
+  wire::QoS ServiceQoS = wire::QoS::services();
+  wire::QoS FeedbackQoS = wire::QoS::default_profile();
+  wire::QoS StatusQoS = wire::QoS::transient_local(1);
+};
+
+/// Finds the action type `type` ("pkg/action/X" or "pkg/X"), resolves `action` on
+/// `participant` and fills `endpoints`; false with `error`.
+bool find_action_endpoints(const wire::Participant& participant, const std::string& type, const std::string& action,
+  ActionEndpoints& endpoints, std::string* error);
 
 /// The member at `offset` of a message struct.
 template <typename T>

@@ -1,5 +1,8 @@
-// ros2vtk — find_action_members: the synthesized members of an action's types, checked.
+// ros2vtk — find_action_members: the synthesized members of an action's types, checked;
+// find_action_endpoints: what an action client and server share before they create endpoints.
 #include "ActionMembers.hpp"
+
+#include "ros2vtk/wire/Participant.hpp"
 
 #include "ros2vtk/action_msgs/msg/goal_status_array.hpp"
 #include "ros2vtk/action_msgs/srv/cancel_goal.hpp"
@@ -61,6 +64,26 @@ bool find_action_members(const wire::ActionTypeSupport& type, ActionMembers& at,
     offset_of(*getResult.response(), "result", FieldType::Message, type.result(), at.ResultResult, error) &&
     offset_of(feedback, "goal_id", FieldType::Message, uuid, at.FeedbackId, error) &&
     offset_of(feedback, "feedback", FieldType::Message, type.feedback(), at.FeedbackFeedback, error);
+}
+
+bool find_action_endpoints(const wire::Participant& participant, const std::string& type, const std::string& action,
+  ActionEndpoints& endpoints, std::string* error)
+{
+  ActionEndpoints found;
+  found.Type = wire::find_action_type(type, error);
+  if (!found.Type || !participant.resolve_name(action, found.ResolvedName, error) ||
+    !find_action_members(*found.Type, found.At, error))
+  {
+    return false;
+  }
+  const std::string prefix = found.ResolvedName + "/_action/";
+  found.SendGoal = prefix + "send_goal";
+  found.GetResult = prefix + "get_result";
+  found.CancelGoal = prefix + "cancel_goal";
+  found.Feedback = prefix + "feedback";
+  found.Status = prefix + "status";
+  endpoints = std::move(found);
+  return true;
 }
 
 } // namespace scene

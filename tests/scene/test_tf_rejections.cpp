@@ -1,0 +1,105 @@
+// Rejected tf transforms are warned at a bounded rate (issue 10, item 5): a sender publishing a bad
+// transform on every spin (as a 1 kHz broadcaster would) gives the receiving ROS node one warning
+// at once, then at most one a second summing what arrived since, never one per spin. The sender is
+// a second ROS node of this process with a generic tf2_msgs/TFMessage publisher on /tf.
+#include "ros2vtk_test/SceneTestSupport.hpp"
+#include "vtkROS2Logic.h"
+#include "vtkROS2NodeNode.h"
+#include "vtkROS2PublisherGenericNode.h"
+#include "vtkROS2Scene.h"
+
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkSmartPointer.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <regex>
+#include <string>
+#include <thread>
+
+namespace
+{
+using ros2vtk_test::SpinUntil;
+using Clock = std::chrono::steady_clock;
+
+/// The "tf2: rejected N transform(s)" warnings in `text`: how many, and the sum of their N.
+void CountRejectionWarnings(const std::string& text, int& warnings, long& transforms)
+{
+  static const std::regex line("tf2: rejected ([0-9]+) transform\\(s\\)");
+  warnings = 0;
+  transforms = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), line); it != std::sregex_iterator(); ++it)
+  {
+    ++warnings;
+    transforms += std::stol((*it)[1].str());
+  }
+}
+
+class Tf2RejectionsTest : public ::testing::Test
+{
+protected:
+  void SetUp() override { vtkOutputWindow::SetInstance(this->Output); }
+  void TearDown() override { vtkOutputWindow::SetInstance(nullptr); }
+
+  vtkNew<ros2vtk_test::CapturingOutputWindow> Output;
+  vtkNew<vtkROS2Logic> Logic;
+};
+} // namespace
+
+TEST_F(Tf2RejectionsTest, ManyBadTransformsAreWarnedAtOnceThenAtMostOnceASecond)
+{
+  vtkROS2NodeNode* receiver = this->Logic->GetDefaultROS2Node();
+  ASSERT_NE(receiver, nullptr);
+  // The tf listener starts with the node's first lookup.
+  ASSERT_NE(receiver->CreateAndAddTf2LookupNode("world", "tool"), nullptr) << this->Output->Errors;
+
+  vtkNew<vtkROS2NodeNode> sender;
+  this->Logic->GetScene()->AddNode(sender);
+  ASSERT_TRUE(sender->Create("bad_tf_sender"));
+  vtkNew<vtkROS2PublisherGenericNode> tf;
+  this->Logic->GetScene()->AddNode(tf);
+  ASSERT_TRUE(tf->SetROSType("tf2_msgs/msg/TFMessage"));
+  ASSERT_TRUE(tf->AddToROS2Node(sender->GetID(), "/tf")) << this->Output->Errors;
+  // frame_id == child_frame_id: tf2 refuses it (TF_SELF_TRANSFORM), whatever the stamp.
+  const char* bad = "{transforms: [{header: {frame_id: world}, child_frame_id: world, "
+                    "transform: {rotation: {w: 1.0}}}]}";
+
+  // Discovery: bad transforms until the first warning, which comes at once.
+  int warnings = 0;
+  long transforms = 0;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
+    EXPECT_TRUE(tf->PublishYAML(bad));
+    CountRejectionWarnings(this->Output->Warnings, warnings, transforms);
+    return warnings > 0;
+  })) << "no rejection warning; warnings: " << this->Output->Warnings;
+  const auto first = Clock::now();
+  EXPECT_EQ(warnings, 1);
+  EXPECT_NE(this->Output->Warnings.find("TF_SELF_TRANSFORM"), std::string::npos) << this->Output->Warnings;
+
+  // 1.5 s of one bad transform per spin (hundreds of spins), then 1.2 s of spins without any,
+  // so that what was held back is reported.
+  int spins = 0;
+  for (const auto stop = first + std::chrono::milliseconds(1500); Clock::now() < stop; ++spins)
+  {
+    ASSERT_TRUE(tf->PublishYAML(bad));
+    this->Logic->Spin();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  for (const auto stop = Clock::now() + std::chrono::milliseconds(1200); Clock::now() < stop;)
+  {
+    this->Logic->Spin();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const double elapsed = std::chrono::duration<double>(Clock::now() - first).count();
+
+  CountRejectionWarnings(this->Output->Warnings, warnings, transforms);
+  EXPECT_GT(spins, 100);
+  // Many transforms were rejected and all of them reported (the sums), in few lines: the first at
+  // once, then no two within a second.
+  EXPECT_GE(transforms, 100) << this->Output->Warnings;
+  EXPECT_GE(warnings, 2) << this->Output->Warnings;
+  EXPECT_LE(warnings, 1 + static_cast<int>(elapsed)) << "in " << elapsed << " s:\n" << this->Output->Warnings;
+  EXPECT_LT(warnings * 10, transforms) << this->Output->Warnings;
+}
