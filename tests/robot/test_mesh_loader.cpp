@@ -330,7 +330,19 @@ INSTANTIATE_TEST_SUITE_P(
     // Found by the mutation test: assimp 5.2 crashed on an array without its count.
     WrittenMesh{"array_without_count.dae", replaced(collada("9", "3", "1", "0 1 2"), "count=\"9\"", "couPPnt=\"9\""),
                 "<float_array> has no count"},
-    WrittenMesh{"index_not_a_number.dae", collada("9", "3", "1", "0 1 -2"), "<p> holds '-2', which is not an index"}),
+    WrittenMesh{"index_not_a_number.dae", collada("9", "3", "1", "0 1 -2"), "<p> holds '-2', which is not an index"},
+    // Numbers decided without strtold (plain decimals, short indices) and with it (exponents,
+    // long digit strings) must agree with what strtold reads whole and finite.
+    WrittenMesh{"floats_plain_and_exponent.dae",
+                replaced(collada("9", "3", "1", "0 1 2"), "0 0 0 1 0 0 0 1 0", "+.5 -0. 0 1e0 0 0 -1.5E-3 1 0"), nullptr},
+    WrittenMesh{"float_exponent_overflow.dae", replaced(collada("9", "3", "1", "0 1 2"), "0 0 0 1 0 0 0 1 0", "0 0 0 1 0 0 0 1e99999 0"),
+                "holds '1e99999', which is not a number of its kind"},
+    WrittenMesh{"float_two_points.dae", replaced(collada("9", "3", "1", "0 1 2"), "0 0 0 1 0 0 0 1 0", "0 0 0 1.2.3 0 0 0 1 0"),
+                "holds '1.2.3', which is not a number of its kind"},
+    WrittenMesh{"float_sign_alone.dae", replaced(collada("9", "3", "1", "0 1 2"), "0 0 0 1 0 0 0 1 0", "0 0 0 - 0 0 0 1 0"),
+                "holds '-', which is not a number of its kind"},
+    WrittenMesh{"index_long_digits.dae", collada("9", "3", "1", "0 00000000000000000000001 2"), nullptr},
+    WrittenMesh{"index_beyond_int.dae", collada("9", "3", "1", "0 1 2147483648"), "<p> holds '2147483648', which is not an index"}),
   [](const ::testing::TestParamInfo<WrittenMesh>& param_info) {
     std::string name = param_info.param.name;
     std::replace(name.begin(), name.end(), '.', '_');
