@@ -112,7 +112,8 @@ def main() -> int:
                 frame_ms.append((t3 - t0) * 1e3)
                 messages.append(handled)
             time.sleep(max(0.0, next_frame - time.monotonic()))
-        gl = [line for line in window.ReportCapabilities().splitlines() if 'string' in line][:3]
+        gl = [line.strip() for line in window.ReportCapabilities().splitlines()
+              if line.strip().startswith(('OpenGL renderer string', 'OpenGL version string'))]
         live_actors = actors_of(renderer)
         links = sum(r.GetNumberOfLinks() for r in robots)
         bare_ms = bare_frames(live_actors, args.frames, period)
