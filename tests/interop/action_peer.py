@@ -95,9 +95,20 @@ def cmd_client(args) -> int:
     result_future = handle.get_result_async()
     rclpy.spin_until_future_complete(node, result_future, timeout_sec=args.timeout)
     result = result_future.result() if result_future.done() else None
+    again = None
+    if args.result_again_after:
+        # Ask for the same goal's result once more, later (a server expires finished goals after
+        # its result timeout: rcl then answers STATUS_UNKNOWN).
+        end = time.monotonic() + args.result_again_after
+        while time.monotonic() < end:
+            rclpy.spin_once(node, timeout_sec=0.05)
+        again_future = handle.get_result_async()
+        rclpy.spin_until_future_complete(node, again_future, timeout_sec=args.timeout)
+        again = again_future.result().status if again_future.done() else None
     print(json.dumps({'accepted': True, 'feedbacks': feedbacks, 'cancel_return_code': cancel,
                       'status': result.status if result else None,
-                      'sequence': list(result.result.sequence) if result else None}), flush=True)
+                      'sequence': list(result.result.sequence) if result else None,
+                      'status_asked_again': again}), flush=True)
     client.destroy()
     node.destroy_node()
     return 0
@@ -118,6 +129,8 @@ def main() -> int:
     client.add_argument('--cancel-after', type=int, default=0, help='cancel after this many feedbacks')
     client.add_argument('--timeout', type=float, default=10.0)
     client.add_argument('--wait', type=float, default=15.0, help='seconds to wait for the server')
+    client.add_argument('--result-again-after', type=float, default=0.0,
+                        help='ask for the result again after this many seconds')
     args = parser.parse_args()
     rclpy.init()
     try:

@@ -123,6 +123,8 @@ def cmd_serve(args, logic, node) -> int:
     if server is None:
         print(json.dumps({'ready': False}), flush=True)
         return 1
+    if args.result_timeout is not None:
+        server.SetResultTimeout(args.result_timeout)
     decided = []
 
     def on_goal(caller, _event):
@@ -157,11 +159,12 @@ def cmd_serve(args, logic, node) -> int:
                 server.SucceedGoal(yaml.safe_dump({'sequence': sequence}))
                 finished += 1
                 outcomes.append('succeeded')
-    ros2vtk.spin_until(logic, lambda: False, seconds=0.5)  # result requests still on their way
+    ros2vtk.spin_until(logic, lambda: False, seconds=args.linger)  # result requests still on their way
     print(json.dumps({'received': server.GetNumberOfGoalsReceived(), 'accepted': server.GetNumberOfGoalsAccepted(),
                       'rejected': server.GetNumberOfGoalsRejected(), 'cancels': server.GetNumberOfCancelRequests(),
                       'cancel_events': len(cancels), 'results_sent': server.GetNumberOfResultsSent(),
-                      'orders': decided, 'outcomes': outcomes}), flush=True)
+                      'orders': decided, 'outcomes': outcomes,
+                      'expired': server.GetNumberOfExpiredGoals(), 'goals_kept': server.GetNumberOfGoals()}), flush=True)
     return 0
 
 
@@ -190,6 +193,8 @@ def main() -> int:
     serve.add_argument('--step', type=float, default=0.05, help='seconds per Fibonacci step')
     serve.add_argument('--max-order', type=int, default=40, help='goals above are rejected')
     serve.add_argument('--count', type=int, default=0, help='stop after this many finished goals')
+    serve.add_argument('--linger', type=float, default=0.5, help='seconds served after the last goal')
+    serve.add_argument('--result-timeout', type=float, default=None, help="the server's result timeout (s)")
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()

@@ -8,7 +8,7 @@ import json
 from conftest import BUILD, HERE, VENV_PYTHON
 
 # action_msgs/msg/GoalStatus
-STATUS_SUCCEEDED, STATUS_CANCELED = 4, 5
+STATUS_UNKNOWN, STATUS_SUCCEEDED, STATUS_CANCELED = 0, 4, 5
 
 
 def fibonacci_feedbacks(order: int) -> list[list[int]]:
@@ -181,6 +181,20 @@ def test_rclpy_client_gets_feedback_and_result_from_our_server(ros):
     assert code == 0, err
     served = last_json(out)
     assert served['orders'] == [5] and served['outcomes'] == ['succeeded'] and served['results_sent'] == 1
+
+
+def test_finished_goal_expires_after_the_result_timeout_as_rcl_action(ros):
+    """rcl_action_expire_goals: once the result timeout has passed, our server forgets the goal and
+    a result request for it is answered STATUS_UNKNOWN, which is what rclpy's client reads."""
+    server = our_server(ros, '/expiring_fibonacci', '--step', '0.05', '--count', '1', '--seconds', '30',
+                        '--result-timeout', '0.5', '--linger', '4')
+    result = rclpy_client(ros, '/expiring_fibonacci', '3', '--result-again-after', '2')
+    assert result['status'] == STATUS_SUCCEEDED and result['sequence'] == fibonacci_feedbacks(3)[-1], result
+    assert result['status_asked_again'] == STATUS_UNKNOWN, result
+    code, out, err = ros.finish(server, timeout=40)
+    assert code == 0, err
+    served = last_json(out)
+    assert served['expired'] == 1 and served['goals_kept'] == 0, served
 
 
 def test_rclpy_client_cancels_a_goal_on_our_server(ros):

@@ -101,6 +101,33 @@ TEST_F(ActionTest, GoalFeedbackAndResultArriveOnSpin)
   EXPECT_EQ(this->Server->GetNumberOfGoals(), 1); // finished goals are kept
 }
 
+// rcl_action_expire_goals: a finished goal leaves the server after the result timeout (node
+// time), a running one never does; the timeout is saved with the scene.
+TEST_F(ActionTest, FinishedGoalsExpireAfterTheResultTimeout)
+{
+  this->MakePair("/fibonacci_expiry");
+  EXPECT_EQ(this->Server->GetResultTimeout(), 900.0); // rclpy's ActionServer default
+  this->Server->SetResultTimeout(0.3);
+  ASSERT_GT(this->Client->SendGoalYAML("{order: 3}"), 0);
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); })) << this->Output->Errors;
+  ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2]}"));
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->IsGoalDone(); }));
+  ASSERT_GT(this->Client->SendGoalYAML("{order: 4}"), 0); // a second goal, left running
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->GetNumberOfActiveGoals() == 1; }));
+  EXPECT_EQ(this->Server->GetNumberOfGoals(), 2);
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->GetNumberOfExpiredGoals() == 1; }));
+  EXPECT_EQ(this->Server->GetNumberOfGoals(), 1);
+  EXPECT_EQ(this->Server->GetNumberOfActiveGoals(), 1);
+  ros2vtk_test::SpinUntil(this->Logic, [] { return false; }, 0.5);
+  EXPECT_EQ(this->Server->GetNumberOfGoals(), 1); // running goals never expire
+
+  this->Server->SetResultTimeout(-1);
+  EXPECT_NE(this->Output->Errors.find("SetResultTimeout: -1 is not a non-negative number of seconds"), std::string::npos);
+  EXPECT_EQ(this->Server->GetResultTimeout(), 0.3);
+  const std::string saved = this->Logic->GetScene()->WriteToXMLString();
+  EXPECT_NE(saved.find("resultTimeout=\"0.3\""), std::string::npos) << saved;
+}
+
 TEST_F(ActionTest, CancelRequestedAndConfirmed)
 {
   this->MakePair("/to_cancel");

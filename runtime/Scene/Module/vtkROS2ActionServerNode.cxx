@@ -29,6 +29,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -80,6 +82,7 @@ public:
     bool CancelRequested = false;
     MessagePtr Request; // X_Goal
     MessagePtr Result;  // X_Result once finished
+    int64_t FinishedAt = 0; // node time (ns) when it ended: the result timeout runs from there
     std::vector<ros2vtk::wire::RequestId> ResultWaiters;
   };
 
@@ -97,7 +100,8 @@ public:
   std::vector<Goal> Goals;
   const void* Deciding = nullptr; // X_Goal under GoalReceivedEvent
   bool RejectDeciding = false;
-  vtkTypeInt64 Received = 0, Accepted = 0, Rejected = 0, Cancels = 0, ResultsSent = 0;
+  vtkTypeInt64 Received = 0, Accepted = 0, Rejected = 0, Cancels = 0, ResultsSent = 0, Expired = 0;
+  double ResultTimeout = 900.0; // seconds, rclpy's ActionServer default
   // Malformed requests (rejected by the wire servers): counted, and reported as a warning at
   // most every 5 s.
   uint64_t MalformedSeen = 0;
@@ -339,6 +343,23 @@ int vtkROS2ActionServerNode::ProcessRequests()
     internals.CancelServer->send_response(request.id, &response);
   }
 
+  // rcl_action_expire_goals: finished goals older than the result timeout leave the status list
+  // and no longer have a result to serve. A clock that went back (sim time restarted) expires
+  // nothing until it passes the finish time again.
+  const int64_t now = internals.ROSNode ? internals.ROSNode->GetNodeTimeNanoseconds() : 0;
+  const int64_t keep = static_cast<int64_t>(internals.ResultTimeout * 1e9);
+  const size_t before = internals.Goals.size();
+  internals.Goals.erase(std::remove_if(internals.Goals.begin(), internals.Goals.end(),
+                                       [&](const vtkInternals::Goal& goal) {
+                                         return goal.Result && goal.ResultWaiters.empty() && now - goal.FinishedAt > keep;
+                                       }),
+    internals.Goals.end());
+  if (internals.Goals.size() != before)
+  {
+    internals.Expired += static_cast<vtkTypeInt64>(before - internals.Goals.size());
+    statusChanged = true;
+  }
+
   const uint64_t malformed = internals.SendGoalServer->rejected_count() +
     internals.GetResultServer->rejected_count() + internals.CancelServer->rejected_count();
   const uint64_t fresh = malformed > internals.MalformedSeen ? malformed - internals.MalformedSeen : 0;
@@ -497,6 +518,7 @@ bool vtkROS2ActionServerNode::Finish(int status, const char* resultYAML, const c
   }
   goal->Status = static_cast<int8_t>(status);
   goal->Result = std::move(result);
+  goal->FinishedAt = internals.ROSNode ? internals.ROSNode->GetNodeTimeNanoseconds() : 0;
   internals.PublishStatus();
   MessagePtr response = internals.ResultResponse(goal);
   for (const auto& waiter : goal->ResultWaiters)
@@ -531,6 +553,50 @@ vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsRejected() const { return 
 vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfCancelRequests() const { return this->Internals->Cancels; }
 vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfResultsSent() const { return this->Internals->ResultsSent; }
 
+void vtkROS2ActionServerNode::SetResultTimeout(double seconds)
+{
+  if (!(seconds >= 0) || !std::isfinite(seconds))
+  {
+    vtkErrorMacro("SetResultTimeout: " << seconds << " is not a non-negative number of seconds");
+    return;
+  }
+  if (seconds != this->Internals->ResultTimeout)
+  {
+    this->Internals->ResultTimeout = seconds;
+    this->Modified();
+  }
+}
+
+double vtkROS2ActionServerNode::GetResultTimeout() const
+{
+  return this->Internals->ResultTimeout;
+}
+
+vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfExpiredGoals() const
+{
+  return this->Internals->Expired;
+}
+
+void vtkROS2ActionServerNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  element->SetDoubleAttribute("resultTimeout", this->Internals->ResultTimeout);
+}
+
+bool vtkROS2ActionServerNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  double seconds = 0; // absent in files of earlier versions: the default stays
+  if (element->GetScalarAttribute("resultTimeout", seconds) && seconds >= 0 && std::isfinite(seconds))
+  {
+    this->Internals->ResultTimeout = seconds;
+  }
+  return true;
+}
+
 int vtkROS2ActionServerNode::GetNumberOfGoals() const
 {
   return static_cast<int>(this->Internals->Goals.size());
@@ -547,6 +613,8 @@ void vtkROS2ActionServerNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Goals: " << this->Internals->Goals.size() << "\n";
+  os << indent << "ResultTimeout: " << this->Internals->ResultTimeout << " s\n";
+  os << indent << "ExpiredGoals: " << this->Internals->Expired << "\n";
 }
 
 //------------------------------------------------------------------------------

@@ -12,8 +12,9 @@
 // transient-local status (the full array of goals it tracks, on every change). Accepted goals go
 // straight to executing (as rclpy's server does); cancel requests for running goals are
 // accepted (they become canceling; the script decides when the goal ends). Result requests for a
-// running goal are answered when it ends. Finished goals are kept (and their results served)
-// until the node is removed.
+// running goal are answered when it ends. Finished goals are kept (listed in the status, their
+// results served) for the result timeout, 900 s of node time by default as rclpy's server, then
+// expire as rcl_action_expire_goals makes them.
 #ifndef vtkROS2ActionServerNode_h
 #define vtkROS2ActionServerNode_h
 
@@ -82,6 +83,20 @@ public:
   /// Goals tracked (running and finished), and those still running.
   int GetNumberOfGoals() const;
   int GetNumberOfActiveGoals() const;
+
+  ///@{
+  /// How long a finished goal stays tracked, in seconds of the node's clock (simulated time
+  /// when use_sim_time is on): rcl_action's result_timeout, 900 s by default as rclpy's
+  /// ActionServer. A result request for an expired goal is answered STATUS_UNKNOWN, as rcl's.
+  /// The setter refuses a negative or non-finite value (vtkErrorMacro); saved with the scene.
+  void SetResultTimeout(double seconds);
+  double GetResultTimeout() const;
+  /// Finished goals dropped after the result timeout so far.
+  vtkTypeInt64 GetNumberOfExpiredGoals() const;
+  ///@}
+
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
 
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type, creates the wire endpoints on `rosNode`.
