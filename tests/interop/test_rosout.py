@@ -7,11 +7,16 @@ import time
 
 
 def test_rclpy_rosout_subscriber_receives_our_warning_for_rejected_samples(ros):
-    echo = ros.peer('echo', '/rosout', 'rcl_interfaces/msg/Log', '--count', '1', '--timeout', '30')
+    # Transient local, as rqt_console subscribes: /rosout is transient local (rcl's rosout QoS),
+    # so a warning written before our writer has discovered this reader still reaches it (a
+    # volatile echo lost it once under CI load against Jazzy). Ten bad samples, 20 ms apart: the
+    # first may go before our reader has discovered the publisher.
+    echo = ros.peer('echo', '/rosout', 'rcl_interfaces/msg/Log', '--count', '1', '--timeout', '30',
+                    '--qos', 'transient_local')
     ros.wait_ready(echo)
     ours = ros.scene('--seconds', '15', 'sub', 'String', '/bad/string')
     ros.wait_ready(ours)
-    bad = ros.peer('pub_raw', '/bad/string', 'std_msgs/msg/String', '00010000ffffffff41', '--count', '3')
+    bad = ros.peer('pub_raw', '/bad/string', 'std_msgs/msg/String', '00010000ffffffff41', '--count', '10')
     code, out, err = ros.finish(echo, timeout=40)
     ros.stop(bad)
     ros.stop(ours)
