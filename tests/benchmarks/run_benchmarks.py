@@ -493,8 +493,9 @@ def markdown(results: dict) -> str:
            'so the rclpy baselines are kept on UDP too: stacks are compared, not transports). '
            'Raw samples are in build/bench/results.json.', '',
            f'Run: {m["date"]}{" (**--quick smoke run: tiny samples**)" if results.get("quick") else ""}'
-           + ('; sections re-run with --merge: ' + ', '.join(f'{k} {v}' for k, v in results['section_runs'].items())
-              if results.get('section_runs') and len(results['section_runs']) < len(SECTIONS) else ''), '',
+           + ('; re-run later with --merge: ' + ', '.join(f'{k} at {results["section_runs"].get(k, "?")}'
+                                                           for k in results['merged_sections'])
+              if results.get('merged_sections') else ''), '',
            '| machine | |', '| --- | --- |',
            f'| CPU | {m["cpu"]} |', f'| cores | {m["cores"]} |', f'| RAM | {m["ram_gib"]} GiB |',
            f'| OS | {m["os"]} |', f'| compiler | {m["compiler"]} ({m["build_type"]}) |',
@@ -1279,7 +1280,9 @@ def main() -> int:
         earlier = json.loads(json_path.read_text())
         results = dict(earlier, **{k: v for k, v in results.items() if k != 'errors'})
         results['errors'] = dict(earlier.get('errors', {}))
-        results.setdefault('section_runs', {})
+        results['machine'] = earlier.get('machine', results['machine'])  # the report's run date stays
+        results['merged_sections'] = sorted(set(earlier.get('merged_sections', [])) |
+                                            {n.strip() for n in args.only.split(',') if n.strip()})
     progress(f'{results["machine"]["cpu"]}, {results["machine"]["cores"]} cores, '
              f'{results["machine"]["ram_gib"]} GiB; Fast DDS {results["machine"]["fastdds"]}')
     ctx = Context(args.build, args.quick)
