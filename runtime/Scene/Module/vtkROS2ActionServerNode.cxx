@@ -71,6 +71,9 @@ int64_t Nanoseconds(const Time& time)
 }
 }
 
+// rclpy's ActionServer(result_timeout=900), in seconds.
+constexpr double kDefaultResultTimeout = 900.0;
+
 //------------------------------------------------------------------------------
 class vtkROS2ActionServerNode::vtkInternals
 {
@@ -101,7 +104,7 @@ public:
   const void* Deciding = nullptr; // X_Goal under GoalReceivedEvent
   bool RejectDeciding = false;
   vtkTypeInt64 Received = 0, Accepted = 0, Rejected = 0, Cancels = 0, ResultsSent = 0, Expired = 0;
-  double ResultTimeout = 900.0; // seconds, rclpy's ActionServer default
+  double ResultTimeout = kDefaultResultTimeout;
   // Malformed requests (rejected by the wire servers): counted, and reported as a warning at
   // most every 5 s.
   uint64_t MalformedSeen = 0;
@@ -580,7 +583,10 @@ vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfExpiredGoals() const
 void vtkROS2ActionServerNode::WriteXML(vtkXMLDataElement* element)
 {
   this->Superclass::WriteXML(element);
-  element->SetDoubleAttribute("resultTimeout", this->Internals->ResultTimeout);
+  if (this->Internals->ResultTimeout != kDefaultResultTimeout) // files with the default stay as before
+  {
+    element->SetDoubleAttribute("resultTimeout", this->Internals->ResultTimeout);
+  }
 }
 
 bool vtkROS2ActionServerNode::ReadXML(vtkXMLDataElement* element)
