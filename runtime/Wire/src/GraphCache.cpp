@@ -45,6 +45,7 @@ bool GraphCache::init(dds::DomainParticipant* participant, dds::Publisher* publi
   QoS reader_profile = QoS::transient_local(1);
   reader_profile.history = QoS::History::KeepAll;
   dds::DataReaderQos reader_qos = make_reader_qos(reader_profile, "");
+  reader_qos.reliable_reader_qos().times.initialAcknackDelay = eprosima::fastrtps::Duration_t(0, 5000000);
   reader_ = subscriber->create_datareader(topic, reader_qos, this);
   if (!writer_ || !reader_)
   {

@@ -3,6 +3,7 @@
 #include "ParticipantImpl.hpp"
 
 #include "LoopbackTransport.hpp"
+#include "StartGateTransport.hpp"
 #include "PublisherImpl.hpp"
 #include "ShippedTypes.hpp"
 #include "SubscriptionImpl.hpp"
@@ -407,17 +408,20 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   const bool loopback_only =
     (options.range == DiscoveryRange::Localhost || options.range == DiscoveryRange::Off) &&
     options.static_peers.empty() && options.discovery_servers.empty();
+  std::shared_ptr<eprosima::fastdds::rtps::TransportDescriptorInterface> transport = udp;
   if (loopback_only)
   {
     // Sockets bound to 127.0.0.1 only and only loopback locators announced; peers' same-host
     // locators are reached through 127.0.0.1 (LoopbackTransport.hpp). Static peers name other
     // hosts on purpose, so they keep the plain transport.
-    qos.transport().user_transports.push_back(std::make_shared<LoopbackTransportDescriptor>(udp));
+    transport = std::make_shared<LoopbackTransportDescriptor>(udp);
   }
-  else
-  {
-    qos.transport().user_transports.push_back(udp);
-  }
+  auto gate = std::make_shared<std::atomic<bool>>(false);
+  // The gate drops the first initial announcement; the next one, sooner than Fast DDS's 100 ms,
+  // reaches the peers as soon as the participant can hear their answers.
+  qos.wire_protocol().builtin.discovery_config.initial_announcements.count = 10;
+  qos.wire_protocol().builtin.discovery_config.initial_announcements.period = eprosima::fastrtps::Duration_t(0, 20000000);
+  qos.transport().user_transports.push_back(std::make_shared<StartGateTransportDescriptor>(transport, gate));
   qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
 
   use_no_intraprocess_delivery();
@@ -429,6 +433,7 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     return set_error(error, "Fast DDS could not create a participant on domain " +
                               std::to_string(options.domain_id));
   }
+  gate->store(true, std::memory_order_release); // enabled: its receivers hear replies now
   publisher = participant->create_publisher(dds::PUBLISHER_QOS_DEFAULT);
   subscriber = participant->create_subscriber(dds::SUBSCRIBER_QOS_DEFAULT);
   if (!publisher || !subscriber)
