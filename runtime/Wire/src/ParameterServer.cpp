@@ -128,7 +128,10 @@ size_t ParameterServer::process()
   for (auto& endpoint : impl_->endpoints)
   {
     requests.clear();
-    endpoint.server->take(requests);
+    if (endpoint.server->take(requests) == 0)
+    {
+      continue;
+    }
     const MessageTypeSupport& response_type = *endpoint.server->type().response();
     for (const auto& request : requests)
     {

@@ -196,6 +196,7 @@ void ServiceServer::Impl::on_data_available(dds::DataReader* data_reader)
     {
       std::lock_guard<std::mutex> lock(mutex);
       queue.push_back(std::move(request));
+      has_requests.store(true, std::memory_order_release);
     }
     queued = true;
   }
@@ -218,7 +219,12 @@ ServiceServer::~ServiceServer() = default;
 
 size_t ServiceServer::take(std::vector<ServiceRequest>& out)
 {
+  if (!impl_->has_requests.load(std::memory_order_acquire))
+  {
+    return 0; // a request queued meanwhile wakes the next spin
+  }
   std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->has_requests.store(false, std::memory_order_relaxed);
   const size_t count = impl_->queue.size();
   for (auto& request : impl_->queue)
   {

@@ -62,6 +62,8 @@ public:
   NodeTypeCache::Registration type_registration; // the service type, served while this exists
   std::mutex mutex;
   std::deque<ServiceRequest> queue;
+  // Set with the queue under `mutex`; read without it so a spin with nothing queued takes no lock.
+  std::atomic<bool> has_requests{ false };
   std::atomic<uint64_t> rejected{ 0 };
   std::string last_rejection; // guarded by mutex
 };
