@@ -93,6 +93,18 @@ public:
   vtkGetMacro(ModelsInWorld, bool);
   vtkBooleanMacro(ModelsInWorld, bool);
 
+  /// Writes a 3D Slicer scene file (.mrml) for a stock Slicer with SlicerOpenIGTLink, opened by
+  /// drag and drop (or File → Add Data): an OpenIGTLinkIF connector to this one, persistent and
+  /// active, so it connects as soon as the file is loaded; and for every mirrored model node under
+  /// a transform node, a linear transform named as that transform's device with a model named as
+  /// the model's device under it (with its colour). OpenIGTLinkIF fills an existing node of the
+  /// device's name and class instead of creating one, and keeps its parent, so the link TRANSFORMs
+  /// and (with ModelsInWorld off) the link-local POLYDATA land in this hierarchy: the robot's
+  /// models under their link transforms, each mesh sent once per connection (with ModelsInWorld
+  /// on, the models are written at the scene root, as their meshes are then baked). Returns the number
+  /// of models written, or -1 (GetLastError) when the file cannot be written.
+  int WriteSlicerScene(const char* path);
+
   /// Slicer → ROS. Device names are Slicer node names. `type` for a topic: a publisher short
   /// name whose VTK value matches the message (PoseStamped / TransformStamped for TRANSFORM,
   /// PointCloud for POINT, PoseArray for TDATA, Image for IMAGE, String for STRING).
