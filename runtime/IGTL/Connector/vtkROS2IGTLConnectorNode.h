@@ -10,11 +10,15 @@
 // nodes (robot visuals) as POLYDATA when they change (baked in world coordinates by default, or
 // link-local with metadata "ros.parent" naming the link for a Slicer-side snippet to parent),
 // subscribers' images as IMAGE with their pose, point clouds as POLYDATA points, strings as
-// STRING, pose arrays as TDATA (elements <device>_<i>, posed by the tf lookup of their frame). Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
+// STRING, pose arrays as TDATA (elements <device>_<i>, posed by the tf lookup of their frame) and
+// as a POINT list (Slicer: a markups point list). WriteSlicerScene writes a .mrml that puts the
+// link-local models under their link transforms in a stock Slicer. Device name = node name
+// (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
 // the matrix WorldToSlicer (identity by default: ROS x, y, z become Slicer R, A, S) is applied to
 // everything sent and inverted for everything received; it is never implicit.
 // In (Slicer → scene): TRANSFORM/POSITION become transform nodes, TDATA one transform node per
-// element (as Slicer does) and a PoseArray when mapped, POINT a model node of points,
+// element (as Slicer does; each element mappable by its name) and a PoseArray when mapped, POINT a
+// model node of points,
 // IMAGE and STRING are kept by device; mapped devices are also published (tf or a topic).
 #ifndef vtkROS2IGTLConnectorNode_h
 #define vtkROS2IGTLConnectorNode_h
