@@ -94,3 +94,56 @@ def test_invalid_connector_settings_leave_the_scene_unchanged(ros2vtk, logic):
         before = scene.GetNumberOfNodes()
         assert not scene.ReadFromXMLString(bad)
         assert scene.GetNumberOfNodes() == before and scene.GetNthNode(0) is connector
+
+
+def test_slicer_scene_file_puts_models_under_their_transforms_and_a_bad_path_is_an_error(ros2vtk, logic, tmp_path):
+    """WriteSlicerScene (the --slicer-scene file): link-local models under a LinearTransform named as
+    their parent's device; with ModelsInWorld on (baked meshes) at the root; an unwritable path is
+    -1 with a reason, and the connector keeps working."""
+    import xml.etree.ElementTree as ET
+    import vtk
+    scene = logic.GetScene()
+    link = ros2vtk.vtkROS2TransformNode()
+    link.SetName('arm:a_link_name_far_beyond_twenty_bytes')
+    scene.AddNode(link)
+    model = ros2vtk.vtkROS2ModelNode()
+    model.SetName('arm:tool')
+    model.SetColor(0.25, 0.5, 1.0)
+    model.SetPolyData(vtk.vtkPolyData())
+    scene.AddNode(model)
+    model.SetParentTransformNodeID(link.GetID())
+    loose = ros2vtk.vtkROS2ModelNode()  # no parent: not in the file
+    loose.SetName('loose')
+    scene.AddNode(loose)
+    connector = ros2vtk.vtkROS2IGTLConnectorNode()
+    scene.AddNode(connector)
+    connector.SetPort(18999)
+    connector.ModelsInWorldOff()
+
+    path = tmp_path / 'robot.mrml'
+    assert connector.WriteSlicerScene(str(path)) == 1
+    root = ET.parse(path).getroot()
+    transform, = root.iter('LinearTransform')
+    # The device name rule of OpenIGTLink's 20 bytes (tested in test_igtl.py against the wire).
+    assert transform.get('name') == ros2vtk.vtkROS2IGTLConnectorNode.MakeDeviceName(link.GetName())
+    assert len(transform.get('name')) <= 20
+    m, = root.iter('Model')
+    assert m.get('name') == 'arm:tool'  # the model's device name
+    assert m.get('references') == f"display:{root.find('ModelDisplay').get('id')};transform:{transform.get('id')};"
+    assert [float(v) for v in root.find('ModelDisplay').get('color').split()] == [0.25, 0.5, 1.0]
+    connector_element, = root.iter('IGTLConnector')
+    assert connector_element.get('serverPort') == '18999' and connector_element.get('connectorType') == 'CLIENT'
+
+    connector.ModelsInWorldOn()
+    assert connector.WriteSlicerScene(str(path)) == 1
+    root = ET.parse(path).getroot()
+    assert not list(root.iter('LinearTransform'))
+    assert 'transform:' not in root.find('Model').get('references')
+
+    connector.SetTypeToClient()  # Slicer is then the server
+    assert connector.WriteSlicerScene(str(path)) == 1
+    assert ET.parse(path).getroot().find('IGTLConnector').get('connectorType') == 'SERVER'
+
+    assert connector.WriteSlicerScene(str(tmp_path / 'missing' / 'robot.mrml')) == -1
+    assert 'cannot write' in connector.GetLastError()
+    assert connector.WriteSlicerScene(str(path)) == 1
