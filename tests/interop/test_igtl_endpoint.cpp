@@ -118,16 +118,25 @@ bool wait_for_peers(igtl::Endpoint& endpoint, std::size_t count)
   return endpoint.peer_count() == count;
 }
 
-} // namespace
-
-TEST(IGTLEndpoint, AStalledPeerLosesItsOldestMessagesAndKeepsTheNewestInOrder)
+// A server on a free loopback port whose peers may queue 8 messages each.
+class IGTLEndpoint : public ::testing::Test
 {
+protected:
+  void SetUp() override
+  {
+    options.port = free_port();
+    options.max_queued_messages = 8;
+    std::string error;
+    ASSERT_TRUE(endpoint.start(options, error)) << error;
+  }
   igtl::Endpoint endpoint;
   igtl::Endpoint::Options options;
-  options.port = free_port();
-  options.max_queued_messages = 8;
-  std::string error;
-  ASSERT_TRUE(endpoint.start(options, error)) << error;
+};
+
+} // namespace
+
+TEST_F(IGTLEndpoint, AStalledPeerLosesItsOldestMessagesAndKeepsTheNewestInOrder)
+{
   const int fd = connect_to(options.port, 4096);
   ASSERT_GE(fd, 0);
   ASSERT_TRUE(wait_for_peers(endpoint, 1));
@@ -173,14 +182,8 @@ TEST(IGTLEndpoint, AStalledPeerLosesItsOldestMessagesAndKeepsTheNewestInOrder)
   }
 }
 
-TEST(IGTLEndpoint, AStalledPeerDoesNotHoldBackAPeerThatReads)
+TEST_F(IGTLEndpoint, AStalledPeerDoesNotHoldBackAPeerThatReads)
 {
-  igtl::Endpoint endpoint;
-  igtl::Endpoint::Options options;
-  options.port = free_port();
-  options.max_queued_messages = 8;
-  std::string error;
-  ASSERT_TRUE(endpoint.start(options, error)) << error;
   const int stalled = connect_to(options.port, 4096);
   ASSERT_TRUE(wait_for_peers(endpoint, 1));
   const int reading = connect_to(options.port, 0);
