@@ -147,3 +147,56 @@ def test_slicer_scene_file_puts_models_under_their_transforms_and_a_bad_path_is_
     assert connector.WriteSlicerScene(str(tmp_path / 'missing' / 'robot.mrml')) == -1
     assert 'cannot write' in connector.GetLastError()
     assert connector.WriteSlicerScene(str(path)) == 1
+
+
+def test_a_model_at_the_scene_root_is_sent_in_slicer_coordinates_even_with_link_local_meshes(ros2vtk, logic):
+    """--link-local sends meshes in their link's coordinates; a model under no link has only the
+    world: its mesh goes through WorldToSlicer (here LPS: x, y negated). Read from the wire with
+    polydata.md's layout (58-byte header; body: 10 uint32 counts, then float32 x y z per point)."""
+    import struct
+    import time
+    import vtk
+    scene = logic.GetScene()
+    cube = vtk.vtkCubeSource()
+    cube.SetCenter(10.0, 20.0, 30.0)
+    cube.SetXLength(2.0)
+    cube.SetYLength(2.0)
+    cube.SetZLength(2.0)
+    cube.Update()
+    model = ros2vtk.vtkROS2ModelNode()
+    model.SetName('marker')
+    model.SetPolyData(cube.GetOutput())
+    scene.AddNode(model)
+    connector = ros2vtk.vtkROS2IGTLConnectorNode()
+    scene.AddNode(connector)
+    connector.SetPort(free_port())
+    connector.ModelsInWorldOff()
+    lps = vtk.vtkMatrix4x4()
+    lps.SetElement(0, 0, -1.0)
+    lps.SetElement(1, 1, -1.0)
+    connector.SetWorldToSlicer(lps)
+    assert connector.Start(None), connector.GetLastError()
+    reader = socket.create_connection(('127.0.0.1', connector.GetPort()), timeout=0.05)
+    data = b''
+    end = time.monotonic() + 10
+    while time.monotonic() < end and b'POLYDATA' not in data[:12]:
+        connector.Update()
+        try:
+            data += reader.recv(1 << 20)
+        except socket.timeout:
+            pass
+        while len(data) >= 58 and b'POLYDATA' not in data[:12] and len(data) >= 58 + struct.unpack('>Q', data[42:50])[0]:
+            data = data[58 + struct.unpack('>Q', data[42:50])[0]:]  # a message of another type
+    while len(data) < 58 + struct.unpack('>Q', data[42:50])[0] and time.monotonic() < end:
+        connector.Update()
+        data += reader.recv(1 << 20)
+    reader.close()
+    connector.Stop()
+    assert data[2:10] == b'POLYDATA' and data[14:20] == b'marker', data[:34]
+    version = struct.unpack('>H', data[:2])[0]
+    assert version == 1  # no ros.parent metadata: it has no link
+    body = data[58:]
+    count = struct.unpack('>I', body[:4])[0]
+    points = [struct.unpack('>3f', body[40 + 12 * i:52 + 12 * i]) for i in range(count)]
+    xs, ys, zs = zip(*points)
+    assert (min(xs), max(xs), min(ys), max(ys), min(zs), max(zs)) == (-11.0, -9.0, -21.0, -19.0, 29.0, 31.0)

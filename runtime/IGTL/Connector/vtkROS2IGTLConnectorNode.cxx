@@ -820,7 +820,9 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
       }
       const std::string device = this->Device(model->GetName());
       igtl::Frame frame;
-      if (self->ModelsInWorld)
+      // Link-local only under a transform (Slicer's parent); a model at the root is in the world.
+      const bool linkLocal = !self->ModelsInWorld && model->GetParentTransformNode();
+      if (!linkLocal)
       {
         model->GetMatrixModelToWorld(world);
         vtkMatrix4x4::Multiply4x4(this->WorldToSlicer, world, slicer);
@@ -868,7 +870,7 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
       cells(poly->GetLines(), mesh.lines);
       cells(poly->GetVerts(), mesh.vertices);
       frame = igtl::encode_polydata(device, mesh, now);
-      if (!self->ModelsInWorld && model->GetParentTransformNode())
+      if (linkLocal)
       {
         frame.metadata["ros.parent"] = this->Device(model->GetParentTransformNode()->GetName());
       }
