@@ -4,9 +4,10 @@
     ros2vtk igtl --image /camera/image --map Target=tf:world:target
 
 Scene → Slicer: tf lookups and robot links as TRANSFORM (mm), robot visuals as POLYDATA, images
-as IMAGE, point clouds as POLYDATA points, strings as STRING, pose arrays as TDATA. Slicer → ROS:
---map DEVICE=tf:PARENT:CHILD or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped, PointCloud,
-PoseArray (from TDATA), Image, String).
+as IMAGE, point clouds as POLYDATA points, strings as STRING, pose arrays as TDATA and a POINT list.
+Slicer → ROS: --map DEVICE=tf:PARENT:CHILD or DEVICE=topic:TOPIC:TYPE (PoseStamped, TransformStamped,
+PointCloud, PoseArray (from TDATA), Image, String); DEVICE may be a TDATA element's name.
+--slicer-scene FILE.mrml: a Slicer scene to drag into Slicer (connector + robot models under their links).
 Coordinates: --frame ras (default: ROS x, y, z become Slicer R, A, S) or lps (x, y negated).
 Prints one JSON line per state change and a summary at the end.
 """
@@ -32,11 +33,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--cloud', action='append', default=[], metavar='TOPIC', help='sensor_msgs/PointCloud2')
     parser.add_argument('--text', action='append', default=[], metavar='TOPIC', help='std_msgs/String')
     parser.add_argument('--poses', action='append', default=[], metavar='TOPIC',
-                        help='geometry_msgs/PoseArray as TDATA (one Slicer transform per pose)')
+                        help='geometry_msgs/PoseArray as TDATA (one Slicer transform per pose) and a POINT list')
     parser.add_argument('--map', action='append', default=[], metavar='DEVICE=tf:PARENT:CHILD|DEVICE=topic:TOPIC:TYPE')
     parser.add_argument('--frame', choices=['ras', 'lps'], default='ras')
     parser.add_argument('--link-local', action='store_true',
                         help='send meshes once in link coordinates with metadata ros.parent (see docs/slicer.md)')
+    parser.add_argument('--slicer-scene', default='', metavar='FILE.mrml',
+                        help='write a 3D Slicer scene to open in Slicer (drag and drop): a connector to us and '
+                             'the robot models under their link transforms; implies --link-local, and is '
+                             'rewritten as the robot loads (see docs/slicer.md)')
     parser.add_argument('--seconds', type=float, default=0.0, help='stop after this long (0: run until Ctrl-C)')
     parser.add_argument('--save-scene', default='', metavar='FILE',
                         help='write the scene (connector settings, mappings, lookups, robot) to FILE once started')
@@ -86,7 +91,7 @@ def run(args: argparse.Namespace, logic, node) -> int:
     connector.SetPort(args.port)
     connector.SetHostname(args.host)
     connector.SetClient(args.client)
-    connector.SetModelsInWorld(not args.link_local)
+    connector.SetModelsInWorld(not (args.link_local or args.slicer_scene))
     if args.frame == 'lps':
         import vtk
         lps = vtk.vtkMatrix4x4()
@@ -122,10 +127,19 @@ def _serve(args: argparse.Namespace, logic, connector) -> int:
     end = time.monotonic() + args.seconds if args.seconds > 0 else float('inf')
     shown = (None, None)
     log_lines = 0
+    slicer_scene = getattr(args, 'slicer_scene', '')
+    scene_nodes = -1  # the Slicer scene is rewritten when the scene's node count changed (robot loaded)
     try:
         while time.monotonic() < end:
             logic.SpinOnWakeUp(0.01)
             logic.Spin()  # the connector's sockets are not in the wake-up set: spin at least at 100 Hz
+            if slicer_scene and scene.GetNumberOfNodes() != scene_nodes:
+                scene_nodes = scene.GetNumberOfNodes()
+                models = connector.WriteSlicerScene(slicer_scene)
+                if models < 0:
+                    print(json.dumps({'error': connector.GetLastError()}), flush=True)
+                    return 1
+                print(json.dumps({'slicer_scene': slicer_scene, 'models': models}), flush=True)
             state = (connector.GetState(), connector.GetNumberOfClients())
             log = connector.GetEventLog().splitlines()  # the newest 200 lines
             for line in log[log_lines:] if len(log) < 200 else []:

@@ -34,6 +34,11 @@ sys.path.insert(0, str(HERE.parent / 'interop'))
 from igtl_peer import HEADER, frame, free_port  # noqa: E402
 
 
+def sysconfig_purelib() -> str:
+    import sysconfig
+    return sysconfig.get_paths()['purelib']
+
+
 def summary(latencies_ms: list) -> dict:
     if not latencies_ms:
         return {'n': 0}
@@ -204,6 +209,64 @@ def through_ros2vtk(build: Path, count: int, rate: float) -> dict:
     return result
 
 
+def robot_traffic(build: Path, urdf: Path, ament: Path | None, link_local: bool, configs: int = 21,
+                  hold: float = 0.2) -> dict:
+    """What a moving robot costs on the wire: an rclpy robot_state_publisher (tests/interop/rsp_peer.py)
+    walks through `configs` joint configurations, `hold` s each; a raw reader (the protocol's own
+    layout) counts what `ros2vtk igtl --robot` sends while it moves: world-baked meshes (default,
+    resent as links move) or link-local ones (--link-local / --slicer-scene, sent once)."""
+    from igtl_peer import RawClient
+    port = free_port()
+    env = dict(os.environ)
+    if ament:
+        env['AMENT_PREFIX_PATH'] = os.pathsep.join(filter(None, [str(ament), env.get('AMENT_PREFIX_PATH')]))
+    rsp = subprocess.Popen([sys.executable, str(HERE.parent / 'interop' / 'rsp_peer.py'), str(urdf),
+                            '--configs', str(configs), '--hold', str(hold), '--first-hold', '60', '--rate', '100'],
+                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
+    assert json.loads(rsp.stdout.readline()).get('ready')
+    ours = subprocess.Popen(['/usr/bin/python3', '-m', 'ros2vtk', 'igtl', '--port', str(port), '--robot',
+                             *(['--link-local'] if link_local else []), '--seconds', '120'],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                            env=dict(env, PYTHONPATH=str(build / 'python')))
+    assert json.loads(ours.stdout.readline()).get('ready')
+    visuals = len(__import__('re').findall(r'<visual\b', urdf.read_text(errors='replace')))
+    reader = RawClient(port)
+    meshes: set = set()
+    deadline = time.monotonic() + 60  # robot load, then the first (held) configuration settles
+    while len(meshes) < visuals and time.monotonic() < deadline:
+        meshes |= {d for t, d, _, _ in reader.read(0.5) if t == 'POLYDATA'}
+    reader.read(2.0)
+    # A first peer holds configuration 0 while the robot loads: 2 s of a robot standing still.
+    # A second peer then walks through the configurations: the robot moving.
+    still = reader.read(2.0)
+    rsp.kill()
+    rsp.communicate()
+    mover = subprocess.Popen([sys.executable, str(HERE.parent / 'interop' / 'rsp_peer.py'), str(urdf),
+                              '--configs', str(configs), '--hold', str(hold), '--rate', '100'],
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
+    assert json.loads(mover.stdout.readline()).get('ready')
+    mover.stdout.readline()  # configuration 0
+    start = time.monotonic()
+    moving = reader.read(configs * hold)
+    seconds = time.monotonic() - start
+    reader.close()
+    mover.kill()
+    mover.communicate()
+    ours.send_signal(2)
+    ours.communicate(timeout=30)
+
+    def rates(messages, span):
+        out = {}
+        for kind in ('TRANSFORM', 'POLYDATA'):
+            chosen = [body for t, _, _, body in messages if t == kind]
+            out[kind] = {'messages_per_s': round(len(chosen) / span, 1),
+                         'kbytes_per_s': round(sum(58 + len(b) for b in chosen) / span / 1000.0, 1)}
+        return out
+    return {'urdf': urdf.name, 'visuals': visuals, 'meshes_seen': len(meshes),
+            'configuration_changes_per_s': round(1.0 / hold, 1),
+            'still': rates(still, 2.0), 'moving': rates(moving, seconds)}
+
+
 def main() -> int:
     try:
         import tf2_msgs.msg  # noqa: F401
@@ -217,11 +280,23 @@ def main() -> int:
     parser.add_argument('--build', type=Path, default=HERE.parents[1] / 'build')
     parser.add_argument('--rate', type=float, default=100.0)
     parser.add_argument('--count', type=int, default=1000)
+    parser.add_argument('--robot-only', action='store_true', help='only the moving-robot traffic rows')
     args = parser.parse_args()
+    robots = [(HERE.parents[1] / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf', None)]
+    prefix = Path(sysconfig_purelib()) / 'cmeel.prefix'
+    panda = prefix / 'share' / 'example-robot-data' / 'robots' / 'panda_description' / 'urdf' / 'panda.urdf'
+    if panda.exists():  # example-robot-data (scripts/requirements): real meshes
+        robots.append((panda, prefix))
+    traffic = {f'{urdf.stem} {"link-local" if local else "baked"}': robot_traffic(args.build, urdf, ament, local)
+               for urdf, ament in robots for local in (False, True)}
+    if args.robot_only:
+        print(json.dumps({'robot_traffic': traffic}))
+        return 0
     result = {'rate_hz': args.rate, 'count': args.count,
               'bare_openigtlink_hop': bare(args.count, args.rate),
               'bare_openigtlink_to_pyigtl': bare_to_pyigtl(args.count, args.rate),
-              'rclpy_tf_to_igtl_transform': through_ros2vtk(args.build, args.count, args.rate)}
+              'rclpy_tf_to_igtl_transform': through_ros2vtk(args.build, args.count, args.rate),
+              'robot_traffic': traffic}
     print(json.dumps(result))
     return 0
 

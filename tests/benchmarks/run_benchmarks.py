@@ -701,6 +701,18 @@ def markdown(results: dict) -> str:
                        f'{r.get("n", 0)} | {r.get("lost", 0)} | {paper} |')
         out += ['', 'The CLI spins on DDS wake-up with a 10 ms ceiling; "lost" counts poses overtaken before sending '
                 '(latest-only queues per client).', '']
+        traffic = igtl.get('robot_traffic', {})
+        if traffic:
+            out += ['A moving robot on the wire (`bench_igtl.py --robot-only`): an rclpy robot_state_publisher changes '
+                    'the configuration 5 times a second; a raw reader counts what `ros2vtk igtl --robot` sends, with '
+                    'meshes baked in world coordinates (default) or link-local (`--slicer-scene`).', '',
+                    '| robot, meshes | POLYDATA/s moving | POLYDATA kB/s moving | TRANSFORM/s still | TRANSFORM/s moving |',
+                    '| --- | --- | --- | --- | --- |']
+            for label, row in traffic.items():
+                out.append(f'| {label} | {row["moving"]["POLYDATA"]["messages_per_s"]} | '
+                           f'{row["moving"]["POLYDATA"]["kbytes_per_s"]} | {row["still"]["TRANSFORM"]["messages_per_s"]} | '
+                           f'{row["moving"]["TRANSFORM"]["messages_per_s"]} |')
+            out.append('')
         ours = igtl.get('rclpy_tf_to_igtl_transform', {})
         if ours.get('median_ms') is not None:
             targets.append(('tf → Slicer TRANSFORM below ROS-IGTL-Bridge\'s 1.2 ms (median)',
@@ -1189,7 +1201,7 @@ def bench_igtl(ctx: 'Context') -> dict:
     with Domain(226, ctx.build) as session:
         process = session.start([VENV_PYTHON, HERE / 'bench_igtl.py', '--build', ctx.build,
                                  '--rate', 100, '--count', count])
-        result = last_json(process, timeout=120 + count / 100)
+        result = last_json(process, timeout=420 + count / 100)  # + 4 robot traffic runs
     r = result['rclpy_tf_to_igtl_transform']
     progress(f'igtl: tf → pyigtl TRANSFORM median {r.get("median_ms")} ms, p99 {r.get("p99_ms")} ms; bare hop to '
              f'pyigtl median {result["bare_openigtlink_to_pyigtl"].get("median_ms")} ms')

@@ -17,6 +17,7 @@ import importlib
 import json
 import sys
 import time
+from pathlib import Path
 from typing import Any
 
 import rclpy
@@ -82,7 +83,8 @@ def make_qos(name: str) -> QoSProfile:
 
 def cmd_pub(args: argparse.Namespace) -> int:
     cls = message_class(args.type)
-    message = from_plain(cls(), json.loads(args.json))
+    text = Path(args.json[1:]).read_text() if args.json.startswith('@') else args.json  # @FILE: large messages
+    message = from_plain(cls(), json.loads(text))
     node = rclpy.create_node(args.node)
     publisher = node.create_publisher(cls, args.topic, make_qos(args.qos))
     deadline = time.monotonic() + args.wait
@@ -349,7 +351,7 @@ def main() -> int:
     pub = sub.add_parser('pub')
     pub.add_argument('topic')
     pub.add_argument('type')
-    pub.add_argument('json')
+    pub.add_argument('json', help='the message as JSON, or @FILE holding it')
     pub.add_argument('--count', type=int, default=1)
     pub.add_argument('--rate', type=float, default=10.0)
     pub.add_argument('--qos', default='default')

@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 import math
 import signal
+import socket
 import struct
 import time
 from pathlib import Path
@@ -114,34 +115,91 @@ def test_robot_links_arrive_as_transforms_and_visuals_once_as_polydata_with_thei
     assert np.allclose(points.max(axis=0), np.array(centre) + 2.0, atol=1e-3), points.max(axis=0)
 
 
-def test_link_local_models_carry_their_link_as_metadata(ros):
+# What stock Slicer reads from a scene file, per element: the attributes its ReadXMLAttributes
+# parse (Slicer@583e9b3 Libs/MRML/Core/vtkMRMLNode.cxx, vtkMRMLLinearTransformNode.cxx,
+# vtkMRMLModelDisplayNode/vtkMRMLDisplayNode.cxx; SlicerOpenIGTLink@d090ca4
+# OpenIGTLinkIF/MRML/vtkMRMLIGTLConnectorNode.cxx), and OpenIGTLinkIF's states (igtlioConnector.h).
+SLICER_READS = {
+    'IGTLConnector': {'id', 'name', 'connectorType', 'serverHostname', 'serverPort', 'persistent', 'checkCRC',
+                      'state', 'restrictDeviceName'},
+    'LinearTransform': {'id', 'name', 'matrixTransformToParent'},
+    'ModelDisplay': {'id', 'name', 'color', 'visibility'},
+    'Model': {'id', 'name', 'references'},
+}
+PERSISTENT_ON, STATE_WAIT_CONNECTION = '1', '1'
+
+
+def test_link_local_models_under_their_link_transforms_in_a_slicer_scene_file(ros, tmp_path):
+    """--slicer-scene: a .mrml for stock Slicer (connector + each model under its link's transform,
+    named as the devices), and link-local meshes sent once with metadata ros.parent. Composing each
+    link's TRANSFORM with its link-local mesh, as Slicer does for a model under a transform, puts the
+    mesh where yourdfpy's forward kinematics puts the link."""
     port = free_port()
     env = dict(ros.env)
     for key, value in tf2_msgs_env().items():
         env[key] = ':'.join(filter(None, [value, env.get(key)]))
     rsp = ros.start([str(VENV_PYTHON), str(HERE / 'rsp_peer.py'), str(ARM), '--configs', '1', '--hold', '60'], env)
-    ours = start_ours(ros, port, '--robot', '--link-local', '--seconds', '50')
+    assert json.loads(rsp.stdout.readline())['ready']
+    mrml = tmp_path / 'robot.mrml'
+    ours = start_ours(ros, port, '--robot', '--slicer-scene', str(mrml), '--seconds', '50')
     wait_ready(ours)
+    expected = json.loads(rsp.stdout.readline())['links']
     raw = RawClient(port)
     messages = []
     end = time.monotonic() + 30  # robot load under a loaded machine
     while time.monotonic() < end and not any(d == 'needle_tip:visual0' for _, d, _, _ in messages):
         messages += raw.read(0.5)
+    messages += raw.read(1.5)
     raw.close()
     # A client that connects later (Slicer reconnecting) gets the meshes again, sent once above.
     again = RawClient(port)
     later = again.read(3.0)
     again.close()
-    stop(ros, ours)
-    tip = [(v, body) for t, d, v, body in messages if t == 'POLYDATA' and d == 'needle_tip:visual0']
-    assert tip, 'no POLYDATA for the tip visual'
+    code, out, err = stop(ros, ours)
+    assert code == 0, err
+    written = [json.loads(l) for l in out.splitlines() if l.startswith('{"slicer_scene"')]
+    assert written and written[-1]['models'] == 11, written  # the URDF's 11 visuals
+    polydata = {d: (v, body) for t, d, v, body in messages if t == 'POLYDATA'}
+    transforms = {d: body for t, d, _, body in messages if t == 'TRANSFORM'}
+    assert len(polydata) == 11, sorted(polydata)
     assert [d for t, d, _, _ in later if t == 'POLYDATA'].count('needle_tip:visual0') == 1, later
-    version, body = tip[0]
+    version, body = polydata['needle_tip:visual0']
     assert version == 2
     assert v2_metadata(body)['ros.parent'] == 'robot:needle_tip'
     points = np.array(polydata_points(body, version))
     assert np.allclose(points.min(axis=0), [-2, -2, -2], atol=1e-3)  # link-local: around 0
     assert np.allclose(points.max(axis=0), [2, 2, 2], atol=1e-3)
+    # Slicer's view of it: TRANSFORM of the parent (transform.md: R by columns, then t) · local mesh.
+    values = struct.unpack('>12f', transforms['robot:needle_tip'])
+    link = np.eye(4)
+    link[:3, :3] = np.array(values[:9]).reshape(3, 3).T
+    link[:3, 3] = values[9:12]
+    world = (link[:3, :3] @ points.T).T + link[:3, 3]
+    centre = np.array([1000.0 * expected['needle_tip'][i][3] for i in range(3)])
+    assert np.allclose(world.min(axis=0), centre - 2.0, atol=1e-2) and np.allclose(world.max(axis=0), centre + 2.0,
+                                                                                    atol=1e-2), world
+    # The scene file, read as Slicer reads it.
+    import xml.etree.ElementTree as ET
+    root = ET.parse(mrml).getroot()
+    assert root.tag == 'MRML'
+    for element in root:
+        assert element.tag in SLICER_READS and set(element.attrib) <= SLICER_READS[element.tag], element.attrib
+    by_id = {e.get('id'): e for e in root}
+    assert len(by_id) == len(root), 'node ids are not unique'
+    connector, = root.iter('IGTLConnector')
+    assert (connector.get('connectorType'), connector.get('serverHostname'), connector.get('serverPort')) == \
+        ('CLIENT', 'localhost', str(port))
+    assert (connector.get('persistent'), connector.get('state')) == (PERSISTENT_ON, STATE_WAIT_CONNECTION)
+    models = {m.get('name'): m for m in root.iter('Model')}
+    assert set(models) == set(polydata), (sorted(models), sorted(polydata))  # OpenIGTLinkIF matches by name
+    for name, model in models.items():
+        refs = dict(r.split(':') for r in model.get('references').strip(';').split(';'))
+        assert by_id[refs['display']].tag == 'ModelDisplay'
+        parent = by_id[refs['transform']]
+        assert parent.tag == 'LinearTransform'
+        v, b = polydata[name]
+        assert parent.get('name') == v2_metadata(b)['ros.parent'], name  # the link the mesh belongs to
+        assert parent.get('name') in transforms, parent.get('name')  # ... and a TRANSFORM device we send
 
 
 def test_rclpy_image_arrives_as_image_with_its_pixels_and_pose(ros):
@@ -272,6 +330,60 @@ def test_bad_input_is_survived_explained_and_other_clients_keep_being_served(ros
     assert summary['bad'] == 5, summary  # all but the cut message (a lost connection, not a message)
 
 
+def test_several_clients_are_served_at_once_and_a_stalled_one_blocks_nobody(ros, tmp_path):
+    """Two clients that read (pyigtl, and the raw reader) and one that never reads, all connected
+    while an rclpy camera streams 64 KB images at 30 Hz: the readers keep getting fresh transforms
+    and images, and the stalled one, read at the end, got fewer images than the readers (its queue
+    kept the newest instead of blocking the spin or buffering everything)."""
+    port = free_port()
+    image = {'header': {'frame_id': 'camera'}, 'height': 256, 'width': 256, 'encoding': 'mono8', 'step': 256,
+             'data': [i % 251 for i in range(256 * 256)]}
+    (tmp_path / 'image.json').write_text(json.dumps(image))
+    pub = ros.peer('pub', '/camera/image', 'sensor_msgs/msg/Image', '@' + str(tmp_path / 'image.json'),
+                   '--count', '600', '--rate', '30', '--wait', '15')
+    tf = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.1, 0.0, 0.0], 'q': [0, 0, 0, 1]}),
+                     '--seconds', '30')
+    ours = start_ours(ros, port, '--lookup', 'world:needle', '--image', '/camera/image', '--seconds', '25')
+    wait_ready(ours)
+    stalled = socket.socket()
+    stalled.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+    stalled.connect(('127.0.0.1', port))
+    reader = RawClient(port)
+    slicer = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    try:
+        end = time.monotonic() + 15  # until images flow
+        while time.monotonic() < end and not any(t == 'IMAGE' for t, _, _, _ in reader.read(0.5)):
+            pass
+        first = wait_transform(slicer, 'needle', 5)
+        window = reader.read(4.0)  # the stalled client reads nothing meanwhile
+        last = wait_transform(slicer, 'needle', 5)
+        image_message = slicer.wait_for_message('camera_image', timeout=5)
+        stalled.settimeout(0.1)
+        got = b''
+        end = time.monotonic() + 0.5  # what its socket and queue hold, and 0.5 s of new ones
+        while time.monotonic() < end:
+            try:
+                got += stalled.recv(1 << 20)
+            except socket.timeout:
+                pass
+    finally:
+        slicer.stop()
+        reader.close()
+        stalled.close()
+    code, out, err = stop(ros, ours)
+    pub.kill()
+    tf.kill()
+    assert code == 0, err
+    assert first is not None and last is not None, 'pyigtl got no TRANSFORM'
+    assert last.timestamp - first.timestamp > 3.0, (first.timestamp, last.timestamp)  # fresh, not stuck
+    assert image_message is not None and image_message.image.shape[-2:] == (256, 256)
+    images = sum(1 for t, _, _, _ in window if t == 'IMAGE')
+    transforms = sum(1 for t, d, _, _ in window if t == 'TRANSFORM' and d == 'needle')
+    assert images >= 30 and transforms >= 100, (images, transforms)  # 4 s of 30 Hz images, 100 Hz spin
+    stalled_images = got.count(b'IMAGE\0\0\0\0\0\0\0camera_image')
+    assert stalled_images < images, (stalled_images, images)
+
+
 def test_client_mode_reaches_a_pyigtl_server(ros):
     port = free_port()
     peer = ros.tf_peer('tf_pub', 'world', 'needle', json.dumps({'t': [0.0, 0.25, 0.0], 'q': [0, 0, 0, 1]}),
@@ -379,9 +491,10 @@ def test_a_connector_restored_from_a_saved_scene_serves_its_port_lookups_and_map
     assert [round(v, 9) for v in t['transform']['translation'].values()] == [0.0, 0.04, 0.0]
 
 
-def test_rclpy_pose_array_arrives_as_tdata_one_6d_element_per_pose_in_millimetres(ros):
-    """PoseArray → TDATA (Slicer makes one linear transform per element); the body is read with
-    the test's own decoder (pyigtl drops TDATA), from tdata.md's layout."""
+def test_rclpy_pose_array_arrives_as_tdata_and_a_point_list_in_millimetres(ros):
+    """PoseArray → TDATA (Slicer makes one linear transform per element), read with the test's own
+    decoder (pyigtl drops TDATA) from tdata.md's layout, and → POINT (Slicer makes a markups point
+    list), read by pyigtl, connected at the same time."""
     port = free_port()
     sample = SAMPLES['geometry_msgs/msg/PoseArray']
     pub = ros.peer('pub', '/targets', 'geometry_msgs/msg/PoseArray', json.dumps(sample),
@@ -389,15 +502,26 @@ def test_rclpy_pose_array_arrives_as_tdata_one_6d_element_per_pose_in_millimetre
     ours = start_ours(ros, port, '--poses', '/targets', '--seconds', '20')
     wait_ready(ours)
     client = RawClient(port)
+    slicer = pyigtl.OpenIGTLinkClient('127.0.0.1', port)
+    points = None
     try:
         end = time.monotonic() + 15
         tdata = None
         while tdata is None and time.monotonic() < end:
             tdata = next((m for m in client.read(0.5) if m[0] == 'TDATA'), None)
+        while points is None and time.monotonic() < end:
+            message = slicer.wait_for_message('targets', timeout=0.5)
+            points = message if message is not None and message.message_type == 'POINT' else None
     finally:
         client.close()
+        slicer.stop()
     stop(ros, ours)
     pub.kill()
+    assert points is not None, 'no POINT "targets" arrived'
+    assert list(points.names) == ['targets_0', 'targets_1']
+    assert np.allclose(points.positions, [[100.0, -250.0, 1500.0], [-200.0, 0.0, 300.0]], atol=1e-3)
+    assert list(points.groups) == ['Selected', 'Selected']  # Slicer: anything but "Unselected"
+    assert all(c[3] == 255 for c in points.rgba_colors)  # alpha 0 would hide the point in Slicer
     assert tdata is not None, 'no TDATA arrived'
     assert tdata[1] == 'targets'
     elements = tdata_elements(tdata[3])
@@ -409,11 +533,15 @@ def test_rclpy_pose_array_arrives_as_tdata_one_6d_element_per_pose_in_millimetre
     assert np.allclose(second[:3, :3], [[1, 0, 0], [0, -1, 0], [0, 0, -1]], atol=1e-6), second
 
 
-def test_tdata_from_slicer_becomes_transform_nodes_and_a_pose_array_on_ros_in_metres(ros):
+def test_tdata_from_slicer_becomes_transform_nodes_a_pose_array_and_tf_in_metres(ros):
     port = free_port()
     echo = ros.peer('echo', '/slicer/targets', 'geometry_msgs/msg/PoseArray', '--count', '1', '--timeout', '20')
     wait_ready(echo)
-    ours = start_ours(ros, port, '--map', 'Targets=topic:/slicer/targets:PoseArray', '--seconds', '15')
+    tf_echo = ros.tf_peer('tf_echo', '--count', '1', '--timeout', '25')
+    wait_ready(tf_echo)
+    # The bundle to a PoseArray, and one element (Slicer names its transform node by it) to tf.
+    ours = start_ours(ros, port, '--map', 'Targets=topic:/slicer/targets:PoseArray', '--map', 'Tip=tf:world:tip',
+                      '--seconds', '15')
     wait_ready(ours)
     turn = [[0, -1, 0, 10.0], [1, 0, 0, 20.0], [0, 0, 1, 30.0], [0, 0, 0, 1]]
     shift = [[1, 0, 0, -5.0], [0, 1, 0, 0.0], [0, 0, 1, 250.0], [0, 0, 0, 1]]
@@ -421,7 +549,7 @@ def test_tdata_from_slicer_becomes_transform_nodes_and_a_pose_array_on_ros_in_me
     client = RawClient(port)
     try:
         end = time.monotonic() + 12
-        while time.monotonic() < end and echo.poll() is None:
+        while time.monotonic() < end and (echo.poll() is None or tf_echo.poll() is None):
             client.sock.sendall(frame('TDATA', 'Targets', body))
             time.sleep(0.2)
     finally:
@@ -432,6 +560,13 @@ def test_tdata_from_slicer_becomes_transform_nodes_and_a_pose_array_on_ros_in_me
     got = [[p['position'][k] for k in 'xyz'] for p in poses]
     assert np.allclose(got, [[0.01, 0.02, 0.03], [-0.005, 0.0, 0.25]], atol=1e-7), got
     q = poses[0]['orientation']
+    assert np.allclose([q['x'], q['y'], q['z'], q['w']], [0, 0, math.sqrt(0.5), math.sqrt(0.5)], atol=1e-6)
+    code, out, err = ros.finish(tf_echo)
+    assert code == 0, err
+    t = json.loads(out.splitlines()[-1])['transforms'][0]
+    assert (t['header']['frame_id'], t['child_frame_id']) == ('world', 'tip')
+    assert np.allclose(list(t['transform']['translation'].values()), [0.01, 0.02, 0.03], atol=1e-7), t
+    q = t['transform']['rotation']
     assert np.allclose([q['x'], q['y'], q['z'], q['w']], [0, 0, math.sqrt(0.5), math.sqrt(0.5)], atol=1e-6)
     code, out, err = stop(ros, ours)
     summary = json.loads(out.splitlines()[-1])

@@ -40,6 +40,7 @@
 #include <chrono>
 #include <cstring>
 #include <deque>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -69,6 +70,24 @@ void from_array(const igtl::Matrix& in, vtkMatrix4x4* m)
       m->SetElement(r, c, in[4 * r + c]);
     }
   }
+}
+
+// Text as an XML attribute value.
+std::string xml_escape(const std::string& text)
+{
+  std::string out;
+  for (char c : text)
+  {
+    switch (c)
+    {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
 }
 
 double wall_seconds()
@@ -559,6 +578,72 @@ void vtkROS2IGTLConnectorNode::OnSceneRestored()
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2IGTLConnectorNode::WriteSlicerScene(const char* path)
+{
+  vtkInternals& in = *this->Internals;
+  std::ofstream out(path ? path : "");
+  if (!path || !*path || !out)
+  {
+    in.LastError = std::string("WriteSlicerScene: cannot write '") + (path ? path : "") + "'";
+    vtkErrorMacro(<< in.LastError);
+    return -1;
+  }
+  // Element and attribute names as Slicer's own ReadXMLAttributes read them: vtkMRMLNode
+  // ("references" = "role:id;"), vtkMRMLLinearTransformNode, vtkMRMLModelDisplayNode, and
+  // SlicerOpenIGTLink's vtkMRMLIGTLConnectorNode (persistent 1 + state 1 = wait for connection:
+  // OpenIGTLinkIF's logic starts it when the import ends, after the nodes below exist).
+  out << "<MRML version=\"Slicer4.4.0\" userTags=\"\">\n";
+  const std::string host =
+    in.Host == "0.0.0.0" || in.Host == "127.0.0.1" || in.Host.empty() ? "localhost" : in.Host;
+  out << " <IGTLConnector id=\"vtkMRMLIGTLConnectorNode1\" name=\"ros2vtk\" connectorType=\""
+      << (this->Client ? "SERVER" : "CLIENT") << "\"";
+  if (!this->Client)
+  {
+    out << " serverHostname=\"" << xml_escape(host) << "\"";
+  }
+  out << " serverPort=\"" << this->Port
+      << "\" persistent=\"1\" checkCRC=\"1\" state=\"1\" restrictDeviceName=\"0\"></IGTLConnector>\n";
+  std::map<std::string, std::string> transformIDs; // device → id in the file
+  int models = 0;
+  vtkROS2Scene* scene = this->GetScene();
+  for (int i = 0; scene && i < scene->GetNumberOfNodes(); ++i)
+  {
+    auto* model = vtkROS2ModelNode::SafeDownCast(scene->GetNthNode(i));
+    vtkROS2TransformNode* parent = model ? model->GetParentTransformNode() : nullptr;
+    if (!model || !parent || !this->IsMirrored(model) || !this->IsMirrored(parent))
+    {
+      continue;
+    }
+    const std::string parentDevice = MakeDeviceName(parent->GetName() ? parent->GetName() : "");
+    std::string& transformID = transformIDs[parentDevice];
+    if (transformID.empty() && !this->ModelsInWorld) // meshes in world coordinates stay at the root
+    {
+      transformID = "vtkMRMLLinearTransformNode" + std::to_string(transformIDs.size());
+      out << " <LinearTransform id=\"" << transformID << "\" name=\"" << xml_escape(parentDevice)
+          << "\" matrixTransformToParent=\"1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\"></LinearTransform>\n";
+    }
+    ++models;
+    const std::string displayID = "vtkMRMLModelDisplayNode" + std::to_string(models);
+    const double* color = model->GetColor();
+    out << " <ModelDisplay id=\"" << displayID << "\" name=\"ModelDisplay\" color=\"" << color[0] << " "
+        << color[1] << " " << color[2] << "\" visibility=\"true\"></ModelDisplay>\n";
+    out << " <Model id=\"vtkMRMLModelNode" << models << "\" name=\""
+        << xml_escape(MakeDeviceName(model->GetName() ? model->GetName() : ""))
+        << "\" references=\"display:" << displayID << ";"
+        << (this->ModelsInWorld ? std::string() : "transform:" + transformID + ";") << "\"></Model>\n";
+  }
+  out << "</MRML>\n";
+  out.close();
+  if (!out)
+  {
+    in.LastError = std::string("WriteSlicerScene: cannot write '") + path + "'";
+    vtkErrorMacro(<< in.LastError);
+    return -1;
+  }
+  return models;
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkROS2IGTLConnectorNode::GetReceivedImage(const char* device)
 {
   auto it = this->Internals->ReceivedImages.find(device ? device : "");
@@ -613,9 +698,9 @@ int vtkROS2IGTLConnectorNode::Update()
   }
   else
   {
+    // What was sent is retained by the endpoint, which queues it for every peer that connects
+    // later: sending it again here would give that peer each mesh and image twice.
     in.State = this->Client ? "connecting" : "listening";
-    in.SentModels.clear(); // a peer that comes later gets everything again
-    in.SentMessages.clear();
   }
   return handled;
 }
@@ -735,7 +820,9 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
       }
       const std::string device = this->Device(model->GetName());
       igtl::Frame frame;
-      if (self->ModelsInWorld)
+      // Link-local only under a transform (Slicer's parent); a model at the root is in the world.
+      const bool linkLocal = !self->ModelsInWorld && model->GetParentTransformNode();
+      if (!linkLocal)
       {
         model->GetMatrixModelToWorld(world);
         vtkMatrix4x4::Multiply4x4(this->WorldToSlicer, world, slicer);
@@ -783,7 +870,7 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
       cells(poly->GetLines(), mesh.lines);
       cells(poly->GetVerts(), mesh.vertices);
       frame = igtl::encode_polydata(device, mesh, now);
-      if (!self->ModelsInWorld && model->GetParentTransformNode())
+      if (linkLocal)
       {
         frame.metadata["ros.parent"] = this->Device(model->GetParentTransformNode()->GetName());
       }
@@ -865,7 +952,10 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
         vtkNew<vtkMatrix4x4> pose;
         this->ImagePose(self, poses->GetLastMessageFrameID(), pose);
         vtkMatrix4x4::Multiply4x4(this->WorldToSlicer, pose, slicer);
+        // The same poses as a POINT list: Slicer shows it as a markups point list (positions
+        // only, one control point per pose, labelled as the TDATA element).
         std::vector<igtl::TrackingItem> items;
+        std::vector<igtl::PointItem> points;
         collection->InitTraversal();
         while (vtkTransform* element = collection->GetNextItem())
         {
@@ -874,9 +964,17 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
             device + "_" + std::to_string(items.size()));
           vtkMatrix4x4::Multiply4x4(slicer, element->GetMatrix(), world);
           item.matrix = to_array(world);
+          igtl::PointItem point;
+          point.name = item.name;
+          point.group = "Selected";
+          point.rgba = { { 255, 128, 128, 255 } }; // Slicer's default colour of a selected point
+          point.position = { { static_cast<float>(world->GetElement(0, 3)),
+            static_cast<float>(world->GetElement(1, 3)), static_cast<float>(world->GetElement(2, 3)) } };
+          points.push_back(point);
           items.push_back(item);
         }
         this->Send(igtl::encode_tracking_data(device, items, now), true);
+        this->Send(igtl::encode_points(device, points, now), true);
       }
       else
       {
@@ -966,6 +1064,11 @@ void vtkROS2IGTLConnectorNode::vtkInternals::Publish(vtkROS2IGTLConnectorNode* s
     auto* matrix = vtkMatrix4x4::SafeDownCast(value);
     if (!matrix)
     {
+      if (this->Warned.insert(device + ":tf").second)
+      {
+        this->AddLog("'" + device + "' cannot go to tf: only a TRANSFORM, a POSITION or a TDATA "
+          "element (mapped by its element name) is one transform");
+      }
       return;
     }
     if (!route.broadcaster)
@@ -1100,6 +1203,7 @@ int vtkROS2IGTLConnectorNode::vtkInternals::HandleFrame(
         {
           node->SetMatrixTransformToParent(matrix);
         }
+        this->Publish(self, item.name, matrix, nullptr); // an element mapped by name (tf, topic)
         collection->AddItem(world);
       }
       this->Publish(self, device, collection, nullptr);

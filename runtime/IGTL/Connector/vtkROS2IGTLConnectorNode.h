@@ -10,11 +10,15 @@
 // nodes (robot visuals) as POLYDATA when they change (baked in world coordinates by default, or
 // link-local with metadata "ros.parent" naming the link for a Slicer-side snippet to parent),
 // subscribers' images as IMAGE with their pose, point clouds as POLYDATA points, strings as
-// STRING, pose arrays as TDATA (elements <device>_<i>, posed by the tf lookup of their frame). Device name = node name (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
+// STRING, pose arrays as TDATA (elements <device>_<i>, posed by the tf lookup of their frame) and
+// as a POINT list (Slicer: a markups point list). WriteSlicerScene writes a .mrml that puts the
+// link-local models under their link transforms in a stock Slicer. Device name = node name
+// (≤ 20 bytes). Units: the scene's millimetres. Coordinates:
 // the matrix WorldToSlicer (identity by default: ROS x, y, z become Slicer R, A, S) is applied to
 // everything sent and inverted for everything received; it is never implicit.
 // In (Slicer → scene): TRANSFORM/POSITION become transform nodes, TDATA one transform node per
-// element (as Slicer does) and a PoseArray when mapped, POINT a model node of points,
+// element (as Slicer does; each element mappable by its name) and a PoseArray when mapped, POINT a
+// model node of points,
 // IMAGE and STRING are kept by device; mapped devices are also published (tf or a topic).
 #ifndef vtkROS2IGTLConnectorNode_h
 #define vtkROS2IGTLConnectorNode_h
@@ -92,6 +96,18 @@ public:
   vtkSetMacro(ModelsInWorld, bool);
   vtkGetMacro(ModelsInWorld, bool);
   vtkBooleanMacro(ModelsInWorld, bool);
+
+  /// Writes a 3D Slicer scene file (.mrml) for a stock Slicer with SlicerOpenIGTLink, opened by
+  /// drag and drop (or File → Add Data): an OpenIGTLinkIF connector to this one, persistent and
+  /// active, so it connects as soon as the file is loaded; and for every mirrored model node under
+  /// a transform node, a linear transform named as that transform's device with a model named as
+  /// the model's device under it (with its colour). OpenIGTLinkIF fills an existing node of the
+  /// device's name and class instead of creating one, and keeps its parent, so the link TRANSFORMs
+  /// and (with ModelsInWorld off) the link-local POLYDATA land in this hierarchy: the robot's
+  /// models under their link transforms, each mesh sent once per connection (with ModelsInWorld
+  /// on, the models are written at the scene root, as their meshes are then baked). Returns the number
+  /// of models written, or -1 (GetLastError) when the file cannot be written.
+  int WriteSlicerScene(const char* path);
 
   /// Slicer → ROS. Device names are Slicer node names. `type` for a topic: a publisher short
   /// name whose VTK value matches the message (PoseStamped / TransformStamped for TRANSFORM,
