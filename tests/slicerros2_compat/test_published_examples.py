@@ -263,6 +263,42 @@ def test_parameters_robot_description_of_state_publisher(rosNode, peers):
     assert rosNode.RemoveAndDeleteParameterNode('robot_state_publisher')
 
 
+def test_parameters_accessor_table_one_argument_forms(rosNode, peers):
+    # parameters.rst's recommended steps (IsParameterSet, GetParameterType, the accessor of that
+    # type) over its table of types and accessors, against an rclpy node declaring one
+    # parameter of each type. The vector accessors take only the name and return the values,
+    # as in SlicerROS2 (the output-array form stays: see test_ros2tests_port.py).
+    process = peers.start([VENV_PYTHON, str(ROS_PEER), '--node', 'accessor_table', 'param_node', '--seconds', '30', '--change-after', '60'])
+    assert 'ready' in process.stdout.readline(), process.stderr.read()
+    parameterNode = rosNode.CreateAndAddParameterNode('accessor_table')
+    declared = {'flag': ('bool', 'GetParameterAsBool', True),
+                'count': ('integer', 'GetParameterAsInteger', -7),
+                'gain': ('double', 'GetParameterAsDouble', 0.5),
+                'frame': ('string', 'GetParameterAsString', 'ct_scanner'),
+                'flags': ('bool_array', 'GetParameterAsVectorOfBools', (True, False, True)),
+                'counts': ('integer_array', 'GetParameterAsVectorOfIntegers', (1, -2, 3)),
+                'gains': ('double_array', 'GetParameterAsVectorOfDoubles', (0.25, 1.5)),
+                'frames': ('string_array', 'GetParameterAsVectorOfStrings', ('base', 'tool'))}
+    for parameterName in declared:
+        parameterNode.AddParameter(parameterName)
+    assert spin_until(lambda: all(parameterNode.IsParameterSet(n, True) for n in declared), seconds=20)
+    for parameterName, (parameterType, accessor, value) in declared.items():
+        if parameterNode.IsParameterSet(parameterName):
+            assert parameterNode.GetParameterType(parameterName) == parameterType
+            got = getattr(parameterNode, accessor)(parameterName)
+            assert got == value, (parameterName, got)
+            assert isinstance(got, type(value)), (parameterName, type(got))
+    # A wrong accessor is an error with an empty result, and the node keeps working.
+    assert parameterNode.GetParameterAsVectorOfIntegers('gains') == ()
+    assert parameterNode.GetParameterAsVectorOfStrings('no_such_parameter') == ()
+    # The fill-in form of ros2vtk gives the same values.
+    counts = vtk.vtkTypeInt64Array()
+    assert parameterNode.GetParameterAsVectorOfIntegers('counts', counts)
+    assert [counts.GetValue(i) for i in range(counts.GetNumberOfValues())] == [1, -2, 3]
+    # PrintParameter: human readable whatever the type.
+    assert parameterNode.PrintParameter('counts').startswith('counts (integer_array): ')
+
+
 # --- tf2.rst -------------------------------------------------------------------------------------
 def test_tf2_broadcast_of_a_matrix_reaches_an_rclpy_listener(rosNode, peers):
     env = tf2_msgs_env()
@@ -433,3 +469,94 @@ def test_point_cloud_subscriber_example_fills_its_target_model_node(rosNode, pee
                '--count', '2', '--rate', '5')
     assert spin_until(lambda: matrixSub.GetNumberOfMessages() >= 1, seconds=20)
     assert modelNode.GetPolyData().GetNumberOfPoints() == len(xyz)
+
+
+# --- topics.rst: "the last message received will print in the python console in Slicer" --------
+class InteractivePrompt:
+    """A `python -i` interpreter fed line by line, as a user types at Slicer's Python console."""
+
+    def __init__(self) -> None:
+        import queue
+        import threading
+        package_parent = str(Path(ros2vtk.__file__).resolve().parents[1])
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(filter(None, [package_parent, os.environ.get('PYTHONPATH')])))
+        self.process = subprocess.Popen([VENV_PYTHON, '-i', '-q', '-u'], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
+        self.lines: 'queue.Queue[str]' = queue.Queue()
+        self.seen: list[str] = []
+        self.count = 0
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self) -> None:
+        for line in self.process.stdout:
+            self.lines.put(line.rstrip('\n'))
+
+    def type(self, line: str) -> None:
+        """Types one line and waits until the interpreter ran it (one line per read keeps the
+        interpreter's stdin buffer empty, so the prompt's input hook sees the terminal idle)."""
+        self.count += 1
+        marker = f'ran {self.count}'
+        self.process.stdin.write(f'{line}\n')
+        self.process.stdin.flush()
+        if line.startswith('def '):
+            self.process.stdin.write('\n')
+            self.process.stdin.flush()
+            return
+        self.process.stdin.write(f"print('{marker}')\n")
+        self.process.stdin.flush()
+        assert self.wait_for(marker, 20), self.seen
+
+    def wait_for(self, text: str, seconds: float) -> bool:
+        import queue
+        deadline = time.monotonic() + seconds
+        while text not in self.seen:
+            try:
+                self.seen.append(self.lines.get(timeout=max(deadline - time.monotonic(), 0.01)))
+            except queue.Empty:
+                return False
+        return True
+
+    def close(self) -> None:
+        self.process.stdin.close()
+        self.process.wait(timeout=10)
+
+
+def test_topics_subscriber_observer_prints_at_the_interactive_prompt(peers):
+    prompt = InteractivePrompt()
+    try:
+        prompt.type('import ros2vtk')
+        prompt.type("rosLogic = ros2vtk.getModuleLogic('ROS2')")
+        prompt.type('rosNode = rosLogic.GetDefaultROS2Node()')
+        prompt.type("subString = rosNode.CreateAndAddSubscriberNode('String', '/prompt_string')")
+        prompt.type('def myCallback(caller=None, event=None): '
+                    'print("Last message received by subscriber: {}.".format(subString.GetLastMessage()))')
+        prompt.type("observerId = subString.AddObserver('ModifiedEvent', myCallback)")
+
+        # Control: with the prompt's spin off, rclpy's messages wait in the queue and nothing prints.
+        prompt.type('ros2vtk.spin_at_prompt(None)')
+        before = peers.peer('pub', '/prompt_string', 'std_msgs/msg/String', json.dumps({'data': 'queued'}),
+                            '--count', '2', '--rate', '20')
+        assert 'sent' in before.stdout.readline(), before.stderr.read()
+        assert not prompt.wait_for('Last message received by subscriber: queued.', 1.0), prompt.seen
+
+        # On (getModuleLogic turned it on; the control turned it off): the idle prompt spins.
+        prompt.type('ros2vtk.spin_at_prompt(rosLogic)')
+        assert prompt.wait_for('Last message received by subscriber: queued.', 10), prompt.seen
+        # ...and keeps spinning while nobody types: a message published now prints by itself.
+        peers.peer('pub', '/prompt_string', 'std_msgs/msg/String', json.dumps({'data': 'live'}),
+                   '--count', '1')
+        assert prompt.wait_for('Last message received by subscriber: live.', 20), prompt.seen
+        prompt.type('print(subString.GetNumberOfMessages(), ros2vtk.getModuleLogic() is rosLogic)')
+        assert '3 True' in prompt.seen, prompt.seen
+    finally:
+        prompt.close()
+
+
+def test_get_module_logic_is_one_logic_and_knows_only_ros2():
+    assert ros2vtk.getModuleLogic('ROS2') is ros2vtk.getModuleLogic()
+    with pytest.raises(ValueError, match="only 'ROS2'"):
+        ros2vtk.getModuleLogic('Markups')
+    # pytest's process reads no prompt; the hook is installed but idle. Leave it off here.
+    assert ros2vtk.spinning_at_prompt() is ros2vtk.getModuleLogic()
+    ros2vtk.spin_at_prompt(None)
+    assert ros2vtk.spinning_at_prompt() is None
