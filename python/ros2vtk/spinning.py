@@ -18,6 +18,7 @@ turns it on for the process-wide logic it returns.
 """
 from __future__ import annotations
 
+import atexit
 import ctypes
 import select
 import sys
@@ -96,6 +97,8 @@ def spin_at_prompt(logic) -> bool:
         return False
     if ours is None:
         ours = _hook_state['callback'] = _HOOK_SIGNATURE(_spin_while_waiting_for_input)
+        # The interpreter must not call into a freed callback (or a deleted logic) at exit.
+        atexit.register(spin_at_prompt, None)
     _hook_state['logic'] = logic
     hook.value = ctypes.cast(ours, ctypes.c_void_p).value
     return True
