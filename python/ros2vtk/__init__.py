@@ -84,6 +84,9 @@ for _module in extension_modules.values():
 del _module, _name
 
 from .spinning import spin_until, spin_at_prompt, spinning_at_prompt, getModuleLogic  # noqa: E402 (after the classes it spins)
-from .messages import Message  # noqa: E402 (wraps vtkROS2Message)
+from .messages import Message, install_accessors_on_vtk_messages  # noqa: E402 (wraps vtkROS2Message)
+
+# SlicerROS2's req.SetX(4.0) / res.GetName() on the message objects nodes hand out.
+vtk_message_accessors_missing: str = install_accessors_on_vtk_messages()
 
 __all__ += ['spin_until', 'spin_at_prompt', 'spinning_at_prompt', 'getModuleLogic', 'Message']

@@ -1,5 +1,5 @@
 """SlicerROS2's published examples (the Python snippets of its documentation: docs/pages/nodes/
-topics.rst, parameters.rst, tf2.rst, robots.rst, and docs/code/point_cloud_publisher.py /
+topics.rst, parameters.rst, tf2.rst, robots.rst, services.rst, and docs/code/point_cloud_publisher.py /
 point_cloud_subscriber.py of rosmed/slicer_ros2_module), ported by intent to ros2vtk (issue 14).
 
 Each test runs the example's lines as the documentation writes them; only these differ:
@@ -13,11 +13,11 @@ Each test runs the example's lines as the documentation writes them; only these 
   script runs; a running script here spins it (`rosLogic.Spin()`), and Qt's QTimer of the
   point-cloud example is a loop. The console case (a message printed by an observer while the
   prompt waits) runs at a real `python -i` prompt;
-- the services example (turtlesim's Spawn on `ros2 launch turtlesim multisim.launch.py`) is not
-  here: turtlesim has no wheel on PyPI and we do not ship turtlesim/srv/Spawn (building both
-  sides' type support would cost CI about a minute). The same calls
-  (CreateAndAddServiceClientNode, CreateBlankRequest, SendAsyncRequest, GetLastResponse) run in
-  test_ros2tests_port.py's service test against an rclpy std_srvs/Trigger server.
+- the services example (services.rst) calls turtlesim's Spawn (`ros2 launch turtlesim
+  multisim.launch.py`); turtlesim has no wheel on PyPI and we do not ship turtlesim/srv/Spawn
+  (building both sides' type support would cost CI about a minute), so its port runs the same
+  calls with std_srvs/srv/SetBool against an rclpy server: `req.SetData(True)` for
+  `req.SetX(4.0)`, `res.GetMessage()` for `res.GetName()`.
 """
 from __future__ import annotations
 
@@ -344,6 +344,37 @@ def test_tf2_lookup_by_hand_and_by_observer(rosNode, peers):
     lookupMat = lookupNode.GetMatrixTransformToParent()
     assert [lookupMat.GetElement(i, 3) for i in range(3)] == pytest.approx([10.0, 20.0, 30.0])
     assert rosNode.RemoveAndDeleteTf2LookupNode('Parent', 'Child')
+
+
+# --- services.rst --------------------------------------------------------------------------------
+def test_services_client_request_and_response_objects(rosNode, peers):
+    # make sure service server is started (turtlesim's /turtlesim1/spawn in the documentation)
+    server = peers.start([VENV_PYTHON, str(INTEROP / 'service_peer.py'), 'server', 'std_srvs/srv/SetBool',
+                          '/turtlesim1/spawn', '--seconds', '30'])
+    assert 'ready' in server.stdout.readline(), server.stderr.read()
+
+    # optional, shows which services are available
+    assert 'std_srvs/srv/SetBool' in rosNode.RegisteredROS2ServiceClientNodes()
+    # example with the type (SlicerROS2: 'vtkMRMLROS2ServiceClientSpawnNode')
+    spawn1 = rosNode.CreateAndAddServiceClientNode('std_srvs/srv/SetBool', '/turtlesim1/spawn')
+    # to check if the client is started, in a shell: ros2 service info /turtlesim1/spawn
+    assert spin_until(lambda: spawn1.IsServiceReady(), seconds=20)
+
+    # now create a blank request
+    req = spawn1.CreateBlankRequest()
+    req.SetData(True)
+    # send the request
+    spawn1.SendAsyncRequest(req)
+    # get the response (it arrives on a later spin)
+    assert spin_until(lambda: spawn1.GetLastResponseStatus(), seconds=20)
+    res = spawn1.GetLastResponse()
+    # SetBool returns what rclpy's server answered
+    assert (res.GetSuccess(), res.GetMessage()) == (True, 'rclpy set True')
+    # A field the type does not have is an AttributeError naming the fields.
+    with pytest.raises(AttributeError, match='fields: data'):
+        req.SetX(4.0)
+    # To remove the service client node: the service name
+    assert rosNode.RemoveAndDeleteServiceClientNode('/turtlesim1/spawn')
 
 
 # --- robots.rst ----------------------------------------------------------------------------------

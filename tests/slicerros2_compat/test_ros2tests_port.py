@@ -628,15 +628,14 @@ class TestServiceClient(unittest.TestCase):
         # SlicerROS2: CreateAndAddServiceClientNode('vtkMRMLROS2ServiceClientSpawnNode', '/spawn')
         # with req.SetX(4.0) / req.SetY(4.0) and res.GetName(). turtlesim/Spawn has no wheel, so
         # the stand-in's /spawn is a Trigger (no request fields) whose reply's `message` is the
-        # name; our requests and responses are typed message objects (ros2vtk.Message.of gives
-        # them SlicerROS2's Get<Field>/Set<Field>).
+        # name. Requests and responses answer SlicerROS2's Get<Field>/Set<Field> themselves.
         spawn1 = self.ros2Node.CreateAndAddServiceClientNode('std_srvs/srv/Trigger', '/spawn')
         req = spawn1.CreateBlankRequest()
         self.assertEqual(req.GetROSType(), 'std_srvs/srv/Trigger_Request')
         spawn1.SendAsyncRequest(req)
         # wait get the response (the original spins a fixed 100 ms)
         self.assertTrue(ROS2TestsLogic.spin_until(lambda: spawn1.GetLastResponseStatus()))
-        res = ros2vtk.Message.of(spawn1.GetLastResponse())
+        res = spawn1.GetLastResponse()
         self.assertEqual(res.GetMessage(), "turtle2")
         self.assertEqual((spawn1.GetNumberOfCalls(), spawn1.GetNumberOfRequestsSent()), (1, 1))
 
