@@ -42,7 +42,9 @@ def spin_until(logic, done: Callable[[], bool], seconds: float = 10.0, step: flo
 # --- the prompt hook ------------------------------------------------------------------------------
 # PyOS_InputHook (int (*)(void)) is called by the interpreter's line reader (PyOS_Readline: the
 # interactive prompt and input() on a terminal) while it waits for input, without the GIL; a
-# ctypes CFUNCTYPE callback takes the GIL itself. This is how tkinter keeps Tk alive at the prompt.
+# ctypes CFUNCTYPE callback takes the GIL itself. This is how tkinter keeps Tk alive at the prompt
+# (and, as tkinter's, it watches the stdin descriptor: the interpreter keeps no lines read ahead
+# in C's stdin buffer in interactive mode, so a pasted block runs at once).
 _HOOK_SIGNATURE = ctypes.CFUNCTYPE(ctypes.c_int)
 _hook_state: dict = {'logic': None, 'callback': None}
 

@@ -514,29 +514,29 @@ class InteractivePrompt:
         import threading
         package_parent = str(Path(ros2vtk.__file__).resolve().parents[1])
         env = dict(os.environ, PYTHONPATH=os.pathsep.join(filter(None, [package_parent, os.environ.get('PYTHONPATH')])))
-        self.process = subprocess.Popen([VENV_PYTHON, '-i', '-q', '-u'], stdin=subprocess.PIPE,
+        # Not -u: that would make C's stdin unbuffered too, and a user's is buffered.
+        self.process = subprocess.Popen([VENV_PYTHON, '-i', '-q'], stdin=subprocess.PIPE,
                                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=env)
         self.lines: 'queue.Queue[str]' = queue.Queue()
         self.seen: list[str] = []
         self.count = 0
         threading.Thread(target=self._read, daemon=True).start()
+        self.type('import sys; sys.stdout.reconfigure(line_buffering=True)')  # each print arrives
 
     def _read(self) -> None:
         for line in self.process.stdout:
             self.lines.put(line.rstrip('\n'))
 
     def type(self, line: str) -> None:
-        """Types one line and waits until the interpreter ran it (one line per read keeps the
-        interpreter's stdin buffer empty, so the prompt's input hook sees the terminal idle)."""
+        """Types one line (a `def` with the blank line closing it) and waits until the
+        interpreter ran it. A `def` arrives as three lines in one write, as a pasted block: the
+        prompt's spin must let them all run."""
         self.count += 1
         marker = f'ran {self.count}'
-        self.process.stdin.write(f'{line}\n')
-        self.process.stdin.flush()
         if line.startswith('def '):
-            self.process.stdin.write('\n')
-            self.process.stdin.flush()
-            return
-        self.process.stdin.write(f"print('{marker}')\n")
+            self.process.stdin.write(f"{line}\n\nprint('{marker}')\n")
+        else:
+            self.process.stdin.write(f"{line}; print('{marker}')\n")
         self.process.stdin.flush()
         assert self.wait_for(marker, 20), self.seen
 
