@@ -2,7 +2,7 @@
 ported by intent to ros2vtk (issue 14).
 
 Each class and test keeps the name, the calls and the assertions of the original; what differs:
-- the import/logic lines: `ros2Logic = ros2vtk.vtkROS2Logic()` for
+- the import/logic lines: `ros2Logic = ros2vtk.getModuleLogic('ROS2')` for
   `slicer.util.getModuleLogic('ROS2')`, and its scene for `slicer.mrmlScene`;
 - turtlesim (no wheel on PyPI) is turtlesim_standin.py, an rclpy node with turtlesim's name,
   parameters and a /spawn service (std_srvs/Trigger instead of turtlesim/Spawn), and `ros2 param
@@ -34,7 +34,7 @@ ROS_PEER = HERE.parent / 'interop' / 'ros_peer.py'
 VENV_PYTHON = os.environ.get('ROS2VTK_VENV_PYTHON', str(HERE.parents[1] / '.venv' / 'bin' / 'python'))
 
 # --- the import/logic lines: SlicerROS2's module logic and scene ------------------------------
-ros2Logic = ros2vtk.vtkROS2Logic()
+ros2Logic = ros2vtk.getModuleLogic('ROS2')
 mrmlScene = ros2Logic.GetScene()
 vtkMRMLTransformNode = ros2vtk.vtkROS2TransformNode
 
