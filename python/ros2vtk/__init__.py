@@ -7,6 +7,9 @@
     pub.Publish('Hello world.')
     logic.Spin()                      # or: ros2vtk.spin_until(logic, lambda: ..., seconds=5)
 
+SlicerROS2 scripts: `rosLogic = ros2vtk.getModuleLogic('ROS2')` gives one process-wide logic
+that also spins while the interactive prompt waits (ros2vtk.spin_at_prompt).
+
 Every VTK-wrapped extension module in this package (the runtime's ``ros2vtkScene`` and any
 generated node module built next to it, or in a downstream build's ``python/ros2vtk/`` found on
 ``sys.path``) is imported here and its ``vtk*`` classes are re-exported, so
@@ -80,7 +83,10 @@ for _module in extension_modules.values():
             __all__.append(_name)
 del _module, _name
 
-from .spinning import spin_until  # noqa: E402 (after the classes it spins)
-from .messages import Message  # noqa: E402 (wraps vtkROS2Message)
+from .spinning import spin_until, spin_at_prompt, spinning_at_prompt, getModuleLogic  # noqa: E402 (after the classes it spins)
+from .messages import Message, install_accessors_on_vtk_messages  # noqa: E402 (wraps vtkROS2Message)
 
-__all__ += ['spin_until', 'Message']
+# SlicerROS2's req.SetX(4.0) / res.GetName() on the message objects nodes hand out.
+vtk_message_accessors_missing: str = install_accessors_on_vtk_messages()
+
+__all__ += ['spin_until', 'spin_at_prompt', 'spinning_at_prompt', 'getModuleLogic', 'Message']

@@ -240,3 +240,92 @@ class Message:
         if not self.vtk.SetField(path, text):
             self._fail()
 
+
+
+# --- SlicerROS2's accessors on the VTK message objects themselves -------------------------------
+# SlicerROS2 scripts call Get<Field>() / Set<Field>() straight on the objects a node hands out
+# (`req = client.CreateBlankRequest(); req.SetX(4.0)`, `client.GetLastResponse().GetName()`).
+# vtkROS2Message is one generic C++ class, so those names cannot be wrapped methods; a Python
+# subclass answers them through a Message view, and is made the class of every vtkROS2Message
+# that reaches Python, also those created in C++. That is VTK's `override` (VTK >= 9.2); on
+# Debian's VTK 9.1, which lacks it, the same one-pointer change is made by hand below.
+def _wrapping_core_library():
+    import ctypes
+    with open('/proc/self/maps') as maps:
+        paths = {line.split()[-1] for line in maps if 'libvtkWrappingPythonCore' in line}
+    if len(paths) != 1:
+        return None
+    return ctypes.CDLL(paths.pop())
+
+
+def _override_vtk_class(base, subclass) -> str:
+    """Makes `subclass` the Python class of every `base` object (VTK's vtkObject.override).
+    Returns '' or why it was not possible."""
+    if hasattr(base, 'override'):
+        base.override(subclass)
+        return ''
+    import ctypes
+    library = _wrapping_core_library()
+    if library is None:
+        return 'the VTK Python wrapping library is not loaded exactly once'
+    try:
+        find_class = library._ZN13vtkPythonUtil9FindClassEPKc  # vtkPythonUtil::FindClass(const char*)
+    except AttributeError:
+        return 'vtkPythonUtil::FindClass is not exported'
+    find_class.restype = ctypes.POINTER(ctypes.c_void_p)  # PyVTKClass*: py_type comes first
+    find_class.argtypes = [ctypes.c_char_p]
+    entry = find_class(base.__vtkname__.encode() if hasattr(base, '__vtkname__') else base.__name__.encode())
+    if not entry or entry[0] != id(base):
+        return 'the class table entry does not hold the expected Python type'
+    entry[0] = id(subclass)
+    return ''
+
+
+def _method_or_field_accessor(method, name: str):
+    def call(self, *args):
+        try:
+            return method(self, *args)
+        except TypeError:
+            if len(args) != (0 if name.startswith('Get') else 1):
+                raise
+            accessor = Message.of(self)._accessor(name)
+            if accessor is None:
+                raise
+            return accessor(*args)
+    call.__name__ = name
+    call.__doc__ = method.__doc__
+    return call
+
+
+def install_accessors_on_vtk_messages() -> str:
+    """Called once by the package; returns '' or why the accessors are missing (then scripts
+    wrap objects with Message.of)."""
+    import ros2vtk
+    base = ros2vtk.vtkROS2Message
+
+    class vtkROS2Message(base):  # noqa: N801 - keeps the VTK class name in reprs and errors
+        __doc__ = base.__doc__
+
+        def __getattr__(self, name: str) -> Any:
+            if name.startswith(('Get', 'Set')) and not name.startswith('__'):
+                return getattr(Message.of(self), name)
+            raise AttributeError(f"'vtkROS2Message' object has no attribute '{name}'")
+
+        def __dir__(self) -> List[str]:
+            return sorted(set(super().__dir__()) | set(Message.of(self).__dir__()))
+
+    # A field whose accessor is also a C++ method (`message` and GetMessage(path, out) of
+    # Trigger's response, `field`, `yaml`, ...): the C++ method when the arguments fit it, the
+    # field's accessor when they fit only that (Get: none, Set: one value).
+    for name in dir(base):
+        if name.startswith(('Get', 'Set')) and callable(getattr(base, name)):
+            setattr(vtkROS2Message, name, _method_or_field_accessor(getattr(base, name), name))
+    vtkROS2Message.__module__ = base.__module__
+    vtkROS2Message.__qualname__ = base.__qualname__
+    why = _override_vtk_class(base, vtkROS2Message)
+    if not why:
+        _overrides.append(vtkROS2Message)  # the table points at it: keep it alive
+    return why
+
+
+_overrides: list = []

@@ -2,7 +2,7 @@
 ported by intent to ros2vtk (issue 14).
 
 Each class and test keeps the name, the calls and the assertions of the original; what differs:
-- the import/logic lines: `ros2Logic = ros2vtk.vtkROS2Logic()` for
+- the import/logic lines: `ros2Logic = ros2vtk.getModuleLogic('ROS2')` for
   `slicer.util.getModuleLogic('ROS2')`, and its scene for `slicer.mrmlScene`;
 - turtlesim (no wheel on PyPI) is turtlesim_standin.py, an rclpy node with turtlesim's name,
   parameters and a /spawn service (std_srvs/Trigger instead of turtlesim/Spawn), and `ros2 param
@@ -34,7 +34,7 @@ ROS_PEER = HERE.parent / 'interop' / 'ros_peer.py'
 VENV_PYTHON = os.environ.get('ROS2VTK_VENV_PYTHON', str(HERE.parents[1] / '.venv' / 'bin' / 'python'))
 
 # --- the import/logic lines: SlicerROS2's module logic and scene ------------------------------
-ros2Logic = ros2vtk.vtkROS2Logic()
+ros2Logic = ros2vtk.getModuleLogic('ROS2')
 mrmlScene = ros2Logic.GetScene()
 vtkMRMLTransformNode = ros2vtk.vtkROS2TransformNode
 
@@ -628,15 +628,14 @@ class TestServiceClient(unittest.TestCase):
         # SlicerROS2: CreateAndAddServiceClientNode('vtkMRMLROS2ServiceClientSpawnNode', '/spawn')
         # with req.SetX(4.0) / req.SetY(4.0) and res.GetName(). turtlesim/Spawn has no wheel, so
         # the stand-in's /spawn is a Trigger (no request fields) whose reply's `message` is the
-        # name; our requests and responses are typed message objects (ros2vtk.Message.of gives
-        # them SlicerROS2's Get<Field>/Set<Field>).
+        # name. Requests and responses answer SlicerROS2's Get<Field>/Set<Field> themselves.
         spawn1 = self.ros2Node.CreateAndAddServiceClientNode('std_srvs/srv/Trigger', '/spawn')
         req = spawn1.CreateBlankRequest()
         self.assertEqual(req.GetROSType(), 'std_srvs/srv/Trigger_Request')
         spawn1.SendAsyncRequest(req)
         # wait get the response (the original spins a fixed 100 ms)
         self.assertTrue(ROS2TestsLogic.spin_until(lambda: spawn1.GetLastResponseStatus()))
-        res = ros2vtk.Message.of(spawn1.GetLastResponse())
+        res = spawn1.GetLastResponse()
         self.assertEqual(res.GetMessage(), "turtle2")
         self.assertEqual((spawn1.GetNumberOfCalls(), spawn1.GetNumberOfRequestsSent()), (1, 1))
 

@@ -50,6 +50,12 @@ void vtkROS2ParameterNode::OnRemovedFromScene()
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2ParameterNode::OnROS2NodeDestroyed(vtkROS2NodeNode*)
+{
+  this->Internals->Client.reset();
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2ParameterNode::Attach(vtkROS2NodeNode* rosNode, const std::string& remoteNode)
 {
   if (!rosNode || !rosNode->GetParticipant())
@@ -274,6 +280,30 @@ bool vtkROS2ParameterNode::GetParameterAsVectorOfStrings(const char* name, vtkSt
 {
   ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_STRING_ARRAY, false)
   return FillArray(values, value->string_array_value, Same);
+}
+
+std::vector<int> vtkROS2ParameterNode::GetParameterAsVectorOfBools(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_BOOL_ARRAY, std::vector<int>())
+  return std::vector<int>(value->bool_array_value.begin(), value->bool_array_value.end());
+}
+
+std::vector<vtkTypeInt64> vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_INTEGER_ARRAY, std::vector<vtkTypeInt64>())
+  return std::vector<vtkTypeInt64>(value->integer_array_value.begin(), value->integer_array_value.end());
+}
+
+std::vector<double> vtkROS2ParameterNode::GetParameterAsVectorOfDoubles(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_DOUBLE_ARRAY, std::vector<double>())
+  return value->double_array_value;
+}
+
+std::vector<std::string> vtkROS2ParameterNode::GetParameterAsVectorOfStrings(const char* name) const
+{
+  ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_STRING_ARRAY, std::vector<std::string>())
+  return value->string_array_value;
 }
 
 #undef ROS2VTK_PARAMETER_VALUE

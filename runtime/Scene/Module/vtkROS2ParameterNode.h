@@ -12,6 +12,7 @@
 
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkDoubleArray;
 class vtkIntArray;
@@ -62,6 +63,13 @@ public:
   bool GetParameterAsVectorOfDoubles(const char* name, vtkDoubleArray* values) const;
   bool GetParameterAsVectorOfStrings(const char* name, vtkStringArray* values) const;
   bool GetParameterAsByteArray(const char* name, vtkUnsignedCharArray* values) const;
+  /// SlicerROS2's one-argument forms: the values themselves (a tuple in Python), empty with
+  /// vtkErrorMacro on a wrong type or unset parameter. Bools come as 0/1 (SlicerROS2 returns
+  /// std::vector<char>; VTK's wrapping cannot return std::vector<bool>).
+  std::vector<int> GetParameterAsVectorOfBools(const char* name) const;
+  std::vector<vtkTypeInt64> GetParameterAsVectorOfIntegers(const char* name) const;
+  std::vector<double> GetParameterAsVectorOfDoubles(const char* name) const;
+  std::vector<std::string> GetParameterAsVectorOfStrings(const char* name) const;
   /// "name (type): value" as `ros2 param get` would show it, for any type.
   std::string PrintParameter(const char* name) const;
 
@@ -80,6 +88,9 @@ public:
 #endif
 
 
+  /// Destroy hook: the parameter client's endpoints live in the ROS node's participant, so they
+  /// go with it (otherwise they would be released after the participant, at scene teardown).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override;
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): applies parameter updates.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessParameterUpdates(); }
   /// Index key among the ROS node's parameter nodes.
