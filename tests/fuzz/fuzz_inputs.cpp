@@ -1,6 +1,7 @@
 // ros2vtk tests — fuzz targets for every parser of untrusted input that is not CDR (CDR decode
 // per type is tests/message/test_cdr_fuzz): multi-array layouts, URDF text, mesh files (STL,
-// OBJ, PLY, DAE), scene XML and message YAML. Run by CTest under ASan + UBSan through the seeded
+// OBJ, PLY, DAE), scene XML, message YAML, and runtime type descriptions (REP 2011, as a node's
+// ~/get_type_description answers) with a payload decoded by the type built from them. Run by CTest under ASan + UBSan through the seeded
 // driver (FuzzDriver.hpp), one test per target, a fixed number of inputs each:
 //
 //     fuzz_inputs TARGET CORPUS_FOLDER ITERATIONS [SEED]
@@ -16,6 +17,7 @@
 #include "ros2vtk/robot/KinematicTree.hpp"
 #include "ros2vtk/robot/MeshLoader.hpp"
 #include "ros2vtk/robot/RobotLoader.hpp"
+#include "ros2vtk/wire/DynamicType.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"
 
 #include <vtkDoubleArray.h>
@@ -32,6 +34,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
+#include <sstream>
 
 #include <unistd.h>
 
@@ -153,6 +157,102 @@ bool yaml(const std::string& input)
   return true;
 }
 
+/// The text form of a type description and a payload (tests/fuzz/make_type_description_corpus.py
+/// writes the seeds from rclpy's answers): "T name" starts a type (the main one first), "F name
+/// type_id capacity string_capacity nested default..." adds a field, "P hex" is the payload;
+/// other lines are skipped.
+bool read_description(const std::string& input, ros2vtk::wire::TypeDescriptionData& description,
+                      std::vector<uint8_t>& payload)
+{
+  std::istringstream lines(input);
+  std::string line;
+  bool have_main = false;
+  ros2vtk::wire::IndividualDescription* current = nullptr;
+  while (std::getline(lines, line))
+  {
+    if (line.size() < 2 || line[1] != ' ')
+      continue; // a broken line is skipped: the rest still reaches the type builder
+    const std::string rest = line.substr(2);
+    if (line[0] == 'T')
+    {
+      if (!have_main)
+      {
+        description.type.type_name = rest;
+        current = &description.type;
+        have_main = true;
+      }
+      else
+      {
+        description.referenced.push_back({ rest, {} });
+        current = &description.referenced.back();
+      }
+    }
+    else if (line[0] == 'F' && current)
+    {
+      std::istringstream words(rest);
+      ros2vtk::wire::DescriptionField field;
+      unsigned type_id = 0;
+      if (!(words >> field.name >> type_id >> field.capacity >> field.string_capacity >> field.nested_type_name))
+        continue;
+      field.type_id = static_cast<uint8_t>(type_id);
+      if (field.nested_type_name == "-")
+        field.nested_type_name.clear();
+      std::getline(words >> std::ws, field.default_value);
+      current->fields.push_back(std::move(field));
+    }
+    else if (line[0] == 'P')
+    {
+      for (size_t i = 0; i + 1 < rest.size(); i += 2)
+        payload.push_back(static_cast<uint8_t>(std::strtoul(rest.substr(i, 2).c_str(), nullptr, 16)));
+    }
+  }
+  return have_main;
+}
+
+/// A description is built or refused with a reason; a built type decodes the payload or refuses
+/// it with a reason, and what it decoded writes back to bytes that decode to the same bytes.
+/// Each accepted description takes one of the process's kMaxDynamicTypes slots: keep the input
+/// count below that (CMakeLists.txt).
+bool type_description(const std::string& input)
+{
+  ros2vtk::wire::TypeDescriptionData description;
+  std::vector<uint8_t> payload;
+  if (!read_description(input, description, payload))
+    return false;
+  std::string error;
+  const std::string hash = ros2vtk::wire::type_description_hash(description, &error);
+  require(!hash.empty() || !error.empty(), "an unhashable description has a reason");
+  error.clear();
+  const ros2vtk::wire::MessageTypeSupport* type =
+    ros2vtk::wire::build_dynamic_message_type(description, "", &error);
+  if (!type)
+  {
+    require(!error.empty(), "a refused description has a reason");
+    return false;
+  }
+  std::unique_ptr<void, void (*)(void*)> message(type->create(), type->destroy);
+  const std::string yaml_of_default = ros2vtk::wire::to_yaml(*type, message.get());
+  (void)yaml_of_default;
+  if (payload.empty())
+    return true;
+  if (!ros2vtk::wire::deserialize_message(*type, payload.data(), payload.size(), message.get(), &error))
+  {
+    require(!error.empty(), "a refused payload has a reason");
+    return true; // the description was accepted
+  }
+  const std::string yaml = ros2vtk::wire::to_yaml(*type, message.get());
+  (void)yaml;
+  std::vector<uint8_t> written;
+  ros2vtk::wire::serialize_message(*type, message.get(), written);
+  std::unique_ptr<void, void (*)(void*)> again(type->create(), type->destroy);
+  require(ros2vtk::wire::deserialize_message(*type, written.data(), written.size(), again.get(), &error),
+          "what a runtime type wrote reads back");
+  std::vector<uint8_t> rewritten;
+  ros2vtk::wire::serialize_message(*type, again.get(), rewritten);
+  require(written == rewritten, "a runtime type writes what it read back byte for byte");
+  return true;
+}
+
 std::map<std::string, FuzzTarget> targets()
 {
   std::map<std::string, FuzzTarget> all;
@@ -177,6 +277,10 @@ std::map<std::string, FuzzTarget> targets()
         scene_xml });
   add({ "yaml", { "inners: ", "[", "]", "{", "}", "- ", "&a ", "*a", "s: ", "text: ", "bytes: [1, 2]", "'", "\"\\x", "!!binary " },
         yaml });
+  add({ "type_description",
+        { "F v 1 0 0 test_msgs/msg/BasicTypes\n", "F s 17 0 0 - 'x'\n", "F a 49 4 0 -\n", "F q 145 0 0 -\n",
+          "F b 97 3 8 -\n", "T test_msgs/msg/BasicTypes\n", " 4294967295 ", " 255 ", "P 00010000ffffffff\n" },
+        type_description });
   return all;
 }
 
