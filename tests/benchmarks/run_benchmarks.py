@@ -2,7 +2,7 @@
 """The benchmark suite (targets in markdown() below, results in docs/benchmarks.md): runs every measurement with its
 baseline in the same invocation, writes build/bench/results.json and docs/benchmarks.md.
 
-    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,sender_split,actions,decode,scale,frame,igtl,network]
+    run_benchmarks.py [--quick] [--only spin,round_trip,throughput,robot_load,generator,services,sender_split,actions,decode,scale,frame,igtl,network,fastdds3]
                       [--build DIR] [--json FILE] [--markdown FILE]
 
 Run through scripts/bench.sh (set-up, build, then this with the venv's python). Benchmarks
@@ -852,12 +852,30 @@ def markdown(results: dict) -> str:
             '- Runtime types: a type learnt from a description decodes through one generic table walk; nested '
             'messages (PoseArray, Path) cost 3-4x the generated code, flat data (PointCloud2, JointState) about '
             'the same.',
-            '- Discovery on a crowded graph is bimodal for our Fast DDS 2.9 participant: either as fast as an '
-            'rclpy node joining (~0.5 s for 50 nodes / 500 topics) or about 1.2 s later, when the first SPDP '
-            'exchange with the rclpy participant is missed and the next announcement is awaited (seen with 5 '
-            'nodes too: participant discovered after 10-20 ms or after ~1.35 s). Not fixed yet.',
+            '- Discovery used to be bimodal (our node found a waiting rclpy node after 10-20 ms or 1-3 s '
+            'later): Fast DDS sends a participant\'s first announcement before its receivers are registered, and '
+            'the peer\'s immediate answer was dropped. runtime/Wire/src/StartGateTransport.hpp holds the first '
+            'announcement back; the joins of section 12 show it (rclpy\'s own Fast DDS 3 join can still take '
+            'seconds: the same race, on its side).',
             '- Frame time: with llvmpipe (software GL, no GPU on this machine) the render is ~98 % of the frame; '
             'spin and display update stay below 3 % with 10 robots.', '']
+    fd3 = results.get('fastdds3')
+    if fd3:
+        out += ['## 15. A Fast DDS 3 build? VGA images between rclpy, ours and the wheels\' Fast DDS 3', '',
+                f'{fd3["image"]}, {fd3["seconds"]} s per cell, latency = receipt − header stamp. `probe` is a reader / '
+                f'writer built on the Fast DDS 3.2 of the `ros-fastdds` wheel ({fd3["probe"]}), opaque CDR bytes: '
+                'what the transport of a Fast DDS 3 build of Wire would do. Transports: `default` = Fast DDS 3\'s own '
+                '(shared memory + UDPv4; ours is always UDPv4 with 4 MiB socket buffers); `tuned` = 4 MiB socket buffers '
+                'and a 4 MiB shared-memory segment (the default segment, 512 KiB, is smaller than one image); '
+                '`tuned_udp` = the same, UDPv4 only.', '',
+                '| cell | sender → receiver | transports | received | median | p90 | p99 | max |',
+                '| --- | --- | --- | --- | --- | --- | --- | --- |']
+        for name, row in fd3['rows'].items():
+            s = row['latency_ms']
+            out.append(f'| {name} | {row["sender"]} → {row["receiver"]} | {row["transports"]} | '
+                       f'{row["received"]}/{row["sent"]} | {fmt(s.get("median"), 2)} | {fmt(s.get("p90"), 2)} | '
+                       f'{fmt(s.get("p99"), 2)} | {fmt(s.get("max"), 2)} |')
+        out.append('')
     if results.get('errors'):
         out += ['## Benchmarks that could not run', '']
         out += [f'- {name}: {error}' for name, error in results['errors'].items()]
@@ -1257,6 +1275,77 @@ def bench_network(ctx: 'Context') -> dict:
     return {'count': count, 'rate_hz': rate, 'rows': rows}
 
 
+# ----------------------------------------------------------------------------- 15. Fast DDS 3
+FASTDDS3_CELLS = [
+    # (name, sender, receiver, Fast DDS 3 transports: '' = the library's defaults (SHM + UDPv4),
+    #  tuned = 4 MiB socket buffers and SHM segment, as ros2vtk's Wire sets its UDP buffers)
+    ('rclpy_to_ours_udp', 'rclpy', 'ours', ''),
+    ('rclpy_to_rclpy_default', 'rclpy', 'rclpy', ''),
+    ('rclpy_to_fastdds3_default', 'rclpy', 'probe', ''),
+    ('rclpy_to_fastdds3_tuned_shm', 'rclpy', 'probe', 'tuned'),
+    ('ours_to_ours_udp', 'ours', 'ours', ''),
+    ('fastdds3_to_fastdds3_default', 'probe', 'probe', ''),
+    ('fastdds3_to_fastdds3_tuned_shm', 'probe', 'probe', 'tuned'),
+    ('fastdds3_to_fastdds3_tuned_udp', 'probe', 'probe', 'tuned_udp'),
+]
+
+
+def build_fastdds3_probe(ctx: 'Context') -> Path:
+    """tests/benchmarks/fastdds3 against the wheel's Fast DDS 3 (headers and library in the venv)."""
+    out = ctx.build / 'fastdds3'
+    venv = VENV_PYTHON.parent.parent
+    for command in (['cmake', '-S', HERE / 'fastdds3', '-B', out, '-G', 'Ninja', '-DCMAKE_BUILD_TYPE=Release',
+                     f'-DCMAKE_PREFIX_PATH={venv}'], ['cmake', '--build', out]):
+        subprocess.run([str(c) for c in command], check=True, capture_output=True, text=True)
+    return out / 'fastdds3_probe'
+
+
+def bench_fastdds3(ctx: 'Context') -> dict:
+    """VGA rgb8 images at 30 Hz (latency = receipt - header stamp) between rclpy, ours and a reader /
+    writer built on the wheels' Fast DDS 3 (tests/benchmarks/fastdds3): would a Fast DDS 3 build of
+    Wire gain shared memory with rclpy, or between two ros2vtk processes?"""
+    probe = build_fastdds3_probe(ctx)
+    seconds = 1 if ctx.quick else 5
+    # The smoke run: the probe builds, reads rclpy and itself.
+    cells = [c for c in FASTDDS3_CELLS if not ctx.quick or c[0] in ('rclpy_to_fastdds3_default',
+                                                                      'fastdds3_to_fastdds3_tuned_shm')]
+    topic = '/bench/fd3_image'
+    senders = {
+        'rclpy': [VENV_PYTHON, HERE / 'ros_publisher.py', 'Image', topic, '--rate', 30, '--seconds', seconds,
+                  '--width', 640, '--height', 480, '--encoding', 'rgb8'],
+        'ours': [ctx.build / 'tests' / 'benchmarks' / 'bench_publish', '--type', 'Image', '--topic', topic,
+                 '--rate', 30, '--seconds', seconds, '--width', 640, '--height', 480, '--encoding', 'rgb8'],
+        'probe': [probe, 'pub', topic, '--rate', 30, '--seconds', seconds],
+    }
+    receivers = {
+        'rclpy': [VENV_PYTHON, HERE / 'ros_subscriber.py', 'Image', topic, '--seconds', seconds + 40, '--idle', 3],
+        'ours': [ctx.build / 'tests' / 'benchmarks' / 'bench_subscribe', '--type', 'Image', '--topic', topic,
+                 '--seconds', seconds + 40, '--idle', '3'],
+        'probe': [probe, 'sub', topic, '--seconds', seconds + 40, '--idle', 3],
+    }
+    rows: dict[str, dict] = {}
+    for index, (name, sender, receiver, transports) in enumerate(cells):
+        with Domain(216 + index, ctx.build) as domain:
+            # Fast DDS 3 processes (rclpy, the probe) keep their default transports here, shared
+            # memory included, unless the cell is about UDP; ours is UDPv4 whatever is set.
+            domain.env.pop('FASTDDS_BUILTIN_TRANSPORTS', None)
+            if transports == 'tuned_udp':
+                domain.env['FASTDDS_BUILTIN_TRANSPORTS'] = 'UDPv4'
+            if transports.startswith('tuned'):
+                domain.env['PROBE_TUNED'] = '1'
+            sub = domain.start(receivers[receiver])
+            wait_ready(sub)
+            sent = last_json(domain.start(senders[sender]), timeout=seconds + 60)
+            got = last_json(sub, timeout=60)
+        rows[name] = {'sender': sender, 'receiver': receiver, 'transports': transports or 'default',
+                      'sent': sent['sent'], 'received': got['received'], 'latency_ms': summary(got['latency_ms'])}
+        s = rows[name]['latency_ms']
+        progress(f'fastdds3 {name:32s}: {got["received"]}/{sent["sent"]}, median {s.get("median", float("nan")):.2f} ms, '
+                 f'p90 {s.get("p90", float("nan")):.2f} ms')
+    return {'image': 'sensor_msgs/Image 640x480 rgb8 (921 600 bytes of data), 30 Hz', 'seconds': seconds,
+            'probe': 'tests/benchmarks/fastdds3/fastdds3_probe.cpp (wheel ros-fastdds 3.2)', 'rows': rows}
+
+
 # ----------------------------------------------------------------------------- main
 class Context:
     def __init__(self, build: Path, quick: bool) -> None:
@@ -1269,7 +1358,7 @@ SECTIONS: dict[str, Callable[[Context], dict]] = {
     'robot_load': bench_robot_load, 'generator': bench_generator, 'services': bench_services,
     'sender_split': bench_sender_split, 'actions': bench_actions, 'decode': bench_decode,
     'scale': bench_scale, 'frame': bench_frame,
-    'igtl': bench_igtl, 'network': bench_network,
+    'igtl': bench_igtl, 'network': bench_network, 'fastdds3': bench_fastdds3,
 }
 
 
