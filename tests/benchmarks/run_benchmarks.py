@@ -863,7 +863,7 @@ def markdown(results: dict) -> str:
     if fd3:
         out += ['## 15. A Fast DDS 3 build? VGA images between rclpy, ours and the wheels\' Fast DDS 3', '',
                 f'{fd3["image"]}, {fd3["seconds"]} s per cell, latency = receipt − header stamp. `probe` is a reader / '
-                f'writer built on the Fast DDS 3.2 of the `ros-fastdds` wheel ({fd3["probe"]}), opaque CDR bytes: '
+                f'writer built on the Fast DDS 3.2 of the `ros-fastdds` wheel (tests/benchmarks/fastdds3), opaque CDR bytes: '
                 'what the transport of a Fast DDS 3 build of Wire would do. Transports: `default` = Fast DDS 3\'s own '
                 '(shared memory + UDPv4; ours is always UDPv4 with 4 MiB socket buffers); `tuned` = 4 MiB socket buffers '
                 'and a 4 MiB shared-memory segment (the default segment, 512 KiB, is smaller than one image); '
@@ -875,7 +875,22 @@ def markdown(results: dict) -> str:
             out.append(f'| {name} | {row["sender"]} → {row["receiver"]} | {row["transports"]} | '
                        f'{row["received"]}/{row["sent"]} | {fmt(s.get("median"), 2)} | {fmt(s.get("p90"), 2)} | '
                        f'{fmt(s.get("p99"), 2)} | {fmt(s.get("max"), 2)} |')
-        out.append('')
+        out += ['', 'What it says (read the cells of the same run side by side):',
+                '- rclpy into a Fast DDS 3 reader is no faster than rclpy into ours: rclpy\'s writer keeps '
+                'Fast DDS 3\'s defaults (a 512 KiB shared-memory segment, smaller than one image, and small socket '
+                'buffers), which a receiver cannot change. Our Fast DDS 2.9 reader with 4 MiB buffers over UDP '
+                'takes the same stream faster than any Fast DDS 3 reader, rclpy\'s own included. A Fast DDS 3 '
+                'build of Wire would not speed up the rclpy → ros2vtk path.',
+                '- Between two processes that both tune their transports, Fast DDS 3 shared memory is the fastest '
+                'way a VGA image crosses (the `fastdds3_to_fastdds3_tuned_shm` cell; UDP with the same buffers '
+                'is about twice as slow, ours → ours over UDP likewise). Only ros2vtk → ros2vtk would gain.',
+                '- Switching costs: porting Wire to the 3.x API (namespaces, return codes, type support), and '
+                'building against the wheel\'s library, whose CMake package names the wheel builder\'s own '
+                '/usr/lib64/libtinyxml2.so (tests/benchmarks/fastdds3/CMakeLists.txt links the library directly '
+                'instead). Fast DDS 2.9\'s own shared memory cannot be switched on: a Fast DDS 3 peer on the '
+                'same host would send to its segment and lose the data (docs/wire-interop.md). Recommendation: '
+                'stay on Debian\'s Fast DDS 2.9; revisit when Debian ships Fast DDS 3 or when two ros2vtk '
+                'processes exchanging images is a use case that needs better than the ours → ours row.', '']
     if results.get('errors'):
         out += ['## Benchmarks that could not run', '']
         out += [f'- {name}: {error}' for name, error in results['errors'].items()]
