@@ -526,6 +526,14 @@ void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
     }
     graph.remove_remote_participant(gid);
   }
+  if (info.status == rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT ||
+      info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
+      info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+  {
+    // A peer found or lost: the spinner's next Spin reports the new link state (the node fires
+    // its LinkStateChangedEvent there, on the spinning thread, never here on a DDS thread).
+    wake_up.notify();
+  }
 }
 
 void Participant::Impl::on_subscriber_discovery(dds::DomainParticipant*,
