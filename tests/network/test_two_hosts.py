@@ -155,6 +155,21 @@ def test_a_cut_link_heals_and_the_stream_resumes_without_restarting_either_side(
     # Healed: peers, a match and a fresh message again (the robot's publisher leaves later).
     assert any(s['link'] == 'peers' and s['matched'] >= 1 and 0 <= s['since_last'] < 1.0 for s in after_heal), \
         after_heal
+    # The same changes as events (LinkStateChangedEvent), on the spinning thread: beyond the
+    # lease the robot's participant is dropped ("no peers") during the outage and found again
+    # ("peers") after the heal; within it nothing changes, so nothing fires while it lasts.
+    events = [json.loads(line)['link_event'] for line in out.splitlines() if line.startswith('{"link_event"')]
+    assert events and all(e['spinning_thread'] for e in events), events
+    assert events[0]['state'] == 'peers' and events[0]['t'] < cut_at, events  # found at the start
+    in_outage = [e for e in events if cut_at < e['t'] < healed_at]
+    after = [e for e in events if e['t'] > healed_at]
+    if outage > 25:
+        assert [e['state'] for e in in_outage][-1:] == ['no peers'] and in_outage[-1]['participants'] == 0, events
+        assert after and after[0]['state'] == 'peers' and after[0]['participants'] >= 1, events
+    else:
+        assert in_outage == [], events
+    print(f'link events around the {outage} s cut: ' + ', '.join(
+        f"{e['t'] - cut_at:+.1f}s {e['state']}/{e['participants']}p" for e in events))
     print(f'link status during the {outage} s cut: ' + ', '.join(
         f"{s['t'] - cut_at:.1f}s {s['link']}/{s['participants']}p/{s['matched']}m/{s['since_last']:.1f}s"
         for s in during[::4]))
