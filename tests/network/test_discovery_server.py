@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from pathlib import Path
 
 import pytest
@@ -70,7 +71,7 @@ def test_without_the_server_the_same_clients_find_nobody(lab):
     running: our subscriber gets nothing (so the test above went through the server)."""
     lab.block_multicast()
     use_server(lab)
-    ours = lab.imaging.scene('--seconds', '6', 'sub', 'String', '/needle', '--count', '5')
+    ours = lab.imaging.scene('--seconds', '7', 'sub', 'String', '/needle', '--count', '5')
     lab.imaging.wait_ready(ours)
     pub = lab.robot.peer('pub', '/needle', 'std_msgs/msg/String', json.dumps({'data': 'target'}),
                          '--count', '5', '--rate', '10', '--wait', '5')
@@ -78,6 +79,13 @@ def test_without_the_server_the_same_clients_find_nobody(lab):
     lab.robot.finish(pub, timeout=30)
     assert code == 0, err
     assert json.loads(out.splitlines()[-1])['count'] == 0, out
+    # After 5 s alone our node says so, naming the server it uses and what to check (once).
+    assert len(re.findall(r'Warning: In \S*vtkROS2NodeNode\.cxx', err)) == 1, err  # said once
+    warning = [line for line in err.splitlines() if 'found no other ROS 2 participant' in line]
+    assert 'ROS node /slicer found no other ROS 2 participant in 5 s (nothing can arrive on /needle)' in warning[0]
+    assert (f'ROS_DISCOVERY_SERVER={ROBOT_ADDRESS}:{PORT}; check that a server runs there, started with the id of '
+            'its position in the list (fastdds discovery -i 0 for the first), that no firewall drops its port, and '
+            f'that no firewall drops UDP ports {7400 + 250 * lab.imaging.domain}-') in warning[0], warning
 
 
 def test_super_clients_see_the_whole_graph_through_the_server(lab):

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import time
 
 import pytest
@@ -244,3 +245,13 @@ def test_without_multicast_static_peers_find_the_other_host(lab, static_peers):
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] == (5 if static_peers else 0), result
+    if not static_peers:  # alone for 8 s: our node says so once, with its settings and what to check
+        assert len(re.findall(r'Warning: In \S*vtkROS2NodeNode\.cxx', err)) == 1, err  # said once
+        warning = [line for line in err.splitlines() if 'found no other ROS 2 participant' in line]
+        assert 'ROS node /slicer found no other ROS 2 participant in 5 s (nothing can arrive on /needle)' in warning[0]
+        assert (f'it uses ROS_DOMAIN_ID={lab.imaging.domain} and ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET (multicast); '
+                'check that the other side uses the same domain and range, that multicast reaches it (if the network '
+                'drops multicast: ROS_STATIC_PEERS or ROS_DISCOVERY_SERVER), and that no firewall drops UDP ports '
+                f'{7400 + 250 * lab.imaging.domain}-{7649 + 250 * lab.imaging.domain} (docs/networking.md)') in warning[0], warning
+    else:
+        assert 'found no other ROS 2 participant' not in err, err

@@ -410,7 +410,7 @@ std::string vtkROS2NodeNode::GetNoPeersAdvice() const
   {
     advice << " and the discovery server(s) ROS_DISCOVERY_SERVER=" << options.discovery_servers
            << "; check that a server runs there, started with the id of its position in the list "
-              "(fastdds discovery -i 0 for the first), and that its port is open";
+              "(fastdds discovery -i 0 for the first), that no firewall drops its port";
   }
   else
   {
