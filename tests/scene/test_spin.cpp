@@ -447,3 +447,18 @@ TEST_F(SpinTest, GenericNodeTypeIsFixedWhileAddedAndUnknownTypesAreNamed)
       std::string::npos) << this->Output->Errors;
   }
 }
+
+TEST(DiscoveryServerSettings, ATcpServerOrAMalformedListIsRefusedWithWhatToDoInstead)
+{
+  for (const auto& [servers, expected] : std::vector<std::pair<std::string, std::string>>{
+         { "TCPv4:[198.18.0.1]:42100", "TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
+                                       "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT" },
+         { "198.18.0.1:not_a_port", "is not a list of host:port (';'-separated, position = server id)" } })
+  {
+    ros2vtk::wire::ParticipantOptions options;
+    options.discovery_servers = servers;
+    std::string error;
+    EXPECT_EQ(ros2vtk::wire::Participant::create("client", "", options, &error), nullptr) << servers;
+    EXPECT_NE(error.find(expected), std::string::npos) << error;
+  }
+}
