@@ -7,10 +7,11 @@ import json
 import os
 import re
 import time
+from pathlib import Path
 
 import pytest
 
-from conftest import IMAGING_ADDRESS, ROBOT_ADDRESS
+from conftest import IMAGING_ADDRESS, ROBOT_ADDRESS, ip
 
 SENT = 20
 
@@ -38,6 +39,46 @@ def test_our_publisher_on_the_imaging_host_reaches_rclpy_on_the_robot_host(lab):
     lab.imaging.finish(ours)
     assert code == 0, err
     assert json.loads(out.splitlines()[-1])['data']
+
+
+def announced_by_one_process(lab, start_process) -> dict[str, set]:
+    """The UDPv4 locators the participant(s) of one process on the imaging host announce, as the
+    robot host receives them by multicast (tests/network/spdp_listen.py): {list kind: {address}}
+    (other locator kinds as 'kind N': rclpy's shared memory, which ours keeps off)."""
+    listener = lab.robot.start(['/usr/bin/python3', str(Path(__file__).parent / 'spdp_listen.py'),
+                                str(lab.robot.domain), ROBOT_ADDRESS, '4'])
+    lab.robot.wait_ready(listener)
+    process = start_process()
+    code, out, err = lab.robot.finish(listener, timeout=30)
+    lab.imaging.stop(process)
+    assert code == 0, err
+    announced = json.loads(out.splitlines()[-1])
+    assert len(announced) >= 1, f'no announcement reached the other host: {out}'
+    addresses: dict[str, set] = {}
+    for listed in announced.values():
+        for kind, locator_kind, address, _ in listed:
+            addresses.setdefault(kind, set()).add(address if locator_kind == 1 else f'kind {locator_kind}')
+    return addresses
+
+
+def test_our_participant_announces_the_addresses_rclpy_announces_on_the_same_host(lab):
+    """What our participant tells the other host (its SPDP locators, read by an independent RTPS
+    parser on the robot host): the imaging host's link address, not only 127.0.0.1, and the same
+    unicast addresses as an rclpy node on that host (so an interface rclpy leaves out, here a
+    second link that is down with an address of its own, is left out by ours too)."""
+    down_a, down_b = f'{lab.imaging_if}x', f'{lab.imaging_if}y'
+    ip('-n', lab.imaging_ns, 'link', 'add', down_a, 'type', 'veth', 'peer', 'name', down_b)
+    ip('-n', lab.imaging_ns, 'addr', 'add', '198.19.0.2/24', 'dev', down_a)  # left down
+    ours = announced_by_one_process(lab, lambda: lab.imaging.scene('--seconds', '10', 'pub', 'String', '/chatter'))
+    rclpy = announced_by_one_process(lab, lambda: lab.imaging.peer(
+        'pub', '/chatter', 'std_msgs/msg/String', json.dumps({'data': 'x'}), '--count', '-1', '--wait', '0'))
+    print(f'announced by ours: {ours}; by rclpy: {rclpy}')
+    for kind in ('metatraffic_unicast', 'default_unicast'):
+        assert IMAGING_ADDRESS in ours.get(kind, set()), ours
+        udp = {address for address in rclpy.get(kind, set()) if not address.startswith('kind ')}
+        assert ours[kind] == udp, (kind, ours, rclpy)
+    assert '198.19.0.2' not in set().union(*ours.values()), ours
+    assert '127.0.0.1' not in set().union(*ours.values()), ours
 
 
 def test_our_localhost_node_is_invisible_to_a_subnet_peer_on_the_other_host(lab):
