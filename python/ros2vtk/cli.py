@@ -141,6 +141,9 @@ def main(argv=None) -> int:
 
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
+    if node is None:  # the node's error above says why (e.g. a ROS_DISCOVERY_SERVER it cannot use)
+        print(f'ros2vtk {args.command}: no ROS node could be created (see the error above)', file=sys.stderr)
+        return 2
     if args.command == 'app':
         try:
             import ros2vtk.app as app
