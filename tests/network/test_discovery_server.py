@@ -82,8 +82,8 @@ def test_without_the_server_the_same_clients_find_nobody(lab):
     assert json.loads(out.splitlines()[-1])['count'] == 0, out
     # After 5 s alone our node says so, naming the server it uses and what to check (once).
     assert len(re.findall(r'Warning: In \S*vtkROS2NodeNode\.cxx', err)) == 1, err  # said once
-    warning = [line for line in err.splitlines() if 'found no other ROS 2 participant' in line]
-    assert 'ROS node /slicer found no other ROS 2 participant in 5 s (nothing can arrive on /needle)' in warning[0]
+    warning = [line for line in err.splitlines() if 'has seen no other ROS 2 participant' in line]
+    assert 'ROS node /slicer has seen no other ROS 2 participant for 5 s (nothing can arrive on /needle)' in warning[0]
     assert (f'ROS_DISCOVERY_SERVER={ROBOT_ADDRESS}:{PORT}; check that a server runs there, started with the id of '
             'its position in the list (fastdds discovery -i 0 for the first), that no firewall drops its port, and '
             f'that no firewall drops UDP ports {7400 + 250 * lab.imaging.domain}-') in warning[0], warning

@@ -389,8 +389,8 @@ void vtkROS2NodeNode::UpdateLinkState()
   {
     topics += ")";
   }
-  vtkWarningMacro("ROS node " << this->Internals->Participant->fully_qualified_name() << " found no other ROS 2 "
-                  << "participant in " << static_cast<int>(alone) << " s" << topics << ": "
+  vtkWarningMacro("ROS node " << this->Internals->Participant->fully_qualified_name() << " has seen no other ROS 2 "
+                  << "participant for " << static_cast<int>(alone) << " s" << topics << ": "
                   << this->GetNoPeersAdvice());
 }
 
