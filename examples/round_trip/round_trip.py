@@ -4,7 +4,7 @@ publishes every received value straight back. A ROS 2 client (e.g. tests/interop
 `round_trip`) sends timestamps on /round_trip/out and measures when they return on
 /round_trip/back.
 
-    PYTHONPATH=build/python python3 examples/round_trip/round_trip.py [--spin timer|event] [--seconds S]
+    PYTHONPATH=build/python python3 examples/round_trip/round_trip.py [--spin timer|event] [--seconds S] [--depth N]
 
 Every message of a spin is echoed (GetNewMessage(i)), not only the last one, so nothing is lost
 when two arrive between spins.
@@ -24,6 +24,9 @@ def main() -> int:
     parser.add_argument('--spin', choices=('timer', 'event'), default='event')
     parser.add_argument('--rate', type=float, default=100.0)
     parser.add_argument('--seconds', type=float, default=30.0)
+    parser.add_argument('--depth', type=int, default=0,
+                        help='history depth of both endpoints (0: ROS\'s default keep-last 10); the benchmark '
+                             'gives the lossy link the client\'s 1000')
     args = parser.parse_args()
 
     logic = ros2vtk.vtkROS2Logic()
@@ -31,6 +34,9 @@ def main() -> int:
     node = logic.GetDefaultROS2Node()
     sub = node.CreateAndAddSubscriberNode('Double', '/round_trip/out')
     pub = node.CreateAndAddPublisherNode('Double', '/round_trip/back')
+    if args.depth > 0 and not (sub.SetHistoryDepth(args.depth) and pub.SetHistoryDepth(args.depth)):
+        print(f'round_trip: history depth {args.depth} refused (see the error above)', file=sys.stderr)
+        return 2
     echoed = [0]
 
     def on_message(caller, event):

@@ -88,6 +88,13 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _say_if_alone(node, waited: float) -> None:
+    """A graph listing with nobody in it: what the node uses and what to check (stderr)."""
+    advice = node.GetNoPeersAdvice()
+    if advice:
+        print(f'ros2vtk: found no other ROS 2 participant in {waited:g} s: {advice}', file=sys.stderr)
+
+
 def _run_demo(argv) -> int:
     """The demo is scripts/demo.sh (it builds, starts the simulated robot and the viewer)."""
     script = Path(__file__).resolve().parents[3] / 'scripts' / 'demo.sh'  # <repo>/build/python/ros2vtk
@@ -134,6 +141,9 @@ def main(argv=None) -> int:
 
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
+    if node is None:  # the node's error above says why (e.g. a ROS_DISCOVERY_SERVER it cannot use)
+        print(f'ros2vtk {args.command}: no ROS node could be created (see the error above)', file=sys.stderr)
+        return 2
     if args.command == 'app':
         try:
             import ros2vtk.app as app
@@ -156,9 +166,11 @@ def main(argv=None) -> int:
     elif args.command == 'nodes':
         _spin(logic, args.wait)
         print(node.GetNodeNamesAndNamespaces(), end='')
+        _say_if_alone(node, args.wait)
     elif args.command == 'topics':
         _spin(logic, args.wait)
         print(node.GetTopicNamesAndTypes(), end='')
+        _say_if_alone(node, args.wait)
     elif args.command == 'types':
         # Class names, as SlicerROS2's Registered...Nodes(); the short name is the part between
         # vtkROS2Publisher/vtkROS2Subscriber and Node (what CreateAndAdd...Node takes).

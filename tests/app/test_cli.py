@@ -57,3 +57,22 @@ def test_bad_input_gets_clear_errors():
     assert result.returncode == 2 and 'not valid' in result.stderr
     result = ros2vtk('app', '--host', '0.0.0.0')
     assert result.returncode == 2 and 'not the loopback' in result.stderr
+    # A TCP discovery server (Fast DDS 3's syntax), which Fast DDS 2.9 cannot use: said, no traceback.
+    result = subprocess.run([str(VENV_PYTHON), '-m', 'ros2vtk', '--wait', '0', 'nodes'], capture_output=True, text=True,
+                            timeout=60, env=dict(ENV, ROS_DISCOVERY_SERVER='TCPv4:[127.0.0.1]:42100'))
+    assert result.returncode == 2 and 'Traceback' not in result.stderr, result.stderr
+    assert 'TCP discovery servers are not supported with Fast DDS 2.9' in result.stderr, result.stderr
+    assert 'ros2vtk nodes: no ROS node could be created (see the error above)' in result.stderr, result.stderr
+
+
+def test_a_graph_listing_that_finds_nobody_says_what_to_check():
+    """No other process on this test's domain: `ros2vtk nodes` lists only itself and says, on
+    stderr, which settings it used and what to check (the same advice as the node's warning)."""
+    result = ros2vtk('--wait', '1', 'nodes')
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split() == ['/slicer'], result.stdout
+    domain = int(ENV['ROS_DOMAIN_ID'])
+    assert (f'ros2vtk: found no other ROS 2 participant in 1 s: it uses ROS_DOMAIN_ID={domain} and '
+            'ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST, so it looks only on this computer; check that the other side '
+            f'uses the same domain and range') in result.stderr, result.stderr
+    assert f'UDP ports {7400 + 250 * domain}-{7649 + 250 * domain} (docs/networking.md)' in result.stderr

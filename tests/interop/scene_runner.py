@@ -14,6 +14,7 @@ import argparse
 import json
 import math
 import sys
+import threading
 import time
 
 import ros2vtk
@@ -173,6 +174,18 @@ def cmd_sub(args, logic, node) -> int:
         return 1
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
     next_status = [time.monotonic()]
+    if args.status_every > 0:
+        # What a panel observes instead of polling: the node's LinkStateChangedEvent (call data:
+        # the new link state), with the thread it fired on.
+        main_thread = threading.get_ident()
+
+        @vtk.calldata_type(vtk.VTK_STRING)
+        def on_link_state(caller, event, state):
+            print(json.dumps({'link_event': {'t': time.time(), 'state': state,
+                                             'participants': caller.GetNumberOfDiscoveredParticipants(),
+                                             'spinning_thread': threading.get_ident() == main_thread}}),
+                  flush=True)
+        node.AddObserver(ros2vtk.vtkROS2NodeNode.LinkStateChangedEvent, on_link_state)
 
     def step() -> bool:
         if args.status_every > 0 and time.monotonic() >= next_status[0]:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from pathlib import Path
 
 import pytest
@@ -21,25 +22,26 @@ from conftest import BUILD, IMAGING_ADDRESS, ROBOT_ADDRESS, VENV_PYTHON
 PORT = '11811'
 
 
-def start_server(lab, *server_id: str):
-    """The wheels' discovery server on the robot host (the binary `fastdds discovery` runs; its
-    libraries live in the venv, hence LD_LIBRARY_PATH)."""
+def start_server(lab, *server_id: str, host=None, address: str = ROBOT_ADDRESS, port: str = PORT):
+    """The wheels' discovery server on the robot host (or `host` at `address`; the binary `fastdds
+    discovery` runs; its libraries live in the venv, hence LD_LIBRARY_PATH)."""
     venv = Path(os.path.realpath(VENV_PYTHON.parents[1]))  # .venv may be a link to a shared one
     binary = venv / 'bin' / 'fast-discovery-server'
     if not binary.exists():
         pytest.fail(f'no {binary}: the ros-fastdds wheel (scripts/requirements-ros.txt) ships it')
     libs = [venv / 'lib', *sorted((venv / 'lib').glob('python3*/site-packages/ros_fastdds.libs'))]
-    env = dict(lab.robot.env, LD_LIBRARY_PATH=os.pathsep.join(map(str, libs)))
+    host = host or lab.robot
+    env = dict(host.env, LD_LIBRARY_PATH=os.pathsep.join(map(str, libs)))
     # 42: the binary's "run a server" command index, as `fastdds discovery` passes it.
-    server = lab.robot.start([str(binary), '42', *server_id, '-l', ROBOT_ADDRESS, '-p', PORT], env)
+    server = host.start([str(binary), '42', *server_id, '-l', address, '-p', port], env)
     line = server.stdout.readline()
     assert 'Server started' in line, line + server.stderr.read()
     return server
 
 
-def use_server(lab, super_client: bool = False) -> None:
+def use_server(lab, super_client: bool = False, servers: str = f'{ROBOT_ADDRESS}:{PORT}') -> None:
     for host in (lab.robot, lab.imaging):
-        host.env['ROS_DISCOVERY_SERVER'] = f'{ROBOT_ADDRESS}:{PORT}'
+        host.env['ROS_DISCOVERY_SERVER'] = servers
         if super_client:
             host.env['ROS_SUPER_CLIENT'] = 'TRUE'
 
@@ -70,7 +72,7 @@ def test_without_the_server_the_same_clients_find_nobody(lab):
     running: our subscriber gets nothing (so the test above went through the server)."""
     lab.block_multicast()
     use_server(lab)
-    ours = lab.imaging.scene('--seconds', '6', 'sub', 'String', '/needle', '--count', '5')
+    ours = lab.imaging.scene('--seconds', '7', 'sub', 'String', '/needle', '--count', '5')
     lab.imaging.wait_ready(ours)
     pub = lab.robot.peer('pub', '/needle', 'std_msgs/msg/String', json.dumps({'data': 'target'}),
                          '--count', '5', '--rate', '10', '--wait', '5')
@@ -78,6 +80,13 @@ def test_without_the_server_the_same_clients_find_nobody(lab):
     lab.robot.finish(pub, timeout=30)
     assert code == 0, err
     assert json.loads(out.splitlines()[-1])['count'] == 0, out
+    # After 5 s alone our node says so, naming the server it uses and what to check (once).
+    assert len(re.findall(r'Warning: In \S*vtkROS2NodeNode\.cxx', err)) == 1, err  # said once
+    warning = [line for line in err.splitlines() if 'has seen no other ROS 2 participant' in line]
+    assert 'ROS node /slicer has seen no other ROS 2 participant for 5 s (nothing can arrive on /needle)' in warning[0]
+    assert (f'ROS_DISCOVERY_SERVER={ROBOT_ADDRESS}:{PORT}; check that a server runs there, started with the id of '
+            'its position in the list (fastdds discovery -i 0 for the first), that no firewall drops its port, and '
+            f'that no firewall drops UDP ports {7400 + 250 * lab.imaging.domain}-') in warning[0], warning
 
 
 def test_super_clients_see_the_whole_graph_through_the_server(lab):
@@ -101,6 +110,47 @@ def test_super_clients_see_the_whole_graph_through_the_server(lab):
     assert ['slicer', '/'] in json.loads(graph_out.splitlines()[-1])['nodes'], graph_out
     peer.kill()
     server.terminate()
+
+
+def test_redundant_servers_keep_discovery_working_when_one_of_them_dies(lab):
+    """Two servers, one on each host (ids 0 and 1 at positions 0 and 1 of ROS_DISCOVERY_SERVER, as
+    Fast DDS and the ROS 2 tutorials set up redundancy). A stream from rclpy to us runs through
+    them; the first server is killed; the stream goes on, and endpoints created after the kill
+    (a new rclpy publisher, a new subscriber of ours) still find each other through the second."""
+    lab.block_multicast()
+    second_port = '11812'
+    first = start_server(lab, '-i', '0')
+    second = start_server(lab, '-i', '1', host=lab.imaging, address=IMAGING_ADDRESS, port=second_port)
+    use_server(lab, servers=f'{ROBOT_ADDRESS}:{PORT};{IMAGING_ADDRESS}:{second_port}')
+    early = lab.imaging.scene('--seconds', '30', 'sub', 'String', '/needle', '--count', '50',
+                              '--status-every', '0.5')
+    lab.imaging.wait_ready(early)
+    stream = lab.robot.peer('pub', '/needle', 'std_msgs/msg/String', json.dumps({'data': ''}), '--count', '50',
+                            '--rate', '10', '--wait', '12', '--sequence-field', 'data')
+    # Once our subscriber has data, the first server dies (killed, as a crashed host would).
+    for line in early.stdout:
+        if line.startswith('{"status"') and json.loads(line)['status']['count'] > 0:
+            break
+    else:
+        pytest.fail('no data through the two servers: ' + early.stderr.read())
+    first.kill()
+    first.wait()
+    late = lab.imaging.scene('--node-name', 'slicer_late', '--seconds', '25', 'sub', 'String', '/late',
+                             '--count', '3')
+    lab.imaging.wait_ready(late)
+    late_pub = lab.robot.peer('pub', '/late', 'std_msgs/msg/String', json.dumps({'data': 'after'}),
+                              '--count', '3', '--rate', '5', '--wait', '15')
+    code, out, err = lab.imaging.finish(late, timeout=40)
+    assert code == 0, err
+    assert json.loads(out.splitlines()[-1])['count'] == 3, out  # discovered after the kill
+    code, out, err = lab.imaging.finish(early, timeout=40)
+    lab.robot.finish(late_pub, timeout=30)
+    lab.robot.stop(stream)
+    second.terminate()
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    print(f'redundant servers, first killed: {result["count"]} of 50 on the early stream')
+    assert result['count'] == 50 and result['value'] == '49', result  # nothing lost across the kill
 
 
 @pytest.mark.skipif(os.environ.get('ROS2VTK_LONG_NETWORK_TESTS') != '1',

@@ -5,11 +5,13 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import time
+from pathlib import Path
 
 import pytest
 
-from conftest import IMAGING_ADDRESS, ROBOT_ADDRESS
+from conftest import IMAGING_ADDRESS, ROBOT_ADDRESS, ip
 
 SENT = 20
 
@@ -37,6 +39,46 @@ def test_our_publisher_on_the_imaging_host_reaches_rclpy_on_the_robot_host(lab):
     lab.imaging.finish(ours)
     assert code == 0, err
     assert json.loads(out.splitlines()[-1])['data']
+
+
+def announced_by_one_process(lab, start_process) -> dict[str, set]:
+    """The UDPv4 locators the participant(s) of one process on the imaging host announce, as the
+    robot host receives them by multicast (tests/network/spdp_listen.py): {list kind: {address}}
+    (other locator kinds as 'kind N': rclpy's shared memory, which ours keeps off)."""
+    listener = lab.robot.start(['/usr/bin/python3', str(Path(__file__).parent / 'spdp_listen.py'),
+                                str(lab.robot.domain), ROBOT_ADDRESS, '4'])
+    lab.robot.wait_ready(listener)
+    process = start_process()
+    code, out, err = lab.robot.finish(listener, timeout=30)
+    lab.imaging.stop(process)
+    assert code == 0, err
+    announced = json.loads(out.splitlines()[-1])
+    assert len(announced) >= 1, f'no announcement reached the other host: {out}'
+    addresses: dict[str, set] = {}
+    for listed in announced.values():
+        for kind, locator_kind, address, _ in listed:
+            addresses.setdefault(kind, set()).add(address if locator_kind == 1 else f'kind {locator_kind}')
+    return addresses
+
+
+def test_our_participant_announces_the_addresses_rclpy_announces_on_the_same_host(lab):
+    """What our participant tells the other host (its SPDP locators, read by an independent RTPS
+    parser on the robot host): the imaging host's link address, not only 127.0.0.1, and the same
+    unicast addresses as an rclpy node on that host (so an interface rclpy leaves out, here a
+    second link that is down with an address of its own, is left out by ours too)."""
+    down_a, down_b = f'{lab.imaging_if}x', f'{lab.imaging_if}y'
+    ip('-n', lab.imaging_ns, 'link', 'add', down_a, 'type', 'veth', 'peer', 'name', down_b)
+    ip('-n', lab.imaging_ns, 'addr', 'add', '198.19.0.2/24', 'dev', down_a)  # left down
+    ours = announced_by_one_process(lab, lambda: lab.imaging.scene('--seconds', '10', 'pub', 'String', '/chatter'))
+    rclpy = announced_by_one_process(lab, lambda: lab.imaging.peer(
+        'pub', '/chatter', 'std_msgs/msg/String', json.dumps({'data': 'x'}), '--count', '-1', '--wait', '0'))
+    print(f'announced by ours: {ours}; by rclpy: {rclpy}')
+    for kind in ('metatraffic_unicast', 'default_unicast'):
+        assert IMAGING_ADDRESS in ours.get(kind, set()), ours
+        udp = {address for address in rclpy.get(kind, set()) if not address.startswith('kind ')}
+        assert ours[kind] == udp, (kind, ours, rclpy)
+    assert '198.19.0.2' not in set().union(*ours.values()), ours
+    assert '127.0.0.1' not in set().union(*ours.values()), ours
 
 
 def test_our_localhost_node_is_invisible_to_a_subnet_peer_on_the_other_host(lab):
@@ -155,6 +197,23 @@ def test_a_cut_link_heals_and_the_stream_resumes_without_restarting_either_side(
     # Healed: peers, a match and a fresh message again (the robot's publisher leaves later).
     assert any(s['link'] == 'peers' and s['matched'] >= 1 and 0 <= s['since_last'] < 1.0 for s in after_heal), \
         after_heal
+    # The same changes as events (LinkStateChangedEvent), on the spinning thread: beyond the
+    # lease the robot's participant is dropped ("no peers") during the outage and found again
+    # ("peers") after the heal; within it nothing changes, so nothing fires while it lasts.
+    events = [json.loads(line)['link_event'] for line in out.splitlines() if line.startswith('{"link_event"')]
+    assert events and all(e['spinning_thread'] for e in events), events
+    assert events[0]['state'] == 'peers' and events[0]['t'] < cut_at, events  # found at the start
+    in_outage = [e for e in events if cut_at < e['t'] < healed_at]
+    after = [e for e in events if e['t'] > healed_at]
+    if outage > 25:
+        assert [e['state'] for e in in_outage][-1:] == ['no peers'] and in_outage[-1]['participants'] == 0, events
+        assert after and after[0]['state'] == 'peers' and after[0]['participants'] >= 1, events
+        # 5 s after the drop the node said so (stderr), with what to check.
+        assert 'ROS node /slicer has seen no other ROS 2 participant for 5 s (nothing can arrive on /stream)' in err
+    else:
+        assert in_outage == [], events
+    print(f'link events around the {outage} s cut: ' + ', '.join(
+        f"{e['t'] - cut_at:+.1f}s {e['state']}/{e['participants']}p" for e in events))
     print(f'link status during the {outage} s cut: ' + ', '.join(
         f"{s['t'] - cut_at:.1f}s {s['link']}/{s['participants']}p/{s['matched']}m/{s['since_last']:.1f}s"
         for s in during[::4]))
@@ -229,3 +288,13 @@ def test_without_multicast_static_peers_find_the_other_host(lab, static_peers):
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
     assert result['count'] == (5 if static_peers else 0), result
+    if not static_peers:  # alone for 8 s: our node says so once, with its settings and what to check
+        assert len(re.findall(r'Warning: In \S*vtkROS2NodeNode\.cxx', err)) == 1, err  # said once
+        warning = [line for line in err.splitlines() if 'has seen no other ROS 2 participant' in line]
+        assert 'ROS node /slicer has seen no other ROS 2 participant for 5 s (nothing can arrive on /needle)' in warning[0]
+        assert (f'it uses ROS_DOMAIN_ID={lab.imaging.domain} and ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET (multicast); '
+                'check that the other side uses the same domain and range, that multicast reaches it (if the network '
+                'drops multicast: ROS_STATIC_PEERS or ROS_DISCOVERY_SERVER), and that no firewall drops UDP ports '
+                f'{7400 + 250 * lab.imaging.domain}-{7649 + 250 * lab.imaging.domain} (docs/networking.md)') in warning[0], warning
+    else:
+        assert 'has seen no other ROS 2 participant' not in err, err

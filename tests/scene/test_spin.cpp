@@ -253,6 +253,49 @@ TEST_F(SpinTest, SpinOnWakeUpWaitsForDataAndTimesOut)
   EXPECT_GE(this->Logic->GetMeanSpinDuration(), 0.0);
 }
 
+TEST_F(SpinTest, LinkStateChangedEventFiresOnTheSpinningThreadWhenAPeerComesAndGoes)
+{
+  // Every event of the default node: call data (the link state) and thread.
+  struct LinkLog
+  {
+    std::vector<std::string> states;
+    std::vector<std::thread::id> threads;
+  } log;
+  vtkNew<vtkCallbackCommand> command;
+  command->SetClientData(&log);
+  command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* self = static_cast<LinkLog*>(clientData);
+    self->states.emplace_back(callData ? static_cast<const char*>(callData) : "(null)");
+    self->threads.push_back(std::this_thread::get_id());
+  });
+  this->Listener->AddObserver(vtkROS2NodeNode::LinkStateChangedEvent, command);
+  // The talker, a participant of this process, is found: "peers" (once, whatever else runs).
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return !log.states.empty(); })) << "no event for the talker";
+  EXPECT_EQ(log.states.front(), "peers");
+  EXPECT_STREQ(this->Listener->GetLinkState(), "peers");
+  const size_t afterFound = log.states.size();
+  for (int i = 0; i < 20; ++i)
+  {
+    this->Logic->Spin();
+  }
+  EXPECT_EQ(log.states.size(), afterFound) << "spins without a change fire nothing";
+  // The talker goes away: DDS removes it on one of its threads; nothing fires there, the
+  // listener's descriptor wakes the spinner, and the spin fires the event.
+  const int fd = this->Listener->GetWakeUpFileDescriptor();
+  ASSERT_TRUE(this->Talker->Destroy());
+  pollfd pfd{ fd, POLLIN, 0 };
+  EXPECT_EQ(::poll(&pfd, 1, 5000), 1) << "losing a peer wakes the spinner";
+  EXPECT_EQ(log.states.size(), afterFound) << "fired before any spin";
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Listener->GetNumberOfDiscoveredParticipants() == 0; }))
+    << this->Listener->GetNumberOfDiscoveredParticipants() << " peers left";
+  ASSERT_GT(log.states.size(), afterFound);
+  EXPECT_EQ(log.states.back(), "no peers");
+  for (const auto& id : log.threads)
+  {
+    EXPECT_EQ(id, std::this_thread::get_id());
+  }
+}
+
 TEST_F(SpinTest, SpinForSpinsAtTheRateForTheDuration)
 {
   // Behaviour, not timing (timings belong to tests/benchmarks; a loaded machine stretches any
@@ -402,5 +445,20 @@ TEST_F(SpinTest, GenericNodeTypeIsFixedWhileAddedAndUnknownTypesAreNamed)
     EXPECT_FALSE(setType("std_msgs/msg/String"));
     EXPECT_NE(this->Output->Errors.find("cannot change the type while added to a ROS node"),
       std::string::npos) << this->Output->Errors;
+  }
+}
+
+TEST(DiscoveryServerSettings, ATcpServerOrAMalformedListIsRefusedWithWhatToDoInstead)
+{
+  for (const auto& [servers, expected] : std::vector<std::pair<std::string, std::string>>{
+         { "TCPv4:[198.18.0.1]:42100", "TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
+                                       "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT" },
+         { "198.18.0.1:not_a_port", "is not a list of host:port (';'-separated, position = server id)" } })
+  {
+    ros2vtk::wire::ParticipantOptions options;
+    options.discovery_servers = servers;
+    std::string error;
+    EXPECT_EQ(ros2vtk::wire::Participant::create("client", "", options, &error), nullptr) << servers;
+    EXPECT_NE(error.find(expected), std::string::npos) << error;
   }
 }

@@ -25,6 +25,22 @@ def clock_text(node) -> str:
     return f'sim time {node.GetNodeTime():.3f} s'
 
 
+def link_text(node) -> str:
+    """The status line's word on the network: how many other ROS participants the node sees
+    (its LinkStateChangedEvent fires when that changes), and how many it dropped after they fell
+    silent beyond the DDS lease (a cut link)."""
+    if node is None:
+        return ''
+    state = node.GetLinkState()
+    if state == 'peers':
+        count = node.GetNumberOfDiscoveredParticipants()
+        text = f'link: {count} peer{"s" if count != 1 else ""}'
+    else:
+        text = f'link: {state}'
+    dropped = node.GetNumberOfDroppedParticipants()
+    return text + (f' ({dropped} dropped)' if dropped else '')
+
+
 def robot_rows(scene):
     rows = []
     for robot in nodes_of_class(scene, 'vtkROS2RobotNode'):

@@ -408,6 +408,9 @@ class App:
                     f'{self.logic.GetMeanSpinDuration():.3f} ms mean, '
                     f'{max(total - received, 0) / elapsed:.0f} msgs/s, '
                     f'{len(s.topics)} topic nodes, {len(s.robots)} robots, {len(self.errors)} errors')
+        link = scene_state.link_text(self.node)
+        if link:
+            s.status += f', {link}'
         clock = scene_state.clock_text(self.node)
         if clock:
             s.status += f', {clock}'

@@ -19,10 +19,12 @@
 #include "vtkSmartPointer.h"
 #include "vtkXMLDataElement.h"
 
+#include "Internal/LinkStateMonitor.hpp"
 #include "Internal/RateLimitedReport.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <unordered_map>
 #include <vector>
 
@@ -84,6 +86,8 @@ public:
   uint64_t ChildVisits = 0; // children visited by index rebuilds and lookups (tests count them)
   std::vector<std::string> RoleScratch;
   std::vector<std::pair<vtkROS2SceneNode*, std::function<int()>>> SpinCallbacks; // connectors
+  // Link state from spin to spin: LinkStateChangedEvent, and the warning when nobody is found.
+  ros2vtk::scene::LinkStateMonitor LinkState{ std::chrono::seconds(5), std::chrono::seconds(60) };
 
   void ReleaseParticipantObjects()
   {
@@ -158,6 +162,7 @@ bool vtkROS2NodeNode::Create(const char* nodeName, const char* nodeNamespace)
     return false;
   }
   this->Internals->Participant = std::move(participant);
+  this->Internals->LinkState.start(std::chrono::steady_clock::now());
   this->Internals->Parameters =
     ros2vtk::wire::ParameterServer::create(*this->Internals->Participant, &error);
   if (!this->Internals->Parameters)
@@ -341,7 +346,100 @@ int vtkROS2NodeNode::Spin()
       handled += callback.second();
     }
   }
+  this->UpdateLinkState();
   return handled;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2NodeNode::UpdateLinkState()
+{
+  if (!this->Internals->Participant)
+  {
+    return; // a callback destroyed the node
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (this->Internals->LinkState.update(this->GetNumberOfDiscoveredParticipants(), now))
+  {
+    this->InvokeEvent(LinkStateChangedEvent, const_cast<char*>(this->GetLinkState()));
+  }
+  if (!this->Internals->Participant)
+  {
+    return; // an observer destroyed it
+  }
+  const double alone = this->Internals->LinkState.alone_report_due(now);
+  if (alone < 0)
+  {
+    return; // the usual case, checked without looking at the children
+  }
+  // Only a node that waits for or sends something (it has children: this spin's list) says so.
+  if (this->Internals->SpinChildren.empty())
+  {
+    return;
+  }
+  this->Internals->LinkState.alone_reported(now);
+  std::string topics;
+  for (int i = 0, n = this->GetNumberOfNodeReferences(SubscriberRole); i < n; ++i)
+  {
+    if (vtkROS2SceneNode* subscriber = this->GetNthNodeReference(SubscriberRole, i))
+    {
+      topics += (topics.empty() ? " (nothing can arrive on " : ", ") + subscriber->GetROS2NodeChildKey();
+    }
+  }
+  if (!topics.empty())
+  {
+    topics += ")";
+  }
+  vtkWarningMacro("ROS node " << this->Internals->Participant->fully_qualified_name() << " has seen no other ROS 2 "
+                  << "participant for " << static_cast<int>(alone) << " s" << topics << ": "
+                  << this->GetNoPeersAdvice());
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2NodeNode::GetNoPeersAdvice() const
+{
+  if (!this->Internals->Participant || this->GetNumberOfDiscoveredParticipants() > 0)
+  {
+    return std::string();
+  }
+  // The settings the participant was created with come from the environment (Create).
+  const auto options = ros2vtk::wire::ParticipantOptions::from_environment();
+  const int firstPort = 7400 + 250 * options.domain_id;
+  std::ostringstream advice;
+  advice << "it uses ROS_DOMAIN_ID=" << options.domain_id;
+  if (!options.discovery_servers.empty())
+  {
+    advice << " and the discovery server(s) ROS_DISCOVERY_SERVER=" << options.discovery_servers
+           << "; check that a server runs there, started with the id of its position in the list "
+              "(fastdds discovery -i 0 for the first), that no firewall drops its port";
+  }
+  else
+  {
+    switch (options.range)
+    {
+      case ros2vtk::wire::DiscoveryRange::Localhost:
+        advice << " and ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST, so it looks only on this computer";
+        break;
+      case ros2vtk::wire::DiscoveryRange::Off:
+        advice << " and ROS_AUTOMATIC_DISCOVERY_RANGE=OFF, so it looks for nobody";
+        break;
+      case ros2vtk::wire::DiscoveryRange::Subnet:
+        advice << " and ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET (multicast)";
+        break;
+    }
+    if (!options.static_peers.empty())
+    {
+      advice << ", with ROS_STATIC_PEERS=";
+      for (size_t i = 0; i < options.static_peers.size(); ++i)
+      {
+        advice << (i ? ";" : "") << options.static_peers[i];
+      }
+    }
+    advice << "; check that the other side uses the same domain and range, that multicast reaches "
+              "it (if the network drops multicast: ROS_STATIC_PEERS or ROS_DISCOVERY_SERVER)";
+  }
+  advice << ", and that no firewall drops UDP ports " << firstPort << "-" << firstPort + 249
+         << " (docs/networking.md)";
+  return advice.str();
 }
 
 //------------------------------------------------------------------------------

@@ -16,6 +16,8 @@
 
 #include "vtkROS2SceneNode.h"
 
+#include "vtkCommand.h" // for vtkCommand::UserEvent
+
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
@@ -242,7 +244,23 @@ public:
   int GetNumberOfDiscoveredParticipants() const;
   vtkTypeInt64 GetNumberOfDroppedParticipants() const;
   const char* GetLinkState() const;
+  /// What to check when this node finds nobody: the discovery settings it uses (domain, range,
+  /// static peers, discovery server) and the usual causes (docs/networking.md). "" while it sees
+  /// peers or before Create. A created node with children that still finds nobody after 5 s of
+  /// Spin warns with it (vtkWarningMacro, repeated at most once a minute while it lasts).
+  std::string GetNoPeersAdvice() const;
   ///@}
+
+  /// Fired by Spin (on the spinning thread, never on a DDS thread) when the link state changed
+  /// since the previous Spin: a peer participant found or lost, so GetLinkState() or
+  /// GetNumberOfDiscoveredParticipants() differ. Call data: the new GetLinkState() (const char*).
+  /// The participant wakes the spinner when it finds or drops a peer (GetWakeUpFileDescriptor),
+  /// so a loop waiting on it sees the change at once. A cut within the 20 s lease changes no
+  /// link state: it shows on subscribers (vtkROS2SubscriberNode::GetSecondsSinceLastMessage).
+  enum
+  {
+    LinkStateChangedEvent = vtkCommand::UserEvent + 50
+  };
 
   ///@{
   /// This ROS node's own parameters, served to `ros2 param` and rclpy clients (declared on
@@ -383,6 +401,8 @@ private:
   /// Clears the tf buffer when the clock changed source or went back since the last spin.
   void ClearTf2BufferOnClockJump();
   void CollectSpinChildren();
+  /// End of Spin: fires LinkStateChangedEvent on a change, warns when nobody was found.
+  void UpdateLinkState();
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -378,6 +378,14 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     multicast.port = kPortBase + kDomainGain * static_cast<uint32_t>(options.domain_id);
     qos.wire_protocol().builtin.initialPeersList.push_back(multicast);
   }
+  if (options.discovery_servers.find("TCPv") != std::string::npos)
+  {
+    // Fast DDS 3 (and 2.13+) read "TCPv4:[host]:port" here; 2.9's parser has no TCP, and a TCP
+    // discovery server would need TCP transports configured in code (docs/networking.md).
+    return set_error(error, "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
+                              "': TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
+                              "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT");
+  }
   if (!options.discovery_servers.empty())
   {
     // A discovery client: Fast DDS 2.9 reads ROS_DISCOVERY_SERVER itself when the participant
@@ -530,6 +538,14 @@ void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
       }
     }
     graph.remove_remote_participant(gid);
+  }
+  if (info.status == rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT ||
+      info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
+      info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+  {
+    // A peer found or lost: the spinner's next Spin reports the new link state (the node fires
+    // its LinkStateChangedEvent there, on the spinning thread, never here on a DDS thread).
+    wake_up.notify();
   }
 }
 
