@@ -36,6 +36,7 @@ public:
   // referenced ID -> nodes of this scene that gained a reference to it (a superset: a node that
   // dropped the reference since is visited for nothing, never missed).
   std::unordered_map<std::string, std::unordered_set<vtkROS2SceneNode*>> Referrers;
+  unsigned long NodesVersion = 0; // see GetNodesVersion
 
   std::string UniqueID(const std::string& className)
   {
@@ -93,6 +94,7 @@ bool vtkROS2Scene::AddNodeWithID(vtkROS2SceneNode* node, const std::string& id)
   }
   this->Internals->Nodes.emplace_back(node);
   this->Internals->ByID[id] = node;
+  ++this->Internals->NodesVersion;
   node->SetSceneAndID(this, id.c_str());
   this->Modified();
   this->InvokeEvent(NodeAddedEvent, node);
@@ -124,6 +126,7 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
   node->SetSceneAndID(nullptr, id.c_str(), this->Internals->RemovalReason);
   nodes.erase(std::next(last(node)).base());
   this->Internals->ByID.erase(id);
+  ++this->Internals->NodesVersion;
   auto& referrers = this->Internals->Referrers;
   std::vector<std::string> roles;
   node->GetNodeReferenceRoleList(roles);
@@ -198,6 +201,12 @@ vtkROS2SceneNode* vtkROS2Scene::GetNthNode(int n) const
     return nullptr;
   }
   return this->Internals->Nodes[static_cast<size_t>(n)];
+}
+
+//------------------------------------------------------------------------------
+unsigned long vtkROS2Scene::GetNodesVersion() const
+{
+  return this->Internals->NodesVersion;
 }
 
 //------------------------------------------------------------------------------

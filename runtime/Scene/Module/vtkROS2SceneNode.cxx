@@ -18,6 +18,18 @@ public:
   std::map<std::string, std::string> Attributes;
   std::map<std::string, std::vector<std::string>, std::less<>> References; // role -> IDs, in order
   std::string Scratch; // storage for the space-separated lists returned as const char*
+  // The last first reference resolved (GetNodeReference runs at every spin for every child):
+  // valid while the role pointer, this node's references, its scene and the scene's nodes are
+  // unchanged.
+  struct ResolvedReference
+  {
+    const char* Role = nullptr;
+    unsigned long ReferencesVersion = 0;
+    const vtkROS2Scene* Scene = nullptr;
+    unsigned long NodesVersion = 0;
+    vtkROS2SceneNode* Node = nullptr;
+  };
+  mutable ResolvedReference Resolved;
 };
 
 namespace
@@ -230,8 +242,24 @@ const char* vtkROS2SceneNode::GetNthNodeReferenceID(const char* role, int n) con
 //------------------------------------------------------------------------------
 vtkROS2SceneNode* vtkROS2SceneNode::GetNthNodeReference(const char* role, int n) const
 {
+  if (!this->Scene)
+  {
+    return nullptr;
+  }
+  auto& cached = this->Internals->Resolved;
+  const unsigned long nodesVersion = this->Scene->GetNodesVersion();
+  if (n == 0 && role && cached.Role == role && cached.ReferencesVersion == this->ReferencesVersion &&
+      cached.Scene == this->Scene && cached.NodesVersion == nodesVersion)
+  {
+    return cached.Node;
+  }
   const char* id = this->GetNthNodeReferenceID(role, n);
-  return (id && this->Scene) ? this->Scene->GetNodeByID(id) : nullptr;
+  vtkROS2SceneNode* node = id ? this->Scene->GetNodeByID(id) : nullptr;
+  if (n == 0 && role)
+  {
+    cached = { role, this->ReferencesVersion, this->Scene, nodesVersion, node };
+  }
+  return node;
 }
 
 //------------------------------------------------------------------------------

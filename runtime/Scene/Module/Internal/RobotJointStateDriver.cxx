@@ -75,6 +75,7 @@ bool RobotJointStateDriver::Load(const std::string& urdfXml, std::string* error)
   this->Kinematics = std::move(kinematics);
   this->ReportedUnknownJoints.clear();
   this->LinkStatus.clear();
+  this->Placed.clear();
   this->PosesDirty = true;
   this->PublishDue = true;
   this->StaticPublished = false;
@@ -85,6 +86,7 @@ void RobotJointStateDriver::Unload()
 {
   this->Kinematics.reset();
   this->LinkStatus.clear();
+  this->Placed.clear();
   this->LinkMatricesMillimetres.clear();
   this->PosesDirty = true;
 }
@@ -350,30 +352,44 @@ void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string
   }
   const char* placed = this->Kinematics->has_positions() ? LinkPoseStatus::JointPositions
                                                          : LinkPoseStatus::ZeroConfiguration;
-  for (const auto& entry : links)
+  this->Placed.resize(links.size());
+  for (size_t i = 0; i < links.size(); ++i)
   {
+    const auto& entry = links[i];
     vtkROS2TransformNode* node = entry.second;
-    auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
-    auto matrix = this->LinkMatricesMillimetres.find(entry.first);
+    PlacedLink& last = this->Placed[i];
+    if (last.Node != node)
+    {
+      last = { node, vtkROS2Tf2LookupNode::SafeDownCast(node), nullptr };
+    }
     if (!node)
     {
       continue;
     }
+    vtkROS2Tf2LookupNode* lookup = last.Lookup;
     const bool tracked = lookup && std::strcmp(lookup->GetLookupStatus(), "ok") == 0;
     const char* status = !lookup ? LinkPoseStatus::FixedFrame : tracked ? LinkPoseStatus::Tf : placed;
-    this->LinkStatus[entry.first] = status;
-    // The display draws a link whose lookup is not "ok" as untracked, unless it is posed from
-    // joint positions (the zero configuration stays "untracked": nothing arrived). Set before
-    // the matrix, whose change makes the display look again.
-    const char* current = lookup ? lookup->GetAttribute(LinkPoseAttribute) : nullptr;
-    if (lookup && (!current || std::strcmp(current, status) != 0))
+    if (status != last.Status)
     {
-      lookup->SetAttribute(LinkPoseAttribute, status);
+      this->LinkStatus[entry.first] = status;
+      // The display draws a link whose lookup is not "ok" as untracked, unless it is posed from
+      // joint positions (the zero configuration stays "untracked": nothing arrived). Set before
+      // the matrix, whose change makes the display look again.
+      const char* current = lookup ? lookup->GetAttribute(LinkPoseAttribute) : nullptr;
+      if (lookup && (!current || std::strcmp(current, status) != 0))
+      {
+        lookup->SetAttribute(LinkPoseAttribute, status);
+      }
+      last.Status = status;
     }
-    if (lookup && !tracked && matrix != this->LinkMatricesMillimetres.end())
+    if (lookup && !tracked)
     {
-      this->Scratch->DeepCopy(matrix->second.data()); // tf wins: only links tf does not place
-      *changed = node->SetMatrixTransformToParent(this->Scratch) || *changed;
+      auto matrix = this->LinkMatricesMillimetres.find(entry.first);
+      if (matrix != this->LinkMatricesMillimetres.end())
+      {
+        this->Scratch->DeepCopy(matrix->second.data()); // tf wins: only links tf does not place
+        *changed = node->SetMatrixTransformToParent(this->Scratch) || *changed;
+      }
     }
   }
 }

@@ -28,6 +28,7 @@ class vtkROS2Message;
 class vtkROS2NodeNode;
 class vtkROS2SubscriberNode;
 class vtkROS2TransformNode;
+class vtkROS2Tf2LookupNode;
 
 namespace ros2vtk {
 namespace robot {
@@ -109,6 +110,15 @@ private:
   std::map<std::string, std::vector<double>> LinkMatricesMillimetres; // cached, per fixed frame
   std::string PosesFixedFrame;
   std::map<std::string, std::string> LinkStatus;
+  // Per entry of the last `links`: the node, its lookup (downcast once) and the status last
+  // written, so a spin where nothing changed touches no map and no attribute.
+  struct PlacedLink
+  {
+    vtkROS2TransformNode* Node = nullptr;
+    vtkROS2Tf2LookupNode* Lookup = nullptr;
+    const char* Status = nullptr;
+  };
+  std::vector<PlacedLink> Placed;
   vtkNew<vtkMatrix4x4> Scratch;
 
   std::string Topic;
