@@ -430,6 +430,41 @@ def test_pose_array_shows_one_arrow_per_pose(ros2vtk, logic, vtk, peers):
         assert orange[row - 2:row + 3, col - 2:col + 3].any(), x
 
 
+def marker(ns, marker_id, kind, x, rgba, size=0.04):
+    return {'header': {'frame_id': 'base'}, 'ns': ns, 'id': marker_id, 'type': kind, 'action': 0,
+            'pose': {'position': {'x': x, 'y': 0.0, 'z': 0.0}, 'orientation': {'w': 1.0}},
+            'scale': {'x': size, 'y': size, 'z': size},
+            'color': dict(zip('rgba', rgba))}
+
+
+def test_marker_array_shows_filled_shapes_in_their_colours(ros2vtk, logic, vtk, peers):
+    """A MarkerArray subscriber (as the web app adds one) is drawn by the display manager as its
+    markers' shapes, filled, each in its own RGBA colour: a red 40 mm cube left of the origin and
+    a blue 40 mm sphere right of it (visualization_msgs/Marker CUBE 1, SPHERE 2), from rclpy."""
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('MarkerArray', '/display_markers')
+    message = {'markers': [marker('shapes', 1, 1, -0.05, (1.0, 0.0, 0.0, 1.0)),
+                           marker('shapes', 2, 2, 0.05, (0.0, 0.0, 1.0, 1.0))]}
+    peers('pub', '/display_markers', 'visualization_msgs/MarkerArray', json.dumps(message), '--count', '-1',
+          '--rate', '5')
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    actor = dm.GetActorForNode(subscriber)
+    assert actor is not None and actor.GetMapper().GetInput().GetNumberOfPolys() > 0
+    rgb = view.pixels('marker_array')
+    for kind, x in (('red', -50.0), ('blue', 50.0)):
+        found = mask(rgb, kind)
+        col, row = (int(round(v)) for v in view.display_point(x, 0, 0))
+        assert found[row - 2:row + 3, col - 2:col + 3].all(), (kind, x)
+        # Filled: a 40 mm cube seen from above is 40 x 40 px here (1 px per mm); the sphere's disc
+        # about 1257 px, of which the lit middle passes the colour mask. Points would be a few.
+        assert found.sum() > 600, (kind, found.sum())
+        cx, cy = centroid(found)
+        assert abs(cx - col) < 3 and abs(cy - row) < 3, (kind, cx, cy, col, row)
+
+
 # ------------------------------------------------------------------------------ slice views
 def test_slice_view_draws_the_intersection_of_a_model(ros2vtk, logic, vtk):
     volume = vtk.vtkImageData()

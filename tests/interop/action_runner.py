@@ -5,6 +5,7 @@
     action_runner.py goal test_msgs/action/Fibonacci /fibonacci '{order: 5}' --timeout 10
     action_runner.py goal ... --cancel-after 2      # asynchronous: SendGoal, cancel, WaitForGoal
     action_runner.py goals test_msgs/action/Fibonacci /fibonacci '{order: 5}' '{order: 8}' [--cancel-all-after 2]
+    action_runner.py goals ... --stagger 0.3 --cancel-before-first-after 2  # CancelGoalsBefore
                                                      # several goals in flight on one client, by goal id
     action_runner.py serve /fibonacci --step 0.1 --max-order 20 --count 1
 
@@ -91,11 +92,21 @@ def cmd_goals(args, logic, node) -> int:
     for goal_yaml in args.yaml:
         client.SendGoalYAML(goal_yaml)
         sent.append(client.GetGoalIdAsString())
+        if args.stagger:  # the next goal is sent once this one is accepted, and later by this much
+            ros2vtk.spin_until(logic, lambda: client.GetStatusAsString() not in ('waiting for server',
+                                                                                  'waiting for acceptance'),
+                               seconds=args.timeout)
+            ros2vtk.spin_until(logic, lambda: False, seconds=args.stagger)
     cancel_sent = None
-    if args.cancel_all_after:
-        ros2vtk.spin_until(logic, lambda: all(client.GetNumberOfFeedbacksById(g) >= args.cancel_all_after or
+    if args.cancel_all_after or args.cancel_before_first_after:
+        after = args.cancel_all_after or args.cancel_before_first_after
+        ros2vtk.spin_until(logic, lambda: all(client.GetNumberOfFeedbacksById(g) >= after or
                                               client.IsGoalDoneById(g) for g in sent), seconds=args.timeout)
-        cancel_sent = bool(client.CancelAllGoals())
+        if args.cancel_all_after:
+            cancel_sent = bool(client.CancelAllGoals())
+        else:  # every goal accepted at or before the time halfway between the first two stamps
+            ns = [client.GetGoalAcceptedSecById(g) * 10**9 + client.GetGoalAcceptedNanosecById(g) for g in sent[:2]]
+            cancel_sent = bool(client.CancelGoalsBefore(sum(ns) // 2 // 10**9, sum(ns) // 2 % 10**9))
     all_done = bool(client.WaitForAllGoals(args.timeout))
     goals = []
     for goal in sent:
@@ -105,6 +116,7 @@ def cmd_goals(args, logic, node) -> int:
                       'result_status': client.GetResultStatusById(goal), 'error': client.GetGoalErrorById(goal),
                       'feedback_count': client.GetNumberOfFeedbacksById(goal),
                       'last_feedback': yaml.safe_load(client.GetLastFeedbackYAMLById(goal)),
+                      'accepted_stamp': [client.GetGoalAcceptedSecById(goal), client.GetGoalAcceptedNanosecById(goal)],
                       **per_goal.get(goal, {'events': {}, 'feedbacks': []})})
     print(json.dumps({'goals': goals, 'all_done': all_done, 'cancel_sent': cancel_sent,
                       'cancel_return_code': client.GetLastCancelReturnCode(),
@@ -187,6 +199,11 @@ def main() -> int:
     goals.add_argument('--wait', type=float, default=15.0, help='seconds to wait for the server')
     goals.add_argument('--cancel-all-after', type=int, default=0,
                        help='CancelAllGoals once every goal had this many feedbacks')
+    goals.add_argument('--cancel-before-first-after', type=int, default=0,
+                       help='after this many feedbacks of every goal, CancelGoalsBefore(halfway between the '
+                            'first two acceptance stamps)')
+    goals.add_argument('--stagger', type=float, default=0.0,
+                       help='send each goal once the previous one is accepted, this many seconds later')
     serve = sub.add_parser('serve')
     serve.add_argument('name')
     serve.add_argument('--seconds', type=float, default=20.0)

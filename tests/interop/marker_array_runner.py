@@ -22,14 +22,24 @@ def snapshot(sub) -> dict:
         return {'count': sub.GetNumberOfMessages(), 'drawn': None, 'error': sub.GetLastConversionError()}
     index = drawn.GetCellData().GetArray('MarkerIndex')
     color = drawn.GetPointData().GetScalars()
-    colors = {}
+    colors, bounds, lines = {}, {}, {}
     for cell in range(drawn.GetNumberOfCells()):
         marker = int(index.GetValue(cell))
+        ids = drawn.GetCell(cell).GetPointIds()
         if marker not in colors:
-            point = drawn.GetCell(cell).GetPointId(0)
-            colors[marker] = [int(color.GetComponent(point, c)) for c in range(4)]
+            colors[marker] = [int(color.GetComponent(ids.GetId(0), c)) for c in range(4)]
+        if drawn.GetCellType(cell) in (3, 4):  # VTK_LINE, VTK_POLY_LINE
+            lines[marker] = lines.get(marker, 0) + 1
+        box = bounds.setdefault(marker, [float('inf'), float('-inf')] * 3)
+        for i in range(ids.GetNumberOfIds()):
+            p = drawn.GetPoint(ids.GetId(i))
+            for axis in range(3):
+                box[2 * axis] = min(box[2 * axis], p[axis])
+                box[2 * axis + 1] = max(box[2 * axis + 1], p[axis])
     return {'count': sub.GetNumberOfMessages(), 'markers': len(colors),
             'colors': [colors[k] for k in sorted(colors)], 'points': drawn.GetNumberOfPoints(),
+            'marker_bounds': [bounds[k] for k in sorted(bounds)],
+            'marker_lines': [lines.get(k, 0) for k in sorted(colors)],
             'lines': drawn.GetNumberOfLines(), 'bounds': list(drawn.GetBounds()),
             'scalars': color.GetName() if color else None, 'error': sub.GetLastConversionError()}
 

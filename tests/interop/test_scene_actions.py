@@ -149,6 +149,28 @@ def test_our_client_cancels_all_goals_at_once(ros):
     ros.stop(server)
 
 
+def test_our_client_cancels_the_goals_accepted_before_a_time(ros):
+    """CancelGoalsBefore sends a zero goal id and a stamp (rclcpp's async_cancel_goals_before):
+    rclpy's server cancels the goals it accepted at or before it. The stamp lies halfway between
+    the two goals' acceptance stamps (0.3 s apart): the first goal is canceled, the second runs
+    to the end. Not the first goal's stamp itself: rclpy answers SendGoal with a stamp taken just
+    before rcl_action_accept_new_goal stamps the goal again (a few µs later), so a cancel at the
+    answered stamp misses the goal on rclpy's own server too (checked with an rclpy client)."""
+    server = rclpy_server(ros, '/slow_before', '--step', '0.3', '--seconds', '40')
+    result = run_client(ros, 'goals', 'test_msgs/action/Fibonacci', '/slow_before', '{order: 20}', '{order: 9}',
+                        '--timeout', '20', '--stagger', '0.3', '--cancel-before-first-after', '2')
+    assert result['cancel_sent'] is True and result['cancel_return_code'] == 0, result  # ERROR_NONE
+    assert result['all_done'] is True
+    first, second = result['goals']
+    assert first['accepted_stamp'] < second['accepted_stamp'] and first['accepted_stamp'][0] > 0, result
+    assert first['status'] == 'canceled' and first['result_status'] == STATUS_CANCELED, first
+    partial = first['result']['sequence']
+    assert 3 <= len(partial) < 21 and partial == fibonacci_feedbacks(20)[-1][:len(partial)], first
+    assert second['status'] == 'succeeded' and second['result_status'] == STATUS_SUCCEEDED, second
+    assert second['result'] == {'sequence': fibonacci_feedbacks(9)[-1]}
+    ros.stop(server)
+
+
 # -- our server, rclpy ActionClient ------------------------------------------------------------
 
 def our_server(ros, *args: str):

@@ -77,3 +77,42 @@ def test_our_poly_data_to_rclpy_marker_array(ros):
     assert [(p['x'], p['y'], p['z']) for p in marker['points']] == [(0.0, 0.0, 0.0), (0.1, 0.0, 0.0), (0.1, 0.2, 0.0)]
     assert marker['color'] == {'r': 1.0, 'g': 0.0, 'b': 0.0, 'a': 1.0}
     assert marker['pose']['orientation']['w'] == 1.0
+
+
+def test_rclpy_list_markers_line_list_cube_list_sphere_list(ros):
+    """RViz's list types from one rclpy MarkerArray, in metres, each marker at the origin pose: a
+    LINE_LIST of 4 points is 2 separate segments (not one polyline), a CUBE_LIST a 0.1 m cube on
+    each of its 2 points, a SPHERE_LIST a 0.1 m sphere on each of its 3 points; a LINE_LIST of 3
+    points (odd) is refused with the reason, the others still drawn. Expected values are the
+    published values in mm (a shape's extent: its points +- half the scale)."""
+    def marker(ns, kind, points, rgb, size=0.1):
+        return {'header': {'frame_id': 'base'}, 'ns': ns, 'id': 1, 'type': kind, 'action': 0,
+                'pose': {'orientation': {'w': 1.0}}, 'scale': {'x': size, 'y': size, 'z': size},
+                'color': dict(zip('rgba', (*rgb, 1.0))),
+                'points': [{'x': float(x), 'y': float(y), 'z': float(z)} for x, y, z in points]}
+    LINE_LIST, CUBE_LIST, SPHERE_LIST = 5, 6, 7  # visualization_msgs/msg/Marker
+    markers = [marker('a_lines', LINE_LIST, [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 1, 1)], (1.0, 0.0, 0.0), 0.01),
+               marker('b_cubes', CUBE_LIST, [(0, 0, 0), (1, 2, 3)], (0.0, 1.0, 0.0)),
+               marker('c_spheres', SPHERE_LIST, [(-1, 0, 0), (1, 0, 0), (0, 0, 2)], (0.0, 0.0, 1.0)),
+               marker('d_odd', LINE_LIST, [(0, 0, 0), (1, 0, 0), (0, 1, 0)], (1.0, 1.0, 0.0))]
+    topic = '/scene_in/marker_lists'
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
+                      '--seconds', '20'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    peer = ros.peer('pub', topic, 'visualization_msgs/msg/MarkerArray', json.dumps({'markers': markers}),
+                    '--count', '-1', '--rate', '5')
+    code, out, err = ros.finish(ours, timeout=30)
+    ros.stop(peer)
+    assert code == 0, err
+    drawn = json.loads(out.splitlines()[-1])['snapshots'][0]
+    assert drawn['markers'] == 3 and drawn['colors'] == [RED, GREEN, BLUE], drawn
+    assert drawn['error'] == ("marker (ns 'd_odd', id 1): marker_to_poly_data: a line list needs an even "
+                              "number of points (pairs), not 3"), drawn
+    assert drawn['marker_lines'] == [2, 0, 0], drawn  # two segments; solids have no line cells
+    lines, cubes, spheres = drawn['marker_bounds']
+    close(lines, [0, 1000, 0, 1000, 0, 1000], tol=1e-3)
+    close(cubes, [-50, 1050, -50, 2050, -50, 3050], tol=1e-3)
+    close(spheres, [-1050, 1050, -50, 50, -50, 2050], tol=1e-3)
+    # The line list's 4 points and one cube per point (vtkCubeSource: 24 points each) are all there
+    # is besides the spheres.
+    assert drawn['points'] > 4 + 2 * CUBE_POINTS

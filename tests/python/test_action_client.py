@@ -70,3 +70,44 @@ def test_scene_file_round_trip(logic, ros2vtk, tmp_path):
         assert other.GetDefaultROS2Node().GetActionClientNodeByAction('/py_saved_action') is restored
     finally:
         other.GetScene().Clear()
+
+
+def test_finished_goals_are_forgotten_on_request_and_beyond_the_bound(logic, ros2vtk):
+    """Finished goals stay tracked by id until forgotten (ForgetGoalById, ForgetFinishedGoals) or
+    pushed out by MaximumFinishedGoals on a later spin; a running goal is never dropped. Goals
+    with no server time out, which finishes them without a peer."""
+    node = logic.GetDefaultROS2Node()
+    client = node.CreateAndAddActionClientNode('test_msgs/action/Fibonacci', '/py_forgetful')
+    assert client.GetMaximumFinishedGoals() == 100
+    client.SetTimeout(0.2)
+    ids = []
+    for order in (1, 2, 3, 4):
+        client.SendGoalYAML(f'{{order: {order}}}')
+        ids.append(client.GetGoalIdAsString())
+    assert client.WaitForAllGoals(5.0)
+    assert [client.GetNthGoalId(i) for i in range(client.GetNumberOfGoals())] == ids
+    assert not client.ForgetGoalById('0' * 32)  # unknown id: refused with an error
+    assert client.ForgetGoalById(ids[1]) and client.GetNumberOfGoals() == 3
+    assert client.GetStatusAsStringById(ids[1]) == 'idle'  # forgotten: reads as unknown
+    client.SetMaximumFinishedGoals(-1)  # refused
+    assert client.GetMaximumFinishedGoals() == 100
+    client.SetMaximumFinishedGoals(1)
+    client.SetTimeout(30.0)
+    client.SendGoalYAML('{order: 5}')  # waits for a server: running, not finished
+    running = client.GetGoalIdAsString()
+    node.Spin()  # the spin drops the oldest finished goals beyond the bound
+    assert [client.GetNthGoalId(i) for i in range(client.GetNumberOfGoals())] == [ids[3], running]
+    assert not client.ForgetGoalById(running)  # not finished
+    assert client.ForgetFinishedGoals() == 1 and client.GetNumberOfGoals() == 1
+    assert client.GetGoalIdAsString() == running and client.GetStatusAsString() == 'waiting for server'
+    client.SetMaximumFinishedGoals(0)
+    node.Spin()
+    assert client.GetNumberOfGoals() == 1  # the running goal stays
+
+
+def test_cancel_goals_before_refuses_a_time_that_is_not_one(logic):
+    client = logic.GetDefaultROS2Node().CreateAndAddActionClientNode('test_msgs/action/Fibonacci',
+                                                                    '/py_cancel_before')
+    assert not client.CancelGoalsBefore(-1, 0)
+    assert not client.CancelGoalsBefore(1, 1000000000)
+    assert client.CancelGoalsBefore(1, 999999999)  # written: nobody has to be there

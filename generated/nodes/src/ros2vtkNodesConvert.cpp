@@ -1093,6 +1093,9 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPol
     case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
     case ::ros2vtk::visualization_msgs::msg::Marker::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
     case ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::LINE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::LineList; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::CUBE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::CubeList; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::SphereList; break;
     case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
     default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
   }
@@ -1189,6 +1192,9 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, :
       case Element::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
       case Element::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
       case Element::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
+      case Element::LINE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::LineList; break;
+      case Element::CUBE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::CubeList; break;
+      case Element::SPHERE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::SphereList; break;
       case Element::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
       default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
     }

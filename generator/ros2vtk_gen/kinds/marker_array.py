@@ -8,12 +8,14 @@ plus `ns`, `id` and `action`; positions, sizes and points are lengths (all three
 from __future__ import annotations
 
 from .base import QUATERNION, XYZ_FLOAT64, Kind, Shape, prim
-from .marker import COLOR, POINTS
+from .marker import COLOR, POINTS, shapes_of
 
 
 def _view(rule, table):
+    element = table[rule.roles["sequence"].field.type.ros_name()]
     return {"state_class": "::ros2vtk::convert::MarkerSet",
-            "state_header": "ros2vtk/convert/Marker.hpp"}
+            "state_header": "ros2vtk/convert/Marker.hpp",
+            "shapes": shapes_of(element)}
 
 
 KIND = Kind(name="marker_array", vtk_types=("vtkPolyData",),

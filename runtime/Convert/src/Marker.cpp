@@ -31,6 +31,66 @@ namespace convert {
 
 using detail::fail;
 
+namespace {
+
+/// One solid shape of `shape` (Arrow, Cube, Sphere or Cylinder) of sizes sx, sy, sz (scene
+/// units), centred on the origin of the marker's frame as RViz draws it.
+void solid_shape(MarkerShape shape, double sx, double sy, double sz, vtkPolyData* out)
+{
+  if (shape == MarkerShape::Cube)
+  {
+    vtkNew<vtkCubeSource> source;
+    source->SetXLength(sx);
+    source->SetYLength(sy);
+    source->SetZLength(sz);
+    source->Update();
+    out->DeepCopy(source->GetOutput());
+    return;
+  }
+  // Unit shapes, then stretched: a sphere of diameter 1; a cylinder of diameter 1 and
+  // height 1 turned from VTK's y axis onto z; an arrow of length 1 along x whose head is
+  // 1 wide, with the shaft scale.y / scale.z of it.
+  vtkSmartPointer<vtkPolyDataAlgorithm> source;
+  vtkNew<vtkTransform> unit;
+  if (shape == MarkerShape::Sphere)
+  {
+    auto sphere = vtkSmartPointer<vtkSphereSource>::New();
+    sphere->SetRadius(0.5);
+    sphere->SetThetaResolution(24);
+    sphere->SetPhiResolution(17); // 11.25 degree steps: the equator is sampled
+    source = sphere;
+    unit->Scale(sx, sy, sz);
+  }
+  else if (shape == MarkerShape::Cylinder)
+  {
+    auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
+    cylinder->SetRadius(0.5);
+    cylinder->SetHeight(1.0);
+    cylinder->SetResolution(24);
+    source = cylinder;
+    unit->Scale(sx, sy, sz);
+    unit->RotateX(90.0);
+  }
+  else
+  {
+    auto arrow = vtkSmartPointer<vtkArrowSource>::New();
+    arrow->SetTipRadius(0.5);
+    arrow->SetTipLength(0.23);
+    arrow->SetShaftRadius(0.5 * sy / sz);
+    arrow->SetTipResolution(24);
+    arrow->SetShaftResolution(24);
+    source = arrow;
+    unit->Scale(sx, sz, sz);
+  }
+  vtkNew<vtkTransformPolyDataFilter> stretch;
+  stretch->SetInputConnection(source->GetOutputPort());
+  stretch->SetTransform(unit);
+  stretch->Update();
+  out->DeepCopy(stretch->GetOutput());
+}
+
+}
+
 bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData* poly_data,
   std::string* error)
 {
@@ -56,7 +116,8 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
         detail::number_text(norm) + ")");
   }
   const bool solid = marker.shape == MarkerShape::Arrow || marker.shape == MarkerShape::Cube ||
-    marker.shape == MarkerShape::Sphere || marker.shape == MarkerShape::Cylinder;
+    marker.shape == MarkerShape::Sphere || marker.shape == MarkerShape::Cylinder ||
+    marker.shape == MarkerShape::CubeList || marker.shape == MarkerShape::SphereList;
   if (solid && (marker.scale[0] <= 0 || marker.scale[1] <= 0 || marker.scale[2] <= 0))
   {
     return fail(error, where, "a solid marker needs a positive scale on x, y and z");
@@ -68,59 +129,61 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
   switch (marker.shape)
   {
     case MarkerShape::Cube:
-    {
-      vtkNew<vtkCubeSource> source;
-      source->SetXLength(sx);
-      source->SetYLength(sy);
-      source->SetZLength(sz);
-      source->Update();
-      shape->DeepCopy(source->GetOutput());
-      break;
-    }
     case MarkerShape::Sphere:
     case MarkerShape::Cylinder:
     case MarkerShape::Arrow:
+      solid_shape(marker.shape, sx, sy, sz, shape);
+      break;
+    case MarkerShape::CubeList:
+    case MarkerShape::SphereList:
     {
-      // Unit shapes, then stretched: a sphere of diameter 1; a cylinder of diameter 1 and
-      // height 1 turned from VTK's y axis onto z; an arrow of length 1 along x whose head is
-      // 1 wide, with the shaft scale.y / scale.z of it.
-      vtkSmartPointer<vtkPolyDataAlgorithm> source;
-      vtkNew<vtkTransform> unit;
-      if (marker.shape == MarkerShape::Sphere)
+      // One solid per point, each centred on its point (RViz's CUBE_LIST / SPHERE_LIST).
+      if (marker.points.size() % 3 != 0 || !detail::all_finite(marker.points.data(), static_cast<int>(marker.points.size())))
       {
-        auto sphere = vtkSmartPointer<vtkSphereSource>::New();
-        sphere->SetRadius(0.5);
-        sphere->SetThetaResolution(24);
-        sphere->SetPhiResolution(17); // 11.25 degree steps: the equator is sampled
-        source = sphere;
-        unit->Scale(sx, sy, sz);
+        return fail(error, where, "the points have a NaN or infinite coordinate");
       }
-      else if (marker.shape == MarkerShape::Cylinder)
+      vtkNew<vtkPolyData> unit;
+      solid_shape(marker.shape == MarkerShape::CubeList ? MarkerShape::Cube : MarkerShape::Sphere, sx, sy, sz, unit);
+      vtkNew<vtkAppendPolyData> all;
+      for (size_t i = 0; i + 2 < marker.points.size(); i += 3)
       {
-        auto cylinder = vtkSmartPointer<vtkCylinderSource>::New();
-        cylinder->SetRadius(0.5);
-        cylinder->SetHeight(1.0);
-        cylinder->SetResolution(24);
-        source = cylinder;
-        unit->Scale(sx, sy, sz);
-        unit->RotateX(90.0);
+        vtkNew<vtkTransform> at;
+        at->Translate(marker.points[i] * length_scale, marker.points[i + 1] * length_scale,
+          marker.points[i + 2] * length_scale);
+        vtkNew<vtkTransformPolyDataFilter> move;
+        move->SetInputData(unit);
+        move->SetTransform(at);
+        move->Update();
+        vtkNew<vtkPolyData> piece;
+        piece->DeepCopy(move->GetOutput());
+        all->AddInputData(piece);
       }
-      else
+      if (marker.points.empty())
       {
-        auto arrow = vtkSmartPointer<vtkArrowSource>::New();
-        arrow->SetTipRadius(0.5);
-        arrow->SetTipLength(0.23);
-        arrow->SetShaftRadius(0.5 * sy / sz);
-        arrow->SetTipResolution(24);
-        arrow->SetShaftResolution(24);
-        source = arrow;
-        unit->Scale(sx, sz, sz);
+        break; // no points: nothing drawn, as RViz
       }
-      vtkNew<vtkTransformPolyDataFilter> stretch;
-      stretch->SetInputConnection(source->GetOutputPort());
-      stretch->SetTransform(unit);
-      stretch->Update();
-      shape->DeepCopy(stretch->GetOutput());
+      all->Update();
+      shape->DeepCopy(all->GetOutput());
+      break;
+    }
+    case MarkerShape::LineList:
+    {
+      if ((marker.points.size() / 3) % 2 != 0)
+      {
+        return fail(error, where, "a line list needs an even number of points (pairs), not " +
+            std::to_string(marker.points.size() / 3));
+      }
+      if (!xyz_to_polyline(marker.points, length_scale, shape, error))
+      {
+        return false;
+      }
+      vtkNew<vtkCellArray> segments;
+      for (vtkIdType i = 0; i + 1 < shape->GetNumberOfPoints(); i += 2)
+      {
+        const vtkIdType pair[2] = { i, i + 1 };
+        segments->InsertNextCell(2, pair);
+      }
+      shape->SetLines(segments);
       break;
     }
     case MarkerShape::LineStrip:
@@ -144,7 +207,8 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
     }
     default:
       return fail(error, where, "this marker type is not supported (supported: arrow, cube, "
-                                "sphere, cylinder, line strip, points)");
+                                "sphere, cylinder, line strip, line list, cube list, sphere "
+                                "list, points)");
   }
 
   vtkNew<vtkTransform> pose;

@@ -3,7 +3,10 @@
 #include "SubscriberData.hpp"
 
 #include "vtkROS2SubscriberImageNode.h"
+#include "vtkROS2SubscriberMarkerArrayNode.h"
+#include "vtkROS2SubscriberMarkerNode.h"
 #include "vtkROS2SubscriberNode.h"
+#include "vtkROS2SubscriberPathPolylineNode.h"
 #include "vtkROS2SubscriberPointCloud2Node.h"
 #include "vtkROS2SubscriberPointCloudNode.h"
 #include "vtkROS2SubscriberPoseArrayNode.h"
@@ -37,6 +40,9 @@ const Getter kGetters[] = {
   { &LastOf<vtkROS2SubscriberPointCloudNode> },
   { &LastOf<vtkROS2SubscriberPointCloud2Node> },
   { &LastOf<vtkROS2SubscriberPoseArrayNode> },
+  { &LastOf<vtkROS2SubscriberMarkerNode> },
+  { &LastOf<vtkROS2SubscriberMarkerArrayNode> },
+  { &LastOf<vtkROS2SubscriberPathPolylineNode> },
 };
 
 }

@@ -1,4 +1,4 @@
-// ros2vtk — point-cloud subscribers as point actors (see the header). The actor's polydata is
+// ros2vtk — point-cloud and shape subscribers as actors (see the header). The actor's polydata is
 // its own (points shared with the node's newest message, one vertex cell per point).
 #include "vtkROS2PointCloudDisplayableManager.h"
 
@@ -47,7 +47,16 @@ void vtkROS2PointCloudDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtk
   auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
   vtkPolyData* cloud = mapper->GetInput();
   vtkObject* message = ros2vtk::display::LastMessageObject(node);
-  if (auto* polyData = vtkPolyData::SafeDownCast(message))
+  auto* polyData = vtkPolyData::SafeDownCast(message);
+  // Shapes (lines, polygons, strips: e.g. a MarkerArray drawn by its kind) are drawn as they
+  // are, surfaces lit, with their RGBA colours; a cloud gets one vertex per point.
+  const bool shapes = polyData &&
+    (polyData->GetNumberOfLines() + polyData->GetNumberOfPolys() + polyData->GetNumberOfStrips()) > 0;
+  if (shapes)
+  {
+    cloud->ShallowCopy(polyData);
+  }
+  else if (polyData)
   {
     cloud->Initialize();
     cloud->SetPoints(polyData->GetPoints());
@@ -59,15 +68,39 @@ void vtkROS2PointCloudDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtk
     cloud->SetPoints(points);
   }
   const vtkIdType count = cloud->GetPoints() ? cloud->GetNumberOfPoints() : 0;
-  vtkNew<vtkCellArray> vertices;
-  for (vtkIdType i = 0; i < count; ++i)
+  if (!shapes)
   {
-    vertices->InsertNextCell(1, &i);
+    vtkNew<vtkCellArray> vertices;
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      vertices->InsertNextCell(1, &i);
+    }
+    cloud->SetVerts(vertices);
   }
-  cloud->SetVerts(vertices);
   cloud->Modified();
-  mapper->SetScalarVisibility(cloud->GetPointData()->GetScalars() != nullptr);
-  if (vtkDataArray* scalars = cloud->GetPointData()->GetScalars())
+  if (shapes)
+  {
+    actor->GetProperty()->SetRepresentationToSurface();
+  }
+  else
+  {
+    actor->GetProperty()->SetRepresentationToPoints();
+  }
+  vtkDataArray* scalars = cloud->GetPointData()->GetScalars();
+  mapper->SetScalarVisibility(scalars != nullptr);
+  // Unsigned char RGB(A) scalars (marker colours) are colours; anything else goes through the
+  // lookup table over its range.
+  const bool colours = scalars && scalars->GetDataType() == VTK_UNSIGNED_CHAR &&
+    (scalars->GetNumberOfComponents() == 3 || scalars->GetNumberOfComponents() == 4);
+  if (colours)
+  {
+    mapper->SetColorModeToDirectScalars();
+  }
+  else
+  {
+    mapper->SetColorModeToDefault();
+  }
+  if (scalars && !colours)
   {
     mapper->SetScalarRange(scalars->GetRange());
   }

@@ -2,7 +2,9 @@
 // vtkPoints, e.g. sensor_msgs/PointCloud, or to vtkPolyData, e.g. PointCloud2 with its fields
 // as point data) as points at their pose ("transform" reference), coloured by their active
 // scalars when they have some, else in the node's colour attribute "ros2vtk.display.color"
-// ("r g b", 0..1; default light green).
+// ("r g b", 0..1; default light green). A vtkPolyData with lines, polygons or strips (e.g. a
+// visualization_msgs/MarkerArray subscriber: every kept marker as a shape) is drawn as it is,
+// surfaces filled, in its unsigned char RGBA "Color" scalars when it has them.
 #ifndef vtkROS2PointCloudDisplayableManager_h
 #define vtkROS2PointCloudDisplayableManager_h
 

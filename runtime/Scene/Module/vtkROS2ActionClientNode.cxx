@@ -14,6 +14,7 @@
 #include "ros2vtk/action_msgs/msg/goal_status.hpp"
 #include "ros2vtk/action_msgs/msg/goal_status_array.hpp"
 #include "ros2vtk/action_msgs/srv/cancel_goal.hpp"
+#include "ros2vtk/builtin_interfaces/msg/time.hpp"
 #include "ros2vtk/unique_identifier_msgs/msg/uuid.hpp"
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"
@@ -121,6 +122,8 @@ public:
     MessagePtr Result;       // X_Result
     int State = vtkROS2ActionClientNode::Idle;
     int ResultStatus = 0;
+    int32_t AcceptedSec = 0; // the server's stamp in the SendGoal response
+    uint32_t AcceptedNanosec = 0;
     int64_t GoalSequence = -1;
     int64_t ResultSequence = -1;
     Clock::time_point Deadline;
@@ -136,6 +139,7 @@ public:
   };
   std::vector<std::unique_ptr<GoalRecord>> Goals; // in the order sent
   GoalRecord* Current = nullptr;                  // the last goal sent (the single-goal API)
+  int MaximumFinishedGoals = 100;                 // finished goals kept beyond: oldest dropped
   std::string EventGoalId;                        // the goal of the event being invoked
 
   int LastCancelReturnCode = -1;
@@ -414,6 +418,27 @@ bool vtkROS2ActionClientNode::CancelAllGoals()
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::CancelGoalsBefore(int sec, unsigned int nanosec)
+{
+  if (!this->Internals->CancelClient)
+  {
+    vtkErrorMacro("CancelGoalsBefore: the client is not attached to a created ROS node");
+    return false;
+  }
+  if (sec < 0 || nanosec >= 1000000000u)
+  {
+    vtkErrorMacro("CancelGoalsBefore: " << sec << " s " << nanosec
+                                        << " ns is not a time (seconds >= 0, nanoseconds < 1e9)");
+    return false;
+  }
+  // Zero goal id and a stamp: every goal accepted at or before it (rcl_action_process_cancel_request).
+  ros2vtk::action_msgs::srv::CancelGoal_Request request;
+  request.goal_info.stamp.sec = sec;
+  request.goal_info.stamp.nanosec = nanosec;
+  return this->SendCancelRequest(&request);
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2ActionClientNode::SendCancelRequest(const void* request)
 {
   vtkInternals& internals = *this->Internals;
@@ -436,6 +461,8 @@ int vtkROS2ActionClientNode::ProcessAction()
   {
     return 0;
   }
+  // Goals that finished on earlier spins (their events are invoked) beyond the bound go first.
+  this->DropFinishedGoalsBeyondMaximum();
   // (event, goal id) in the order they happened; observers read GetLastEventGoalId.
   std::vector<std::pair<unsigned long, std::string>> events;
   const Clock::time_point now = Clock::now();
@@ -485,6 +512,10 @@ int vtkROS2ActionClientNode::ProcessAction()
     {
       goal->State = Accepted;
       ++internals.GoalsAccepted;
+      const auto& stamp =
+        member<ros2vtk::builtin_interfaces::msg::Time>(response.response.get(), internals.At.AcceptedStamp);
+      goal->AcceptedSec = stamp.sec;
+      goal->AcceptedNanosec = stamp.nanosec;
       auto request = NewMessage(*internals.Type->get_result()->request());
       member<UUID>(request.get(), internals.At.GetResultId) = goal->GoalId;
       // Asked at once (as rclcpp does with a result callback); the server answers when done.
@@ -913,6 +944,127 @@ const char* vtkROS2ActionClientNode::GetStatusAsStringById(const char* goalId) c
 bool vtkROS2ActionClientNode::IsGoalDoneById(const char* goalId) const
 {
   return StateDone(this->GetGoalStatusById(goalId));
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2ActionClientNode::ForgetGoalById(const char* goalId)
+{
+  vtkInternals& internals = *this->Internals;
+  auto& goals = internals.Goals;
+  for (auto it = goals.begin(); it != goals.end(); ++it)
+  {
+    if (goalId && (*it)->IdText == goalId)
+    {
+      if (!StateDone((*it)->State))
+      {
+        vtkErrorMacro("ForgetGoalById: goal " << goalId << " is not finished (status: " << StateText((*it)->State) << ")");
+        return false;
+      }
+      if (internals.Current == it->get())
+      {
+        internals.Current = nullptr;
+      }
+      goals.erase(it);
+      this->Modified();
+      return true;
+    }
+  }
+  vtkErrorMacro("ForgetGoalById: no goal " << (goalId ? goalId : "(null)") << " is tracked");
+  return false;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ActionClientNode::ForgetFinishedGoals()
+{
+  vtkInternals& internals = *this->Internals;
+  auto& goals = internals.Goals;
+  const size_t before = goals.size();
+  goals.erase(std::remove_if(goals.begin(), goals.end(),
+                [&internals](const std::unique_ptr<vtkInternals::GoalRecord>& goal) {
+                  if (!StateDone(goal->State))
+                  {
+                    return false;
+                  }
+                  if (internals.Current == goal.get())
+                  {
+                    internals.Current = nullptr;
+                  }
+                  return true;
+                }),
+    goals.end());
+  const int dropped = static_cast<int>(before - goals.size());
+  if (dropped)
+  {
+    this->Modified();
+  }
+  return dropped;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ActionClientNode::DropFinishedGoalsBeyondMaximum()
+{
+  vtkInternals& internals = *this->Internals;
+  auto& goals = internals.Goals;
+  size_t finished = 0;
+  for (const auto& goal : goals)
+  {
+    finished += StateDone(goal->State) ? 1 : 0;
+  }
+  const size_t keep = static_cast<size_t>(internals.MaximumFinishedGoals);
+  if (finished <= keep)
+  {
+    return;
+  }
+  size_t drop = finished - keep; // the oldest finished goals (Goals is in the order sent)
+  goals.erase(std::remove_if(goals.begin(), goals.end(),
+                [&](const std::unique_ptr<vtkInternals::GoalRecord>& goal) {
+                  if (drop == 0 || !StateDone(goal->State))
+                  {
+                    return false;
+                  }
+                  --drop;
+                  if (internals.Current == goal.get())
+                  {
+                    internals.Current = nullptr;
+                  }
+                  return true;
+                }),
+    goals.end());
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2ActionClientNode::SetMaximumFinishedGoals(int maximum)
+{
+  if (maximum < 0)
+  {
+    vtkErrorMacro("SetMaximumFinishedGoals: " << maximum << " is negative");
+    return;
+  }
+  if (this->Internals->MaximumFinishedGoals != maximum)
+  {
+    this->Internals->MaximumFinishedGoals = maximum;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ActionClientNode::GetMaximumFinishedGoals() const
+{
+  return this->Internals->MaximumFinishedGoals;
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2ActionClientNode::GetGoalAcceptedSecById(const char* goalId) const
+{
+  const auto* goal = this->Internals->Find(goalId);
+  return goal ? goal->AcceptedSec : 0;
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkROS2ActionClientNode::GetGoalAcceptedNanosecById(const char* goalId) const
+{
+  const auto* goal = this->Internals->Find(goalId);
+  return goal ? goal->AcceptedNanosec : 0u;
 }
 
 //------------------------------------------------------------------------------

@@ -100,6 +100,24 @@ public:
   /// Asks the server to cancel every goal it has (zero goal id and zero stamp, as rclcpp's
   /// async_cancel_all_goals): the goals of other clients of the action too. False when not attached.
   bool CancelAllGoals();
+  /// Asks the server to cancel every goal it accepted at or before the time `sec`.`nanosec`
+  /// on the server's clock (a zero goal id and this stamp, as rclcpp's async_cancel_goals_before):
+  /// the goals of other clients of the action too. A goal's acceptance time, as the server
+  /// stamped it: GetGoalAcceptedSecById / GetGoalAcceptedNanosecById. False when not attached.
+  bool CancelGoalsBefore(int sec, unsigned int nanosec);
+
+  ///@{
+  /// Finished goals (rejected, succeeded, canceled, aborted, timed out, failed) are kept, by id,
+  /// until forgotten: ForgetGoalById drops one (false when the id is unknown or the goal is not
+  /// finished), ForgetFinishedGoals drops every finished goal and returns how many. At most
+  /// MaximumFinishedGoals (default 100, 0: none) are kept at all: on each spin the oldest finished
+  /// goals beyond it are dropped, after their events were invoked (rclpy's client forgets a goal
+  /// as soon as its result arrived). Forgetting the last goal sent leaves the single-goal API idle.
+  bool ForgetGoalById(const char* goalId);
+  int ForgetFinishedGoals();
+  void SetMaximumFinishedGoals(int maximum);
+  int GetMaximumFinishedGoals() const;
+  ///@}
 
   /// For scripts: sends `goalYAML` and spins every ROS node of the scene until the result
   /// arrives, the goal is rejected or `timeoutSeconds` (<= 0: GetTimeout()) pass. Returns the
@@ -143,7 +161,7 @@ public:
   /// rejected, 2 unknown goal id, 3 goal terminated); -1 before one.
   int GetLastCancelReturnCode() const;
   ///@{
-  /// Every goal sent, in order (tracked until the node is removed), and each one's state by id
+  /// Every goal sent and not forgotten, in order (ForgetGoalById, MaximumFinishedGoals), and each one's state by id
   /// ("" or an unknown id: idle, blank YAML, 0). GetLastEventGoalId: inside an observer, the goal
   /// the event is about ("" for CancelResponseEvent).
   int GetNumberOfGoals() const;
@@ -158,6 +176,10 @@ public:
   std::string GetResultYAMLById(const char* goalId) const;
   std::string GetResultFieldById(const char* goalId, const char* path) const;
   int GetResultStatusById(const char* goalId) const;
+  /// The time the server stamped on the goal when it accepted it (the SendGoal response's
+  /// stamp; 0 before acceptance): CancelGoalsBefore takes it.
+  int GetGoalAcceptedSecById(const char* goalId) const;
+  unsigned int GetGoalAcceptedNanosecById(const char* goalId) const;
   ///@}
 
   /// Goals sent, goals accepted, results received.
@@ -189,6 +211,7 @@ private:
   bool SpinSceneUntil(double timeoutSeconds, bool (*done)(const vtkROS2ActionClientNode*));
   bool SendCancelRequest(const void* request);
   const char* CurrentGoalId() const;
+  void DropFinishedGoalsBeyondMaximum();
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -25,6 +25,9 @@ enum class MarkerShape
   Cylinder,  ///< along +z: diameters scale.x, y, height scale.z
   LineStrip, ///< `points` (in the marker's frame) joined by one polyline
   Points,    ///< `points` as vertices
+  LineList,  ///< `points` in pairs, each pair one line segment (an odd count is refused)
+  CubeList,  ///< a cube of side lengths scale.x, y, z centred on each of `points`
+  SphereList, ///< a sphere of diameters scale.x, y, z centred on each of `points`
   Unsupported,
 };
 
