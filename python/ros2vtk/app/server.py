@@ -28,6 +28,12 @@ FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
 SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
 
 
+def _is_closed_connection(context: dict) -> bool:
+    """An asyncio error context left by a browser tab that closed while a frame was being sent
+    to it (aiohttp's ClientConnectionResetError is a ConnectionResetError)."""
+    return isinstance(context.get('exception'), (ConnectionResetError, BrokenPipeError))
+
+
 def _short_names(class_names: str, prefix: str):
     """'vtkROS2PublisherStringNode ...' -> ['String', ...] (the names CreateAndAdd... takes)."""
     return [name[len(prefix):-len('Node')] for name in class_names.split()
@@ -147,8 +153,17 @@ class App:
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
+        c.on_error.add(self._browser_error)
         self.state.change('robot_selected', 'topic_selected')(lambda **_: self.refresh())
         self.state.change('topic_selected')(self._prefill_publish_yaml)
+
+    def _browser_error(self, message):
+        """A JavaScript error reported by the page: shown in the terminal as one line. Chromium's
+        'ResizeObserver loop' notice (a layout pass deferred while the panels resize) is not an
+        error and is dropped."""
+        text = str(message)
+        if 'ResizeObserver loop' not in text:
+            print(f'[app] browser error: {text}', file=sys.stderr, flush=True)
 
     def _prefill_publish_yaml(self, topic_selected='', **_):
         """Selecting a publisher of a mapped type fills the YAML box with its message's fields
@@ -406,7 +421,7 @@ class App:
         elapsed = max(now - then, 1e-6)
         s.status = (f'spin {(self.logic.GetNumberOfSpins() - spins) / elapsed:.0f}/s, '
                     f'{self.logic.GetMeanSpinDuration():.3f} ms mean, '
-                    f'{max(total - received, 0) / elapsed:.0f} msgs/s, '
+                    f'{max(total - received, 0) / elapsed:.0f} msgs/s to subscribers, '
                     f'{len(s.topics)} topic nodes, {len(s.robots)} robots, {len(self.errors)} errors')
         clock = scene_state.clock_text(self.node)
         if clock:
@@ -485,6 +500,11 @@ class App:
             self.slice_handlers[orientation] = widget.create_view_handler(
                 self.slices.areas[orientation], encoder='jpeg', target_fps=10)
         loop = asyncio.get_event_loop()
+
+        def quiet_closed_connections(loop, context):
+            if not _is_closed_connection(context):  # a closed tab is not a traceback in the terminal
+                loop.default_exception_handler(context)
+        loop.set_exception_handler(quiet_closed_connections)
         wake_up = self.logic.GetWakeUpFileDescriptor()
         if wake_up >= 0:
             loop.add_reader(wake_up, self._on_wake_up)
