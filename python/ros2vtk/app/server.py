@@ -14,6 +14,7 @@ loop, so VTK and the scene are only touched on that one thread.
 from __future__ import annotations
 
 import asyncio
+import logging
 import os
 import sys
 import time
@@ -32,6 +33,17 @@ def _is_closed_connection(context: dict) -> bool:
     """An asyncio error context left by a browser tab that closed while a frame was being sent
     to it (aiohttp's ClientConnectionResetError is a ConnectionResetError)."""
     return isinstance(context.get('exception'), (ConnectionResetError, BrokenPipeError))
+
+
+class _ClosedConnectionFilter(logging.Filter):
+    """wslink logs an RPC whose answer went to a closed tab as three error records: 'Exception
+    raised', the exception's repr and its traceback. The first says nothing the other two do not
+    and is dropped; the other two are dropped when the exception is a reset connection."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        text = record.getMessage()
+        return text != 'Exception raised' and 'ConnectionResetError' not in text \
+            and 'Cannot write to closing transport' not in text
 
 
 def _short_names(class_names: str, prefix: str):
@@ -554,6 +566,7 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
     if host not in ('127.0.0.1', 'localhost', '::1'):
         print(f'[app] WARNING: serving on {host}: anyone who reaches this port controls the ROS node', flush=True)
     xvfb = ensure_x_display()
+    logging.getLogger('wslink.protocol').addFilter(_ClosedConnectionFilter())
     app = App(logic, title=title, slices=slices)
     if on_app is not None:
         on_app(app)
