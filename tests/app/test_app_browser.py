@@ -6,6 +6,8 @@ in <build>/test-artifacts/app/:
   2. add a subscriber through the form while rclpy publishes -> its count rises, the YAML shows the text;
   3. add a YAML publisher and publish from the form -> the rclpy subscriber receives the text;
   4. save the scene, remove the nodes, reload the page, load the scene -> the same nodes are back.
+  5-8. the tf frame tree, a remote node's parameter, YAML on a mapped publisher, the icon font;
+  9. closing a tab leaves no traceback in the server's terminal.
 """
 from __future__ import annotations
 
@@ -376,3 +378,24 @@ def test_8_icon_font_is_served_by_the_app(world):
     family = driver.execute_script("return getComputedStyle(arguments[0], '::before').fontFamily", chevron)
     assert 'Material Design Icons' in family, family
     print(f'icon font faces {loaded}, from {sources}')
+
+
+def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world):
+    """A second tab streams the same view; closing it mid-stream is not an error: the server's
+    terminal shows no traceback (aiohttp's reset connection) and no 'JS Error' lines (Chromium's
+    benign ResizeObserver notice) over the whole session so far."""
+    driver = world['driver']
+    first = driver.current_window_handle
+    driver.switch_to.new_window('tab')
+    try:
+        driver.get(world['url'])
+        wait_for('the view streaming in the second tab', lambda: driver.find_elements(By.ID, 'view') and
+                 orange_pixels(view_png(driver)) > 200, seconds=60)
+    finally:
+        driver.close()
+        driver.switch_to.window(first)
+    time.sleep(3)  # frames sent to the closed tab fail now, and their tasks are collected
+    log = (ARTIFACTS / 'server.log').read_text()
+    assert 'Traceback' not in log and 'never retrieved' not in log, log[-3000:]
+    assert 'JS Error' not in log, log[-3000:]
+    assert orange_pixels(view_png(driver)) > 200  # the first tab still streams

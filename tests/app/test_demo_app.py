@@ -63,6 +63,18 @@ def phantom_pixels(png: bytes) -> dict[str, int]:
     return counts
 
 
+def pixels_on_the_border(png: bytes, inset: int = 2) -> int:
+    """Pixels of the view's border (a frame `inset` px in, off the JPEG's edge) that are not
+    the background: Slicer's gradient is blue-dominant (blue exceeds red and green by 35+), the
+    robot (grey, black, orange), the phantom's grey slices and its yellow outline are not. A
+    model cut by the view's edge leaves such pixels on the border."""
+    image = Image.open(io.BytesIO(png)).convert('RGB')
+    w, h = image.size
+    border = [(x, y) for x in range(inset, w - inset) for y in (inset, h - 1 - inset)] + \
+             [(x, y) for y in range(inset, h - inset) for x in (inset, w - 1 - inset)]
+    return sum(1 for x, y in border if (lambda r, g, b: b - max(r, g) < 20)(*image.getpixel((x, y))))
+
+
 def test_demo_serves_the_app_with_robot_and_phantom():
     ARTIFACTS.mkdir(parents=True, exist_ok=True)
     env = dict(os.environ, ROS_DOMAIN_ID=str(int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '185')) + 3),
@@ -139,6 +151,12 @@ def test_demo_serves_the_app_with_robot_and_phantom():
         finally:
             driver.save_screenshot(str(ARTIFACTS / 'demo-app-later.png'))
             print(f'needle (orange) pixels in the panes, last look: {cuts}')
+        # The whole robot and the phantom in the 3D view (framed again once the phantom is placed):
+        # nothing but background on the view's border.
+        view = driver.find_element(By.ID, 'view').screenshot_as_png
+        (ARTIFACTS / 'demo-view.png').write_bytes(view)
+        on_border = pixels_on_the_border(view)
+        assert on_border < 5, f'{on_border} pixels of a model on the 3D view\'s border (demo-view.png)'
         output, _ = demo.communicate(timeout=120)  # --duration 60 ends it
     finally:
         driver.quit()
@@ -149,5 +167,5 @@ def test_demo_serves_the_app_with_robot_and_phantom():
     assert demo.returncode == 0, output
     assert 'phantom placed at the needle tip' in output, output
     assert '[demo] stopped' in output, output
-    print(f'view: {orange} orange pixels; slice panes (gel/tissue/tumour pixels): {slices}, '
+    print(f'view: {orange} orange pixels, {on_border} model pixels on its border; slice panes (gel/tissue/tumour pixels): {slices}, '
           f'needle (orange) pixels {needle}')

@@ -1,7 +1,12 @@
 // ros2vtk — unit tests of GraphCache's bookkeeping (no DDS: endpoints are fed by hand as
 // discovery would): `ros2 topic list -t` style names and types, endpoint counts per side, and
-// the removal of everything a vanished participant owned (its endpoints share its GUID prefix).
+// the removal of everything a vanished participant owned (its endpoints share its GUID prefix),
+// and the writer -> node matching through ros_discovery_info announcements (what `ros2 topic info
+// -v` shows and the app's tf panel credits each frame to): a writer belongs to the node whose
+// announcement lists its gid among its writers, as rmw_dds_common's graph cache decides.
 #include "GraphCache.hpp"
+
+#include "ros2vtk/rmw_dds_common/msg/participant_entities_info.hpp"
 
 #include <gtest/gtest.h>
 
@@ -59,6 +64,108 @@ TEST(GraphCache, VanishedParticipantTakesItsEndpointsAlong)
   EXPECT_EQ(graph.count_endpoints("rt/chatter", true), 1u); // participant 4's writer stays
   graph.remove_remote_endpoint(gid(4, 1));
   EXPECT_TRUE(graph.topic_names_and_types().empty());
+}
+
+using ros2vtk::rmw_dds_common::msg::NodeEntitiesInfo;
+using ros2vtk::rmw_dds_common::msg::ParticipantEntitiesInfo;
+
+ros2vtk::rmw_dds_common::msg::Gid wire_gid(const Gid& g)
+{
+  ros2vtk::rmw_dds_common::msg::Gid result;
+  result.data = g;
+  return result;
+}
+
+Gid participant_gid(uint8_t participant)
+{
+  Gid g = gid(participant, 0);
+  g[14] = 0x01;
+  g[15] = 0xc1; // participant entity id 00 00 01 c1
+  return g;
+}
+
+/// One participant's announcement: each node (namespace, name) with its writer and reader gids.
+struct AnnouncedNode
+{
+  std::string ns;
+  std::string name;
+  std::vector<Gid> writers;
+  std::vector<Gid> readers;
+};
+
+ParticipantEntitiesInfo announcement(uint8_t participant, const std::vector<AnnouncedNode>& nodes)
+{
+  ParticipantEntitiesInfo info;
+  info.gid = wire_gid(participant_gid(participant));
+  for (const auto& node : nodes)
+  {
+    NodeEntitiesInfo entry;
+    entry.node_namespace = node.ns;
+    entry.node_name = node.name;
+    for (const auto& w : node.writers)
+      entry.writer_gid_seq.push_back(wire_gid(w));
+    for (const auto& r : node.readers)
+      entry.reader_gid_seq.push_back(wire_gid(r));
+    info.node_entities_info_seq.push_back(entry);
+  }
+  return info;
+}
+
+TEST(GraphCache, WriterIsMatchedToTheNodeWhoseAnnouncementListsIt)
+{
+  GraphCache graph;
+  // Participant 2 (e.g. robot_state_publisher's process) and 3 (an rclpy node in a namespace)
+  // both publish /tf_static; a writer of participant 4 has not been announced yet.
+  graph.add_remote_endpoint(gid(2, 1), true, "rt/tf_static", "tf2_msgs::msg::dds_::TFMessage_");
+  graph.add_remote_endpoint(gid(2, 2), true, "rt/tf", "tf2_msgs::msg::dds_::TFMessage_");
+  graph.add_remote_endpoint(gid(3, 1), true, "rt/tf_static", "tf2_msgs::msg::dds_::TFMessage_");
+  graph.add_remote_endpoint(gid(3, 2), false, "rt/tf_static", "tf2_msgs::msg::dds_::TFMessage_");
+  graph.add_remote_endpoint(gid(4, 1), true, "rt/tf_static", "tf2_msgs::msg::dds_::TFMessage_");
+  EXPECT_EQ(graph.node_of_writer(gid(2, 1)), ""); // before any announcement
+  EXPECT_EQ(graph.publisher_nodes("rt/tf_static"), std::vector<std::string>{ "?" });
+
+  graph.record_announcement(announcement(2, { { "/", "robot_state_publisher", { gid(2, 1), gid(2, 2) }, {} } }));
+  // Two nodes in one participant: each writer goes to the node listing it, in its namespace.
+  graph.record_announcement(announcement(
+    3, { { "/", "other", {}, { gid(3, 1) } }, { "/cameras", "camera_mount", { gid(3, 1) }, { gid(3, 2) } } }));
+  EXPECT_EQ(graph.node_of_writer(gid(2, 1)), "/robot_state_publisher");
+  EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "/robot_state_publisher");
+  EXPECT_EQ(graph.node_of_writer(gid(3, 1)), "/cameras/camera_mount"); // not "other", which lists it as a reader
+  EXPECT_EQ(graph.node_of_writer(gid(3, 2)), "");  // a reader is nobody's writer
+  EXPECT_EQ(graph.node_of_writer(gid(4, 1)), "");  // participant 4 has not announced
+  EXPECT_EQ(graph.node_of_writer(gid(9, 9)), "");  // unknown everywhere
+  EXPECT_EQ(graph.publisher_nodes("rt/tf_static"),
+            (std::vector<std::string>{ "/cameras/camera_mount", "/robot_state_publisher", "?" }));
+  EXPECT_EQ(graph.publisher_nodes("rt/tf"), std::vector<std::string>{ "/robot_state_publisher" });
+  const auto publishers = graph.remote_publishers("rt/tf_static");
+  ASSERT_EQ(publishers.size(), 3u); // by writer gid: participant 2's, 3's, 4's
+  EXPECT_EQ(publishers[0].node_name, "robot_state_publisher");
+  EXPECT_EQ(publishers[1].node_namespace, "/cameras");
+  EXPECT_EQ(publishers[1].node_name, "camera_mount");
+  EXPECT_EQ(publishers[2].node_name, "");
+}
+
+TEST(GraphCache, NewerAnnouncementReplacesTheParticipantsNodes)
+{
+  GraphCache graph;
+  graph.add_remote_endpoint(gid(2, 1), true, "rt/chatter", "std_msgs::msg::dds_::String_");
+  graph.add_remote_endpoint(gid(2, 2), true, "rt/chatter", "std_msgs::msg::dds_::String_");
+  graph.record_announcement(announcement(2, { { "/", "talker", { gid(2, 1) }, {} } }));
+  EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "");
+  // The participant creates a second node owning the second writer: its next announcement lists
+  // both nodes (rmw republishes the whole participant's state on every change).
+  graph.record_announcement(announcement(2, { { "/", "talker", { gid(2, 1) }, {} },
+                                              { "/ns", "second", { gid(2, 2) }, {} } }));
+  EXPECT_EQ(graph.node_of_writer(gid(2, 1)), "/talker");
+  EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "/ns/second");
+  // The first node is destroyed: its writer is no longer anybody's.
+  graph.record_announcement(announcement(2, { { "/ns", "second", { gid(2, 2) }, {} } }));
+  EXPECT_EQ(graph.node_of_writer(gid(2, 1)), "");
+  EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "/ns/second");
+  // The participant vanishes: its nodes go with it.
+  graph.remove_remote_participant(participant_gid(2));
+  EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "");
+  EXPECT_TRUE(graph.publisher_nodes("rt/chatter").empty());
 }
 
 } // namespace

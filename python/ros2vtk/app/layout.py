@@ -46,8 +46,11 @@ def build(app, title):
                                     slices[orientation] = rca.RemoteControlledArea(
                                         name=f'slice_{orientation}', display='image',
                                         style='width: 100%; height: 100%;', id=f'slice_{orientation}')
+                                    # Slicer's view colours, on a dark tab: readable over the image.
                                     html.Span(orientation, classes='text-caption',
-                                              style='position: absolute; left: 6px; top: 2px; color: '
+                                              style='position: absolute; left: 4px; top: 4px; padding: 0 6px; '
+                                                    'line-height: 18px; border-radius: 3px; '
+                                                    'background: rgba(0, 0, 0, 0.65); color: '
                                                     + {'axial': '#f44336', 'sagittal': '#ffeb3b',
                                                        'coronal': '#4caf50'}[orientation])
 

@@ -14,6 +14,7 @@ loop, so VTK and the scene are only touched on that one thread.
 from __future__ import annotations
 
 import asyncio
+import logging
 import os
 import sys
 import time
@@ -26,6 +27,23 @@ from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
 SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
+
+
+def _is_closed_connection(context: dict) -> bool:
+    """An asyncio error context left by a browser tab that closed while a frame was being sent
+    to it (aiohttp's ClientConnectionResetError is a ConnectionResetError)."""
+    return isinstance(context.get('exception'), (ConnectionResetError, BrokenPipeError))
+
+
+class _ClosedConnectionFilter(logging.Filter):
+    """wslink logs an RPC whose answer went to a closed tab as three error records: 'Exception
+    raised', the exception's repr and its traceback. The first says nothing the other two do not
+    and is dropped; the other two are dropped when the exception is a reset connection."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        text = record.getMessage()
+        return text != 'Exception raised' and 'ConnectionResetError' not in text \
+            and 'Cannot write to closing transport' not in text
 
 
 def _short_names(class_names: str, prefix: str):
@@ -147,8 +165,17 @@ class App:
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
+        c.on_error.add(self._browser_error)
         self.state.change('robot_selected', 'topic_selected')(lambda **_: self.refresh())
         self.state.change('topic_selected')(self._prefill_publish_yaml)
+
+    def _browser_error(self, message):
+        """A JavaScript error reported by the page: shown in the terminal as one line. Chromium's
+        'ResizeObserver loop' notice (a layout pass deferred while the panels resize) is not an
+        error and is dropped."""
+        text = str(message)
+        if 'ResizeObserver loop' not in text:
+            print(f'[app] browser error: {text}', file=sys.stderr, flush=True)
 
     def _prefill_publish_yaml(self, topic_selected='', **_):
         """Selecting a publisher of a mapped type fills the YAML box with its message's fields
@@ -406,7 +433,7 @@ class App:
         elapsed = max(now - then, 1e-6)
         s.status = (f'spin {(self.logic.GetNumberOfSpins() - spins) / elapsed:.0f}/s, '
                     f'{self.logic.GetMeanSpinDuration():.3f} ms mean, '
-                    f'{max(total - received, 0) / elapsed:.0f} msgs/s, '
+                    f'{max(total - received, 0) / elapsed:.0f} msgs/s to subscribers, '
                     f'{len(s.topics)} topic nodes, {len(s.robots)} robots, {len(self.errors)} errors')
         link = scene_state.link_text(self.node)
         if link:
@@ -488,15 +515,44 @@ class App:
             self.slice_handlers[orientation] = widget.create_view_handler(
                 self.slices.areas[orientation], encoder='jpeg', target_fps=10)
         loop = asyncio.get_event_loop()
+
+        def quiet_closed_connections(loop, context):
+            if not _is_closed_connection(context):  # a closed tab is not a traceback in the terminal
+                loop.default_exception_handler(context)
+        loop.set_exception_handler(quiet_closed_connections)
         wake_up = self.logic.GetWakeUpFileDescriptor()
         if wake_up >= 0:
             loop.add_reader(wake_up, self._on_wake_up)
         loop.create_task(self._spin_loop())
 
+    def release_windows(self):
+        """Frees the render windows' X resources while their X server is still there (the app's
+        Xvfb ends right after; a window finalized later, at the interpreter's exit, crashed it)."""
+        windows = [self.window] + (list(self.slices.windows.values()) if self.slices is not None else [])
+        for window in windows:
+            window.Finalize()
+
     # ------------------------------------------------------------------ layout
     def _build_layout(self, title):
         from .layout import build
         self.view_widget, self.slice_widgets = build(self, title)
+
+
+def _finish_pending_tasks() -> None:
+    """Cancels the tasks the stopped server left in its loop (the spin loop, trame-rca's frame
+    streams) and lets them end now: left pending, their coroutines were finalized at the
+    interpreter's exit, which crashed it (a segmentation fault after '[demo] stopped', 2 runs in 3)."""
+    try:
+        loop = asyncio.get_event_loop()
+    except RuntimeError:
+        return
+    if loop.is_running() or loop.is_closed():
+        return
+    pending = [task for task in asyncio.all_tasks(loop) if not task.done()]
+    for task in pending:
+        task.cancel()
+    if pending:
+        loop.run_until_complete(asyncio.gather(*pending, return_exceptions=True))
 
 
 def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
@@ -513,6 +569,7 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
     if host not in ('127.0.0.1', 'localhost', '::1'):
         print(f'[app] WARNING: serving on {host}: anyone who reaches this port controls the ROS node', flush=True)
     xvfb = ensure_x_display()
+    logging.getLogger('wslink.protocol').addFilter(_ClosedConnectionFilter())
     app = App(logic, title=title, slices=slices)
     if on_app is not None:
         on_app(app)
@@ -527,5 +584,8 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
         app.server.start(host=host, port=port, timeout=0, open_browser=open_browser, show_connection_info=False)
     finally:
         sys.argv = saved_argv
+        _finish_pending_tasks()
+        app.release_windows()
         if xvfb is not None:
             xvfb.terminate()
+            xvfb.wait()

@@ -158,37 +158,40 @@ void GraphCache::publish()
   writer_->write(&info);
 }
 
+void GraphCache::record_announcement(const ParticipantEntitiesInfo& info)
+{
+  Gid participant_gid{};
+  std::copy(info.gid.data.begin(), info.gid.data.end(), participant_gid.begin());
+  if (participant_gid == own_gid_)
+  {
+    return;
+  }
+  std::vector<NodeInfo> nodes;
+  for (const auto& node : info.node_entities_info_seq)
+  {
+    NodeInfo entry{ node.node_namespace, node.node_name, {} };
+    for (const auto& writer : node.writer_gid_seq)
+    {
+      Gid gid{};
+      std::copy(writer.data.begin(), writer.data.end(), gid.begin());
+      entry.writers.push_back(gid);
+    }
+    nodes.push_back(std::move(entry));
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  remote_nodes_[participant_gid] = std::move(nodes);
+}
+
 void GraphCache::on_data_available(dds::DataReader* reader)
 {
   ReceivedSample sample;
   dds::SampleInfo sample_info;
   while (reader->take_next_sample(&sample, &sample_info) == ReturnCode_t::RETCODE_OK)
   {
-    if (!sample_info.valid_data || !sample.valid)
+    if (sample_info.valid_data && sample.valid)
     {
-      continue;
+      record_announcement(*static_cast<const ParticipantEntitiesInfo*>(sample.message));
     }
-    const auto* info = static_cast<const ParticipantEntitiesInfo*>(sample.message);
-    Gid participant_gid{};
-    std::copy(info->gid.data.begin(), info->gid.data.end(), participant_gid.begin());
-    if (participant_gid == own_gid_)
-    {
-      continue;
-    }
-    std::vector<NodeInfo> nodes;
-    for (const auto& node : info->node_entities_info_seq)
-    {
-      NodeInfo entry{ node.node_namespace, node.node_name, {} };
-      for (const auto& writer : node.writer_gid_seq)
-      {
-        Gid gid{};
-        std::copy(writer.data.begin(), writer.data.end(), gid.begin());
-        entry.writers.push_back(gid);
-      }
-      nodes.push_back(std::move(entry));
-    }
-    std::lock_guard<std::mutex> lock(mutex_);
-    remote_nodes_[participant_gid] = std::move(nodes);
   }
   if (sample.message)
   {

@@ -26,6 +26,12 @@
 #include <vector>
 
 namespace ros2vtk {
+namespace rmw_dds_common {
+namespace msg {
+struct ParticipantEntitiesInfo;
+} // namespace msg
+} // namespace rmw_dds_common
+
 namespace wire {
 
 struct MessageTypeSupport;
@@ -71,6 +77,11 @@ public:
   std::vector<std::string> publisher_nodes(const std::string& dds_topic) const;
   /// The node whose announcement lists writer `gid` ("/ns/name"; ours for our writers), or "".
   std::string node_of_writer(const Gid& gid) const;
+
+  /// Records another participant's announcement: its nodes and the writers each lists,
+  /// replacing that participant's previous one (ours is ignored). on_data_available calls it for
+  /// every ros_discovery_info sample.
+  void record_announcement(const rmw_dds_common::msg::ParticipantEntitiesInfo& info);
 
   // DataReaderListener: ParticipantEntitiesInfo samples from other participants.
   void on_data_available(eprosima::fastdds::dds::DataReader* reader) override;
