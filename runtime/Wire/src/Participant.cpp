@@ -2,6 +2,7 @@
 // rmw_fastrtps configures its participants (WIRE_NOTES §2, §3).
 #include "ParticipantImpl.hpp"
 
+#include "GatedTransport.hpp"
 #include "LoopbackTransport.hpp"
 #include "PublisherImpl.hpp"
 #include "ShippedTypes.hpp"
@@ -407,17 +408,21 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   const bool loopback_only =
     (options.range == DiscoveryRange::Localhost || options.range == DiscoveryRange::Off) &&
     options.static_peers.empty() && options.discovery_servers.empty();
+  // Either way reception waits behind a gate until the participant is enabled, so that a peer's
+  // answer to our first announcement is not dropped (GatedTransport.hpp).
+  std::shared_ptr<GatedTransportDescriptor> transport;
   if (loopback_only)
   {
     // Sockets bound to 127.0.0.1 only and only loopback locators announced; peers' same-host
     // locators are reached through 127.0.0.1 (LoopbackTransport.hpp). Static peers name other
     // hosts on purpose, so they keep the plain transport.
-    qos.transport().user_transports.push_back(std::make_shared<LoopbackTransportDescriptor>(udp));
+    transport = std::make_shared<LoopbackTransportDescriptor>(udp);
   }
   else
   {
-    qos.transport().user_transports.push_back(udp);
+    transport = std::make_shared<GatedTransportDescriptor>(udp);
   }
+  qos.transport().user_transports.push_back(transport);
   qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
 
   use_no_intraprocess_delivery();
@@ -429,6 +434,7 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     return set_error(error, "Fast DDS could not create a participant on domain " +
                               std::to_string(options.domain_id));
   }
+  transport->gate->open(); // enabled: its receivers are registered (GatedTransport.hpp)
   publisher = participant->create_publisher(dds::PUBLISHER_QOS_DEFAULT);
   subscriber = participant->create_subscriber(dds::SUBSCRIBER_QOS_DEFAULT);
   if (!publisher || !subscriber)
