@@ -924,10 +924,12 @@ def markdown(results: dict) -> str:
             '- Runtime types: a type learnt from a description decodes through one generic table walk; nested '
             'messages (PoseArray, Path) cost 3-4x the generated code, flat data (PointCloud2, JointState) about '
             'the same.',
-            '- Discovery on a crowded graph is bimodal for our Fast DDS 2.9 participant: either as fast as an '
-            'rclpy node joining (~0.5 s for 50 nodes / 500 topics) or about 1.2 s later, when the first SPDP '
-            'exchange with the rclpy participant is missed and the next announcement is awaited (seen with 5 '
-            'nodes too: participant discovered after 10-20 ms or after ~1.35 s). Not fixed yet.',
+            '- Discovery on a crowded graph was bimodal for our Fast DDS 2.9 participant (~0.5 s for 50 nodes / '
+            '500 topics, or about 1.2 s later): Fast DDS sends a new participant\'s first announcement before it '
+            'registers its receivers, so the rclpy participant\'s immediate answer was dropped and its next '
+            'periodic announcement awaited. Our transports now hold what arrives until the participant is enabled '
+            '(runtime/Wire/src/GatedTransport.hpp; 10 joins by hand after the fix: 0.60-0.82 s). The new-participant '
+            'rows of the robot load from a parameter show the same effect (docs/robot-state.md, "Load time").',
             '- Frame time: with llvmpipe (software GL, no GPU on this machine) the render is ~98 % of the frame; '
             'spin and display update stay below 3 % with 10 robots.', '']
     if results.get('errors'):
