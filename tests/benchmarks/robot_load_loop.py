@@ -2,13 +2,14 @@
 """Our side of the robot load-time measurement (issue 15): loads a robot from a
 robot_state_publisher's `robot_description` parameter again and again, each time from nothing
 (a new robot node, hence a new parameter client: new DDS endpoints to discover), and prints one
-JSON line per load with the time of each phase, measured from the CreateAndAddRobotNode call:
+JSON line per load with the time of each phase, measured from the CreateAndAddRobotNode call
+(with --new-participant: from the creation of the participant):
 
     available  the remote node's get_parameters server matched (IsMonitoredNodeReady)
     loaded     the robot is loaded (IsLoaded)
     build      of which parsing and building the robot (GetLastLoadDuration)
 
-plus the parameter client's own trace (ParameterNode.GetTrace: requests, retries, replies).
+'at' is the wall-clock start, to line a load up with a packet capture.
 
     robot_load_loop.py [--loads N] [--rsp-node /robot_state_publisher] [--timeout S]
 
@@ -56,7 +57,6 @@ def main() -> int:
         marks['loaded'] = time.monotonic() - start if robot.IsLoaded() else None
         marks['build'] = robot.GetLastLoadDuration()
         marks['state'] = robot.GetRobotState()
-        marks['trace'] = parameters.GetTrace() if hasattr(parameters, 'GetTrace') else ''
         print(json.dumps(dict(marks, load=index, at=started_at)), flush=True)
         node.RemoveAndDeleteRobotNode('loop')
         logic.SpinFor(args.pause)
