@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 
 namespace ros2vtk {
 namespace wire {
@@ -31,6 +32,7 @@ public:
     std::vector<std::string> names;
     std::chrono::steady_clock::time_point sent;
     std::chrono::milliseconds patience; ///< asked again when unanswered this long
+    bool asked_again = false;           ///< still answerable: a late answer is used too
   };
   /// The first wait for an answer; doubled on each retry up to kLongestPatience.
   static constexpr std::chrono::milliseconds kFirstPatience{ 150 };
@@ -163,7 +165,8 @@ std::set<std::string> ParameterClient::process()
   // Discovery is not symmetric: our endpoints may match the server's before the server's reply
   // writer matched our reply reader, and rmw servers drop a reply to an unmatched client after
   // 100 ms. So an unanswered request is asked again, after 150 ms, then twice as long each time
-  // up to 1 s (get_parameters has no side effect; a late answer to the older request is ignored).
+  // up to 1 s (get_parameters has no side effect). A slow server's late answer to an earlier
+  // request is still used (kept for 30 s); the first answer settles the others of the same names.
   // It used to wait 300 ms before every first request: a third of a second on every robot load
   // from a parameter, although almost every first answer arrives (issue 15).
   const auto now = std::chrono::steady_clock::now();
@@ -172,15 +175,18 @@ std::set<std::string> ParameterClient::process()
     std::vector<std::pair<std::vector<std::string>, std::chrono::milliseconds>> retries;
     for (auto it = d.in_flight.begin(); it != d.in_flight.end();)
     {
-      if (now - it->second.sent > it->second.patience)
+      Impl::Request& request = it->second;
+      if (now - request.sent > std::chrono::seconds(30))
       {
-        retries.emplace_back(it->second.names, std::min(2 * it->second.patience, Impl::kLongestPatience));
         it = d.in_flight.erase(it);
+        continue;
       }
-      else
+      if (!request.asked_again && now - request.sent > request.patience)
       {
-        ++it;
+        request.asked_again = true;
+        retries.emplace_back(request.names, std::min(2 * request.patience, Impl::kLongestPatience));
       }
+      ++it;
     }
     for (const auto& [names, patience] : retries)
     {
@@ -201,6 +207,8 @@ std::set<std::string> ParameterClient::process()
     const auto* values = static_cast<const rcl::srv::GetParameters_Response*>(response.response.get());
     const std::vector<std::string> names = it->second.names;
     d.in_flight.erase(it);
+    for (auto other = d.in_flight.begin(); other != d.in_flight.end();) // asked again: answered now
+      other = other->second.names == names ? d.in_flight.erase(other) : std::next(other);
     // rclcpp and rclpy answer an empty list when any name is undeclared: ask for each name
     // alone then, so one missing parameter does not hide the others.
     if (values->values.size() != names.size())
