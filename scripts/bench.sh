@@ -6,7 +6,7 @@
 # Benchmarks measure and report; they never fail on a time. Not part of scripts/test.sh.
 #   scripts/bench.sh                    # everything
 #   scripts/bench.sh --quick            # tiny sample counts: a smoke run of the driver
-#   scripts/bench.sh --only spin,round_trip,throughput,robot_load,generator,services,igtl,network,sender_split  (network: root)
+#   scripts/bench.sh --only spin,round_trip,throughput,robot_load,robot_load_traffic,generator,services,igtl,network,sender_split  (network: root)
 # ROS2VTK_BENCH_NO_BUILD=1 skips set-up and build (the build must be current).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -260,6 +260,41 @@ TEST_F(MeshResolution, UpperCaseExtensionsAndFileUrisLoadUnusableFilesSayWhy)
   }
 }
 
+// `package:///meshes/x.stl` names no package (exporters write it with an empty package name):
+// taken relative to the description, as yourdfpy does; resource_retriever refuses it.
+TEST_F(MeshResolution, PackageUriWithoutAPackageNameIsRelativeToTheDescription)
+{
+  make_package("robots/arm", "arm");
+  const fs::path in_package = stl("robots/arm/meshes/base.STL");
+  const fs::path beside_urdf = stl("robots/arm/urdf/parts/tool.stl");
+  const fs::path urdf = write("robots/arm/urdf/arm.urdf",
+                              chain_with_meshes({"package:///meshes/base.STL", "package:///parts/tool.stl",
+                                                 "package:///meshes/ghost.stl"}));
+  RobotLoader loader{ResourceResolver()};
+  RobotVisuals robot;
+  std::string error;
+  ASSERT_TRUE(loader.load_file(urdf.string(), &robot, &error)) << error;
+  EXPECT_EQ(meshes_loaded(robot), 2u) << robot.summary();
+  EXPECT_EQ(robot.link("l0")->visuals[0].mesh_path, in_package.string()); // in the URDF's package
+  EXPECT_EQ(robot.link("l1")->visuals[0].mesh_path, beside_urdf.string()); // beside the URDF
+  const std::string warning = robot.link("l2")->warnings.at(0);
+  EXPECT_TRUE(contains(warning, "could not load mesh 'package:///meshes/ghost.stl': no package name after "
+                                "package://, so 'meshes/ghost.stl' was taken relative to the description: not in "
+                                "the package of '" + urdf.string() + "' ('" +
+                                (root_ / "robots/arm/meshes/ghost.stl").string() + "'); no such file"))
+    << warning;
+
+  // From the network: the search path, as for any relative mesh path.
+  ResourceResolver resolver;
+  resolver.add_search_path((root_ / "robots/arm").string());
+  RobotLoader network(resolver);
+  RobotVisuals received;
+  ASSERT_TRUE(network.load_xml(chain_with_meshes({"package:///meshes/base.STL"}), RobotLoadOptions(), &received,
+                               &error)) << error;
+  EXPECT_EQ(meshes_loaded(received), 1u) << received.summary();
+  EXPECT_EQ(received.link("l0")->visuals[0].mesh_path, in_package.string());
+}
+
 TEST_F(MeshResolution, MeshFileThatCannotBeOpenedSaysWhy)
 {
   // A file this process may not read: mode 000 for a normal user; root reads those, so then a

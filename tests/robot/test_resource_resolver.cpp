@@ -235,9 +235,10 @@ TEST(ResourceResolver, RefusesEmptyAndIncompleteUris)
   auto found = resolver.resolve("package://ros2vtk_surgical_arm", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("no file path"), std::string::npos) << found.error;
-  found = resolver.resolve("package:///meshes/a.stl", "");
+  found = resolver.resolve("package:///", "");
   ASSERT_FALSE(found.ok);
-  EXPECT_NE(found.error.find("no package name"), std::string::npos) << found.error;
+  EXPECT_NE(found.error.find("no package name and no file path after package://"), std::string::npos)
+    << found.error;
   // A folder named like the package is a package in a search path: "." and ".." are not names.
   found = resolver.resolve("package://../surgical_arm/meshes/base.stl", "");
   ASSERT_FALSE(found.ok);

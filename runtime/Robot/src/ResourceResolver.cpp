@@ -118,8 +118,8 @@ void ResourceResolver::add_allowed_root(const std::string& folder)
 
 std::string ResourceResolver::supported_forms()
 {
-  return "package://<package>/<path>, file:///<absolute path>, an absolute path, or a path relative "
-         "to the URDF file's folder";
+  return "package://<package>/<path>, package:///<path> (relative to the description), "
+         "file:///<absolute path>, an absolute path, or a path relative to the URDF file's folder";
 }
 
 const PackageTree& ResourceResolver::crawled(const std::string& folder) const
@@ -356,6 +356,46 @@ ResolvedResource ResourceResolver::resolve_relative(const std::string& uri, cons
   return result;
 }
 
+// `package:///meshes/x.stl` names no package (exporters write it when their package name is
+// left empty). resource_retriever refuses it; yourdfpy and the other Python loaders take the path
+// relative to the description. So do we: inside the package holding the URDF file, then as a
+// relative mesh path (the base folder, the search paths), with the same root check.
+ResolvedResource ResourceResolver::resolve_without_package(const std::string& uri, const std::string& relative,
+                                                           const std::string& base_folder) const
+{
+  ResolvedResource result;
+  const std::string why = "no package name after package://, so '" + relative +
+                          "' was taken relative to the description";
+  if (relative.empty())
+  {
+    result.error = "could not resolve " + in_quotes(uri) + ": no package name and no file path after package://";
+    return result;
+  }
+  std::vector<std::string> missing;
+  for (auto above = urdf_files_.rbegin(); above != urdf_files_.rend(); ++above) // the latest file first
+  {
+    const std::string package_folder = above->nearest();
+    if (package_folder.empty())
+      continue;
+    const ResolvedResource checked = check_file(fs::path(package_folder) / relative, base_folder, package_folder);
+    if (checked.ok)
+      return checked;
+    if (checked.error.compare(0, 13, "no such file ") != 0)
+    {
+      result.error = "could not resolve " + in_quotes(uri) + ": " + why + ": " + checked.error;
+      return result;
+    }
+    missing.push_back("the package of " + in_quotes(above->file()) + " (" +
+                      in_quotes((fs::path(package_folder) / relative).lexically_normal().string()) + ")");
+  }
+  const ResolvedResource plain = resolve_relative(relative, base_folder);
+  if (plain.ok)
+    return plain;
+  result.error = "could not resolve " + in_quotes(uri) + ": " + why + ": " +
+                 (missing.empty() ? std::string() : "not in " + join(missing, ", ") + "; ") + plain.error;
+  return result;
+}
+
 ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::string& base_folder) const
 {
   ResolvedResource result;
@@ -379,7 +419,7 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
     const std::string package = rest.substr(0, slash);
     const std::string relative = slash == std::string::npos ? std::string() : rest.substr(slash + 1);
     if (package.empty())
-      return fail("no package name after package://");
+      return resolve_without_package(uri, relative, base_folder);
     // The folder-name rule below takes <search path>/<package>: "." and ".." would name the
     // search path itself or its parent.
     if (package == "." || package == "..")

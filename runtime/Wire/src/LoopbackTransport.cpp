@@ -1,8 +1,6 @@
 // ros2vtk — loopback-only UDPv4 transport for LOCALHOST discovery (see LoopbackTransport.hpp).
 #include "LoopbackTransport.hpp"
 
-#include <fastdds/rtps/transport/TransportReceiverInterface.h>
-#include <fastdds/rtps/network/SenderResource.h>
 #include <fastrtps/utils/IPFinder.h>
 #include <fastrtps/utils/IPLocator.h>
 
@@ -45,7 +43,7 @@ bool is_address_of_this_host(const rtps::Locator_t& locator)
 
 LoopbackTransportDescriptor::LoopbackTransportDescriptor(
   std::shared_ptr<fdrtps::UDPv4TransportDescriptor> udp)
-  : ChainingTransportDescriptor(loopback_only(std::move(udp)))
+  : GatedTransportDescriptor(loopback_only(std::move(udp)))
 {
 }
 
@@ -55,7 +53,7 @@ fdrtps::TransportInterface* LoopbackTransportDescriptor::create_transport() cons
 }
 
 LoopbackTransport::LoopbackTransport(const LoopbackTransportDescriptor& descriptor)
-  : ChainingTransport(descriptor)
+  : GatedTransport(descriptor)
   , descriptor_(descriptor)
 {
 }
@@ -78,22 +76,6 @@ bool LoopbackTransport::transform_remote_locator(const rtps::Locator_t& remote_l
   rtps::Locator_t loopback = remote_locator;
   rtps::IPLocator::setIPv4(loopback, 127, 0, 0, 1);
   return low_level_transport_->transform_remote_locator(loopback, result_locator);
-}
-
-bool LoopbackTransport::send(rtps::SenderResource* low_sender_resource, const rtps::octet* send_buffer,
-                             uint32_t send_buffer_size, rtps::LocatorsIterator* destination_locators_begin,
-                             rtps::LocatorsIterator* destination_locators_end,
-                             const std::chrono::steady_clock::time_point& timeout)
-{
-  return low_sender_resource->send(send_buffer, send_buffer_size, destination_locators_begin,
-                                   destination_locators_end, timeout);
-}
-
-void LoopbackTransport::receive(fdrtps::TransportReceiverInterface* next_receiver,
-                                const rtps::octet* receive_buffer, uint32_t receive_buffer_size,
-                                const rtps::Locator_t& local_locator, const rtps::Locator_t& remote_locator)
-{
-  next_receiver->OnDataReceived(receive_buffer, receive_buffer_size, local_locator, remote_locator);
 }
 
 fdrtps::TransportDescriptorInterface* LoopbackTransport::get_configuration()

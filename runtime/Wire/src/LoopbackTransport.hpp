@@ -7,11 +7,12 @@
 // mode announces), so it would never reach such a peer. This chaining transport keeps the
 // whitelist and maps those same-host locators to 127.0.0.1 (same port; the peer listens on all
 // interfaces); locators of other hosts and multicast are refused, so nothing leaves the host.
+// Reception waits for the participant like every transport of ours (GatedTransport.hpp).
 #ifndef ros2vtk_wire_LoopbackTransport_hpp
 #define ros2vtk_wire_LoopbackTransport_hpp
 
-#include <fastdds/rtps/transport/ChainingTransport.h>
-#include <fastdds/rtps/transport/ChainingTransportDescriptor.h>
+#include "GatedTransport.hpp"
+
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 
 #include <memory>
@@ -21,7 +22,7 @@ namespace wire {
 
 /// Descriptor of a loopback-only UDPv4 transport; `udp` is configured by the caller (its
 /// whitelist is replaced by 127.0.0.1).
-struct LoopbackTransportDescriptor : public eprosima::fastdds::rtps::ChainingTransportDescriptor
+struct LoopbackTransportDescriptor : public GatedTransportDescriptor
 {
   explicit LoopbackTransportDescriptor(
     std::shared_ptr<eprosima::fastdds::rtps::UDPv4TransportDescriptor> udp);
@@ -30,24 +31,13 @@ struct LoopbackTransportDescriptor : public eprosima::fastdds::rtps::ChainingTra
 };
 
 /// Passes data through unchanged; only remote locators are rewritten (see the file comment).
-class LoopbackTransport : public eprosima::fastdds::rtps::ChainingTransport
+class LoopbackTransport : public GatedTransport
 {
 public:
   explicit LoopbackTransport(const LoopbackTransportDescriptor& descriptor);
 
   bool transform_remote_locator(const eprosima::fastrtps::rtps::Locator_t& remote_locator,
                                 eprosima::fastrtps::rtps::Locator_t& result_locator) const override;
-
-  bool send(eprosima::fastrtps::rtps::SenderResource* low_sender_resource,
-            const eprosima::fastrtps::rtps::octet* send_buffer, uint32_t send_buffer_size,
-            eprosima::fastrtps::rtps::LocatorsIterator* destination_locators_begin,
-            eprosima::fastrtps::rtps::LocatorsIterator* destination_locators_end,
-            const std::chrono::steady_clock::time_point& timeout) override;
-
-  void receive(eprosima::fastdds::rtps::TransportReceiverInterface* next_receiver,
-               const eprosima::fastrtps::rtps::octet* receive_buffer, uint32_t receive_buffer_size,
-               const eprosima::fastrtps::rtps::Locator_t& local_locator,
-               const eprosima::fastrtps::rtps::Locator_t& remote_locator) override;
 
   eprosima::fastdds::rtps::TransportDescriptorInterface* get_configuration() override;
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 
 namespace ros2vtk {
 namespace wire {
@@ -30,30 +31,33 @@ public:
   {
     std::vector<std::string> names;
     std::chrono::steady_clock::time_point sent;
+    std::chrono::milliseconds patience; ///< asked again when unanswered this long
+    bool asked_again = false;           ///< still answerable: a late answer is used too
   };
+  /// The first wait for an answer; doubled on each retry up to kLongestPatience.
+  static constexpr std::chrono::milliseconds kFirstPatience{ 150 };
+  static constexpr std::chrono::milliseconds kLongestPatience{ 1000 };
   std::map<int64_t, Request> in_flight; ///< request sequence -> what was asked, when
-  std::chrono::steady_clock::time_point available_since;
   uint64_t servers_seen = 0; ///< servers_matched_total() when the values were last fetched
 
-  /// Everything is fetched again, after the settling delay: a (new) server is there.
+  /// Everything is fetched again: a (new) server is there.
   void refetch_all(uint64_t servers)
   {
     state = State::Ready;
     to_fetch = watched;
     in_flight.clear();
     servers_seen = servers;
-    available_since = std::chrono::steady_clock::now();
   }
 
   /// Sends a get_parameters request; false when DDS refused it (asked again later).
-  bool ask(const std::vector<std::string>& names)
+  bool ask(const std::vector<std::string>& names, std::chrono::milliseconds patience = kFirstPatience)
   {
     rcl::srv::GetParameters_Request request;
     request.names = names;
     const int64_t sequence = get_client->send_request(&request);
     if (sequence < 0)
       return false;
-    in_flight[sequence] = Request{ names, std::chrono::steady_clock::now() };
+    in_flight[sequence] = Request{ names, std::chrono::steady_clock::now(), patience };
     return true;
   }
   std::map<std::string, rcl::msg::ParameterValue> values;
@@ -160,26 +164,35 @@ std::set<std::string> ParameterClient::process()
 
   // Discovery is not symmetric: our endpoints may match the server's before the server's reply
   // writer matched our reply reader, and rmw servers drop a reply to an unmatched client after
-  // 100 ms. So wait a moment before the first request, and ask again for unanswered ones.
+  // 100 ms. So an unanswered request is asked again, after 150 ms, then twice as long each time
+  // up to 1 s (get_parameters has no side effect). A slow server's late answer to an earlier
+  // request is still used (kept for 30 s); the first answer settles the others of the same names.
+  // It used to wait 300 ms before every first request: a third of a second on every robot load
+  // from a parameter, although almost every first answer arrives (issue 15).
   const auto now = std::chrono::steady_clock::now();
-  const bool settled = now - d.available_since > std::chrono::milliseconds(300);
-  if (d.state == State::Ready && settled)
+  if (d.state == State::Ready)
   {
-    std::vector<std::vector<std::string>> retries;
+    std::vector<std::pair<std::vector<std::string>, std::chrono::milliseconds>> retries;
     for (auto it = d.in_flight.begin(); it != d.in_flight.end();)
     {
-      if (now - it->second.sent > std::chrono::seconds(1))
+      Impl::Request& request = it->second;
+      if (now - request.sent > std::chrono::seconds(30))
       {
-        retries.push_back(it->second.names);
         it = d.in_flight.erase(it);
+        continue;
       }
-      else
+      if (!request.asked_again && now - request.sent > request.patience)
       {
-        ++it;
+        request.asked_again = true;
+        retries.emplace_back(request.names, std::min(2 * request.patience, Impl::kLongestPatience));
       }
+      ++it;
     }
-    for (const auto& names : retries)
-      d.ask(names);
+    for (const auto& [names, patience] : retries)
+    {
+      if (!d.ask(names, patience))
+        d.to_fetch.insert(names.begin(), names.end()); // DDS refused: asked with the next ones
+    }
     if (!d.to_fetch.empty() && d.ask(std::vector<std::string>(d.to_fetch.begin(), d.to_fetch.end())))
       d.to_fetch.clear();
   }
@@ -194,6 +207,8 @@ std::set<std::string> ParameterClient::process()
     const auto* values = static_cast<const rcl::srv::GetParameters_Response*>(response.response.get());
     const std::vector<std::string> names = it->second.names;
     d.in_flight.erase(it);
+    for (auto other = d.in_flight.begin(); other != d.in_flight.end();) // asked again: answered now
+      other = other->second.names == names ? d.in_flight.erase(other) : std::next(other);
     // rclcpp and rclpy answer an empty list when any name is undeclared: ask for each name
     // alone then, so one missing parameter does not hide the others.
     if (values->values.size() != names.size())

@@ -2,8 +2,8 @@
 // rmw_fastrtps configures its participants (WIRE_NOTES §2, §3).
 #include "ParticipantImpl.hpp"
 
+#include "GatedTransport.hpp"
 #include "LoopbackTransport.hpp"
-#include "StartGateTransport.hpp"
 #include "PublisherImpl.hpp"
 #include "ShippedTypes.hpp"
 #include "SubscriptionImpl.hpp"
@@ -416,7 +416,9 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   const bool loopback_only =
     (options.range == DiscoveryRange::Localhost || options.range == DiscoveryRange::Off) &&
     options.static_peers.empty() && options.discovery_servers.empty();
-  std::shared_ptr<eprosima::fastdds::rtps::TransportDescriptorInterface> transport = udp;
+  // Either way reception waits behind a gate until the participant is enabled, so that a peer's
+  // answer to our first announcement is not dropped (GatedTransport.hpp).
+  std::shared_ptr<GatedTransportDescriptor> transport;
   if (loopback_only)
   {
     // Sockets bound to 127.0.0.1 only and only loopback locators announced; peers' same-host
@@ -424,12 +426,11 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     // hosts on purpose, so they keep the plain transport.
     transport = std::make_shared<LoopbackTransportDescriptor>(udp);
   }
-  auto gate = std::make_shared<std::atomic<bool>>(false);
-  // The gate drops the first initial announcement; the next one, sooner than Fast DDS's 100 ms,
-  // reaches the peers as soon as the participant can hear their answers.
-  qos.wire_protocol().builtin.discovery_config.initial_announcements.count = 10;
-  qos.wire_protocol().builtin.discovery_config.initial_announcements.period = eprosima::fastrtps::Duration_t(0, 20000000);
-  qos.transport().user_transports.push_back(std::make_shared<StartGateTransportDescriptor>(transport, gate));
+  else
+  {
+    transport = std::make_shared<GatedTransportDescriptor>(udp);
+  }
+  qos.transport().user_transports.push_back(transport);
   qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
 
   use_no_intraprocess_delivery();
@@ -441,7 +442,7 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     return set_error(error, "Fast DDS could not create a participant on domain " +
                               std::to_string(options.domain_id));
   }
-  gate->store(true, std::memory_order_release); // enabled: its receivers hear replies now
+  transport->gate->open(); // enabled: its receivers are registered (GatedTransport.hpp)
   publisher = participant->create_publisher(dds::PUBLISHER_QOS_DEFAULT);
   subscriber = participant->create_subscriber(dds::SUBSCRIBER_QOS_DEFAULT);
   if (!publisher || !subscriber)

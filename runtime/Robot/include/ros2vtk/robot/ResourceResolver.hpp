@@ -98,8 +98,9 @@ public:
   std::uint64_t max_file_bytes() const { return max_file_bytes_; }
 
   /// Resolves `uri`; relative paths are taken from `base_folder`, then from the search paths
-  /// (with no base folder: from the search paths, then the current folder). The file must
-  /// exist, be a regular file, and pass the root and size checks.
+  /// (with no base folder: from the search paths, then the current folder). `package:///<path>`
+  /// (no package name) is `<path>` in the package holding the URDF file, else a relative path.
+  /// The file must exist, be a regular file, and pass the root and size checks.
   ResolvedResource resolve(const std::string& uri, const std::string& base_folder) const;
 
   /// The folder of package `name`, or "" (then `report`, when given, says where it looked).
@@ -114,6 +115,8 @@ private:
   const PackageTree& crawled(const std::string& folder) const;
   std::vector<std::string> allowed_roots(const std::string& base_folder) const;
   ResolvedResource resolve_relative(const std::string& uri, const std::string& base_folder) const;
+  ResolvedResource resolve_without_package(const std::string& uri, const std::string& relative,
+                                           const std::string& base_folder) const;
   /// The checks every candidate file goes through: exists, regular, inside the roots (and inside
   /// `package_folder` when given), not over the size limit.
   ResolvedResource check_file(const std::filesystem::path& candidate, const std::string& base_folder,
