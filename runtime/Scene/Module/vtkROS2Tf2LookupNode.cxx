@@ -113,15 +113,8 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
   const Eigen::Isometry3d isometry = result.isometry();
   const double scale = this->ScaleLengths ? ros2vtk::convert::kMillimetresPerMetre : 1.0;
   vtkMatrix4x4* matrix = this->LookupMatrix; // reused: one lookup per link at every spin
-  double elements[16] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1 };
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      elements[4 * i + j] = isometry.linear()(i, j);
-    }
-    elements[4 * i + 3] = isometry.translation()(i) * scale;
-  }
+  double elements[16];
+  ros2vtk::convert::isometry_to_elements(isometry, scale, elements);
   matrix->DeepCopy(elements); // one Modified(), where twelve SetElement calls made twelve
   const bool changed = this->SetMatrixTransformToParent(matrix);
   if (!changed && newStamp && this->ModifiedOnLookup)

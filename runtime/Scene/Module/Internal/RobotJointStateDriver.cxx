@@ -336,16 +336,8 @@ void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string
     {
       const Eigen::Isometry3d pose = fixedFromRoot * entry.second;
       std::vector<double>& m = this->LinkMatricesMillimetres[entry.first];
-      m.assign(16, 0.0);
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          m[static_cast<size_t>(4 * i + j)] = pose.linear()(i, j);
-        }
-        m[static_cast<size_t>(4 * i + 3)] = pose.translation()(i) * ros2vtk::convert::kMillimetresPerMetre;
-      }
-      m[15] = 1.0;
+      m.resize(16);
+      ros2vtk::convert::isometry_to_elements(pose, ros2vtk::convert::kMillimetresPerMetre, m.data());
     }
     this->PosesFixedFrame = fixedFrame;
     this->PosesDirty = false;

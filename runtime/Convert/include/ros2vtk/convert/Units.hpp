@@ -17,6 +17,25 @@ constexpr double kMillimetresPerMetre = 1000.0;
 /// For nodes whose scaling is switched off: VTK gets the ROS numbers unchanged.
 constexpr double kNoLengthScaling = 1.0;
 
+/// The 16 elements (row-major, as vtkMatrix4x4::DeepCopy takes them) of a rigid transform's
+/// homogeneous matrix, translation multiplied by length_scale. A template so that this header
+/// needs no Eigen: `Isometry` is Eigen::Isometry3d (anything with linear()(i, j) and
+/// translation()(i)). Used wherever a tf result becomes a VTK matrix (lookup nodes, robot links).
+template <typename Isometry>
+void isometry_to_elements(const Isometry& isometry, double length_scale, double elements[16])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      elements[4 * i + j] = isometry.linear()(i, j);
+    }
+    elements[4 * i + 3] = isometry.translation()(i) * length_scale;
+  }
+  elements[12] = elements[13] = elements[14] = 0.0;
+  elements[15] = 1.0;
+}
+
 } // namespace convert
 } // namespace ros2vtk
 
