@@ -41,6 +41,9 @@ class _ClosedConnectionFilter(logging.Filter):
     and is dropped; the other two are dropped when the exception is a reset connection."""
 
     def filter(self, record: logging.LogRecord) -> bool:
+        # aiohttp's server logs "Error handling request" with the reset as exc_info.
+        if record.exc_info and isinstance(record.exc_info[1], (ConnectionResetError, BrokenPipeError)):
+            return False
         text = record.getMessage()
         return text != 'Exception raised' and 'ConnectionResetError' not in text \
             and 'Cannot write to closing transport' not in text
@@ -569,7 +572,8 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
     if host not in ('127.0.0.1', 'localhost', '::1'):
         print(f'[app] WARNING: serving on {host}: anyone who reaches this port controls the ROS node', flush=True)
     xvfb = ensure_x_display()
-    logging.getLogger('wslink.protocol').addFilter(_ClosedConnectionFilter())
+    for logger in ('wslink.protocol', 'aiohttp.server', 'aiohttp.web'):
+        logging.getLogger(logger).addFilter(_ClosedConnectionFilter())
     app = App(logic, title=title, slices=slices)
     if on_app is not None:
         on_app(app)
