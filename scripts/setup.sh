@@ -38,6 +38,7 @@ DEBIAN_PACKAGES=(
   iproute2
   nftables
   libopenigtlink-dev
+  clang-format
 )
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -4,9 +4,9 @@
 // is in the world (ros2vtk::Tf2), its topic's DDS name (ros2vtk::Wire), and a small guide holder
 // robot: forward kinematics (ros2vtk::RobotModel) and its visuals (ros2vtk::RobotLoader), and its
 // pose as an OpenIGTLink TRANSFORM (ros2vtk::IGTL).
-#include "needle_guideConvert.hpp"  // generated: ros2vtk::nodes::ROS2ToVTK / VTKToROS2
+#include "needle_guideConvert.hpp" // generated: ros2vtk::nodes::ROS2ToVTK / VTKToROS2
 
-#include <ros2vtk/needle_guide_msgs/msg/needle_guide.hpp>  // generated message type + CDR
+#include <ros2vtk/needle_guide_msgs/msg/needle_guide.hpp> // generated message type + CDR
 #include <ros2vtk/igtl/Codec.hpp>
 #include <ros2vtk/robot/KinematicTree.hpp>
 #include <ros2vtk/robot/RobotLoader.hpp>
@@ -28,7 +28,7 @@
 int main()
 {
   ros2vtk::needle_guide_msgs::msg::NeedleGuide guide;
-  guide.pose.position.x = 0.1;    // metres
+  guide.pose.position.x = 0.1; // metres
   guide.pose.position.y = -0.02;
   guide.pose.position.z = 0.035;
   guide.pose.orientation.w = 1.0;
@@ -55,7 +55,7 @@ int main()
     return 1;
   }
   std::printf("translation_mm %.1f %.1f %.1f depth_m %.3f\n", matrix->GetElement(0, 3),
-              matrix->GetElement(1, 3), matrix->GetElement(2, 3), decoded.depth);
+    matrix->GetElement(1, 3), matrix->GetElement(2, 3), decoded.depth);
 
   ros2vtk::needle_guide_msgs::msg::NeedleGuide back;
   back.depth = decoded.depth;
@@ -76,11 +76,11 @@ int main()
   ros2vtk::tf2::TransformStamped tool;
   tool.frame_id = "base";
   tool.child_frame_id = "guide";
-  tool.transform.translation = Eigen::Vector3d(guide.pose.position.x, guide.pose.position.y,
-                                               guide.pose.position.z);
+  tool.transform.translation =
+    Eigen::Vector3d(guide.pose.position.x, guide.pose.position.y, guide.pose.position.z);
   std::string error;
   if (!buffer.set_transform(base, "needle_guide_demo", true, &error) ||
-      !buffer.set_transform(tool, "needle_guide_demo", true, &error))
+    !buffer.set_transform(tool, "needle_guide_demo", true, &error))
   {
     std::fprintf(stderr, "set_transform failed: %s\n", error.c_str());
     return 1;
@@ -144,12 +144,12 @@ int main()
   ros2vtk::igtl::Frame igtl_frame;
   ros2vtk::igtl::Matrix igtl_pose{};
   if (igtl_reader.next(igtl_frame, error) != ros2vtk::igtl::FrameReader::Result::Frame ||
-      !ros2vtk::igtl::decode_transform(igtl_frame, igtl_pose, error))
+    !ros2vtk::igtl::decode_transform(igtl_frame, igtl_pose, error))
   {
     std::fprintf(stderr, "IGTL: %s\n", error.c_str());
     return 1;
   }
   std::printf("igtl %s %s %zu bytes x_mm %.1f\n", igtl_frame.type.c_str(),
-              igtl_frame.device.c_str(), igtl_bytes.size(), igtl_pose[3]);
+    igtl_frame.device.c_str(), igtl_bytes.size(), igtl_pose[3]);
   return 0;
 }

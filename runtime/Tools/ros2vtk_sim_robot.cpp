@@ -100,7 +100,7 @@ const wire::MessageTypeSupport& type(const char* name)
 builtin_interfaces::msg::Time now_stamp()
 {
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                    std::chrono::system_clock::now().time_since_epoch())
+    std::chrono::system_clock::now().time_since_epoch())
                     .count();
   builtin_interfaces::msg::Time stamp;
   stamp.sec = static_cast<int32_t>(ns / 1000000000);
@@ -108,8 +108,8 @@ builtin_interfaces::msg::Time now_stamp()
   return stamp;
 }
 
-geometry_msgs::msg::TransformStamped to_message(const robot::LinkTransform& link, const std::string& prefix,
-                                                const builtin_interfaces::msg::Time& stamp)
+geometry_msgs::msg::TransformStamped to_message(const robot::LinkTransform& link,
+  const std::string& prefix, const builtin_interfaces::msg::Time& stamp)
 {
   geometry_msgs::msg::TransformStamped message;
   message.header.stamp = stamp;
@@ -150,7 +150,8 @@ struct Trajectory
         upper = joint->upper;
       }
       const double span = upper - lower;
-      joints.push_back({ name, lower + span / 2, 0.35 * span, 2 * M_PI * 0.1 * (1.0 + 0.13 * i), 0.7 * i });
+      joints.push_back(
+        { name, lower + span / 2, 0.35 * span, 2 * M_PI * 0.1 * (1.0 + 0.13 * i), 0.7 * i });
       ++i;
     }
   }
@@ -188,10 +189,12 @@ struct Trajectory
       fields.clear();
       if (fields >> rest)
       {
-        *error = where + "unexpected '" + rest + "' (expected '<joint> <mid> <amplitude> <period s> [<phase rad>]')";
+        *error = where + "unexpected '" + rest +
+          "' (expected '<joint> <mid> <amplitude> <period s> [<phase rad>]')";
         return false;
       }
-      auto joint = std::find_if(joints.begin(), joints.end(), [&](const Joint& j) { return j.name == name; });
+      auto joint =
+        std::find_if(joints.begin(), joints.end(), [&](const Joint& j) { return j.name == name; });
       if (joint == joints.end())
       {
         *error = where + "'" + name + "' is not an actuated joint of " + tree.robot_name();
@@ -210,11 +213,13 @@ struct Trajectory
       }
       const robot::JointInfo* info = tree.joint(name);
       if (info->has_limits && info->upper > info->lower &&
-          (mid - std::abs(amplitude) < info->lower - 1e-9 || mid + std::abs(amplitude) > info->upper + 1e-9))
+        (mid - std::abs(amplitude) < info->lower - 1e-9 ||
+          mid + std::abs(amplitude) > info->upper + 1e-9))
       {
         std::ostringstream message;
-        message << where << "'" << name << "' would move over [" << mid - std::abs(amplitude) << ", "
-                << mid + std::abs(amplitude) << "], outside its limits [" << info->lower << ", " << info->upper << "]";
+        message << where << "'" << name << "' would move over [" << mid - std::abs(amplitude)
+                << ", " << mid + std::abs(amplitude) << "], outside its limits [" << info->lower
+                << ", " << info->upper << "]";
         *error = message.str();
         return false;
       }
@@ -279,25 +284,24 @@ int main(int argc, char** argv)
     return 1;
   }
 
-  auto participant = wire::Participant::create(options.node, options.ns,
-                                               wire::ParticipantOptions::from_environment(), &error);
+  auto participant = wire::Participant::create(
+    options.node, options.ns, wire::ParticipantOptions::from_environment(), &error);
   if (!participant)
   {
     std::cerr << "ros2vtk-sim-robot: " << error << "\n";
     return 1;
   }
   auto parameters = wire::ParameterServer::create(*participant, &error);
-  auto description = participant->create_publisher(type("std_msgs/msg/String"), "robot_description",
-                                                    wire::QoS::transient_local(1), &error);
+  auto description = participant->create_publisher(
+    type("std_msgs/msg/String"), "robot_description", wire::QoS::transient_local(1), &error);
   auto tf = participant->create_publisher(type("tf2_msgs/msg/TFMessage"), "/tf",
-                                          wire::QoS{ wire::QoS::History::KeepLast, 100,
-                                                     wire::QoS::Reliability::Reliable,
-                                                     wire::QoS::Durability::Volatile },
-                                          &error);
-  auto tf_static = participant->create_publisher(type("tf2_msgs/msg/TFMessage"), "/tf_static",
-                                                 wire::QoS::transient_local(1), &error);
-  auto joint_states = participant->create_publisher(type("sensor_msgs/msg/JointState"), "joint_states",
-                                                    wire::QoS{}, &error);
+    wire::QoS{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
+      wire::QoS::Durability::Volatile },
+    &error);
+  auto tf_static = participant->create_publisher(
+    type("tf2_msgs/msg/TFMessage"), "/tf_static", wire::QoS::transient_local(1), &error);
+  auto joint_states = participant->create_publisher(
+    type("sensor_msgs/msg/JointState"), "joint_states", wire::QoS{}, &error);
   if (!parameters || !description || !tf || !tf_static || !joint_states)
   {
     std::cerr << "ros2vtk-sim-robot: " << error << "\n";
@@ -320,7 +324,8 @@ int main(int argc, char** argv)
     if (parameter.name != "robot_description")
       return std::string();
     std::string reason;
-    return robot::KinematicTree::from_urdf(parameter.value.string_value, &reason) ? std::string() : reason;
+    return robot::KinematicTree::from_urdf(parameter.value.string_value, &reason) ? std::string()
+                                                                                  : reason;
   });
 
   auto publish_description = [&]() {
@@ -337,14 +342,15 @@ int main(int argc, char** argv)
     tf_static->publish(&statics);
   };
   publish_description();
-  std::cout << "ros2vtk-sim-robot: " << tree->robot_name() << " (" << tree->joints().size() << " joints, "
-            << tree->actuated_joints().size() << " actuated) as " << participant->fully_qualified_name()
-            << " at " << options.rate << " Hz" << std::endl;
+  std::cout << "ros2vtk-sim-robot: " << tree->robot_name() << " (" << tree->joints().size()
+            << " joints, " << tree->actuated_joints().size() << " actuated) as "
+            << participant->fully_qualified_name() << " at " << options.rate << " Hz" << std::endl;
 
   std::map<std::string, double> positions;
   std::vector<double> velocities;
   const auto start = Clock::now();
-  const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.rate));
+  const auto period =
+    std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.rate));
   auto next = start;
   while (!interrupted)
   {
@@ -362,7 +368,8 @@ int main(int argc, char** argv)
       if (!options.motion_path.empty() && !trajectory.apply(options.motion_path, *tree, &error))
       {
         trajectory = Trajectory(*tree);
-        std::cout << "ros2vtk-sim-robot: the new robot gets the default motion: " << error << std::endl;
+        std::cout << "ros2vtk-sim-robot: the new robot gets the default motion: " << error
+                  << std::endl;
       }
       positions.clear();
       publish_description();

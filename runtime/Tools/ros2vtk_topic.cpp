@@ -112,7 +112,8 @@ const MessageTypeSupport* find_type_or_explain(const std::string& name)
 std::unique_ptr<Participant> make_participant(const Options& options)
 {
   std::string error;
-  auto participant = Participant::create(options.node, options.node_namespace, ParticipantOptions::from_environment(), &error);
+  auto participant = Participant::create(
+    options.node, options.node_namespace, ParticipantOptions::from_environment(), &error);
   if (!participant)
   {
     std::cerr << "ros2vtk-topic: " << error << "\n";
@@ -241,8 +242,8 @@ int echo(const Options& options)
     if (subscription->rejected_count() > rejected_reported)
     {
       rejected_reported = subscription->rejected_count();
-      std::cerr << "ros2vtk-topic: rejected " << rejected_reported << " malformed sample(s): "
-                << subscription->last_rejection() << std::endl;
+      std::cerr << "ros2vtk-topic: rejected " << rejected_reported
+                << " malformed sample(s): " << subscription->last_rejection() << std::endl;
     }
   }
   return 0;
@@ -279,8 +280,9 @@ int pub(const Options& options)
     return 1;
   }
   const auto match_deadline = Clock::now() + std::chrono::duration<double>(options.wait);
-  while (!interrupted && publisher->matched_subscriptions() < static_cast<size_t>(options.wait_matched) &&
-         Clock::now() < match_deadline)
+  while (!interrupted &&
+    publisher->matched_subscriptions() < static_cast<size_t>(options.wait_matched) &&
+    Clock::now() < match_deadline)
   {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }

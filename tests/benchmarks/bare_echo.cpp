@@ -36,8 +36,11 @@ namespace rtps = eprosima::fastrtps::rtps;
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-void on_signal(int) { interrupted = true; }
+std::atomic<bool> interrupted{ false };
+void on_signal(int)
+{
+  interrupted = true;
+}
 
 /// A ROS type seen as opaque CDR bytes (encapsulation header included): what arrives is what
 /// leaves, so the echo costs no conversion at all.
@@ -66,12 +69,15 @@ public:
   }
   bool deserialize(rtps::SerializedPayload_t* payload, void* data) override
   {
-    static_cast<std::vector<uint8_t>*>(data)->assign(payload->data, payload->data + payload->length);
+    static_cast<std::vector<uint8_t>*>(data)->assign(
+      payload->data, payload->data + payload->length);
     return true;
   }
   std::function<uint32_t()> getSerializedSizeProvider(void* data) override
   {
-    return [data]() { return static_cast<uint32_t>(static_cast<std::vector<uint8_t>*>(data)->size()); };
+    return [data]() {
+      return static_cast<uint32_t>(static_cast<std::vector<uint8_t>*>(data)->size());
+    };
   }
   void* createData() override { return new std::vector<uint8_t>(); }
   void deleteData(void* data) override { delete static_cast<std::vector<uint8_t>*>(data); }
@@ -83,12 +89,13 @@ class EchoListener : public fdds::DataReaderListener
 {
 public:
   fdds::DataWriter* writer = nullptr;
-  std::atomic<long> echoed{0};
+  std::atomic<long> echoed{ 0 };
   void on_data_available(fdds::DataReader* reader) override
   {
     std::vector<uint8_t> bytes;
     fdds::SampleInfo info;
-    while (reader->take_next_sample(&bytes, &info) == eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
+    while (reader->take_next_sample(&bytes, &info) ==
+      eprosima::fastrtps::types::ReturnCode_t::RETCODE_OK)
     {
       if (info.valid_data && writer->write(&bytes))
         ++echoed;
@@ -161,7 +168,8 @@ int main(int argc, char** argv)
   const char* range = std::getenv("ROS_AUTOMATIC_DISCOVERY_RANGE");
   const bool localhost = range && std::strcmp(range, "LOCALHOST") == 0;
   auto* factory = fdds::DomainParticipantFactory::get_instance();
-  fdds::DomainParticipant* participant = factory->create_participant(domain, participant_qos(domain, localhost));
+  fdds::DomainParticipant* participant =
+    factory->create_participant(domain, participant_qos(domain, localhost));
   if (!participant)
   {
     std::fprintf(stderr, "bare_echo: cannot create a participant on domain %d\n", domain);
@@ -183,7 +191,7 @@ int main(int argc, char** argv)
   writer_qos.publish_mode().kind = fdds::SYNCHRONOUS_PUBLISH_MODE;
   writer_qos.data_sharing().off();
   writer_qos.endpoint().history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
-  writer_qos.representation().m_value = {fdds::XCDR_DATA_REPRESENTATION};
+  writer_qos.representation().m_value = { fdds::XCDR_DATA_REPRESENTATION };
   fdds::DataReaderQos reader_qos = fdds::DATAREADER_QOS_DEFAULT;
   reader_qos.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
   reader_qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
@@ -191,7 +199,7 @@ int main(int argc, char** argv)
   reader_qos.history().depth = 1000;
   reader_qos.data_sharing().off();
   reader_qos.endpoint().history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
-  reader_qos.type_consistency().representation.m_value = {fdds::XCDR_DATA_REPRESENTATION};
+  reader_qos.type_consistency().representation.m_value = { fdds::XCDR_DATA_REPRESENTATION };
 
   EchoListener listener;
   listener.writer = publisher->create_datawriter(out_topic, writer_qos);

@@ -95,11 +95,13 @@ int main(int argc, char** argv)
   {
     MessagePtr decoded = make(*type);
     if (!wire::deserialize_message(*type, bytes.data(), bytes.size(), decoded.get(), &error))
-      return fail(std::string(type == dynamic ? "runtime" : "generated") + " decode failed: " + error);
+      return fail(
+        std::string(type == dynamic ? "runtime" : "generated") + " decode failed: " + error);
     std::vector<uint8_t> again;
     wire::serialize_message(*type, decoded.get(), again);
     if (again != bytes)
-      return fail(std::string(type == dynamic ? "runtime" : "generated") + " decode does not round-trip");
+      return fail(
+        std::string(type == dynamic ? "runtime" : "generated") + " decode does not round-trip");
   }
 
   std::vector<double> generated_ms, dynamic_ms;
@@ -109,7 +111,8 @@ int main(int argc, char** argv)
     {
       MessagePtr decoded = make(*type); // a subscriber decodes into a fresh message per sample
       const auto start = bench::Clock::now();
-      const bool ok = wire::deserialize_message(*type, bytes.data(), bytes.size(), decoded.get(), &error);
+      const bool ok =
+        wire::deserialize_message(*type, bytes.data(), bytes.size(), decoded.get(), &error);
       const double ms = bench::ms_between(start, bench::Clock::now());
       if (!ok)
         return fail(error);

@@ -8,7 +8,8 @@
 // the Fast DDS write). Reliable, volatile, keep last 1000 (as the subscribers). Paced by an
 // absolute schedule with sleeps only (two cores: the receiver needs one).
 //
-//   bench_publish --type PoseStamped|Image|PointCloud2|PoseArray --topic T [--rate HZ] [--seconds S]
+//   bench_publish --type PoseStamped|Image|PointCloud2|PoseArray --topic T [--rate HZ] [--seconds
+//   S]
 //                 [--width W --height H --encoding rgb8|mono16] [--points N] [--poses N] [--wait S]
 //
 // Prints {"sent": N, "seconds": S, "rate": achieved, "publish_ms": [...]} on stdout.
@@ -78,7 +79,8 @@ vtkSmartPointer<vtkPolyData> make_cloud(const Options& o)
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(o.points);
   for (int i = 0; i < o.points; ++i) // a ramp of finite floats, as ros_publisher.py
-    points->SetPoint(i, (3 * i % 1000) * 0.001, ((3 * i + 1) % 1000) * 0.001, ((3 * i + 2) % 1000) * 0.001);
+    points->SetPoint(
+      i, (3 * i % 1000) * 0.001, ((3 * i + 1) % 1000) * 0.001, ((3 * i + 2) % 1000) * 0.001);
   auto cloud = vtkSmartPointer<vtkPolyData>::New();
   cloud->SetPoints(points);
   return cloud;
@@ -96,7 +98,7 @@ vtkSmartPointer<vtkTransformCollection> make_poses(const Options& o)
   return poses;
 }
 
-template <typename Node, typename Value>
+template<typename Node, typename Value>
 int run(const Options& options, Value* value)
 {
   vtkNew<vtkROS2Logic> logic;
@@ -114,7 +116,8 @@ int run(const Options& options, Value* value)
   const auto wait_end = bench::Clock::now() + std::chrono::duration<double>(options.wait);
   while (publisher->GetNumberOfMatchedSubscriptions() < 1 && bench::Clock::now() < wait_end)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  std::this_thread::sleep_for(std::chrono::milliseconds(500)); // as ros_publisher.py: let matching settle
+  std::this_thread::sleep_for(
+    std::chrono::milliseconds(500)); // as ros_publisher.py: let matching settle
   std::vector<double> publish_ms;
   const int total = static_cast<int>(options.rate * options.seconds + 0.5);
   const auto period = std::chrono::duration<double>(1.0 / options.rate);
@@ -122,7 +125,8 @@ int run(const Options& options, Value* value)
   int sent = 0;
   for (int i = 0; i < total; ++i)
   {
-    std::this_thread::sleep_until(start + std::chrono::duration_cast<bench::Clock::duration>(period * i));
+    std::this_thread::sleep_until(
+      start + std::chrono::duration_cast<bench::Clock::duration>(period * i));
     const auto before = bench::Clock::now();
     sent += publisher->Publish(value);
     publish_ms.push_back(bench::ms_between(before, bench::Clock::now()));
@@ -186,6 +190,7 @@ int main(int argc, char** argv)
     return run<vtkROS2PublisherPointCloud2Node>(o, make_cloud(o).Get());
   if (o.type == "PoseArray")
     return run<vtkROS2PublisherPoseArrayNode>(o, make_poses(o).Get());
-  std::fprintf(stderr, "usage: bench_publish --type PoseStamped|Image|PointCloud2|PoseArray --topic T\n");
+  std::fprintf(
+    stderr, "usage: bench_publish --type PoseStamped|Image|PointCloud2|PoseArray --topic T\n");
   return 2;
 }

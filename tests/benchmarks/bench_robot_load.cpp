@@ -48,8 +48,8 @@ std::vector<std::string> read_lines(const std::string& path)
   return lines;
 }
 
-/// assimp's import of every file, as MeshLoader calls it (flags and properties of load_with_assimp):
-/// total milliseconds, or -1 when a file cannot be imported.
+/// assimp's import of every file, as MeshLoader calls it (flags and properties of
+/// load_with_assimp): total milliseconds, or -1 when a file cannot be imported.
 double assimp_import_ms(const std::vector<std::string>& files)
 {
   for (const std::string& path : files) // warm the page cache for both sides
@@ -62,9 +62,10 @@ double assimp_import_ms(const std::vector<std::string>& files)
   {
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene = importer.ReadFile(
-      path, aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    importer.SetPropertyInteger(
+      AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene = importer.ReadFile(path,
+      aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!scene)
     {
       std::fprintf(stderr, "bench_robot_load: assimp could not import %s\n", path.c_str());
@@ -95,13 +96,16 @@ int main(int argc, char** argv)
   std::ifstream file(urdf_path);
   if (urdf_path.empty() || !file || robots < 1)
   {
-    std::fprintf(stderr, "usage: bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots N] [--assimp-files LIST]\n");
+    std::fprintf(stderr,
+      "usage: bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots N] [--assimp-files "
+      "LIST]\n");
     return 2;
   }
   const std::string xml((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   const std::string folder = std::filesystem::path(urdf_path).parent_path().string();
 
-  const std::vector<std::string> assimp_files = assimp_list.empty() ? std::vector<std::string>() : read_lines(assimp_list);
+  const std::vector<std::string> assimp_files =
+    assimp_list.empty() ? std::vector<std::string>() : read_lines(assimp_list);
   const double assimp_ms = assimp_files.empty() ? -1 : assimp_import_ms(assimp_files);
 
   vtkNew<vtkROS2Logic> logic;
@@ -117,8 +121,8 @@ int main(int argc, char** argv)
   {
     const std::string name = "r" + std::to_string(r);
     // The topic source is never published here: the description is handed over directly.
-    vtkROS2RobotNode* robot =
-      node->CreateAndAddRobotNodeFromTopic(name.c_str(), ("/bench_unused/" + name).c_str(), "", (name + "/").c_str());
+    vtkROS2RobotNode* robot = node->CreateAndAddRobotNodeFromTopic(
+      name.c_str(), ("/bench_unused/" + name).c_str(), "", (name + "/").c_str());
     if (!robot)
       return 1;
     const auto start = bench::Clock::now();

@@ -7,9 +7,9 @@
 //     that graph known and nothing subscribed (our graph cache must not make spin grow with the
 //     graph) and of one graph query.
 //   bench_scale --mode subscribers --topics 100 [--spins 500]
-//     100 subscriber nodes (std_msgs/String, the mapped String node) on the 100 topics scale_peer.py
-//     stream publishes at 100 Hz each: Spin() at 100 Hz, its cost per spin and per message, and
-//     the memory one subscriber node costs.
+//     100 subscriber nodes (std_msgs/String, the mapped String node) on the 100 topics
+//     scale_peer.py stream publishes at 100 Hz each: Spin() at 100 Hz, its cost per spin and per
+//     message, and the memory one subscriber node costs.
 //
 // Prints one JSON object. Spins are paced at 100 Hz like a viewer's timer.
 #include "BenchCommon.hpp"
@@ -50,7 +50,8 @@ int count_lines_starting(const std::string& text, const std::string& prefix)
 const auto kPeriod = std::chrono::milliseconds(10); // 100 Hz
 
 /// `spins` paced spins: per-spin milliseconds and items handled.
-void timed_spins(vtkROS2Logic* logic, int spins, std::vector<double>& spin_ms, std::vector<double>& items)
+void timed_spins(
+  vtkROS2Logic* logic, int spins, std::vector<double>& spin_ms, std::vector<double>& items)
 {
   auto next = bench::Clock::now();
   for (int i = 0; i < spins; ++i)
@@ -129,7 +130,8 @@ int run_subscribers(const Options& o)
   std::vector<vtkROS2SubscriberNode*> subscribers;
   for (int t = 0; t < o.topics; ++t)
   {
-    auto* subscriber = node->CreateAndAddSubscriberNode("String", ("/scale_stream_" + std::to_string(t)).c_str());
+    auto* subscriber =
+      node->CreateAndAddSubscriberNode("String", ("/scale_stream_" + std::to_string(t)).c_str());
     if (!subscriber)
       return 1;
     subscribers.push_back(subscriber);
@@ -200,6 +202,7 @@ int main(int argc, char** argv)
     return run_graph(o);
   if (o.mode == "subscribers")
     return run_subscribers(o);
-  std::fprintf(stderr, "usage: bench_scale --mode graph|subscribers [--nodes N] [--topics N] [--spins N]\n");
+  std::fprintf(
+    stderr, "usage: bench_scale --mode graph|subscribers [--nodes N] [--topics N] [--spins N]\n");
   return 2;
 }

@@ -109,15 +109,16 @@ int main(int argc, char** argv)
   for (int i = 1; i <= options.robots; ++i)
   {
     const std::string name = "robot" + std::to_string(i);
-    auto* robot = node->CreateAndAddRobotNodeFromTopic(name.c_str(), ("/" + name + "/robot_description").c_str(), "",
-                                                       (name + "/").c_str());
+    auto* robot = node->CreateAndAddRobotNodeFromTopic(
+      name.c_str(), ("/" + name + "/robot_description").c_str(), "", (name + "/").c_str());
     if (!robot)
       return 1;
     robots.push_back(robot);
   }
 
   // Wait until every robot is loaded and every link tracked (discovery, description, first tf).
-  const auto period = std::chrono::duration_cast<bench::Clock::duration>(std::chrono::duration<double>(1.0 / options.rate));
+  const auto period = std::chrono::duration_cast<bench::Clock::duration>(
+    std::chrono::duration<double>(1.0 / options.rate));
   const auto wait_end = bench::Clock::now() + std::chrono::duration<double>(options.wait);
   while (bench::Clock::now() < wait_end)
   {

@@ -44,7 +44,7 @@ namespace {
 /// The generated subscriber node of a type, with the raw messages of a spin reachable (they are
 /// protected in the node's API): the benchmark needs every message's header stamp, not only the
 /// newest one's.
-template <typename Base>
+template<typename Base>
 class StampedProbe : public Base
 {
 public:
@@ -76,19 +76,31 @@ struct Record
   size_t converted_size = 0; // points, pixels or poses of the newest conversion
 };
 
-template <typename Message>
+template<typename Message>
 double stamp_seconds(const void* raw)
 {
   const auto& stamp = static_cast<const Message*>(raw)->header.stamp;
   return stamp.sec + 1e-9 * stamp.nanosec;
 }
 
-size_t size_of(vtkMatrix4x4* m) { return m ? 1 : 0; }
-size_t size_of(vtkImageData* image) { return image ? static_cast<size_t>(image->GetNumberOfPoints()) : 0; }
-size_t size_of(vtkPolyData* cloud) { return cloud ? static_cast<size_t>(cloud->GetNumberOfPoints()) : 0; }
-size_t size_of(vtkTransformCollection* poses) { return poses ? static_cast<size_t>(poses->GetNumberOfItems()) : 0; }
+size_t size_of(vtkMatrix4x4* m)
+{
+  return m ? 1 : 0;
+}
+size_t size_of(vtkImageData* image)
+{
+  return image ? static_cast<size_t>(image->GetNumberOfPoints()) : 0;
+}
+size_t size_of(vtkPolyData* cloud)
+{
+  return cloud ? static_cast<size_t>(cloud->GetNumberOfPoints()) : 0;
+}
+size_t size_of(vtkTransformCollection* poses)
+{
+  return poses ? static_cast<size_t>(poses->GetNumberOfItems()) : 0;
+}
 
-template <typename Node, typename Message>
+template<typename Node, typename Message>
 int run(const Options& options)
 {
   vtkNew<vtkROS2Logic> logic;
@@ -195,6 +207,7 @@ int main(int argc, char** argv)
     return run<vtkROS2SubscriberPointCloud2Node, sm::PointCloud2>(options);
   if (options.type == "PoseArray")
     return run<vtkROS2SubscriberPoseArrayNode, gm::PoseArray>(options);
-  std::fprintf(stderr, "usage: bench_subscribe --type PoseStamped|Image|PointCloud2|PoseArray --topic T\n");
+  std::fprintf(
+    stderr, "usage: bench_subscribe --type PoseStamped|Image|PointCloud2|PoseArray --topic T\n");
   return 2;
 }

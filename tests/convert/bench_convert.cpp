@@ -48,17 +48,21 @@ int main()
     layout.width = 640;
     layout.height = 480;
     layout.encoding = encoding;
-    const uint32_t pixel_bytes = std::string(encoding) == "mono16" ? 2 : std::string(encoding) == "32FC1" ? 4 : 3;
+    const uint32_t pixel_bytes = std::string(encoding) == "mono16" ? 2
+      : std::string(encoding) == "32FC1"                           ? 4
+                                                                   : 3;
     layout.step = 640 * pixel_bytes;
     std::vector<uint8_t> data(static_cast<size_t>(layout.step) * 480, 0x5A);
     vtkNew<vtkImageData> image;
     std::string error;
-    const double in_ms = median_ms([&] { return image_to_vtk(layout, data, image, &error); }, repetitions);
+    const double in_ms =
+      median_ms([&] { return image_to_vtk(layout, data, image, &error); }, repetitions);
     ImageLayout out_layout;
     std::vector<uint8_t> out;
     const double out_ms = median_ms(
       [&] { return vtk_to_image(image, encoding, &out_layout, &out, &error); }, repetitions);
-    std::printf("image 640x480 %-6s  ROS->VTK %.3f ms   VTK->ROS %.3f ms\n", encoding, in_ms, out_ms);
+    std::printf(
+      "image 640x480 %-6s  ROS->VTK %.3f ms   VTK->ROS %.3f ms\n", encoding, in_ms, out_ms);
   }
 
   PointCloud2Layout layout;
@@ -77,17 +81,22 @@ int main()
   }
   vtkNew<vtkPolyData> poly;
   std::string error;
-  const double keep_ms = median_ms([&] {
-    return point_cloud2_to_poly_data(layout, data, 1000.0, NonFinitePoints::Keep, poly, &error);
-  }, 50);
-  const double drop_ms = median_ms([&] {
-    return point_cloud2_to_poly_data(layout, data, 1000.0, NonFinitePoints::Drop, poly, &error);
-  }, 50);
+  const double keep_ms = median_ms(
+    [&] {
+      return point_cloud2_to_poly_data(layout, data, 1000.0, NonFinitePoints::Keep, poly, &error);
+    },
+    50);
+  const double drop_ms = median_ms(
+    [&] {
+      return point_cloud2_to_poly_data(layout, data, 1000.0, NonFinitePoints::Drop, poly, &error);
+    },
+    50);
   PointCloud2Layout out_layout;
   std::vector<uint8_t> out;
-  const double out_ms =
-    median_ms([&] { return poly_data_to_point_cloud2(poly, 1000.0, &out_layout, &out, &error); }, 50);
-  std::printf("PointCloud2 100k xyz+intensity  ROS->VTK keep %.3f ms, drop-NaN %.3f ms   VTK->ROS %.3f ms\n",
+  const double out_ms = median_ms(
+    [&] { return poly_data_to_point_cloud2(poly, 1000.0, &out_layout, &out, &error); }, 50);
+  std::printf(
+    "PointCloud2 100k xyz+intensity  ROS->VTK keep %.3f ms, drop-NaN %.3f ms   VTK->ROS %.3f ms\n",
     keep_ms, drop_ms, out_ms);
   return 0;
 }

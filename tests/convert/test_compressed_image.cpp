@@ -97,12 +97,14 @@ TEST(CompressedImage, MalformedDataIsRefusedWithAReason)
   EXPECT_FALSE(compressed_to_image("jpeg", jpeg_head, out, &error));
   EXPECT_NE(error.find("cannot decode"), std::string::npos) << error;
   EXPECT_NE(error.find("a segment of 16 bytes at byte 4 runs past the end of the data (11 bytes)"),
-    std::string::npos) << error; // VTK's memory source would read past the buffer
+    std::string::npos)
+    << error; // VTK's memory source would read past the buffer
   EXPECT_EQ(out->GetDimensions()[0], 7) << "untouched on failure";
   // A real JPEG cut inside its header, and one whose scan comes before any frame header.
   std::vector<uint8_t> jpeg;
   ASSERT_TRUE(image_to_compressed(image, "jpeg", &format, &jpeg, &error)) << error;
-  EXPECT_FALSE(compressed_to_image("jpeg", std::vector<uint8_t>(jpeg.begin(), jpeg.begin() + 30), out, &error));
+  EXPECT_FALSE(compressed_to_image(
+    "jpeg", std::vector<uint8_t>(jpeg.begin(), jpeg.begin() + 30), out, &error));
   EXPECT_NE(error.find("runs past the end of the data (30 bytes)"), std::string::npos) << error;
   const std::vector<uint8_t> scan_first = { 0xff, 0xd8, 0xff, 0xda, 0, 2, 0 };
   EXPECT_FALSE(compressed_to_image("jpeg", scan_first, out, &error));

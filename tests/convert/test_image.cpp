@@ -215,12 +215,15 @@ TEST(Image, OtherEncodingsMapToTheirScalarTypes)
   };
   const Case cases[] = { { "mono8", VTK_UNSIGNED_CHAR, 1 }, { "8UC1", VTK_UNSIGNED_CHAR, 1 },
     { "8UC3", VTK_UNSIGNED_CHAR, 3 }, { "8UC4", VTK_UNSIGNED_CHAR, 4 },
-    { "rgba8", VTK_UNSIGNED_CHAR, 4 }, { "64FC1", VTK_DOUBLE, 1 }, { "16UC1", VTK_UNSIGNED_SHORT, 1 } };
+    { "rgba8", VTK_UNSIGNED_CHAR, 4 }, { "64FC1", VTK_DOUBLE, 1 },
+    { "16UC1", VTK_UNSIGNED_SHORT, 1 } };
   for (const Case& c : cases)
   {
     ImageLayout layout = layout_of(2, 1, c.encoding, 0);
     const int pixel_bytes = c.components *
-      (c.type == VTK_DOUBLE ? 8 : c.type == VTK_UNSIGNED_SHORT ? 2 : 1);
+      (c.type == VTK_DOUBLE              ? 8
+          : c.type == VTK_UNSIGNED_SHORT ? 2
+                                         : 1);
     layout.step = static_cast<uint32_t>(2 * pixel_bytes);
     std::vector<uint8_t> data(layout.step, 0);
     vtkNew<vtkImageData> image;

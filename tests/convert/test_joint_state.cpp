@@ -63,7 +63,8 @@ TEST(JointState, MismatchedSizesAreRejected)
   ASSERT_TRUE(joint_state_to_table({ "a" }, { 1 }, {}, {}, table, nullptr));
   std::string error;
   EXPECT_FALSE(joint_state_to_table({ "a", "b" }, { 1, 2 }, { 0.5 }, {}, table, &error));
-  EXPECT_NE(error.find("velocity has 1 entries but another array has 2"), std::string::npos) << error;
+  EXPECT_NE(error.find("velocity has 1 entries but another array has 2"), std::string::npos)
+    << error;
   EXPECT_EQ(table->GetNumberOfRows(), 1); // untouched
 }
 
@@ -88,5 +89,6 @@ TEST(JointState, TableWithWrongColumnTypesIsRejected)
   text_positions->AddColumn(positions);
   error.clear();
   EXPECT_FALSE(table_to_joint_state(text_positions, &arrays, &error));
-  EXPECT_NE(error.find("'position' must be a one-component numeric array"), std::string::npos) << error;
+  EXPECT_NE(error.find("'position' must be a one-component numeric array"), std::string::npos)
+    << error;
 }

@@ -108,7 +108,8 @@ TEST(Malformed, RandomMultiArrayLayoutsAreCheckedAgainstTheData)
     const int dims = static_cast<int>(random() % 4);
     for (int d = 0; d < dims; ++d)
     {
-      layout.dim.push_back({ "d", static_cast<uint32_t>(random() % 6), static_cast<uint32_t>(random() % 12) });
+      layout.dim.push_back(
+        { "d", static_cast<uint32_t>(random() % 6), static_cast<uint32_t>(random() % 12) });
     }
     layout.data_offset = random() % 5;
     std::vector<double> data(random() % 30, 1.0);

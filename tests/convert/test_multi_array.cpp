@@ -31,7 +31,8 @@ TEST(MultiArray, Int64TwoByThreeBecomesTwoRowThreeColumnTable)
   const std::vector<int64_t> data = { 1, 2, 3, 4, 5, 6 };
   vtkNew<vtkTable> table;
   std::string error;
-  ASSERT_TRUE(multi_array_to_table(two_d("rows", 2, 6, "cols", 3, 3), data, table, &error)) << error;
+  ASSERT_TRUE(multi_array_to_table(two_d("rows", 2, 6, "cols", 3, 3), data, table, &error))
+    << error;
   ASSERT_EQ(table->GetNumberOfRows(), 2);
   ASSERT_EQ(table->GetNumberOfColumns(), 3);
   EXPECT_STREQ(table->GetColumnName(0), "cols_0");
@@ -118,16 +119,17 @@ TEST(MultiArray, LayoutWithoutDimsIsOneColumn)
 TEST(MultiArray, BadLayoutsAreRejectedAndTableUntouched)
 {
   vtkNew<vtkTable> table;
-  ASSERT_TRUE(multi_array_to_table(two_d("", 1, 1, "", 1, 1), std::vector<int64_t>{ 5 }, table, nullptr));
+  ASSERT_TRUE(
+    multi_array_to_table(two_d("", 1, 1, "", 1, 1), std::vector<int64_t>{ 5 }, table, nullptr));
   std::string error;
 
-  EXPECT_FALSE(multi_array_to_table(two_d("rows", 2, 6, "cols", 3, 3),
-    std::vector<int64_t>{ 1, 2, 3, 4, 5 }, table, &error));
+  EXPECT_FALSE(multi_array_to_table(
+    two_d("rows", 2, 6, "cols", 3, 3), std::vector<int64_t>{ 1, 2, 3, 4, 5 }, table, &error));
   EXPECT_NE(error.find("needs 6 data values but there are 5"), std::string::npos) << error;
 
   error.clear();
-  EXPECT_FALSE(multi_array_to_table(two_d("rows", 2, 6, "cols", 3, 2),
-    std::vector<int64_t>{ 1, 2, 3, 4, 5, 6 }, table, &error));
+  EXPECT_FALSE(multi_array_to_table(
+    two_d("rows", 2, 6, "cols", 3, 2), std::vector<int64_t>{ 1, 2, 3, 4, 5, 6 }, table, &error));
   EXPECT_NE(error.find("stride 2 smaller than its size 3"), std::string::npos) << error;
 
   MultiArrayLayout three = two_d("a", 1, 1, "b", 1, 1);
@@ -144,8 +146,8 @@ TEST(MultiArray, BadLayoutsAreRejectedAndTableUntouched)
 
   // 0 rows needs no data, but 4e9 empty columns must not be allocated.
   error.clear();
-  EXPECT_FALSE(multi_array_to_table(two_d("rows", 0, 0, "cols", 4000000000u, 4000000000u),
-    std::vector<int64_t>{}, table, &error));
+  EXPECT_FALSE(multi_array_to_table(
+    two_d("rows", 0, 0, "cols", 4000000000u, 4000000000u), std::vector<int64_t>{}, table, &error));
   EXPECT_NE(error.find("at most 1024"), std::string::npos) << error;
 
   EXPECT_EQ(table->GetNumberOfColumns(), 1);
@@ -166,8 +168,8 @@ TEST(MultiArray, RowsOfZeroColumnsAreRefusedWithoutAllocating)
   EXPECT_EQ(doubles->GetNumberOfTuples(), 1); // untouched on failure
   error.clear();
   vtkNew<vtkTypeInt64Array> ints;
-  EXPECT_FALSE(multi_array_to_array(two_d("rows", 4294967295u, 0, "cols", 0, 7),
-    std::vector<int64_t>{ 1, 2 }, ints, &error));
+  EXPECT_FALSE(multi_array_to_array(
+    two_d("rows", 4294967295u, 0, "cols", 0, 7), std::vector<int64_t>{ 1, 2 }, ints, &error));
   EXPECT_NE(error.find("4294967295 rows of 0 columns"), std::string::npos) << error;
   error.clear();
   vtkNew<vtkTable> table;
@@ -175,11 +177,12 @@ TEST(MultiArray, RowsOfZeroColumnsAreRefusedWithoutAllocating)
   EXPECT_NE(error.find("multi_array_to_table: layout has " + expected), std::string::npos) << error;
   // Huge empty arrays: 0 rows of 4e9 components is capped like table columns.
   error.clear();
-  EXPECT_FALSE(multi_array_to_array(two_d("rows", 0, 0, "cols", 4000000000u, 4000000000u),
-    std::vector<double>{}, doubles, &error));
+  EXPECT_FALSE(multi_array_to_array(
+    two_d("rows", 0, 0, "cols", 4000000000u, 4000000000u), std::vector<double>{}, doubles, &error));
   EXPECT_NE(error.find("at most 65536"), std::string::npos) << error;
   // 0 x N stays a valid empty matrix.
-  ASSERT_TRUE(multi_array_to_array(two_d("rows", 0, 0, "cols", 3, 3), std::vector<double>{}, doubles, &error))
+  ASSERT_TRUE(
+    multi_array_to_array(two_d("rows", 0, 0, "cols", 3, 3), std::vector<double>{}, doubles, &error))
     << error;
   EXPECT_EQ(doubles->GetNumberOfTuples(), 0);
   EXPECT_EQ(doubles->GetNumberOfComponents(), 3);
@@ -191,18 +194,22 @@ TEST(MultiArray, TableColumnsAreBoundedByCount)
 {
   vtkNew<vtkTable> table;
   std::string error;
-  ASSERT_TRUE(multi_array_to_table(two_d("rows", 0, 0, "c", 1024, 1024), std::vector<double>{}, table, &error))
+  ASSERT_TRUE(multi_array_to_table(
+    two_d("rows", 0, 0, "c", 1024, 1024), std::vector<double>{}, table, &error))
     << error;
   EXPECT_EQ(table->GetNumberOfColumns(), 1024);
-  EXPECT_FALSE(multi_array_to_table(two_d("rows", 0, 0, "c", 1025, 1025), std::vector<double>{}, table, &error));
-  EXPECT_NE(error.find("layout asks for 1025 columns; at most 1024 are taken"), std::string::npos) << error;
+  EXPECT_FALSE(multi_array_to_table(
+    two_d("rows", 0, 0, "c", 1025, 1025), std::vector<double>{}, table, &error));
+  EXPECT_NE(error.find("layout asks for 1025 columns; at most 1024 are taken"), std::string::npos)
+    << error;
   EXPECT_EQ(table->GetNumberOfColumns(), 1024); // untouched
 }
 
 TEST(MultiArray, EmptyTableKeepsItsColumns)
 {
   vtkNew<vtkTable> table;
-  ASSERT_TRUE(multi_array_to_table(two_d("", 0, 0, "c", 3, 3), std::vector<double>{}, table, nullptr));
+  ASSERT_TRUE(
+    multi_array_to_table(two_d("", 0, 0, "c", 3, 3), std::vector<double>{}, table, nullptr));
   EXPECT_EQ(table->GetNumberOfColumns(), 3);
   EXPECT_EQ(table->GetNumberOfRows(), 0);
 }
@@ -277,7 +284,7 @@ TEST(MultiArray, OneDimToDoubleArrayAndBack)
 TEST(MultiArray, Int64ArrayKeepsFullPrecision)
 {
   const int64_t big = (int64_t{ 1 } << 62) + 1; // not representable as a double
-  MultiArrayLayout layout; // no dims: the whole data vector
+  MultiArrayLayout layout;                      // no dims: the whole data vector
   vtkNew<vtkTypeInt64Array> array;
   ASSERT_TRUE(multi_array_to_array(layout, std::vector<int64_t>{ big, -7 }, array, nullptr));
   ASSERT_EQ(array->GetNumberOfTuples(), 2);
@@ -298,7 +305,8 @@ TEST(MultiArray, TwoDimsBecomeTuplesOfComponents)
   const std::vector<double> data = { 1, 2, 3, 0, 4, 5, 6 };
   vtkNew<vtkDoubleArray> array;
   std::string error;
-  ASSERT_TRUE(multi_array_to_array(two_d("samples", 2, 8, "xyz", 3, 4), data, array, &error)) << error;
+  ASSERT_TRUE(multi_array_to_array(two_d("samples", 2, 8, "xyz", 3, 4), data, array, &error))
+    << error;
   ASSERT_EQ(array->GetNumberOfTuples(), 2);
   ASSERT_EQ(array->GetNumberOfComponents(), 3);
   EXPECT_EQ(array->GetComponent(1, 0), 4);

@@ -23,7 +23,7 @@ using namespace ros2vtk::convert;
 
 namespace {
 
-template <typename T>
+template<typename T>
 void put(std::vector<uint8_t>& bytes, size_t at, T value, bool big_endian = false)
 {
   uint8_t raw[sizeof(T)];
@@ -35,7 +35,7 @@ void put(std::vector<uint8_t>& bytes, size_t at, T value, bool big_endian = fals
   std::memcpy(bytes.data() + at, raw, sizeof(T));
 }
 
-template <typename T>
+template<typename T>
 T get(const std::vector<uint8_t>& bytes, size_t at)
 {
   T value;
@@ -78,8 +78,9 @@ TEST(PointCloud2, XyzFloat32PlusIntensity)
 {
   vtkNew<vtkPolyData> poly;
   std::string error;
-  ASSERT_TRUE(point_cloud2_to_poly_data(xyzi_layout(), xyzi_data(), kMillimetresPerMetre,
-    NonFinitePoints::Keep, poly, &error)) << error;
+  ASSERT_TRUE(point_cloud2_to_poly_data(
+    xyzi_layout(), xyzi_data(), kMillimetresPerMetre, NonFinitePoints::Keep, poly, &error))
+    << error;
   ASSERT_EQ(poly->GetNumberOfPoints(), 3);
   EXPECT_EQ(poly->GetPoints()->GetDataType(), VTK_FLOAT);
   double p[3];
@@ -115,8 +116,9 @@ TEST(PointCloud2, NonFinitePointsDroppedOrRejected)
 {
   vtkNew<vtkPolyData> poly;
   std::string error;
-  ASSERT_TRUE(point_cloud2_to_poly_data(xyzi_layout(), xyzi_data(), 1000.0, NonFinitePoints::Drop,
-    poly, &error)) << error;
+  ASSERT_TRUE(point_cloud2_to_poly_data(
+    xyzi_layout(), xyzi_data(), 1000.0, NonFinitePoints::Drop, poly, &error))
+    << error;
   ASSERT_EQ(poly->GetNumberOfPoints(), 2);
   EXPECT_EQ(poly->GetPoint(1)[0], -1000.0);
   vtkDataArray* intensity = poly->GetPointData()->GetArray("intensity");
@@ -126,8 +128,8 @@ TEST(PointCloud2, NonFinitePointsDroppedOrRejected)
   EXPECT_EQ(poly->GetNumberOfVerts(), 2);
 
   error.clear();
-  EXPECT_FALSE(point_cloud2_to_poly_data(xyzi_layout(), xyzi_data(), 1000.0,
-    NonFinitePoints::Reject, poly, &error));
+  EXPECT_FALSE(point_cloud2_to_poly_data(
+    xyzi_layout(), xyzi_data(), 1000.0, NonFinitePoints::Reject, poly, &error));
   EXPECT_NE(error.find("point 1 (row 0, column 1) has a NaN"), std::string::npos) << error;
   EXPECT_EQ(poly->GetNumberOfPoints(), 2); // untouched
 }
@@ -212,8 +214,9 @@ TEST(PointCloud2, ZeroWidthIsAnEmptyCloudWhateverTheHeight)
   layout.height = 0xFFFFFFFFu; // must not walk 4e9 empty rows
   vtkNew<vtkPolyData> poly;
   std::string error;
-  ASSERT_TRUE(point_cloud2_to_poly_data(layout, std::vector<uint8_t>{}, 1000.0,
-    NonFinitePoints::Drop, poly, &error)) << error;
+  ASSERT_TRUE(point_cloud2_to_poly_data(
+    layout, std::vector<uint8_t>{}, 1000.0, NonFinitePoints::Drop, poly, &error))
+    << error;
   EXPECT_EQ(poly->GetNumberOfPoints(), 0);
   ASSERT_NE(poly->GetPointData()->GetArray("intensity"), nullptr);
   EXPECT_EQ(poly->GetPointData()->GetArray("intensity")->GetNumberOfTuples(), 0);
@@ -251,7 +254,8 @@ TEST(PointCloud2, PolyDataToCloudLaysOutFieldsAndComesBack)
   PointCloud2Layout layout;
   std::vector<uint8_t> data;
   std::string error;
-  ASSERT_TRUE(poly_data_to_point_cloud2(poly, kMillimetresPerMetre, &layout, &data, &error)) << error;
+  ASSERT_TRUE(poly_data_to_point_cloud2(poly, kMillimetresPerMetre, &layout, &data, &error))
+    << error;
   EXPECT_EQ(layout.height, 1u);
   EXPECT_EQ(layout.width, 2u);
   EXPECT_FALSE(layout.is_bigendian);
@@ -283,14 +287,15 @@ TEST(PointCloud2, PolyDataToCloudLaysOutFieldsAndComesBack)
   EXPECT_FLOAT_EQ(get<float>(data, 8), 0.3f);
   EXPECT_EQ(get<float>(data, 12), 0.5f);
   EXPECT_EQ(get<uint16_t>(data, 16), 7);
-  EXPECT_EQ(get<float>(data, 28), 1.0f);   // normal z of point 0
+  EXPECT_EQ(get<float>(data, 28), 1.0f);         // normal z of point 0
   EXPECT_FLOAT_EQ(get<float>(data, 32), -0.05f); // x of point 1
   EXPECT_EQ(get<uint16_t>(data, 48), 9);
-  EXPECT_EQ(get<float>(data, 52), 1.0f);   // normal x of point 1
+  EXPECT_EQ(get<float>(data, 52), 1.0f); // normal x of point 1
 
   vtkNew<vtkPolyData> back;
-  ASSERT_TRUE(point_cloud2_to_poly_data(layout, data, kMillimetresPerMetre, NonFinitePoints::Keep,
-    back, &error)) << error;
+  ASSERT_TRUE(point_cloud2_to_poly_data(
+    layout, data, kMillimetresPerMetre, NonFinitePoints::Keep, back, &error))
+    << error;
   ASSERT_EQ(back->GetNumberOfPoints(), 2);
   EXPECT_NEAR(back->GetPoint(1)[0], -50.0, 1e-4);
   EXPECT_NEAR(back->GetPoint(1)[2], 1000.0, 1e-4);
@@ -318,7 +323,8 @@ TEST(PointCloud2, BadLayoutsAreRejected)
   auto expect_rejected = [&](const PointCloud2Layout& layout, const std::vector<uint8_t>& bytes,
                            const std::string& fragment) {
     error.clear();
-    EXPECT_FALSE(point_cloud2_to_poly_data(layout, bytes, 1000.0, NonFinitePoints::Keep, poly, &error));
+    EXPECT_FALSE(
+      point_cloud2_to_poly_data(layout, bytes, 1000.0, NonFinitePoints::Keep, poly, &error));
     EXPECT_NE(error.find(fragment), std::string::npos) << "got: " << error;
   };
 
@@ -328,7 +334,8 @@ TEST(PointCloud2, BadLayoutsAreRejected)
 
   PointCloud2Layout past_end = xyzi_layout();
   past_end.fields[3].offset = 18;
-  expect_rejected(past_end, data, "field 'intensity' (offset 18, 4 bytes) reaches past point_step 20");
+  expect_rejected(
+    past_end, data, "field 'intensity' (offset 18, 4 bytes) reaches past point_step 20");
 
   PointCloud2Layout small_row = xyzi_layout();
   small_row.row_step = 59;
@@ -354,7 +361,8 @@ TEST(PointCloud2, BadLayoutsAreRejected)
   expect_rejected(huge, data, "needs");
 
   error.clear();
-  EXPECT_FALSE(point_cloud2_to_poly_data(xyzi_layout(), data, std::nan(""), NonFinitePoints::Keep, poly, &error));
+  EXPECT_FALSE(point_cloud2_to_poly_data(
+    xyzi_layout(), data, std::nan(""), NonFinitePoints::Keep, poly, &error));
   EXPECT_NE(error.find("length_scale"), std::string::npos) << error;
 
   EXPECT_EQ(poly->GetNumberOfPoints(), 0); // never touched
@@ -377,11 +385,14 @@ TEST(PointCloud2, Float64CoordinatesThatOverflowOnceScaledAreRefused)
   for (auto policy : { NonFinitePoints::Keep, NonFinitePoints::Drop, NonFinitePoints::Reject })
   {
     error.clear();
-    EXPECT_FALSE(point_cloud2_to_poly_data(layout, data, kMillimetresPerMetre, policy, cloud, &error));
-    EXPECT_NE(error.find("point at byte 24: y = 1e+306 is not finite once scaled by 1000"), std::string::npos)
+    EXPECT_FALSE(
+      point_cloud2_to_poly_data(layout, data, kMillimetresPerMetre, policy, cloud, &error));
+    EXPECT_NE(error.find("point at byte 24: y = 1e+306 is not finite once scaled by 1000"),
+      std::string::npos)
       << error;
   }
   EXPECT_EQ(cloud->GetNumberOfPoints(), 0);
-  ASSERT_TRUE(point_cloud2_to_poly_data(layout, data, kNoLengthScaling, NonFinitePoints::Keep, cloud, &error));
+  ASSERT_TRUE(point_cloud2_to_poly_data(
+    layout, data, kNoLengthScaling, NonFinitePoints::Keep, cloud, &error));
   EXPECT_EQ(cloud->GetPoint(1)[1], 1e306);
 }

@@ -17,7 +17,8 @@ TEST(Points, FloatTriplesAreScaledToMillimetres)
   const std::vector<float> xyz = { 0.1f, 0.2f, -0.5f, 1.0f, 0.0f, 0.25f };
   vtkNew<vtkPoints> points;
   std::string error;
-  ASSERT_TRUE(xyz_to_points(xyz, kMillimetresPerMetre, NonFinitePoints::Keep, points, &error)) << error;
+  ASSERT_TRUE(xyz_to_points(xyz, kMillimetresPerMetre, NonFinitePoints::Keep, points, &error))
+    << error;
   EXPECT_EQ(points->GetDataType(), VTK_FLOAT);
   ASSERT_EQ(points->GetNumberOfPoints(), 2);
   double p[3];
@@ -79,15 +80,19 @@ TEST(Points, BadInput)
 {
   vtkNew<vtkPoints> points;
   std::string error;
-  EXPECT_FALSE(xyz_to_points(std::vector<float>{ 1, 2, 3, 4 }, 1000.0, NonFinitePoints::Keep, points, &error));
-  EXPECT_NE(error.find("4 values is not a whole number of x, y, z triples"), std::string::npos) << error;
+  EXPECT_FALSE(
+    xyz_to_points(std::vector<float>{ 1, 2, 3, 4 }, 1000.0, NonFinitePoints::Keep, points, &error));
+  EXPECT_NE(error.find("4 values is not a whole number of x, y, z triples"), std::string::npos)
+    << error;
 
   error.clear();
-  EXPECT_FALSE(xyz_to_points(std::vector<float>{ 1, 2, 3 }, -1.0, NonFinitePoints::Keep, points, &error));
+  EXPECT_FALSE(
+    xyz_to_points(std::vector<float>{ 1, 2, 3 }, -1.0, NonFinitePoints::Keep, points, &error));
   EXPECT_NE(error.find("length_scale"), std::string::npos) << error;
 
   error.clear();
-  EXPECT_FALSE(xyz_to_points(static_cast<const float*>(nullptr), 2, 1000.0, NonFinitePoints::Keep, points, &error));
+  EXPECT_FALSE(xyz_to_points(
+    static_cast<const float*>(nullptr), 2, 1000.0, NonFinitePoints::Keep, points, &error));
   EXPECT_NE(error.find("null"), std::string::npos) << error;
 
   std::vector<double> out;
@@ -105,14 +110,16 @@ TEST(Points, CoordinatesThatOverflowOnceScaledAreRefused)
   for (auto policy : { NonFinitePoints::Keep, NonFinitePoints::Drop, NonFinitePoints::Reject })
   {
     error.clear();
-    EXPECT_FALSE(xyz_to_points(std::vector<float>{ 0, 0, 0, 1, 1e37f, 1 }, kMillimetresPerMetre, policy,
-      points, &error));
-    EXPECT_NE(error.find("point 1: coordinate 1e+37 is not finite once scaled by 1000"), std::string::npos)
+    EXPECT_FALSE(xyz_to_points(
+      std::vector<float>{ 0, 0, 0, 1, 1e37f, 1 }, kMillimetresPerMetre, policy, points, &error));
+    EXPECT_NE(
+      error.find("point 1: coordinate 1e+37 is not finite once scaled by 1000"), std::string::npos)
       << error;
     error.clear();
-    EXPECT_FALSE(xyz_to_points(std::vector<double>{ 1e306, 0, 0 }, kMillimetresPerMetre, policy, points, &error));
+    EXPECT_FALSE(xyz_to_points(
+      std::vector<double>{ 1e306, 0, 0 }, kMillimetresPerMetre, policy, points, &error));
     EXPECT_NE(error.find("point 0: coordinate 1e+306"), std::string::npos) << error;
   }
-  EXPECT_TRUE(xyz_to_points(std::vector<float>{ 1e37f, 0, 0 }, kNoLengthScaling, NonFinitePoints::Keep, points,
-    &error));
+  EXPECT_TRUE(xyz_to_points(
+    std::vector<float>{ 1e37f, 0, 0 }, kNoLengthScaling, NonFinitePoints::Keep, points, &error));
 }

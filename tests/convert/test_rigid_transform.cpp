@@ -46,7 +46,8 @@ TEST(RigidTransform, TranslationIsScaledToMillimetres)
 {
   vtkNew<vtkMatrix4x4> matrix;
   std::string error;
-  ASSERT_TRUE(pose_to_matrix(make_pose(0.1, -0.25, 2.0, 0, 0, 0, 1), kMillimetresPerMetre, matrix, &error))
+  ASSERT_TRUE(
+    pose_to_matrix(make_pose(0.1, -0.25, 2.0, 0, 0, 0, 1), kMillimetresPerMetre, matrix, &error))
     << error;
   const double expected[16] = { 1, 0, 0, 100, 0, 1, 0, -250, 0, 0, 1, 2000, 0, 0, 0, 1 };
   expect_matrix(matrix, expected);
@@ -62,7 +63,8 @@ TEST(RigidTransform, TranslationIsScaledToMillimetres)
 TEST(RigidTransform, ScalingSwitchedOffKeepsMetres)
 {
   vtkNew<vtkMatrix4x4> matrix;
-  ASSERT_TRUE(pose_to_matrix(make_pose(0.1, 0.2, 0.3, 0, 0, 0, 1), kNoLengthScaling, matrix, nullptr));
+  ASSERT_TRUE(
+    pose_to_matrix(make_pose(0.1, 0.2, 0.3, 0, 0, 0, 1), kNoLengthScaling, matrix, nullptr));
   EXPECT_DOUBLE_EQ(matrix->GetElement(0, 3), 0.1);
   EXPECT_DOUBLE_EQ(matrix->GetElement(1, 3), 0.2);
   EXPECT_DOUBLE_EQ(matrix->GetElement(2, 3), 0.3);
@@ -72,7 +74,8 @@ TEST(RigidTransform, NinetyDegreesAboutZ)
 {
   vtkNew<vtkMatrix4x4> matrix;
   std::string error;
-  ASSERT_TRUE(pose_to_matrix(make_pose(1, 2, 3, 0, 0, kHalfSqrt2, kHalfSqrt2), 1000.0, matrix, &error))
+  ASSERT_TRUE(
+    pose_to_matrix(make_pose(1, 2, 3, 0, 0, kHalfSqrt2, kHalfSqrt2), 1000.0, matrix, &error))
     << error;
   // x -> y, y -> -x: columns are the images of the axes.
   const double expected[16] = { 0, -1, 0, 1000, 1, 0, 0, 2000, 0, 0, 1, 3000, 0, 0, 0, 1 };
@@ -109,7 +112,8 @@ TEST(RigidTransform, OneHundredTwentyDegreesAboutDiagonal)
 TEST(RigidTransform, QuaternionWithNegativeWComesBackWithPositiveW)
 {
   vtkNew<vtkMatrix4x4> matrix;
-  ASSERT_TRUE(pose_to_matrix(make_pose(0, 0, 0, 0, 0, -kHalfSqrt2, -kHalfSqrt2), 1000.0, matrix, nullptr));
+  ASSERT_TRUE(
+    pose_to_matrix(make_pose(0, 0, 0, 0, 0, -kHalfSqrt2, -kHalfSqrt2), 1000.0, matrix, nullptr));
   EXPECT_NEAR(matrix->GetElement(0, 1), -1.0, 1e-15); // same rotation as +q
   RigidPose back;
   ASSERT_TRUE(matrix_to_pose(matrix, 1000.0, &back, nullptr));
@@ -120,7 +124,8 @@ TEST(RigidTransform, QuaternionWithNegativeWComesBackWithPositiveW)
 TEST(RigidTransform, MatrixToPoseChoosesTheQuaternionWithPositiveW)
 {
   // 200 deg about z (trace < 0). Its quaternions are +-(0, 0, sin 100deg, cos 100deg) with
-  // cos 100deg = -0.17364817766693; the one with w >= 0 is (0, 0, -0.984807753012208, 0.17364817766693).
+  // cos 100deg = -0.17364817766693; the one with w >= 0 is (0, 0, -0.984807753012208,
+  // 0.17364817766693).
   const double c = -0.9396926207859084; // cos 200deg
   const double s = -0.3420201433256687; // sin 200deg
   const double rotation[16] = { c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
@@ -238,7 +243,8 @@ TEST(RigidTransform, VtkTransformBothWays)
 {
   vtkNew<vtkTransform> transform;
   std::string error;
-  ASSERT_TRUE(pose_to_transform(make_pose(0.5, 0, 0, 0, 0, kHalfSqrt2, kHalfSqrt2), 1000.0, transform, &error))
+  ASSERT_TRUE(pose_to_transform(
+    make_pose(0.5, 0, 0, 0, 0, kHalfSqrt2, kHalfSqrt2), 1000.0, transform, &error))
     << error;
   double point[3] = { 10, 0, 0 };
   transform->TransformPoint(point, point);
@@ -303,9 +309,12 @@ TEST(RigidTransform, TranslationThatOverflowsOnceScaledIsRefused)
 {
   vtkNew<vtkMatrix4x4> matrix;
   std::string error;
-  EXPECT_FALSE(pose_to_matrix(make_pose(1e306, 0, 0, 0, 0, 0, 1), kMillimetresPerMetre, matrix, &error));
-  EXPECT_NE(error.find("pose_to_matrix: translation (1e+306, 0, 0) is not finite once scaled by 1000"),
-    std::string::npos) << error;
+  EXPECT_FALSE(
+    pose_to_matrix(make_pose(1e306, 0, 0, 0, 0, 0, 1), kMillimetresPerMetre, matrix, &error));
+  EXPECT_NE(
+    error.find("pose_to_matrix: translation (1e+306, 0, 0) is not finite once scaled by 1000"),
+    std::string::npos)
+    << error;
   EXPECT_EQ(matrix->GetElement(0, 3), 0.0); // untouched
   EXPECT_TRUE(pose_to_matrix(make_pose(1e306, 0, 0, 0, 0, 0, 1), kNoLengthScaling, matrix, &error));
 }

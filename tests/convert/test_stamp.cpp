@@ -24,7 +24,8 @@ TEST(Stamp, ClampsWhatInt32SecondsCannotHold)
   EXPECT_EQ(before_epoch.sec, 0);
   EXPECT_EQ(before_epoch.nanosec, 0u);
   const Stamp after_2038 = to_stamp(std::chrono::system_clock::time_point(
-    std::chrono::duration_cast<std::chrono::system_clock::duration>(std::chrono::seconds(3000000000LL))));
+    std::chrono::duration_cast<std::chrono::system_clock::duration>(
+      std::chrono::seconds(3000000000LL))));
   EXPECT_EQ(after_2038.sec, 2147483647);
   EXPECT_EQ(after_2038.nanosec, 999999999u);
 }

@@ -58,7 +58,10 @@ class TestNoteDisplayableManager : public vtkROS2DisplayableManager
 public:
   static TestNoteDisplayableManager* New();
   vtkTypeMacro(TestNoteDisplayableManager, vtkROS2DisplayableManager);
-  bool CanDisplay(vtkROS2SceneNode* node) override { return TestNoteNode::SafeDownCast(node) != nullptr; }
+  bool CanDisplay(vtkROS2SceneNode* node) override
+  {
+    return TestNoteNode::SafeDownCast(node) != nullptr;
+  }
 
 protected:
   vtkProp* CreateProp(vtkROS2SceneNode*) override { return vtkTextActor::New(); }

@@ -26,8 +26,7 @@
 
 #include "ros2vtkLabTestRegister.hpp" // ros2vtk_register_ros2vtkLabTest_nodes()
 
-namespace
-{
+namespace {
 bool SpinUntil(vtkROS2Logic* logic, const std::function<bool()>& done, double seconds)
 {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -53,7 +52,8 @@ int Echo(vtkROS2Logic* logic, const char* topic, double seconds)
     return 2;
   }
   std::cout << "ready" << std::endl;
-  if (!SpinUntil(logic, [&] { return sub->GetNumberOfMessages() > 0; }, seconds))
+  if (!SpinUntil(
+        logic, [&] { return sub->GetNumberOfMessages() > 0; }, seconds))
   {
     std::cerr << "timeout: no message on " << topic << std::endl;
     return 1;
@@ -81,15 +81,18 @@ int Publish(vtkROS2Logic* logic, const char* topic, double seconds)
   vtkNew<vtkROS2PublisherGenericNode> generic;
   logic->GetScene()->AddNode(generic);
   if (!pub || !generic->SetROSType("lab_msgs/msg/NeedleTarget") ||
-      !generic->AddToROS2Node(node->GetID(), topic))
+    !generic->AddToROS2Node(node->GetID(), topic))
   {
     std::cerr << "cannot create the publishers" << std::endl;
     return 2;
   }
-  if (!SpinUntil(logic, [&] {
-        return pub->GetNumberOfMatchedSubscriptions() > 0 &&
-          generic->GetNumberOfMatchedSubscriptions() > 0;
-      }, seconds))
+  if (!SpinUntil(
+        logic,
+        [&] {
+          return pub->GetNumberOfMatchedSubscriptions() > 0 &&
+            generic->GetNumberOfMatchedSubscriptions() > 0;
+        },
+        seconds))
   {
     std::cerr << "timeout: no subscriber on " << topic << std::endl;
     return 1;
@@ -110,7 +113,8 @@ int Publish(vtkROS2Logic* logic, const char* topic, double seconds)
     std::cerr << "PublishYAML failed" << std::endl;
     return 1;
   }
-  SpinUntil(logic, [] { return false; }, 1.0); // let both messages leave
+  SpinUntil(
+    logic, [] { return false; }, 1.0); // let both messages leave
   std::cout << "published 2" << std::endl;
   return 0;
 }

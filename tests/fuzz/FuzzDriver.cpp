@@ -30,14 +30,16 @@ std::vector<std::string> read_corpus(const std::string& folder)
 
 namespace {
 
-const unsigned char kInteresting[] = { 0x00, 0x01, 0x7f, 0x80, 0xff, 0xfe, 0xc0, 0xed, '<', '>', '/', '"', '\'',
-                                       '&', '=', '[', ']', '{', '}', ':', '-', ' ', '\n', '*', '0', '9' };
+const unsigned char kInteresting[] = { 0x00, 0x01, 0x7f, 0x80, 0xff, 0xfe, 0xc0, 0xed, '<', '>',
+  '/', '"', '\'', '&', '=', '[', ']', '{', '}', ':', '-', ' ', '\n', '*', '0', '9' };
 
 class Mutator
 {
 public:
   Mutator(const FuzzTarget& target, const std::vector<std::string>& corpus, std::uint32_t seed)
-    : target_(target), corpus_(corpus), random_(seed)
+    : target_(target)
+    , corpus_(corpus)
+    , random_(seed)
   {
   }
 
@@ -53,7 +55,10 @@ public:
   }
 
 private:
-  std::size_t pick(std::size_t n) { return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_); }
+  std::size_t pick(std::size_t n)
+  {
+    return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_);
+  }
 
   void edit(std::string& s)
   {
@@ -98,7 +103,8 @@ private:
           if (!other.empty())
           {
             const std::size_t from = pick(other.size());
-            s.insert(at, other.substr(from, 1 + pick(std::min<std::size_t>(other.size() - from, 512))));
+            s.insert(
+              at, other.substr(from, 1 + pick(std::min<std::size_t>(other.size() - from, 512))));
           }
         }
         break;
@@ -119,8 +125,8 @@ private:
 
 } // namespace
 
-FuzzReport fuzz(const FuzzTarget& target, const std::vector<std::string>& corpus, std::size_t iterations,
-                std::uint32_t seed)
+FuzzReport fuzz(const FuzzTarget& target, const std::vector<std::string>& corpus,
+  std::size_t iterations, std::uint32_t seed)
 {
   FuzzReport report;
   for (const std::string& entry : corpus)

@@ -36,8 +36,8 @@ struct FuzzReport
 std::vector<std::string> read_corpus(const std::string& folder);
 
 /// Runs the corpus entries as they are, then `iterations` mutated inputs from `seed`.
-FuzzReport fuzz(const FuzzTarget& target, const std::vector<std::string>& corpus, std::size_t iterations,
-                std::uint32_t seed);
+FuzzReport fuzz(const FuzzTarget& target, const std::vector<std::string>& corpus,
+  std::size_t iterations, std::uint32_t seed);
 
 } // namespace ros2vtk_fuzz
 

@@ -1,8 +1,9 @@
 // ros2vtk tests — fuzz targets for every parser of untrusted input that is not CDR (CDR decode
 // per type is tests/message/test_cdr_fuzz): multi-array layouts, URDF text, mesh files (STL,
 // OBJ, PLY, DAE), scene XML, message YAML, and runtime type descriptions (REP 2011, as a node's
-// ~/get_type_description answers) with a payload decoded by the type built from them. Run by CTest under ASan + UBSan through the seeded
-// driver (FuzzDriver.hpp), one test per target, a fixed number of inputs each:
+// ~/get_type_description answers) with a payload decoded by the type built from them. Run by CTest
+// under ASan + UBSan through the seeded driver (FuzzDriver.hpp), one test per target, a fixed
+// number of inputs each:
 //
 //     fuzz_inputs TARGET CORPUS_FOLDER ITERATIONS [SEED]
 //
@@ -100,7 +101,7 @@ bool multi_array(const std::string& input)
   const bool t = ros2vtk::convert::multi_array_to_table(layout, doubles, table, &error);
   ros2vtk::convert::multi_array_to_table(layout, ints, table, &error);
   require(!a || array->GetNumberOfValues() <= static_cast<vtkIdType>(doubles.size()),
-          "an array never holds more values than the message");
+    "an array never holds more values than the message");
   return a || t;
 }
 
@@ -121,7 +122,8 @@ std::function<bool(const std::string&)> mesh(const std::string& extension)
 {
   return [extension](const std::string& input) {
     static const std::string path = (std::filesystem::temp_directory_path() /
-                                     ("ros2vtk_fuzz_" + std::to_string(::getpid()) + extension)).string();
+      ("ros2vtk_fuzz_" + std::to_string(::getpid()) + extension))
+                                      .string();
     std::ofstream(path, std::ios::binary | std::ios::trunc) << input;
     ros2vtk::robot::MeshData mesh;
     std::string error;
@@ -152,7 +154,8 @@ bool yaml(const std::string& input)
   }
   const std::string written = ros2vtk::wire::to_yaml(sample_type(), &first);
   Sample second;
-  require(ros2vtk::wire::from_yaml(sample_type(), written, &second, &error), "written YAML reads back");
+  require(
+    ros2vtk::wire::from_yaml(sample_type(), written, &second, &error), "written YAML reads back");
   require(first == second, "written YAML reads back to the same message");
   return true;
 }
@@ -162,7 +165,7 @@ bool yaml(const std::string& input)
 /// type_id capacity string_capacity nested default..." adds a field, "P hex" is the payload;
 /// other lines are skipped.
 bool read_description(const std::string& input, ros2vtk::wire::TypeDescriptionData& description,
-                      std::vector<uint8_t>& payload)
+  std::vector<uint8_t>& payload)
 {
   std::istringstream lines(input);
   std::string line;
@@ -192,7 +195,8 @@ bool read_description(const std::string& input, ros2vtk::wire::TypeDescriptionDa
       std::istringstream words(rest);
       ros2vtk::wire::DescriptionField field;
       unsigned type_id = 0;
-      if (!(words >> field.name >> type_id >> field.capacity >> field.string_capacity >> field.nested_type_name))
+      if (!(words >> field.name >> type_id >> field.capacity >> field.string_capacity >>
+            field.nested_type_name))
         continue;
       field.type_id = static_cast<uint8_t>(type_id);
       if (field.nested_type_name == "-")
@@ -203,7 +207,8 @@ bool read_description(const std::string& input, ros2vtk::wire::TypeDescriptionDa
     else if (line[0] == 'P')
     {
       for (size_t i = 0; i + 1 < rest.size(); i += 2)
-        payload.push_back(static_cast<uint8_t>(std::strtoul(rest.substr(i, 2).c_str(), nullptr, 16)));
+        payload.push_back(
+          static_cast<uint8_t>(std::strtoul(rest.substr(i, 2).c_str(), nullptr, 16)));
     }
   }
   return have_main;
@@ -235,7 +240,8 @@ bool type_description(const std::string& input)
   (void)yaml_of_default;
   if (payload.empty())
     return true;
-  if (!ros2vtk::wire::deserialize_message(*type, payload.data(), payload.size(), message.get(), &error))
+  if (!ros2vtk::wire::deserialize_message(
+        *type, payload.data(), payload.size(), message.get(), &error))
   {
     require(!error.empty(), "a refused payload has a reason");
     return true; // the description was accepted
@@ -245,8 +251,9 @@ bool type_description(const std::string& input)
   std::vector<uint8_t> written;
   ros2vtk::wire::serialize_message(*type, message.get(), written);
   std::unique_ptr<void, void (*)(void*)> again(type->create(), type->destroy);
-  require(ros2vtk::wire::deserialize_message(*type, written.data(), written.size(), again.get(), &error),
-          "what a runtime type wrote reads back");
+  require(
+    ros2vtk::wire::deserialize_message(*type, written.data(), written.size(), again.get(), &error),
+    "what a runtime type wrote reads back");
   std::vector<uint8_t> rewritten;
   ros2vtk::wire::serialize_message(*type, again.get(), rewritten);
   require(written == rewritten, "a runtime type writes what it read back byte for byte");
@@ -256,31 +263,46 @@ bool type_description(const std::string& input)
 std::map<std::string, FuzzTarget> targets()
 {
   std::map<std::string, FuzzTarget> all;
-  auto add = [&](FuzzTarget target) { all[target.name] = std::move(target); };
+  auto add = [&](FuzzTarget target) {
+    all[target.name] = std::move(target);
+  };
   add({ "multi_array", {}, multi_array });
   add({ "urdf",
-        { "<link name=\"l\"/>", "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>",
-          "<visual><geometry><mesh filename=\"package://p/../../x.stl\"/></geometry></visual>", "<robot>",
-          "</robot>", "<!ENTITY e \"&e;&e;\">", "&e;", "<material name=\"m\"><color rgba=\"1 0 0 1\"/></material>" },
-        urdf });
-  add({ "mesh_stl", { "solid ", "facet normal 0 0 1\n outer loop\n", "vertex 1e308 -1e308 nan\n", "endloop\n endfacet\n",
-                      std::string("\xff\xff\xff\x7f", 4) },
-        mesh(".stl") });
-  add({ "mesh_obj", { "v 1 2 3\n", "f 1 2 3\n", "f -1 -2 -99999\n", "vt 0 0\n", "mtllib x.mtl\n", "usemtl m\n" }, mesh(".obj") });
-  add({ "mesh_ply", { "element vertex 4294967295\n", "property float x\n", "property list uchar int vertex_indices\n",
-                      "end_header\n", "format binary_little_endian 1.0\n" },
-        mesh(".ply") });
-  add({ "mesh_dae", { "<node>", "</node>", "<instance_geometry url=\"#g\"/>", "<float_array count=\"99999999\">", "<p>0 1 2</p>",
-                      "<library_geometries>" },
-        mesh(".dae") });
-  add({ "scene_xml", { "<x>", "</x>", "<vtkROS2NodeNode id=\"a\" name=\"n\"/>", " attr=\"v\"", "&amp;", "<![CDATA[", "<!--" },
-        scene_xml });
-  add({ "yaml", { "inners: ", "[", "]", "{", "}", "- ", "&a ", "*a", "s: ", "text: ", "bytes: [1, 2]", "'", "\"\\x", "!!binary " },
-        yaml });
+    { "<link name=\"l\"/>",
+      "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>",
+      "<visual><geometry><mesh filename=\"package://p/../../x.stl\"/></geometry></visual>",
+      "<robot>", "</robot>", "<!ENTITY e \"&e;&e;\">", "&e;",
+      "<material name=\"m\"><color rgba=\"1 0 0 1\"/></material>" },
+    urdf });
+  add({ "mesh_stl",
+    { "solid ", "facet normal 0 0 1\n outer loop\n", "vertex 1e308 -1e308 nan\n",
+      "endloop\n endfacet\n", std::string("\xff\xff\xff\x7f", 4) },
+    mesh(".stl") });
+  add({ "mesh_obj",
+    { "v 1 2 3\n", "f 1 2 3\n", "f -1 -2 -99999\n", "vt 0 0\n", "mtllib x.mtl\n", "usemtl m\n" },
+    mesh(".obj") });
+  add({ "mesh_ply",
+    { "element vertex 4294967295\n", "property float x\n",
+      "property list uchar int vertex_indices\n", "end_header\n",
+      "format binary_little_endian 1.0\n" },
+    mesh(".ply") });
+  add({ "mesh_dae",
+    { "<node>", "</node>", "<instance_geometry url=\"#g\"/>", "<float_array count=\"99999999\">",
+      "<p>0 1 2</p>", "<library_geometries>" },
+    mesh(".dae") });
+  add({ "scene_xml",
+    { "<x>", "</x>", "<vtkROS2NodeNode id=\"a\" name=\"n\"/>", " attr=\"v\"", "&amp;", "<![CDATA[",
+      "<!--" },
+    scene_xml });
+  add({ "yaml",
+    { "inners: ", "[", "]", "{", "}", "- ", "&a ", "*a", "s: ", "text: ", "bytes: [1, 2]", "'",
+      "\"\\x", "!!binary " },
+    yaml });
   add({ "type_description",
-        { "F v 1 0 0 test_msgs/msg/BasicTypes\n", "F s 17 0 0 - 'x'\n", "F a 49 4 0 -\n", "F q 145 0 0 -\n",
-          "F b 97 3 8 -\n", "T test_msgs/msg/BasicTypes\n", " 4294967295 ", " 255 ", "P 00010000ffffffff\n" },
-        type_description });
+    { "F v 1 0 0 test_msgs/msg/BasicTypes\n", "F s 17 0 0 - 'x'\n", "F a 49 4 0 -\n",
+      "F q 145 0 0 -\n", "F b 97 3 8 -\n", "T test_msgs/msg/BasicTypes\n", " 4294967295 ", " 255 ",
+      "P 00010000ffffffff\n" },
+    type_description });
   return all;
 }
 
@@ -311,9 +333,9 @@ int main(int argc, char** argv)
     return 2;
   }
   const FuzzReport report = fuzz(found->second, corpus, std::strtoull(argv[3], nullptr, 10),
-                                 argc > 4 ? static_cast<uint32_t>(std::strtoul(argv[4], nullptr, 10)) : 1u);
-  std::cout << argv[1] << ": " << report.inputs << " inputs (" << corpus.size() << " from the corpus), "
-            << report.accepted << " accepted" << std::endl;
+    argc > 4 ? static_cast<uint32_t>(std::strtoul(argv[4], nullptr, 10)) : 1u);
+  std::cout << argv[1] << ": " << report.inputs << " inputs (" << corpus.size()
+            << " from the corpus), " << report.accepted << " accepted" << std::endl;
   // The unmodified corpus must be accepted: otherwise the target tests nothing but refusals.
   return report.accepted >= 1 ? 0 : 1;
 }

@@ -2,7 +2,8 @@
 // than block the spin; several clients at once"), with plain POSIX sockets as peers: one peer that
 // never reads (a stalled Slicer) loses its oldest queued messages and keeps the newest, in order,
 // while a peer that reads gets every message. The peers parse what they read from the header
-// layout of OpenIGTLink's header.md (58 bytes; device name at 14, body size at 42), not with our code.
+// layout of OpenIGTLink's header.md (58 bytes; device name at 14, body size at 42), not with our
+// code.
 #include "ros2vtk/igtl/Codec.hpp"
 #include "ros2vtk/igtl/Endpoint.hpp"
 #include "ros2vtk/igtl/Frame.hpp"
@@ -104,7 +105,8 @@ struct Reader
 
 std::vector<std::uint8_t> message(int i, std::size_t bytes)
 {
-  return igtl::encode_frame(igtl::encode_string("k" + std::to_string(i), std::string(bytes, 'x'), 0));
+  return igtl::encode_frame(
+    igtl::encode_string("k" + std::to_string(i), std::string(bytes, 'x'), 0));
 }
 
 bool wait_for_peers(igtl::Endpoint& endpoint, std::size_t count)

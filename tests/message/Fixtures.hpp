@@ -18,12 +18,12 @@ namespace ros2vtk_test {
 /// One serialized sample as rclpy wrote it.
 struct CdrFixture
 {
-  std::string file;                ///< "sensor_msgs__Image__2.json"
-  std::string ros_type;            ///< "sensor_msgs/msg/Image"
-  std::vector<uint8_t> payload;    ///< header included; padding zeroed by the script
-  std::vector<size_t> padding;     ///< offsets rclpy left uninitialised (zeroed here)
-  size_t trailing = 0;             ///< bytes after the last field (rmw's size estimate)
-  std::string yaml;                ///< as `ros2 topic echo` prints it
+  std::string file;             ///< "sensor_msgs__Image__2.json"
+  std::string ros_type;         ///< "sensor_msgs/msg/Image"
+  std::vector<uint8_t> payload; ///< header included; padding zeroed by the script
+  std::vector<size_t> padding;  ///< offsets rclpy left uninitialised (zeroed here)
+  size_t trailing = 0;          ///< bytes after the last field (rmw's size estimate)
+  std::string yaml;             ///< as `ros2 topic echo` prints it
   std::map<std::string, std::string> wheel_versions;
 };
 
@@ -52,8 +52,7 @@ inline CdrFixture load_fixture(const std::filesystem::path& path)
   fixture.padding = document.at("padding").get<std::vector<size_t>>();
   fixture.trailing = document.at("trailing").get<size_t>();
   fixture.yaml = document.at("yaml").get<std::string>();
-  fixture.wheel_versions =
-    document.at("wheel_versions").get<std::map<std::string, std::string>>();
+  fixture.wheel_versions = document.at("wheel_versions").get<std::map<std::string, std::string>>();
   return fixture;
 }
 

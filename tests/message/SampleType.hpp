@@ -38,8 +38,8 @@ struct Sample
   uint16_t u16 = 0;
   float f32 = 0.0f;
   double f64 = 0.0;
-  std::string text;           // string<=5
-  std::u16string wide;        // wstring
+  std::string text;    // string<=5
+  std::u16string wide; // wstring
   std::array<double, 3> fixed{};
   std::vector<int64_t> bounded; // int64[<=2]
   std::vector<bool> flags;
@@ -56,8 +56,9 @@ struct Sample
   }
 };
 
-template <typename T>
-wire::MessageTypeSupport table(const char* name, uint32_t field_count, const wire::FieldInfo* fields)
+template<typename T>
+wire::MessageTypeSupport table(
+  const char* name, uint32_t field_count, const wire::FieldInfo* fields)
 {
   wire::MessageTypeSupport type{};
   type.ros_type = name;
@@ -66,9 +67,15 @@ wire::MessageTypeSupport table(const char* name, uint32_t field_count, const wir
   type.struct_size = sizeof(T);
   type.field_count = field_count;
   type.fields = fields;
-  type.create = [] { return static_cast<void*>(new T()); };
-  type.destroy = [](void* m) { delete static_cast<T*>(m); };
-  type.copy = [](const void* from, void* to) { *static_cast<T*>(to) = *static_cast<const T*>(from); };
+  type.create = [] {
+    return static_cast<void*>(new T());
+  };
+  type.destroy = [](void* m) {
+    delete static_cast<T*>(m);
+  };
+  type.copy = [](const void* from, void* to) {
+    *static_cast<T*>(to) = *static_cast<const T*>(from);
+  };
   type.equal = [](const void* a, const void* b) {
     return *static_cast<const T*>(a) == *static_cast<const T*>(b);
   };
@@ -79,10 +86,10 @@ const wire::MessageTypeSupport* inner_type();
 const wire::MessageTypeSupport* nothing_type();
 
 const wire::FieldInfo kInnerFields[] = {
-  { "a", wire::FieldType::Int32, wire::Container::None, 0, 0, offsetof(Inner, a), nullptr,
-    nullptr, nullptr, nullptr, nullptr, nullptr },
-  { "s", wire::FieldType::String, wire::Container::None, 0, 0, offsetof(Inner, s), nullptr,
-    nullptr, nullptr, nullptr, nullptr, nullptr },
+  { "a", wire::FieldType::Int32, wire::Container::None, 0, 0, offsetof(Inner, a), nullptr, nullptr,
+    nullptr, nullptr, nullptr, nullptr },
+  { "s", wire::FieldType::String, wire::Container::None, 0, 0, offsetof(Inner, s), nullptr, nullptr,
+    nullptr, nullptr, nullptr, nullptr },
 };
 
 const wire::MessageTypeSupport* inner_type()
@@ -98,9 +105,11 @@ const wire::MessageTypeSupport* nothing_type()
   return &type;
 }
 
-#define R2V_SCALAR(member, kind)                                                                 \
-  { #member, wire::FieldType::kind, wire::Container::None, 0, 0, offsetof(Sample, member),     \
-    nullptr, nullptr, nullptr, nullptr, nullptr, nullptr }
+#define R2V_SCALAR(member, kind)                                                                   \
+  {                                                                                                \
+#member, wire::FieldType::kind, wire::Container::None, 0, 0, offsetof(Sample, member),         \
+      nullptr, nullptr, nullptr, nullptr, nullptr, nullptr                                         \
+  }
 
 const wire::FieldInfo kSampleFields[] = {
   R2V_SCALAR(flag, Bool),
@@ -132,8 +141,8 @@ const wire::FieldInfo kSampleFields[] = {
     &inner_type, nullptr, nullptr, nullptr, nullptr, nullptr },
   { "inners", wire::FieldType::Message, wire::Container::Sequence, 0, 0, offsetof(Sample, inners),
     &inner_type, &wire::container_size<std::vector<Inner>>,
-    &wire::container_element<std::vector<Inner>>, &wire::vector_resize<std::vector<Inner>>,
-    nullptr, nullptr },
+    &wire::container_element<std::vector<Inner>>, &wire::vector_resize<std::vector<Inner>>, nullptr,
+    nullptr },
   { "empty", wire::FieldType::Message, wire::Container::None, 0, 0, offsetof(Sample, empty),
     &nothing_type, nullptr, nullptr, nullptr, nullptr, nullptr },
 };

@@ -92,7 +92,8 @@ TEST_P(RclpyFixture, MatchesOurCdrAndYaml)
   std::string error;
   ASSERT_TRUE(ros2vtk::wire::from_yaml(*type, fixture.yaml, from_yaml.get(), &error)) << error;
   EXPECT_TRUE(type->equal(decoded.get(), from_yaml.get()))
-    << "decoded:\n" << ros2vtk::wire::to_yaml(*type, decoded.get()) << "from YAML:\n"
+    << "decoded:\n"
+    << ros2vtk::wire::to_yaml(*type, decoded.get()) << "from YAML:\n"
     << ros2vtk::wire::to_yaml(*type, from_yaml.get());
 
   // 3. We print it exactly as `ros2 topic echo` does.
@@ -100,8 +101,8 @@ TEST_P(RclpyFixture, MatchesOurCdrAndYaml)
 
   // 4. Our serializer writes rclpy's bytes (its padding zeroed, without the trailing bytes
   //    that only rmw's size estimate adds), and serialized_size() tells the truth.
-  std::vector<uint8_t> expected(fixture.payload.begin(),
-                                fixture.payload.end() - static_cast<long>(fixture.trailing));
+  std::vector<uint8_t> expected(
+    fixture.payload.begin(), fixture.payload.end() - static_cast<long>(fixture.trailing));
   std::vector<uint8_t> ours;
   ros2vtk::wire::serialize_message(*type, from_yaml.get(), ours);
   EXPECT_EQ(hex(ours), hex(expected));
@@ -138,8 +139,7 @@ std::vector<size_t> fixture_indices()
   return indices;
 }
 
-INSTANTIATE_TEST_SUITE_P(Rclpy, RclpyFixture, ::testing::ValuesIn(fixture_indices()),
-                         fixture_name);
+INSTANTIATE_TEST_SUITE_P(Rclpy, RclpyFixture, ::testing::ValuesIn(fixture_indices()), fixture_name);
 
 // tf2_msgs has no wheel; the fixture script builds it (tests/fixtures/README.md), so every
 // shipped type has rclpy bytes.
@@ -165,9 +165,9 @@ TEST(RclpyFixtures, CoverEveryShippedType)
   for (const std::string& name : ros2vtk::wire::registered_message_types())
   {
     EXPECT_TRUE(covered.count(name))
-        << name << " is shipped but has no rclpy fixture: add its package to PACKAGES in "
-        << "tests/fixtures/make_cdr_fixtures.py (a package without a wheel: scripts/"
-        << "make-rclpy-type.sh, see docs/extending.md) and run that script";
+      << name << " is shipped but has no rclpy fixture: add its package to PACKAGES in "
+      << "tests/fixtures/make_cdr_fixtures.py (a package without a wheel: scripts/"
+      << "make-rclpy-type.sh, see docs/extending.md) and run that script";
   }
 }
 

@@ -122,8 +122,8 @@ TEST_F(CdrFuzz, TruncationAtEveryLength)
       // except where only trailing padding/estimate bytes are cut.
       void* full = type->create();
       std::string error;
-      ASSERT_TRUE(ros2vtk::wire::deserialize_message(*type, payload.data(), payload.size(), full,
-                                                     &error))
+      ASSERT_TRUE(
+        ros2vtk::wire::deserialize_message(*type, payload.data(), payload.size(), full, &error))
         << type->ros_type << ": " << error;
       std::vector<uint8_t> exact;
       ros2vtk::wire::serialize_message(*type, full, exact);
@@ -205,8 +205,8 @@ TEST_F(CdrFuzz, HugeLengthsAndBoolBytes)
 
 TEST_F(CdrFuzz, BadEncapsulationIsRefused)
 {
-  const uint8_t bad_headers[][4] = { { 0, 2, 0, 0 }, { 0, 3, 0, 0 }, { 1, 1, 0, 0 },
-                                     { 0, 6, 0, 0 }, { 0xFF, 0xFF, 0, 0 } };
+  const uint8_t bad_headers[][4] = { { 0, 2, 0, 0 }, { 0, 3, 0, 0 }, { 1, 1, 0, 0 }, { 0, 6, 0, 0 },
+    { 0xFF, 0xFF, 0, 0 } };
   for (const MessageTypeSupport* type : shipped_types())
   {
     for (const auto& payload : payloads_[type->ros_type])
@@ -244,10 +244,16 @@ TEST_F(CdrFuzz, RandomMutationsOfFixtures)
           const size_t at = 4 + random_() % (mutated.size() - 4);
           switch (random_() % 3)
           {
-            case 0: mutated[at] = static_cast<uint8_t>(random_()); break;
-            case 1: mutated.erase(mutated.begin() + static_cast<long>(at)); break;
-            default: mutated.insert(mutated.begin() + static_cast<long>(at),
-                                    static_cast<uint8_t>(random_())); break;
+            case 0:
+              mutated[at] = static_cast<uint8_t>(random_());
+              break;
+            case 1:
+              mutated.erase(mutated.begin() + static_cast<long>(at));
+              break;
+            default:
+              mutated.insert(
+                mutated.begin() + static_cast<long>(at), static_cast<uint8_t>(random_()));
+              break;
           }
         }
         exercise(*type, mutated, outcome);

@@ -44,7 +44,8 @@ DescriptionFixture load_description(const std::string& file)
   fixture.ros_type = document.at("ros_type").get<std::string>();
   fixture.type_hash = document.at("type_hash").get<std::string>();
   fixture.rclpy_hash = document.at("rclpy_hash").get<std::string>();
-  const std::vector<uint8_t> bytes = ros2vtk_test::decode_hex(document.at("response_hex").get<std::string>());
+  const std::vector<uint8_t> bytes =
+    ros2vtk_test::decode_hex(document.at("response_hex").get<std::string>());
   // rclpy's response, read with the generated type_description_interfaces type.
   const wire::MessageTypeSupport& type = *tdi::srv::GetTypeDescription::type_support().response();
   std::unique_ptr<void, void (*)(void*)> message(type.create(), type.destroy);
@@ -69,7 +70,8 @@ DescriptionFixture load_description(const std::string& file)
 std::vector<std::string> description_files()
 {
   std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(ROS2VTK_FIXTURES_DIR "/type_descriptions"))
+  for (const auto& entry :
+    std::filesystem::directory_iterator(ROS2VTK_FIXTURES_DIR "/type_descriptions"))
   {
     files.push_back(entry.path().filename().string());
   }
@@ -94,8 +96,8 @@ const wire::MessageTypeSupport* build(const DescriptionFixture& fixture)
 }
 
 /// Our bytes equal rclpy's, padding zeroed, without the trailing bytes of rmw's estimate.
-void expect_same_bytes(const wire::MessageTypeSupport& type, const void* message, const std::vector<uint8_t>& payload,
-                       size_t trailing, const std::string& what)
+void expect_same_bytes(const wire::MessageTypeSupport& type, const void* message,
+  const std::vector<uint8_t>& payload, size_t trailing, const std::string& what)
 {
   std::vector<uint8_t> ours;
   wire::serialize_message(type, message, ours);
@@ -112,8 +114,10 @@ TEST(DynamicType, HashOfEveryRclpyDescriptionIsRosidls)
   {
     const DescriptionFixture fixture = load_description(file);
     std::string error;
-    EXPECT_EQ(wire::type_description_hash(fixture.description, &error), fixture.type_hash) << file << error;
-    EXPECT_EQ(wire::type_description_hash(fixture.description, &error), fixture.rclpy_hash) << file << error;
+    EXPECT_EQ(wire::type_description_hash(fixture.description, &error), fixture.type_hash)
+      << file << error;
+    EXPECT_EQ(wire::type_description_hash(fixture.description, &error), fixture.rclpy_hash)
+      << file << error;
   }
 }
 
@@ -144,9 +148,12 @@ TEST(DynamicType, ShippedTypesReadRclpyBytesAsTheGeneratedTypeDoes)
     for (uint32_t i = 0; i < dynamic->field_count; ++i)
     {
       EXPECT_STREQ(dynamic->fields[i].name, generated->fields[i].name);
-      EXPECT_EQ(dynamic->fields[i].container, generated->fields[i].container) << dynamic->fields[i].name;
-      EXPECT_EQ(dynamic->fields[i].array_size, generated->fields[i].array_size) << dynamic->fields[i].name;
-      EXPECT_EQ(dynamic->fields[i].string_bound, generated->fields[i].string_bound) << dynamic->fields[i].name;
+      EXPECT_EQ(dynamic->fields[i].container, generated->fields[i].container)
+        << dynamic->fields[i].name;
+      EXPECT_EQ(dynamic->fields[i].array_size, generated->fields[i].array_size)
+        << dynamic->fields[i].name;
+      EXPECT_EQ(dynamic->fields[i].string_bound, generated->fields[i].string_bound)
+        << dynamic->fields[i].name;
     }
     // Default values (from the description's default_value texts) as the generated type's.
     // Not for WStrings: rclpy serves its non-ASCII wstring defaults mangled ('Hell\\xc3\\xb6'
@@ -155,7 +162,8 @@ TEST(DynamicType, ShippedTypesReadRclpyBytesAsTheGeneratedTypeDoes)
     if (fixture.ros_type == "test_msgs/msg/WStrings")
     {
       Message a = make(*dynamic);
-      EXPECT_NE(wire::to_yaml(*dynamic, a.get()).find("wstring_value_default2: Hell\\xc3\\xb6\n"), std::string::npos)
+      EXPECT_NE(wire::to_yaml(*dynamic, a.get()).find("wstring_value_default2: Hell\\xc3\\xb6\n"),
+        std::string::npos)
         << wire::to_yaml(*dynamic, a.get());
     }
     else
@@ -177,11 +185,14 @@ TEST(DynamicType, ShippedTypesReadRclpyBytesAsTheGeneratedTypeDoes)
       Message ours = make(*dynamic);
       Message theirs = make(*generated);
       std::string error;
-      ASSERT_TRUE(wire::deserialize_message(*dynamic, sample.payload.data(), sample.payload.size(), ours.get(), &error))
+      ASSERT_TRUE(wire::deserialize_message(
+        *dynamic, sample.payload.data(), sample.payload.size(), ours.get(), &error))
         << sample.file << ": " << error;
-      ASSERT_TRUE(wire::deserialize_message(*generated, sample.payload.data(), sample.payload.size(), theirs.get(), &error));
+      ASSERT_TRUE(wire::deserialize_message(
+        *generated, sample.payload.data(), sample.payload.size(), theirs.get(), &error));
       EXPECT_EQ(wire::to_yaml(*dynamic, ours.get()), sample.yaml) << sample.file;
-      EXPECT_EQ(wire::to_yaml(*dynamic, ours.get()), wire::to_yaml(*generated, theirs.get())) << sample.file;
+      EXPECT_EQ(wire::to_yaml(*dynamic, ours.get()), wire::to_yaml(*generated, theirs.get()))
+        << sample.file;
       expect_same_bytes(*dynamic, ours.get(), sample.payload, sample.trailing, sample.file);
       // copy and equal walk the same fields.
       Message copy = make(*dynamic);
@@ -190,7 +201,8 @@ TEST(DynamicType, ShippedTypesReadRclpyBytesAsTheGeneratedTypeDoes)
       EXPECT_EQ(wire::to_yaml(*dynamic, copy.get()), sample.yaml) << sample.file;
       // YAML in: the generic publisher's path.
       Message from_text = make(*dynamic);
-      ASSERT_TRUE(wire::from_yaml(*dynamic, sample.yaml, from_text.get(), &error)) << sample.file << error;
+      ASSERT_TRUE(wire::from_yaml(*dynamic, sample.yaml, from_text.get(), &error))
+        << sample.file << error;
       EXPECT_TRUE(dynamic->equal(from_text.get(), ours.get())) << sample.file;
       ++compared;
     }
@@ -201,7 +213,8 @@ TEST(DynamicType, ShippedTypesReadRclpyBytesAsTheGeneratedTypeDoes)
 TEST(DynamicType, NotShippedTypeIsRegisteredAndReadsRclpyBytes)
 {
   const DescriptionFixture fixture = load_description("service_msgs__ServiceEventInfo.json");
-  ASSERT_EQ(wire::find_message_type(fixture.ros_type), nullptr) << "service_msgs is shipped now: pick another type";
+  ASSERT_EQ(wire::find_message_type(fixture.ros_type), nullptr)
+    << "service_msgs is shipped now: pick another type";
   const wire::MessageTypeSupport* dynamic = build(fixture);
   ASSERT_NE(dynamic, nullptr);
   EXPECT_EQ(wire::find_message_type(fixture.ros_type), dynamic);
@@ -218,12 +231,16 @@ TEST(DynamicType, NotShippedTypeIsRegisteredAndReadsRclpyBytes)
   ASSERT_EQ(fixture.samples.size(), 3u);
   for (const nlohmann::json& sample : fixture.samples)
   {
-    const std::vector<uint8_t> payload = ros2vtk_test::decode_hex(sample.at("hex").get<std::string>());
+    const std::vector<uint8_t> payload =
+      ros2vtk_test::decode_hex(sample.at("hex").get<std::string>());
     Message message = make(*dynamic);
     std::string error;
-    ASSERT_TRUE(wire::deserialize_message(*dynamic, payload.data(), payload.size(), message.get(), &error)) << error;
+    ASSERT_TRUE(
+      wire::deserialize_message(*dynamic, payload.data(), payload.size(), message.get(), &error))
+      << error;
     EXPECT_EQ(wire::to_yaml(*dynamic, message.get()), sample.at("yaml").get<std::string>());
-    expect_same_bytes(*dynamic, message.get(), payload, sample.at("trailing").get<size_t>(), "ServiceEventInfo");
+    expect_same_bytes(
+      *dynamic, message.get(), payload, sample.at("trailing").get<size_t>(), "ServiceEventInfo");
   }
   // Field access through the table, as the typed message objects do it.
   Message message = make(*dynamic);
@@ -248,10 +265,12 @@ wire::TypeDescriptionData nested_description()
   return load_description("test_msgs__Nested.json").description;
 }
 
-std::string refusal(const wire::TypeDescriptionData& description, wire::DynamicTypeLimits limits = {})
+std::string refusal(
+  const wire::TypeDescriptionData& description, wire::DynamicTypeLimits limits = {})
 {
   std::string error;
-  const wire::MessageTypeSupport* type = wire::build_dynamic_message_type(description, "", &error, limits);
+  const wire::MessageTypeSupport* type =
+    wire::build_dynamic_message_type(description, "", &error, limits);
   EXPECT_EQ(type, nullptr);
   EXPECT_FALSE(error.empty());
   return error;
@@ -275,20 +294,24 @@ TEST(DynamicType, MalformedDescriptionsAreRefusedWithAReason)
   {
     wire::TypeDescriptionData d = good; // BasicTypes refers back to Nested
     d.referenced[0].fields.push_back(nested_field("back", "test_msgs/msg/Nested"));
-    EXPECT_NE(refusal(d).find("cycle: test_msgs/msg/Nested -> test_msgs/msg/BasicTypes -> test_msgs/msg/Nested"),
-              std::string::npos) << refusal(d);
+    EXPECT_NE(refusal(d).find(
+                "cycle: test_msgs/msg/Nested -> test_msgs/msg/BasicTypes -> test_msgs/msg/Nested"),
+      std::string::npos)
+      << refusal(d);
   }
   {
     wire::TypeDescriptionData d = good;
     d.type.fields[0].nested_type_name = "test_msgs/msg/Missing";
-    EXPECT_NE(refusal(d).find("'test_msgs/msg/Missing' is missing from the referenced types"), std::string::npos);
+    EXPECT_NE(refusal(d).find("'test_msgs/msg/Missing' is missing from the referenced types"),
+      std::string::npos);
   }
   for (uint8_t id : { 0, 12, 14, 19, 20, 23, 48, 60, 96, 144, 167, 200, 255 })
   {
     wire::TypeDescriptionData d = good;
     d.referenced[0].fields[0].type_id = id;
     d.referenced[0].fields[0].capacity = id > 48 && id < 144 ? 2 : 0;
-    EXPECT_NE(refusal(d).find("unknown or unsupported type id " + std::to_string(id)), std::string::npos)
+    EXPECT_NE(
+      refusal(d).find("unknown or unsupported type id " + std::to_string(id)), std::string::npos)
       << int(id) << ": " << refusal(d);
   }
   {
@@ -296,7 +319,8 @@ TEST(DynamicType, MalformedDescriptionsAreRefusedWithAReason)
     d.referenced[0].fields[0].type_id = 6 + 48;
     d.referenced[0].fields[0].capacity = uint64_t(1) << 40;
     d.referenced[0].fields[0].default_value.clear();
-    EXPECT_NE(refusal(d).find("array size 1099511627776 exceeds the limit"), std::string::npos) << refusal(d);
+    EXPECT_NE(refusal(d).find("array size 1099511627776 exceeds the limit"), std::string::npos)
+      << refusal(d);
   }
   {
     wire::TypeDescriptionData d = good; // uint8[<=2^33]
@@ -317,7 +341,8 @@ TEST(DynamicType, MalformedDescriptionsAreRefusedWithAReason)
     }
     wire::DynamicTypeLimits limits;
     limits.max_fields = 2000;
-    EXPECT_NE(refusal(d, limits).find("would hold more than"), std::string::npos) << refusal(d, limits);
+    EXPECT_NE(refusal(d, limits).find("would hold more than"), std::string::npos)
+      << refusal(d, limits);
     EXPECT_NE(refusal(d).find("fields (limit 1024)"), std::string::npos);
   }
   {
@@ -366,7 +391,8 @@ TEST(DynamicType, MalformedDescriptionsAreRefusedWithAReason)
     for (auto& field : d.referenced[0].fields)
       if (field.name == "int8_value")
         field.default_value = "300";
-    EXPECT_NE(refusal(d).find("default value '300' does not read as int8"), std::string::npos) << refusal(d);
+    EXPECT_NE(refusal(d).find("default value '300' does not read as int8"), std::string::npos)
+      << refusal(d);
   }
   {
     wire::TypeDescriptionData d = good; // bounded string without its bound
@@ -379,7 +405,8 @@ TEST(DynamicType, MalformedDescriptionsAreRefusedWithAReason)
     std::string wrong = fixture.type_hash;
     wrong.back() = wrong.back() == '0' ? '1' : '0';
     EXPECT_EQ(wire::build_dynamic_message_type(fixture.description, wrong, &error), nullptr);
-    EXPECT_NE(error.find("differs from the hash the publisher announces"), std::string::npos) << error;
+    EXPECT_NE(error.find("differs from the hash the publisher announces"), std::string::npos)
+      << error;
   }
   {
     wire::TypeDescriptionData d = good; // not UTF-8
@@ -415,7 +442,8 @@ TEST(DynamicType, TruncatedAndMangledPayloadsAreRefusedWithoutCrashing)
         // Cutting into the last field's trailing alignment padding is not a truncation.
         Message message = make(*dynamic);
         std::string error;
-        const bool ok = wire::deserialize_message(*dynamic, sample.payload.data(), size, message.get(), &error);
+        const bool ok =
+          wire::deserialize_message(*dynamic, sample.payload.data(), size, message.get(), &error);
         if (!ok)
         {
           EXPECT_FALSE(error.empty());
@@ -430,7 +458,8 @@ TEST(DynamicType, TruncatedAndMangledPayloadsAreRefusedWithoutCrashing)
       {
         std::vector<uint8_t> bytes = sample.payload;
         for (int flips = 0; flips < 3; ++flips)
-          bytes[4 + random() % (bytes.size() - 4 > 0 ? bytes.size() - 4 : 1)] ^= static_cast<uint8_t>(1u << (random() % 8));
+          bytes[4 + random() % (bytes.size() - 4 > 0 ? bytes.size() - 4 : 1)] ^=
+            static_cast<uint8_t>(1u << (random() % 8));
         Message message = make(*dynamic);
         std::string error;
         if (wire::deserialize_message(*dynamic, bytes.data(), bytes.size(), message.get(), &error))
@@ -451,8 +480,8 @@ TEST(DynamicType, MutatedDescriptionsAreRefusedOrGiveWorkingTypes)
   // description takes slots of the process's pool (kMaxDynamicTypes).
   std::mt19937 random(2011);
   const std::vector<std::string> files = description_files();
-  const std::vector<std::string> defaults = { "", "0", "-1", "300", "True", "1e400", "nan", "[1, 2]", "(1,)",
-                                              "('a', 'b')", "[", "'", "x" };
+  const std::vector<std::string> defaults = { "", "0", "-1", "300", "True", "1e400", "nan",
+    "[1, 2]", "(1,)", "('a', 'b')", "[", "'", "x" };
   size_t refused = 0, accepted = 0;
   for (int round = 0; round < 150; ++round)
   {
@@ -480,18 +509,33 @@ TEST(DynamicType, MutatedDescriptionsAreRefusedOrGiveWorkingTypes)
       wire::DescriptionField& f = t.fields[random() % t.fields.size()];
       switch (random() % 8)
       {
-        case 0: f.type_id = static_cast<uint8_t>(random()); break;
-        case 1: f.capacity = random() % 2 ? random() % 5 : (uint64_t(1) << (random() % 64)); break;
-        case 2: f.string_capacity = random() % 4; break;
-        case 3: f.name = random() % 2 ? "" : "field_" + std::to_string(random() % 3); break;
-        case 4: f.nested_type_name = types[random() % types.size()]->type_name; break;
-        case 5: f.default_value = defaults[random() % defaults.size()]; break;
+        case 0:
+          f.type_id = static_cast<uint8_t>(random());
+          break;
+        case 1:
+          f.capacity = random() % 2 ? random() % 5 : (uint64_t(1) << (random() % 64));
+          break;
+        case 2:
+          f.string_capacity = random() % 4;
+          break;
+        case 3:
+          f.name = random() % 2 ? "" : "field_" + std::to_string(random() % 3);
+          break;
+        case 4:
+          f.nested_type_name = types[random() % types.size()]->type_name;
+          break;
+        case 5:
+          f.default_value = defaults[random() % defaults.size()];
+          break;
         case 6:
           if (!d.referenced.empty())
-            d.referenced.erase(d.referenced.begin() + static_cast<long>(random() % d.referenced.size()));
+            d.referenced.erase(
+              d.referenced.begin() + static_cast<long>(random() % d.referenced.size()));
           types.clear(); // pointers into referenced are gone
           break;
-        case 7: t.fields.push_back(f); break;
+        case 7:
+          t.fields.push_back(f);
+          break;
       }
       if (types.empty())
         break;
@@ -515,8 +559,9 @@ TEST(DynamicType, MutatedDescriptionsAreRefusedOrGiveWorkingTypes)
     const std::string yaml = wire::to_yaml(*type, back.get());
     EXPECT_EQ(yaml, wire::to_yaml(*type, message.get()));
     Message from_text = make(*type);
-    EXPECT_TRUE(wire::from_yaml(*type, yaml, from_text.get(), &error)) << type->ros_type << ": " << error << "\n"
-                                                                       << yaml;
+    EXPECT_TRUE(wire::from_yaml(*type, yaml, from_text.get(), &error))
+      << type->ros_type << ": " << error << "\n"
+      << yaml;
   }
   std::cout << "mutated descriptions: " << accepted << " accepted, " << refused << " refused\n";
   EXPECT_GT(refused, 30u);
@@ -528,20 +573,23 @@ TEST(DynamicType, MangledResponseBytesAreRefusedOrBuilt)
   // rclpy's serialized GetTypeDescription responses with bits flipped: read by the generated
   // type_description_interfaces type (or refused), then built (or refused): never a crash.
   std::mt19937 random(13);
-  const wire::MessageTypeSupport& response_type = *tdi::srv::GetTypeDescription::type_support().response();
+  const wire::MessageTypeSupport& response_type =
+    *tdi::srv::GetTypeDescription::type_support().response();
   size_t built = 0, refused = 0;
   for (const std::string& file : description_files())
   {
     std::ifstream stream(std::string(ROS2VTK_FIXTURES_DIR "/type_descriptions/") + file);
     const nlohmann::json document = nlohmann::json::parse(stream);
-    const std::vector<uint8_t> original = ros2vtk_test::decode_hex(document.at("response_hex").get<std::string>());
+    const std::vector<uint8_t> original =
+      ros2vtk_test::decode_hex(document.at("response_hex").get<std::string>());
     for (int round = 0; round < 100; ++round)
     {
       std::vector<uint8_t> bytes = original;
       bytes[4 + random() % (bytes.size() - 4)] ^= static_cast<uint8_t>(1u << (random() % 8));
       Message response = make(response_type);
       std::string error;
-      if (!wire::deserialize_message(response_type, bytes.data(), bytes.size(), response.get(), &error))
+      if (!wire::deserialize_message(
+            response_type, bytes.data(), bytes.size(), response.get(), &error))
       {
         ++refused;
         continue;
@@ -549,7 +597,7 @@ TEST(DynamicType, MangledResponseBytesAreRefusedOrBuilt)
       const auto& r = *static_cast<const tdi::srv::GetTypeDescription_Response*>(response.get());
       // The announced hash guards against silent changes: a flipped name or id is refused.
       if (wire::build_dynamic_message_type(wire::from_message(r.type_description),
-                                           document.at("type_hash").get<std::string>(), &error))
+            document.at("type_hash").get<std::string>(), &error))
         ++built;
       else
       {
@@ -571,7 +619,8 @@ wire::IndividualDescription from_table(const wire::IndividualTypeDescriptionTabl
   for (uint32_t i = 0; i < table.field_count; ++i)
   {
     const wire::TypeDescriptionField& f = table.fields[i];
-    result.fields.push_back({ f.name, f.type_id, f.capacity, f.string_capacity, f.nested_type_name, f.default_value });
+    result.fields.push_back(
+      { f.name, f.type_id, f.capacity, f.string_capacity, f.nested_type_name, f.default_value });
   }
   return result;
 }
@@ -595,7 +644,8 @@ TEST(DynamicType, EveryShippedTypeHashesAndBuildsLikeItsGeneratedTable)
       d.referenced.push_back(from_table(generated->description->referenced[i]));
     std::string error;
     EXPECT_EQ(wire::type_description_hash(d, &error), generated->type_hash) << name;
-    const wire::MessageTypeSupport* dynamic = wire::build_dynamic_message_type(d, generated->type_hash, &error);
+    const wire::MessageTypeSupport* dynamic =
+      wire::build_dynamic_message_type(d, generated->type_hash, &error);
     ASSERT_NE(dynamic, nullptr) << name << ": " << error;
     EXPECT_STREQ(dynamic->dds_type_name, generated->dds_type_name);
     ASSERT_EQ(dynamic->field_count, generated->field_count) << name;
@@ -604,7 +654,8 @@ TEST(DynamicType, EveryShippedTypeHashesAndBuildsLikeItsGeneratedTable)
     // Types are cached per hash, and the hash leaves default values out: when an earlier test of
     // this process built WStrings from rclpy's description (non-ASCII defaults mangled, see
     // ShippedTypesRead...), that table is the one returned here. Run alone, this test compares it.
-    if (name != "test_msgs/msg/WStrings" || std::string(wire::to_yaml(*dynamic, a.get())).find("\\x") == std::string::npos)
+    if (name != "test_msgs/msg/WStrings" ||
+      std::string(wire::to_yaml(*dynamic, a.get())).find("\\x") == std::string::npos)
     {
       EXPECT_EQ(wire::to_yaml(*dynamic, a.get()), wire::to_yaml(*generated, b.get())) << name;
       std::vector<uint8_t> ours, theirs;
@@ -614,8 +665,8 @@ TEST(DynamicType, EveryShippedTypeHashesAndBuildsLikeItsGeneratedTable)
     }
     ++checked;
   }
-  std::cout << "shipped types checked: " << checked << ", dynamic types in the process: "
-            << wire::dynamic_message_type_count() << "\n";
+  std::cout << "shipped types checked: " << checked
+            << ", dynamic types in the process: " << wire::dynamic_message_type_count() << "\n";
   EXPECT_GT(checked, 200u);
 }
 
@@ -640,10 +691,13 @@ TEST(DynamicType, HostileSequenceCountsAreRefusedBeforeAllocating)
   const wire::MessageTypeSupport* type = wire::build_dynamic_message_type(d, "", &error);
   ASSERT_NE(type, nullptr) << error;
   for (const std::vector<uint8_t>& payload :
-       { std::vector<uint8_t>{ 0, 1, 0, 0, 0xff, 0xff, 0xff, 0xff }, std::vector<uint8_t>{ 0, 1, 0, 0, 1, 0, 0, 0, 7, 7, 7, 7 } })
+    { std::vector<uint8_t>{ 0, 1, 0, 0, 0xff, 0xff, 0xff, 0xff },
+      std::vector<uint8_t>{ 0, 1, 0, 0, 1, 0, 0, 0, 7, 7, 7, 7 } })
   {
     Message message = make(*type);
-    EXPECT_FALSE(wire::deserialize_message(*type, payload.data(), payload.size(), message.get(), &error));
-    EXPECT_NE(error.find("sequence length exceeds the remaining bytes"), std::string::npos) << error;
+    EXPECT_FALSE(
+      wire::deserialize_message(*type, payload.data(), payload.size(), message.get(), &error));
+    EXPECT_NE(error.find("sequence length exceeds the remaining bytes"), std::string::npos)
+      << error;
   }
 }

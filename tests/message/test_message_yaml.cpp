@@ -67,7 +67,8 @@ TEST(MessageYaml, EmptyMessageIsAnEmptyMapping)
   const Nothing nothing;
   EXPECT_EQ(wire::to_yaml(*nothing_type(), &nothing), "{}\n");
   // rosidl's dummy member of an empty message is hidden, as rosidl_runtime_py hides it.
-  const wire::MessageTypeSupport with_dummy = table<Nothing>("test_msgs/msg/Dummy", 1, kDummyFields);
+  const wire::MessageTypeSupport with_dummy =
+    table<Nothing>("test_msgs/msg/Dummy", 1, kDummyFields);
   EXPECT_EQ(wire::to_yaml(with_dummy, &nothing), "{}\n");
   Nothing read;
   std::string error;
@@ -97,8 +98,8 @@ TEST(MessageYaml, BytesAcceptCharactersAndNumbers)
 {
   Sample read;
   std::string error;
-  ASSERT_TRUE(wire::from_yaml(sample_type(), "byte_value: 255\nbytes: [A, '7', 7, \"\\xFF\"]\n",
-                              &read, &error))
+  ASSERT_TRUE(wire::from_yaml(
+    sample_type(), "byte_value: 255\nbytes: [A, '7', 7, \"\\xFF\"]\n", &read, &error))
     << error;
   EXPECT_EQ(read.byte_value, 255);
   EXPECT_EQ(read.bytes, (std::vector<uint8_t>{ 'A', '7', 7, 0xFF }));
@@ -108,7 +109,7 @@ TEST(MessageYaml, StringsRoundTripThroughTheirYaml)
 {
   // Blank multi-line strings are where yaml-cpp and PyYAML disagree; MessageYaml repairs it.
   for (const char* text : { "\n", "\n\n", " ", "", " \n ", "a\n", "\n\nb", "it's\n", "\t",
-                            "x:", "- y", "caf\xc3\xa9", "\x01", "null", "1.5" })
+         "x:", "- y", "caf\xc3\xa9", "\x01", "null", "1.5" })
   {
     Sample sample;
     sample.inner.s = text;
@@ -142,8 +143,7 @@ TEST_P(MessageYamlErrors, NameTheFieldAndLeaveTheMessageAlone)
   EXPECT_TRUE(target == filled_sample());
 }
 
-INSTANTIATE_TEST_SUITE_P(
-  Inputs, MessageYamlErrors,
+INSTANTIATE_TEST_SUITE_P(Inputs, MessageYamlErrors,
   ::testing::Values(
     BadInput{ "nope: 1\n", "nope: unknown field of test_msgs/msg/Sample (fields: flag," },
     BadInput{ "inner:\n  b: 1\n", "inner.b: unknown field" },
@@ -154,7 +154,8 @@ INSTANTIATE_TEST_SUITE_P(
     BadInput{ "u16: -1\n", "u16: -1 is out of range for uint16" },
     BadInput{ "u16: 1.5\n", "u16: expected an integer" },
     BadInput{ "u16: '5'\n", "u16: expected an integer" },
-    BadInput{ "bounded: [1, 99999999999999999999]\n", "bounded[1]: 99999999999999999999 is out of range" },
+    BadInput{
+      "bounded: [1, 99999999999999999999]\n", "bounded[1]: 99999999999999999999 is out of range" },
     BadInput{ "f32: 1e39\n", "f32: 1e39 is out of range for float32" },
     BadInput{ "f64: 1e999\n", "f64: 1e999 is out of range for float64" },
     BadInput{ "f64: nan\n", "f64: expected a number (float64)" },
@@ -169,8 +170,7 @@ INSTANTIATE_TEST_SUITE_P(
     BadInput{ "inners: 5\n", "inners: expected a sequence of message" },
     BadInput{ "inner: 5\n", "inner: expected a mapping for test_msgs/msg/Inner" },
     BadInput{ "- 1\n- 2\n", "<message>: expected a mapping for test_msgs/msg/Sample" },
-    BadInput{ "flag: [unclosed\n", "invalid YAML" },
-    BadInput{ "a: b: c\n", "invalid YAML" }));
+    BadInput{ "flag: [unclosed\n", "invalid YAML" }, BadInput{ "a: b: c\n", "invalid YAML" }));
 
 // PyYAML's own rendering of tricky scalars, written by tests/fixtures/make_cdr_fixtures.py.
 TEST(MessageYaml, ScalarsMatchPyYamlTable)
@@ -182,7 +182,8 @@ TEST(MessageYaml, ScalarsMatchPyYamlTable)
   for (const auto& entry : table.at("strings"))
   {
     const std::string value = entry.at("value").get<std::string>();
-    EXPECT_EQ("k: " + wire::format_yaml_string(value, 2) + "\n", entry.at("yaml").get<std::string>())
+    EXPECT_EQ(
+      "k: " + wire::format_yaml_string(value, 2) + "\n", entry.at("yaml").get<std::string>())
       << "string " << nlohmann::json(value).dump();
   }
   ASSERT_GT(table.at("floats").size(), 20u);
@@ -237,7 +238,8 @@ TEST(MessageYaml, AliasesCannotExpandBeyondTheText)
   EXPECT_FALSE(wire::from_yaml(sample_type(), yaml, &read, &error));
   EXPECT_NE(error.find("(aliases?)"), std::string::npos) << error;
   // A few aliases are fine.
-  ASSERT_TRUE(wire::from_yaml(sample_type(), "inners: [{s: &t abc}, {s: *t}]\n", &read, &error)) << error;
+  ASSERT_TRUE(wire::from_yaml(sample_type(), "inners: [{s: &t abc}, {s: *t}]\n", &read, &error))
+    << error;
   ASSERT_EQ(read.inners.size(), 2u);
   EXPECT_EQ(read.inners[1].s, "abc");
 }
@@ -246,6 +248,12 @@ TEST(MessageYaml, InvalidUtf8InStringsIsReplaced)
 {
   Sample read;
   std::string error;
-  ASSERT_TRUE(wire::from_yaml(sample_type(), "text: \"a\xff" "b\"\n", &read, &error)) << error;
-  EXPECT_EQ(read.text, "a\xEF\xBF\xBD" "b");
+  ASSERT_TRUE(wire::from_yaml(sample_type(),
+    "text: \"a\xff"
+    "b\"\n",
+    &read, &error))
+    << error;
+  EXPECT_EQ(read.text,
+    "a\xEF\xBF\xBD"
+    "b");
 }

@@ -22,7 +22,10 @@ std::string repaired(std::string text, size_t expected_count)
 
 TEST(Utf8, InvalidSequencesBecomeOneReplacementEachLikePython)
 {
-  EXPECT_EQ(repaired("a\xff" "b", 1), "a" + kReplacement + "b");
+  EXPECT_EQ(repaired("a\xff"
+                     "b",
+              1),
+    "a" + kReplacement + "b");
   EXPECT_EQ(repaired("\xe2\x82", 1), kReplacement);                                   // truncated
   EXPECT_EQ(repaired("\xed\xa0\x80", 3), kReplacement + kReplacement + kReplacement); // surrogate
   EXPECT_EQ(repaired("\xf0\x9f\x98", 1), kReplacement);
@@ -46,7 +49,8 @@ TEST(Utf8, ClippedTextKeepsWholeCharacters)
 TEST(Utf8, StringsReadFromCdrAreRepairedAndCounted)
 {
   // CDR_LE header, length 4, 'a' 0xff 'b' NUL: what an rclcpp peer may put in a std::string.
-  const std::vector<uint8_t> payload{ 0x00, 0x01, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 'a', 0xff, 'b', 0x00 };
+  const std::vector<uint8_t> payload{ 0x00, 0x01, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 'a', 0xff,
+    'b', 0x00 };
   const uint64_t before = invalid_utf8_replacements();
   CdrReader reader(payload.data(), payload.size());
   std::string value;

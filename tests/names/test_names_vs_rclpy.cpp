@@ -1,7 +1,8 @@
-// ros2vtk — our topic/service name expansion (wire::expand_topic_name, what Participant::resolve_name
-// and so every publisher, subscription, service and client use) against rclpy's own, row by row.
-// The expected column comes from rclpy at test time (rclpy_names_table.py run by the venv python),
-// never from our code: a valid name must expand identically, an invalid one be refused by both.
+// ros2vtk — our topic/service name expansion (wire::expand_topic_name, what
+// Participant::resolve_name and so every publisher, subscription, service and client use) against
+// rclpy's own, row by row. The expected column comes from rclpy at test time (rclpy_names_table.py
+// run by the venv python), never from our code: a valid name must expand identically, an invalid
+// one be refused by both.
 #include "ros2vtk/wire/Names.hpp"
 
 #include <gtest/gtest.h>
@@ -64,7 +65,7 @@ std::vector<Row> rclpy_table(std::string& failure)
       failure = "malformed line from rclpy: " + output.substr(0, 200);
       return {};
     }
-    rows.push_back({fields[0], fields[1], fields[2], fields[3]});
+    rows.push_back({ fields[0], fields[1], fields[2], fields[3] });
   }
   return rows;
 }
@@ -87,8 +88,8 @@ TEST(NamesVsRclpy, EveryNameExpandsOrIsRefusedAsRclpyDoes)
     if (row.status == "ok")
     {
       ++valid;
-      EXPECT_TRUE(ok) << where << ": rclpy expands it to '" << row.result << "', we refuse: "
-                      << error;
+      EXPECT_TRUE(ok) << where << ": rclpy expands it to '" << row.result
+                      << "', we refuse: " << error;
       if (ok)
       {
         EXPECT_EQ(expanded, row.result) << where;

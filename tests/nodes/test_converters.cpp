@@ -27,8 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace
-{
+namespace {
 namespace nodes = ros2vtk::nodes;
 namespace geometry_msgs = ros2vtk::geometry_msgs::msg;
 namespace sensor_msgs = ros2vtk::sensor_msgs::msg;
@@ -133,11 +132,11 @@ TEST(PoseStampedConvert, NullMatrixIsAnErrorNotACrash)
 {
   geometry_msgs::PoseStamped pose;
   std::string error;
-  EXPECT_FALSE(nodes::ROS2ToVTK(pose, static_cast<vtkMatrix4x4*>(nullptr),
-    ros2vtk::convert::kMillimetresPerMetre, &error));
+  EXPECT_FALSE(nodes::ROS2ToVTK(
+    pose, static_cast<vtkMatrix4x4*>(nullptr), ros2vtk::convert::kMillimetresPerMetre, &error));
   EXPECT_FALSE(error.empty());
-  EXPECT_FALSE(nodes::VTKToROS2(static_cast<vtkMatrix4x4*>(nullptr), pose,
-    ros2vtk::convert::kMillimetresPerMetre, &error));
+  EXPECT_FALSE(nodes::VTKToROS2(
+    static_cast<vtkMatrix4x4*>(nullptr), pose, ros2vtk::convert::kMillimetresPerMetre, &error));
 }
 
 TEST(TransformStampedConvert, TranslationScaledRotationNot)

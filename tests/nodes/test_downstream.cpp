@@ -24,7 +24,8 @@ TEST(DownstreamNodes, ScaledValueBothWays)
   double millimetres = 0.0;
   ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(distance, &millimetres));
   EXPECT_DOUBLE_EQ(millimetres, 250.0);
-  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(distance, &millimetres, ros2vtk::convert::kNoLengthScaling));
+  ASSERT_TRUE(
+    ros2vtk::nodes::ROS2ToVTK(distance, &millimetres, ros2vtk::convert::kNoLengthScaling));
   EXPECT_DOUBLE_EQ(millimetres, 0.25);
   ros2vtk::ros2vtk_nodes_test_msgs::msg::Distance back;
   ASSERT_TRUE(ros2vtk::nodes::VTKToROS2(1500.0, back));

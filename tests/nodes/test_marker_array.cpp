@@ -23,8 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace
-{
+namespace {
 namespace visualization_msgs = ros2vtk::visualization_msgs::msg;
 
 visualization_msgs::MarkerArray FromRclpy(int number)
@@ -34,7 +33,8 @@ visualization_msgs::MarkerArray FromRclpy(int number)
   visualization_msgs::MarkerArray message;
   std::string error;
   EXPECT_TRUE(ros2vtk::wire::deserialize_message(visualization_msgs::MarkerArray::type_support(),
-    fixture.payload.data(), fixture.payload.size(), &message, &error)) << error;
+    fixture.payload.data(), fixture.payload.size(), &message, &error))
+    << error;
   return message;
 }
 
@@ -42,7 +42,8 @@ struct Drawn
 {
   int markers = 0;
   std::array<double, 6> bounds{};
-  std::vector<std::array<int, 4>> colors; // the RGBA of each marker's first cell's first point, by MarkerIndex
+  std::vector<std::array<int, 4>>
+    colors; // the RGBA of each marker's first cell's first point, by MarkerIndex
 };
 
 Drawn Draw(const ros2vtk::convert::MarkerSet& set)
@@ -97,12 +98,13 @@ TEST(MarkerArrayFromRclpy, AddDeleteDeleteAllAsRVizKeepsMarkers)
   EXPECT_EQ(kept.size(), 3u);
   Drawn drawn = Draw(kept);
   EXPECT_EQ(drawn.markers, 3);
-  const std::vector<std::array<int, 4>> all = { { 255, 0, 0, 255 }, { 0, 255, 0, 255 }, { 0, 0, 255, 255 } };
-  EXPECT_EQ(drawn.colors, all); // (ns, id) order: a/1 cube, a/2 sphere, b/1 line
-  EXPECT_NEAR(drawn.bounds[0], 0.0, 1e-6);      // the line starts at the origin
-  EXPECT_NEAR(drawn.bounds[1], 2050.0, 1e-6);   // the sphere's far side: 2 m + 0.1 m / 2
-  EXPECT_NEAR(drawn.bounds[3], 500.0, 1e-6);    // the line's last point
-  EXPECT_NEAR(drawn.bounds[5], 150.0, 1e-6);    // cube and sphere: 0.3 m high, centred at 0
+  const std::vector<std::array<int, 4>> all = { { 255, 0, 0, 255 }, { 0, 255, 0, 255 },
+    { 0, 0, 255, 255 } };
+  EXPECT_EQ(drawn.colors, all);               // (ns, id) order: a/1 cube, a/2 sphere, b/1 line
+  EXPECT_NEAR(drawn.bounds[0], 0.0, 1e-6);    // the line starts at the origin
+  EXPECT_NEAR(drawn.bounds[1], 2050.0, 1e-6); // the sphere's far side: 2 m + 0.1 m / 2
+  EXPECT_NEAR(drawn.bounds[3], 500.0, 1e-6);  // the line's last point
+  EXPECT_NEAR(drawn.bounds[5], 150.0, 1e-6);  // cube and sphere: 0.3 m high, centred at 0
 
   // 5: DELETE ns a, id 1 (the cube): sphere and line stay.
   ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(FromRclpy(5), kept, &error)) << error;
@@ -123,7 +125,7 @@ TEST(MarkerArrayFromRclpy, AddDeleteDeleteAllAsRVizKeepsMarkers)
   EXPECT_EQ(drawn.colors, yellow);
   EXPECT_NEAR(drawn.bounds[0], -1050.0, 1e-6); // 0.1 m diameter about x = -1 m
   EXPECT_NEAR(drawn.bounds[1], -950.0, 1e-6);
-  EXPECT_NEAR(drawn.bounds[4], -150.0, 1e-6);  // 0.3 m long along z
+  EXPECT_NEAR(drawn.bounds[4], -150.0, 1e-6); // 0.3 m long along z
   EXPECT_NEAR(drawn.bounds[5], 150.0, 1e-6);
 }
 
@@ -134,7 +136,8 @@ TEST(MarkerArrayFromRclpy, OneMessageAloneAndBadMarkers)
   std::string error;
   ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(FromRclpy(4), only.GetPointer(), 1000.0, &error)) << error;
   vtkNew<vtkPolyData> nothing;
-  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(FromRclpy(5), nothing.GetPointer(), 1000.0, &error)) << error;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(FromRclpy(5), nothing.GetPointer(), 1000.0, &error))
+    << error;
   EXPECT_EQ(nothing->GetNumberOfPoints(), 0); // a DELETE alone: nothing to draw
 
   // A TEXT marker cannot be drawn: refused by name, the others of the message still kept.

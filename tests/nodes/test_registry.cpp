@@ -16,8 +16,7 @@
 
 #include "ros2vtkNodesRegister.hpp" // ros2vtk_register_ros2vtkNodes_nodes()
 
-namespace
-{
+namespace {
 using ros2vtk::scene::NodeClassRegistry;
 using ros2vtk::scene::NodeDirection;
 
@@ -46,9 +45,12 @@ TEST_F(NodesRegistryTest, EveryRuleHasBothClassesWithItsRosType)
 {
   // The 17 rules of msg_specs/mappings/*.toml, by hand.
   const std::pair<const char*, const char*> rules[] = {
-    { "String", "std_msgs/msg/String" }, { "Bool", "std_msgs/msg/Bool" },
-    { "Int", "std_msgs/msg/Int64" }, { "Double", "std_msgs/msg/Float64" },
-    { "Empty", "std_msgs/msg/Empty" }, { "IntArray", "std_msgs/msg/Int64MultiArray" },
+    { "String", "std_msgs/msg/String" },
+    { "Bool", "std_msgs/msg/Bool" },
+    { "Int", "std_msgs/msg/Int64" },
+    { "Double", "std_msgs/msg/Float64" },
+    { "Empty", "std_msgs/msg/Empty" },
+    { "IntArray", "std_msgs/msg/Int64MultiArray" },
     { "DoubleArray", "std_msgs/msg/Float64MultiArray" },
     { "IntTable", "std_msgs/msg/Int64MultiArray" },
     { "DoubleTable", "std_msgs/msg/Float64MultiArray" },
@@ -56,7 +58,8 @@ TEST_F(NodesRegistryTest, EveryRuleHasBothClassesWithItsRosType)
     { "TransformStamped", "geometry_msgs/msg/TransformStamped" },
     { "PoseArray", "geometry_msgs/msg/PoseArray" },
     { "WrenchStamped", "geometry_msgs/msg/WrenchStamped" },
-    { "Image", "sensor_msgs/msg/Image" }, { "PointCloud", "sensor_msgs/msg/PointCloud" },
+    { "Image", "sensor_msgs/msg/Image" },
+    { "PointCloud", "sensor_msgs/msg/PointCloud" },
     { "PointCloud2", "sensor_msgs/msg/PointCloud2" },
     { "JointState", "sensor_msgs/msg/JointState" },
   };
@@ -87,7 +90,8 @@ TEST_F(NodesRegistryTest, ShortClassAndMrmlNamesResolve)
 
 TEST_F(NodesRegistryTest, AliasCreatesThePrimaryClass)
 {
-  EXPECT_EQ(this->CreatedClass(NodeDirection::Publisher, "UInt8Image"), "vtkROS2PublisherImageNode");
+  EXPECT_EQ(
+    this->CreatedClass(NodeDirection::Publisher, "UInt8Image"), "vtkROS2PublisherImageNode");
   EXPECT_EQ(this->CreatedClass(NodeDirection::Subscriber, "vtkMRMLROS2SubscriberUInt8ImageNode"),
     "vtkROS2SubscriberImageNode");
   EXPECT_EQ(this->CreatedClass(NodeDirection::Publisher, "vtkROS2PublisherUInt8ImageNode"),

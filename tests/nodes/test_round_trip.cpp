@@ -31,11 +31,9 @@
 #include <functional>
 #include <thread>
 
-namespace
-{
+namespace {
 using Clock = std::chrono::steady_clock;
 using ros2vtk_test::SpinUntil;
-
 
 class NodesRoundTrip : public ::testing::Test
 {
@@ -50,7 +48,7 @@ protected:
   }
 
   // Creates a matched pair through the SlicerROS2-style calls (by short name).
-  template <typename Pub, typename Sub>
+  template<typename Pub, typename Sub>
   void Connect(const char* type, const char* topic, Pub*& pub, Sub*& sub)
   {
     pub = Pub::SafeDownCast(this->Talker->CreateAndAddPublisherNode(type, topic));
@@ -58,7 +56,8 @@ protected:
     ASSERT_NE(pub, nullptr);
     ASSERT_NE(sub, nullptr);
     ASSERT_TRUE(SpinUntil(this->Logic, [&] {
-      return pub->GetNumberOfMatchedSubscriptions() > 0 && sub->GetNumberOfMatchedPublications() > 0;
+      return pub->GetNumberOfMatchedSubscriptions() > 0 &&
+        sub->GetNumberOfMatchedPublications() > 0;
     }));
   }
 
@@ -96,7 +95,8 @@ TEST_F(NodesRoundTrip, PoseStampedMillimetresStampAndFrame)
   int events = 0;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&events);
-  observer->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  observer->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   // `events` lives on this test's stack: the observer must go before the fixture's teardown
   // spins and removes `sub` (it fired into a dead stack frame there and corrupted it).
   struct RemoveObserverAtExit

@@ -17,8 +17,8 @@ inline std::string chain_urdf(int links)
     text += "<link name=\"link_" + std::to_string(links - 1 - i) + "\"/>\n";
   for (int i = 1; i < links; ++i)
     text += "<joint name=\"j" + std::to_string(i) + "\" type=\"fixed\"><parent link=\"link_" +
-            std::to_string(links - i) + "\"/><child link=\"link_" + std::to_string(links - 1 - i) +
-            "\"/><origin xyz=\"0 0 0.001\"/></joint>\n";
+      std::to_string(links - i) + "\"/><child link=\"link_" + std::to_string(links - 1 - i) +
+      "\"/><origin xyz=\"0 0 0.001\"/></joint>\n";
   return text + "</robot>\n";
 }
 

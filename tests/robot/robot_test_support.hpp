@@ -20,17 +20,30 @@
 namespace ros2vtk_test {
 
 /// Repository root (set by tests/robot/CMakeLists.txt).
-inline std::string source_dir() { return ROS2VTK_TEST_SOURCE_DIR; }
-inline std::string data_dir() { return source_dir() + "/tests/data/robots"; }
-inline std::string robots_dir() { return source_dir() + "/examples/robots"; }
-inline std::string surgical_arm_urdf() { return robots_dir() + "/surgical_arm/urdf/surgical_arm.urdf"; }
+inline std::string source_dir()
+{
+  return ROS2VTK_TEST_SOURCE_DIR;
+}
+inline std::string data_dir()
+{
+  return source_dir() + "/tests/data/robots";
+}
+inline std::string robots_dir()
+{
+  return source_dir() + "/examples/robots";
+}
+inline std::string surgical_arm_urdf()
+{
+  return robots_dir() + "/surgical_arm/urdf/surgical_arm.urdf";
+}
 
 /// Axis-aligned bounds: xmin, xmax, ymin, ymax, zmin, zmax (VTK's order).
 using Bounds = std::array<double, 6>;
 
 /// Bounds of a binary STL read byte by byte here (80-byte header, uint32 count, 50-byte
 /// records of normal + 3 vertices as little-endian float32), times a per-axis scale.
-inline Bounds binary_stl_bounds(const std::string& path, const std::array<double, 3>& scale = {{1, 1, 1}})
+inline Bounds binary_stl_bounds(
+  const std::string& path, const std::array<double, 3>& scale = { { 1, 1, 1 } })
 {
   std::ifstream in(path, std::ios::binary);
   if (!in)
@@ -42,9 +55,9 @@ inline Bounds binary_stl_bounds(const std::string& path, const std::array<double
   std::memcpy(&count, bytes.data() + 80, 4);
   if (bytes.size() < 84 + 50ull * count)
     throw std::runtime_error("truncated binary STL: " + path);
-  Bounds bounds{{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                 std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                 std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()}};
+  Bounds bounds{ { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() } };
   for (std::uint32_t t = 0; t < count; ++t)
   {
     const char* record = bytes.data() + 84 + 50ull * t;
@@ -72,7 +85,7 @@ inline void write_triangle_stl(const std::string& path, float size = 0.05f)
   out.write(header, 80);
   const std::uint32_t count = 1;
   out.write(reinterpret_cast<const char*>(&count), 4);
-  const float record[12] = {0, 0, 1, 0, 0, 0, size, 0, 0, 0, size, 0};
+  const float record[12] = { 0, 0, 1, 0, 0, 0, size, 0, 0, 0, size, 0 };
   out.write(reinterpret_cast<const char*>(record), sizeof(record));
   const std::uint16_t attributes = 0;
   out.write(reinterpret_cast<const char*>(&attributes), 2);

@@ -28,10 +28,12 @@ std::string example_robot_data_prefix(std::string* why)
   if (!fs::exists(python))
   {
     *why = "the project's venv python '" + python +
-           "' does not exist (ROS2VTK_VENV_PYTHON); run scripts/setup.sh to create the venv with example-robot-data";
+      "' does not exist (ROS2VTK_VENV_PYTHON); run scripts/setup.sh to create the venv with "
+      "example-robot-data";
     return {};
   }
-  const std::string command = "'" + python + "' -c \"import sysconfig; print(sysconfig.get_paths()['purelib'])\"";
+  const std::string command =
+    "'" + python + "' -c \"import sysconfig; print(sysconfig.get_paths()['purelib'])\"";
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   std::string site_packages;
   char buffer[4096];
@@ -43,8 +45,9 @@ std::string example_robot_data_prefix(std::string* why)
   if (site_packages.empty() || !fs::exists(prefix / "share/example-robot-data/package.xml"))
   {
     *why = "example-robot-data is not installed in the venv of '" + python + "' (looked for " +
-           (prefix / "share/example-robot-data/package.xml").string() +
-           "); run scripts/setup.sh (it installs scripts/requirements-ros.txt, which pins example-robot-data==6.0.0)";
+      (prefix / "share/example-robot-data/package.xml").string() +
+      "); run scripts/setup.sh (it installs scripts/requirements-ros.txt, which pins "
+      "example-robot-data==6.0.0)";
     return {};
   }
   return prefix.string();
@@ -57,7 +60,10 @@ struct ThirdPartyRobot
   const char* mesh_format;
 };
 
-void PrintTo(const ThirdPartyRobot& robot, std::ostream* out) { *out << robot.urdf; }
+void PrintTo(const ThirdPartyRobot& robot, std::ostream* out)
+{
+  *out << robot.urdf;
+}
 
 class ExampleRobotData : public ::testing::TestWithParam<ThirdPartyRobot>
 {
@@ -69,7 +75,7 @@ TEST_P(ExampleRobotData, LoadsWithNoMissingMesh)
   const std::string prefix = example_robot_data_prefix(&why);
   ASSERT_FALSE(prefix.empty()) << why;
   ResourceResolver resolver;
-  resolver.set_ament_prefixes({prefix});
+  resolver.set_ament_prefixes({ prefix });
   RobotLoader loader(resolver);
   RobotVisuals robot;
   std::string error;
@@ -85,11 +91,12 @@ TEST_P(ExampleRobotData, LoadsWithNoMissingMesh)
     {
       ASSERT_NE(visual.geometry, nullptr) << link.link;
       EXPECT_GT(visual.geometry->GetNumberOfPolys(), 0) << link.link;
-      if (visual.kind == VisualKind::Mesh && fs::path(visual.mesh_path).extension() == GetParam().mesh_format)
+      if (visual.kind == VisualKind::Mesh &&
+        fs::path(visual.mesh_path).extension() == GetParam().mesh_format)
         ++meshes_of_format;
       // Metres: every link of these robots is between a millimetre and two metres across.
       const auto b = ros2vtk_test::bounds_of(visual.geometry);
-      const double extent = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
+      const double extent = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
       EXPECT_GT(extent, 0.001) << link.link << " " << visual.mesh_uri;
       EXPECT_LT(extent, 2.0) << link.link << " " << visual.mesh_uri;
     }
@@ -104,28 +111,31 @@ TEST_P(ExampleRobotData, LoadsFromItsFileAloneWithNoPackageLocationsSet)
   std::string why;
   const std::string prefix = example_robot_data_prefix(&why);
   ASSERT_FALSE(prefix.empty()) << why;
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
-  ASSERT_TRUE(loader.load_file(prefix + "/share/example-robot-data/robots/" + GetParam().urdf, &robot, &error)) << error;
+  ASSERT_TRUE(loader.load_file(
+    prefix + "/share/example-robot-data/robots/" + GetParam().urdf, &robot, &error))
+    << error;
   EXPECT_EQ(robot.placeholder_count(), 0u) << robot.summary();
   EXPECT_EQ(robot.visual_count(), GetParam().visuals);
-  EXPECT_EQ(robot.summary(), std::to_string(GetParam().visuals) + " visuals, all " +
-                               std::to_string(robot.mesh_visual_count()) + " meshes loaded");
+  EXPECT_EQ(robot.summary(),
+    std::to_string(GetParam().visuals) + " visuals, all " +
+      std::to_string(robot.mesh_visual_count()) + " meshes loaded");
 }
 
 INSTANTIATE_TEST_SUITE_P(RobotLoader, ExampleRobotData,
-                         ::testing::Values(ThirdPartyRobot{"ur_description/urdf/ur5_robot.urdf", 7, ".dae"},
-                                           ThirdPartyRobot{"panda_description/urdf/panda.urdf", 11, ".dae"},
-                                           ThirdPartyRobot{"go1_description/urdf/go1.urdf", 39, ".dae"},
-                                           ThirdPartyRobot{"laikago_description/urdf/laikago.urdf", 17, ".obj"}),
-                         [](const ::testing::TestParamInfo<ThirdPartyRobot>& param_info) {
-                           std::string name = fs::path(param_info.param.urdf).stem().string();
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c)))
-                               c = '_';
-                           return name;
-                         });
+  ::testing::Values(ThirdPartyRobot{ "ur_description/urdf/ur5_robot.urdf", 7, ".dae" },
+    ThirdPartyRobot{ "panda_description/urdf/panda.urdf", 11, ".dae" },
+    ThirdPartyRobot{ "go1_description/urdf/go1.urdf", 39, ".dae" },
+    ThirdPartyRobot{ "laikago_description/urdf/laikago.urdf", 17, ".obj" }),
+  [](const ::testing::TestParamInfo<ThirdPartyRobot>& param_info) {
+    std::string name = fs::path(param_info.param.urdf).stem().string();
+    for (char& c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c)))
+        c = '_';
+    return name;
+  });
 
 TEST(ExampleRobotDataPanda, ColladaVisualsMatchTheCollisionStlsInMetres)
 {
@@ -136,12 +146,12 @@ TEST(ExampleRobotDataPanda, ColladaVisualsMatchTheCollisionStlsInMetres)
   const std::string prefix = example_robot_data_prefix(&why);
   ASSERT_FALSE(prefix.empty()) << why;
   ResourceResolver resolver;
-  resolver.set_ament_prefixes({prefix});
+  resolver.set_ament_prefixes({ prefix });
   RobotLoader loader(resolver);
   RobotVisuals robot;
   std::string error;
-  ASSERT_TRUE(loader.load_file(prefix + "/share/example-robot-data/robots/panda_description/urdf/panda.urdf", &robot,
-                               &error))
+  ASSERT_TRUE(loader.load_file(
+    prefix + "/share/example-robot-data/robots/panda_description/urdf/panda.urdf", &robot, &error))
     << error;
   size_t compared = 0;
   for (const auto& link : robot.links)
@@ -150,7 +160,8 @@ TEST(ExampleRobotDataPanda, ColladaVisualsMatchTheCollisionStlsInMetres)
       const fs::path dae(visual.mesh_path);
       if (dae.extension() != ".dae" || dae.parent_path().filename() != "visual")
         continue;
-      const fs::path stl = dae.parent_path().parent_path() / "collision" / (dae.stem().string() + ".stl");
+      const fs::path stl =
+        dae.parent_path().parent_path() / "collision" / (dae.stem().string() + ".stl");
       if (!fs::exists(stl))
         continue;
       const auto expected = ros2vtk_test::binary_stl_bounds(stl.string());
@@ -158,10 +169,12 @@ TEST(ExampleRobotDataPanda, ColladaVisualsMatchTheCollisionStlsInMetres)
       // The collision meshes are simplified (link5's differs by 5.5 mm); a wrong unit (x100) or
       // a Y-up rotation moves these bounds by several centimetres.
       for (size_t i = 0; i < 6; ++i)
-        EXPECT_NEAR(actual[i], expected[i], 0.01) << link.link << " " << dae.filename() << " bound " << i;
+        EXPECT_NEAR(actual[i], expected[i], 0.01)
+          << link.link << " " << dae.filename() << " bound " << i;
       ++compared;
     }
-  EXPECT_GE(compared, 9u) << "links 0-7, hand and fingers have a DAE visual and an STL collision mesh";
+  EXPECT_GE(compared, 9u)
+    << "links 0-7, hand and fingers have a DAE visual and an STL collision mesh";
 }
 
 } // namespace

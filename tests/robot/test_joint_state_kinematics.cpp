@@ -59,7 +59,8 @@ void expect_position(const Eigen::Isometry3d& pose, double x, double y, double z
 void expect_yaw(const Eigen::Isometry3d& pose, double yaw)
 {
   const Eigen::Matrix3d r = pose.linear();
-  const double expected[3][3] = { { std::cos(yaw), -std::sin(yaw), 0 }, { std::sin(yaw), std::cos(yaw), 0 }, { 0, 0, 1 } };
+  const double expected[3][3] = { { std::cos(yaw), -std::sin(yaw), 0 },
+    { std::sin(yaw), std::cos(yaw), 0 }, { 0, 0, 1 } };
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       EXPECT_NEAR(r(i, j), expected[i][j], kTolerance) << "element " << i << "," << j;
@@ -71,7 +72,8 @@ TEST(JointStateKinematics, JointNamesAreTheActuatedJointsInTreeOrder)
 {
   auto kinematics = make();
   ASSERT_TRUE(kinematics);
-  EXPECT_EQ(kinematics->joint_names(), (std::vector<std::string>{ "shoulder", "insertion", "spin" }));
+  EXPECT_EQ(
+    kinematics->joint_names(), (std::vector<std::string>{ "shoulder", "insertion", "spin" }));
   EXPECT_FALSE(kinematics->has_positions());
 }
 
@@ -150,8 +152,10 @@ TEST(JointStateKinematics, RefusesMimicFixedUnknownJointsAndNonFiniteValues)
   EXPECT_EQ(kinematics->set_position("grip", 0.2), SetResult::NotActuated);
   EXPECT_EQ(kinematics->set_position("mount", 0.2), SetResult::NotActuated);
   EXPECT_EQ(kinematics->set_position("elbow", 0.2), SetResult::UnknownJoint);
-  EXPECT_EQ(kinematics->set_position("shoulder", std::numeric_limits<double>::quiet_NaN()), SetResult::NotFinite);
-  EXPECT_EQ(kinematics->set_position("spin", std::numeric_limits<double>::infinity()), SetResult::NotFinite);
+  EXPECT_EQ(kinematics->set_position("shoulder", std::numeric_limits<double>::quiet_NaN()),
+    SetResult::NotFinite);
+  EXPECT_EQ(kinematics->set_position("spin", std::numeric_limits<double>::infinity()),
+    SetResult::NotFinite);
   EXPECT_EQ(kinematics->position("shoulder"), 0.0);
   EXPECT_EQ(kinematics->position("mount"), 0.0);
   EXPECT_TRUE(std::isnan(kinematics->position("elbow")));
@@ -164,7 +168,8 @@ TEST(JointStateKinematics, JointStateOfMismatchedLengthsIsRefusedWhole)
   ASSERT_TRUE(kinematics);
   auto report = kinematics->apply_joint_state({ "shoulder", "insertion" }, { 1.0 });
   EXPECT_FALSE(report.accepted);
-  EXPECT_EQ(report.error, "JointState has 2 names but 1 positions (they must match one to one); message ignored");
+  EXPECT_EQ(report.error,
+    "JointState has 2 names but 1 positions (they must match one to one); message ignored");
   EXPECT_EQ(kinematics->position("shoulder"), 0.0);
   // robot_state_publisher refuses a state without positions too (velocity-only messages).
   report = kinematics->apply_joint_state({ "shoulder" }, {});
@@ -176,8 +181,9 @@ TEST(JointStateKinematics, JointStateIgnoresUnknownNamesAndNaNAndClamps)
 {
   auto kinematics = make();
   ASSERT_TRUE(kinematics);
-  auto report = kinematics->apply_joint_state({ "shoulder", "gripper", "grip", "spin", "insertion" },
-                                              { 0.5, 1.0, 0.3, std::numeric_limits<double>::quiet_NaN(), 9.0 });
+  auto report =
+    kinematics->apply_joint_state({ "shoulder", "gripper", "grip", "spin", "insertion" },
+      { 0.5, 1.0, 0.3, std::numeric_limits<double>::quiet_NaN(), 9.0 });
   EXPECT_TRUE(report.accepted);
   EXPECT_EQ(report.applied, 2u);
   EXPECT_EQ(report.unknown, (std::vector<std::string>{ "gripper", "grip" }));

@@ -84,8 +84,10 @@ TEST(KinematicTree, RejectsBrokenUrdfWithAMessage)
   std::string error;
   EXPECT_FALSE(KinematicTree::from_urdf("", &error));
   EXPECT_EQ(error, "URDF is empty");
-  EXPECT_FALSE(KinematicTree::from_urdf("<robot name='x'><joint name='j' type='fixed'><parent link='a'/>"
-                                        "<child link='b'/></joint></robot>", &error));
+  EXPECT_FALSE(
+    KinematicTree::from_urdf("<robot name='x'><joint name='j' type='fixed'><parent link='a'/>"
+                             "<child link='b'/></joint></robot>",
+      &error));
   EXPECT_NE(error.find("URDF failed to parse"), std::string::npos);
   EXPECT_FALSE(KinematicTree::from_urdf("<robot", &error));
 }

@@ -52,8 +52,9 @@ protected:
   }
   void make_package(const fs::path& folder, const std::string& name)
   {
-    write(folder / "package.xml", "<?xml version=\"1.0\"?>\n<package format=\"3\">\n  <name>" + name +
-                                    "</name>\n  <version>1.0.0</version>\n</package>\n");
+    write(folder / "package.xml",
+      "<?xml version=\"1.0\"?>\n<package format=\"3\">\n  <name>" + name +
+        "</name>\n  <version>1.0.0</version>\n</package>\n");
   }
   fs::path root_;
 };
@@ -68,17 +69,24 @@ std::string chain_with_meshes(const std::vector<std::string>& uris, int boxes = 
     const std::string geometry = i < static_cast<int>(uris.size())
       ? "<mesh filename=\"" + uris[static_cast<size_t>(i)] + "\"/>"
       : std::string("<box size=\"0.1 0.1 0.1\"/>");
-    xml += "  <link name=\"l" + std::to_string(i) + "\"><visual><geometry>" + geometry + "</geometry></visual></link>\n";
+    xml += "  <link name=\"l" + std::to_string(i) + "\"><visual><geometry>" + geometry +
+      "</geometry></visual></link>\n";
     if (i > 0)
-      xml += "  <joint name=\"j" + std::to_string(i) + "\" type=\"fixed\"><parent link=\"l" + std::to_string(i - 1) +
-             "\"/><child link=\"l" + std::to_string(i) + "\"/></joint>\n";
+      xml += "  <joint name=\"j" + std::to_string(i) + "\" type=\"fixed\"><parent link=\"l" +
+        std::to_string(i - 1) + "\"/><child link=\"l" + std::to_string(i) + "\"/></joint>\n";
   }
   return xml + "</robot>\n";
 }
 
-bool contains(const std::string& text, const std::string& words) { return text.find(words) != std::string::npos; }
+bool contains(const std::string& text, const std::string& words)
+{
+  return text.find(words) != std::string::npos;
+}
 
-size_t meshes_loaded(const RobotVisuals& robot) { return robot.mesh_visual_count() - robot.placeholder_count(); }
+size_t meshes_loaded(const RobotVisuals& robot)
+{
+  return robot.mesh_visual_count() - robot.placeholder_count();
+}
 
 // ---- 1. the package holding a URDF file, any number of folders up ---------------------------
 
@@ -89,16 +97,16 @@ TEST_F(MeshResolution, PackageXmlFourFoldersAboveTheUrdfIsFound)
   stl("robot_data/robots/x_description/meshes/base.stl");
   stl("robot_data/robots/x_description/meshes/arm.STL");
   const fs::path urdf = write("robot_data/robots/x_description/urdf/x.urdf",
-                              chain_with_meshes({"package://robot_data/robots/x_description/meshes/base.stl",
-                                                 "package://robot_data/robots/x_description/meshes/arm.STL",
-                                                 "../meshes/base.stl"}));
-  RobotLoader loader{ResourceResolver()};
+    chain_with_meshes({ "package://robot_data/robots/x_description/meshes/base.stl",
+      "package://robot_data/robots/x_description/meshes/arm.STL", "../meshes/base.stl" }));
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_file(urdf.string(), &robot, &error)) << error;
   EXPECT_EQ(meshes_loaded(robot), 3u) << robot.summary();
   EXPECT_EQ(robot.summary(), "3 visuals, all 3 meshes loaded");
-  EXPECT_EQ(robot.link("l1")->visuals[0].mesh_path, (root_ / "robot_data/robots/x_description/meshes/arm.STL").string());
+  EXPECT_EQ(robot.link("l1")->visuals[0].mesh_path,
+    (root_ / "robot_data/robots/x_description/meshes/arm.STL").string());
 }
 
 TEST_F(MeshResolution, WalkUpStopsAtTheNearestPackageXmlNamingThePackage)
@@ -112,22 +120,25 @@ TEST_F(MeshResolution, WalkUpStopsAtTheNearestPackageXmlNamingThePackage)
   make_package("ws/src/outer/inner_pkg", "inner");
   stl("ws/src/outer/inner_pkg/meshes/part.stl", 0.05f);
   const fs::path urdf = write("ws/src/outer/inner_pkg/urdf/robot.urdf",
-                              chain_with_meshes({"package://inner/meshes/part.stl", "package://outer/meshes/shell.stl"}));
-  RobotLoader loader{ResourceResolver()};
+    chain_with_meshes({ "package://inner/meshes/part.stl", "package://outer/meshes/shell.stl" }));
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_file(urdf.string(), &robot, &error)) << error;
   EXPECT_EQ(meshes_loaded(robot), 2u) << robot.summary();
-  EXPECT_EQ(robot.link("l0")->visuals[0].mesh_path, (root_ / "ws/src/outer/inner_pkg/meshes/part.stl").string());
-  EXPECT_NEAR(ros2vtk_test::bounds_of(robot.link("l0")->visuals[0].geometry)[1], 0.05, 1e-6) << "the nearer package";
-  EXPECT_EQ(robot.link("l1")->visuals[0].mesh_path, (root_ / "ws/src/outer/meshes/shell.stl").string());
+  EXPECT_EQ(robot.link("l0")->visuals[0].mesh_path,
+    (root_ / "ws/src/outer/inner_pkg/meshes/part.stl").string());
+  EXPECT_NEAR(ros2vtk_test::bounds_of(robot.link("l0")->visuals[0].geometry)[1], 0.05, 1e-6)
+    << "the nearer package";
+  EXPECT_EQ(
+    robot.link("l1")->visuals[0].mesh_path, (root_ / "ws/src/outer/meshes/shell.stl").string());
 }
 
 TEST_F(MeshResolution, PackageNotFoundListsTheSearchPathAndTheFoldersAboveTheUrdf)
 {
   make_package("robot/other_pkg", "other_pkg");
   const fs::path urdf = write("robot/other_pkg/urdf/robot.urdf",
-                              chain_with_meshes({"package://ghost/meshes/a.stl", "package://ghost/meshes/b.stl"}));
+    chain_with_meshes({ "package://ghost/meshes/a.stl", "package://ghost/meshes/b.stl" }));
   fs::create_directories(root_ / "elsewhere");
   ResourceResolver resolver;
   resolver.add_search_path((root_ / "elsewhere").string());
@@ -137,10 +148,13 @@ TEST_F(MeshResolution, PackageNotFoundListsTheSearchPathAndTheFoldersAboveTheUrd
   ASSERT_TRUE(loader.load_file(urdf.string(), &robot, &error)) << error;
   EXPECT_EQ(meshes_loaded(robot), 0u);
   const std::string warning = robot.link("l0")->warnings.at(0);
-  EXPECT_TRUE(contains(warning, "link 'l0': could not load mesh 'package://ghost/meshes/a.stl': package 'ghost' not "
-                                "found (looked in mesh search path '" + (root_ / "elsewhere").string() +
-                                "'; the folders above '" + urdf.string() + "' up to the filesystem root (package.xml "
-                                "in '" + (root_ / "robot/other_pkg").string() + "' names another package)"))
+  EXPECT_TRUE(contains(warning,
+    "link 'l0': could not load mesh 'package://ghost/meshes/a.stl': package 'ghost' not "
+    "found (looked in mesh search path '" +
+      (root_ / "elsewhere").string() + "'; the folders above '" + urdf.string() +
+      "' up to the filesystem root (package.xml "
+      "in '" +
+      (root_ / "robot/other_pkg").string() + "' names another package)"))
     << warning;
   EXPECT_FALSE(contains(warning, "no search path was added")) << warning;
 }
@@ -152,19 +166,21 @@ TEST_F(MeshResolution, RelativeMeshesOfANetworkDescriptionAreFoundThroughTheMesh
   const fs::path a = stl("robot_files/meshes/a.stl");
   const fs::path b = stl("robot_files/meshes/b.STL");
   write("secret.stl", "solid s\nendsolid s\n");
-  const std::string xml = chain_with_meshes({"meshes/a.stl", "../meshes/b.STL", "../secret.stl"});
+  const std::string xml = chain_with_meshes({ "meshes/a.stl", "../meshes/b.STL", "../secret.stl" });
   RobotLoadOptions no_folder; // a parameter or topic: the description has no folder of its own
   RobotVisuals robot;
   std::string error;
 
-  RobotLoader without{ResourceResolver()};
+  RobotLoader without{ ResourceResolver() };
   ASSERT_TRUE(without.load_xml(xml, no_folder, &robot, &error)) << error;
   EXPECT_EQ(meshes_loaded(robot), 0u);
   const std::string warning = robot.link("l0")->warnings.at(0);
-  EXPECT_TRUE(contains(warning, "could not load mesh 'meshes/a.stl': no such file (looked for ")) << warning;
-  EXPECT_TRUE(contains(warning, "the description has no folder of its own (it came from a parameter or a topic): give "
-                                "the folder relative mesh paths start from with SetMeshBaseFolder, or add the folder "
-                                "holding the meshes with AddMeshSearchPath"))
+  EXPECT_TRUE(contains(warning, "could not load mesh 'meshes/a.stl': no such file (looked for "))
+    << warning;
+  EXPECT_TRUE(contains(warning,
+    "the description has no folder of its own (it came from a parameter or a topic): give "
+    "the folder relative mesh paths start from with SetMeshBaseFolder, or add the folder "
+    "holding the meshes with AddMeshSearchPath"))
     << warning;
 
   ResourceResolver resolver;
@@ -176,7 +192,9 @@ TEST_F(MeshResolution, RelativeMeshesOfANetworkDescriptionAreFoundThroughTheMesh
   EXPECT_EQ(robot.link("l1")->visuals[0].mesh_path, b.string());
   // `..` out of the search path still meets the root check (issue 11.10).
   const std::string refused = robot.link("l2")->warnings.at(0);
-  EXPECT_TRUE(contains(refused, "'" + (root_ / "secret.stl").string() + "' lies outside the allowed roots")) << refused;
+  EXPECT_TRUE(
+    contains(refused, "'" + (root_ / "secret.stl").string() + "' lies outside the allowed roots"))
+    << refused;
 }
 
 // ---- 3. robot data without package.xml ------------------------------------------------------
@@ -185,8 +203,9 @@ TEST_F(MeshResolution, FolderNamedLikeThePackageWithoutPackageXmlIsThePackage)
 {
   const fs::path a = stl("assets/arm_meshes/meshes/a.stl");
   stl("assets/arm_meshes/meshes/b.stl");
-  const std::string xml = chain_with_meshes({"package://arm_meshes/meshes/a.stl", "package://arm_meshes/meshes/b.stl"});
-  for (const fs::path& search_path : {root_ / "assets", root_ / "assets/arm_meshes"})
+  const std::string xml =
+    chain_with_meshes({ "package://arm_meshes/meshes/a.stl", "package://arm_meshes/meshes/b.stl" });
+  for (const fs::path& search_path : { root_ / "assets", root_ / "assets/arm_meshes" })
   {
     ResourceResolver resolver;
     resolver.add_search_path(search_path.string());
@@ -203,23 +222,25 @@ TEST_F(MeshResolution, FolderNamedLikeThePackageThatWasNotTakenIsNamedInTheMessa
 {
   stl("data/assets/arm_meshes/meshes/a.stl");
   fs::create_directories(root_ / "prefix/share/arm_meshes");
-  const std::string xml = chain_with_meshes({"package://arm_meshes/meshes/a.stl"});
+  const std::string xml = chain_with_meshes({ "package://arm_meshes/meshes/a.stl" });
   ResourceResolver resolver;
   resolver.add_search_path((root_ / "data").string()); // the folder is two levels down: not taken
-  resolver.set_ament_prefixes({(root_ / "prefix").string()});
+  resolver.set_ament_prefixes({ (root_ / "prefix").string() });
   RobotLoader loader(resolver);
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
   EXPECT_EQ(meshes_loaded(robot), 0u);
   const std::string warning = robot.link("l0")->warnings.at(0);
-  EXPECT_TRUE(contains(warning, "'" + (root_ / "data/assets/arm_meshes").string() +
-                                  "' is named like the package but has no package.xml and is neither a mesh search "
-                                  "path nor directly inside one (add it, or the folder holding it, with "
-                                  "AddMeshSearchPath)"))
+  EXPECT_TRUE(contains(warning,
+    "'" + (root_ / "data/assets/arm_meshes").string() +
+      "' is named like the package but has no package.xml and is neither a mesh search "
+      "path nor directly inside one (add it, or the folder holding it, with "
+      "AddMeshSearchPath)"))
     << warning;
-  EXPECT_TRUE(contains(warning, "'" + (root_ / "prefix/share/arm_meshes").string() +
-                                  "' has no package.xml, so it is not an installed package"))
+  EXPECT_TRUE(contains(warning,
+    "'" + (root_ / "prefix/share/arm_meshes").string() +
+      "' has no package.xml, so it is not an installed package"))
     << warning;
 }
 
@@ -232,13 +253,13 @@ TEST_F(MeshResolution, UpperCaseExtensionsAndFileUrisLoadUnusableFilesSayWhy)
   fs::copy_file(ros2vtk_test::data_dir() + "/unit_cube_cm.dae", root_ / "parts/meshes/cube.DAE");
   const fs::path note = write("parts/meshes/note.xyz", "not a mesh\n");
   const fs::path empty = write("parts/meshes/empty.stl", "");
-  const fs::path lfs = write("parts/meshes/arm.dae", "version https://git-lfs.github.com/spec/v1\n"
-                                                     "oid sha256:4d7a214614ab2935c943f9e0ff69d22eadbb8f32b1258daaa5e2ca24d17e2393\n"
-                                                     "size 12345\n");
-  const std::string xml =
-    chain_with_meshes({"package://parts/meshes/upper.STL", "file://" + (root_ / "parts/meshes/cube.DAE").string(),
-                       "package://parts/meshes/note.xyz", "package://parts/meshes/empty.stl",
-                       "package://parts/meshes/arm.dae"});
+  const fs::path lfs = write("parts/meshes/arm.dae",
+    "version https://git-lfs.github.com/spec/v1\n"
+    "oid sha256:4d7a214614ab2935c943f9e0ff69d22eadbb8f32b1258daaa5e2ca24d17e2393\n"
+    "size 12345\n");
+  const std::string xml = chain_with_meshes({ "package://parts/meshes/upper.STL",
+    "file://" + (root_ / "parts/meshes/cube.DAE").string(), "package://parts/meshes/note.xyz",
+    "package://parts/meshes/empty.stl", "package://parts/meshes/arm.dae" });
   ResourceResolver resolver;
   resolver.add_search_path(root_.string());
   RobotLoader loader(resolver);
@@ -249,9 +270,10 @@ TEST_F(MeshResolution, UpperCaseExtensionsAndFileUrisLoadUnusableFilesSayWhy)
   EXPECT_EQ(robot.link("l0")->visuals[0].kind, VisualKind::Mesh);
   EXPECT_EQ(robot.link("l1")->visuals[0].kind, VisualKind::Mesh);
   const std::vector<std::pair<std::string, std::string>> expected = {
-    {"l2", "mesh file '" + note.string() + "': the format '.xyz' is not supported"},
-    {"l3", "mesh file '" + empty.string() + "' is empty (0 bytes), so it holds no STL mesh"},
-    {"l4", "mesh file '" + lfs.string() + "' is a Git LFS pointer, not the DAE mesh itself"}};
+    { "l2", "mesh file '" + note.string() + "': the format '.xyz' is not supported" },
+    { "l3", "mesh file '" + empty.string() + "' is empty (0 bytes), so it holds no STL mesh" },
+    { "l4", "mesh file '" + lfs.string() + "' is a Git LFS pointer, not the DAE mesh itself" }
+  };
   for (const auto& [link, words] : expected)
   {
     const std::string warning = robot.link(link)->warnings.at(0);
@@ -268,20 +290,22 @@ TEST_F(MeshResolution, PackageUriWithoutAPackageNameIsRelativeToTheDescription)
   const fs::path in_package = stl("robots/arm/meshes/base.STL");
   const fs::path beside_urdf = stl("robots/arm/urdf/parts/tool.stl");
   const fs::path urdf = write("robots/arm/urdf/arm.urdf",
-                              chain_with_meshes({"package:///meshes/base.STL", "package:///parts/tool.stl",
-                                                 "package:///meshes/ghost.stl"}));
-  RobotLoader loader{ResourceResolver()};
+    chain_with_meshes({ "package:///meshes/base.STL", "package:///parts/tool.stl",
+      "package:///meshes/ghost.stl" }));
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_file(urdf.string(), &robot, &error)) << error;
   EXPECT_EQ(meshes_loaded(robot), 2u) << robot.summary();
-  EXPECT_EQ(robot.link("l0")->visuals[0].mesh_path, in_package.string()); // in the URDF's package
+  EXPECT_EQ(robot.link("l0")->visuals[0].mesh_path, in_package.string());  // in the URDF's package
   EXPECT_EQ(robot.link("l1")->visuals[0].mesh_path, beside_urdf.string()); // beside the URDF
   const std::string warning = robot.link("l2")->warnings.at(0);
-  EXPECT_TRUE(contains(warning, "could not load mesh 'package:///meshes/ghost.stl': no package name after "
-                                "package://, so 'meshes/ghost.stl' was taken relative to the description: not in "
-                                "the package of '" + urdf.string() + "' ('" +
-                                (root_ / "robots/arm/meshes/ghost.stl").string() + "'); no such file"))
+  EXPECT_TRUE(contains(warning,
+    "could not load mesh 'package:///meshes/ghost.stl': no package name after "
+    "package://, so 'meshes/ghost.stl' was taken relative to the description: not in "
+    "the package of '" +
+      urdf.string() + "' ('" + (root_ / "robots/arm/meshes/ghost.stl").string() +
+      "'); no such file"))
     << warning;
 
   // From the network: the search path, as for any relative mesh path.
@@ -289,8 +313,9 @@ TEST_F(MeshResolution, PackageUriWithoutAPackageNameIsRelativeToTheDescription)
   resolver.add_search_path((root_ / "robots/arm").string());
   RobotLoader network(resolver);
   RobotVisuals received;
-  ASSERT_TRUE(network.load_xml(chain_with_meshes({"package:///meshes/base.STL"}), RobotLoadOptions(), &received,
-                               &error)) << error;
+  ASSERT_TRUE(network.load_xml(
+    chain_with_meshes({ "package:///meshes/base.STL" }), RobotLoadOptions(), &received, &error))
+    << error;
   EXPECT_EQ(meshes_loaded(received), 1u) << received.summary();
   EXPECT_EQ(received.link("l0")->visuals[0].mesh_path, in_package.string());
 }
@@ -320,11 +345,11 @@ TEST_F(MeshResolution, MeshFileThatCannotBeOpenedSaysWhy)
 
 TEST(MeshResolutionSummary, OneLineForTheLoadAndAStatusPerLink)
 {
-  const std::string xml = chain_with_meshes(
-    {"package://ghost/meshes/m0.stl", "package://ghost/meshes/m1.stl", "package://ghost/meshes/m2.stl",
-     "package://ghost/meshes/m3.stl"},
-    1);
-  RobotLoader loader{ResourceResolver()};
+  const std::string xml =
+    chain_with_meshes({ "package://ghost/meshes/m0.stl", "package://ghost/meshes/m1.stl",
+                        "package://ghost/meshes/m2.stl", "package://ghost/meshes/m3.stl" },
+      1);
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
@@ -332,17 +357,21 @@ TEST(MeshResolutionSummary, OneLineForTheLoadAndAStatusPerLink)
   EXPECT_EQ(robot.mesh_visual_count(), 4u);
   EXPECT_EQ(robot.placeholder_count(), 4u);
   const std::string summary = robot.summary();
-  EXPECT_EQ(summary.rfind("5 visuals, 4 of 4 meshes missing (4 warnings, 1 cause); first: link 'l0': could not load "
-                          "mesh 'package://ghost/meshes/m0.stl': package 'ghost' not found: no package locations are set",
-                          0),
-            0u)
+  EXPECT_EQ(
+    summary.rfind(
+      "5 visuals, 4 of 4 meshes missing (4 warnings, 1 cause); first: link 'l0': could not load "
+      "mesh 'package://ghost/meshes/m0.stl': package 'ghost' not found: no package locations are "
+      "set",
+      0),
+    0u)
     << summary;
   EXPECT_EQ(summary.find('\n'), std::string::npos) << "one line";
   EXPECT_EQ(robot.link("l4")->status(), "ok");
-  EXPECT_EQ(robot.link("l2")->status().rfind("1 of 1 visuals are placeholders: link 'l2': could not load mesh "
-                                             "'package://ghost/meshes/m2.stl': package 'ghost' not found",
-                                             0),
-            0u)
+  EXPECT_EQ(robot.link("l2")->status().rfind(
+              "1 of 1 visuals are placeholders: link 'l2': could not load mesh "
+              "'package://ghost/meshes/m2.stl': package 'ghost' not found",
+              0),
+    0u)
     << robot.link("l2")->status();
 }
 

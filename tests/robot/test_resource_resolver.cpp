@@ -43,21 +43,26 @@ protected:
   }
   fs::path make_package(const fs::path& folder, const std::string& name)
   {
-    write(folder / "package.xml", "<?xml version=\"1.0\"?>\n<package format=\"3\">\n  <name>" + name +
-                                    "</name>\n  <version>1.0.0</version>\n</package>\n");
+    write(folder / "package.xml",
+      "<?xml version=\"1.0\"?>\n<package format=\"3\">\n  <name>" + name +
+        "</name>\n  <version>1.0.0</version>\n</package>\n");
     return root_ / folder;
   }
   fs::path root_;
 };
 
-std::string canonical(const fs::path& path) { return fs::canonical(path).string(); }
+std::string canonical(const fs::path& path)
+{
+  return fs::canonical(path).string();
+}
 
 TEST(ResourceResolver, FindsPackageBySearchPathUsingTheNameInPackageXml)
 {
   // The shipped arm's folder is "surgical_arm", its package.xml says "ros2vtk_surgical_arm".
   ResourceResolver resolver;
   resolver.add_search_path(ros2vtk_test::robots_dir());
-  const ResolvedResource found = resolver.resolve("package://ros2vtk_surgical_arm/meshes/base.stl", "");
+  const ResolvedResource found =
+    resolver.resolve("package://ros2vtk_surgical_arm/meshes/base.stl", "");
   ASSERT_TRUE(found.ok) << found.error;
   EXPECT_EQ(found.path, canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes/base.stl"));
 }
@@ -67,8 +72,9 @@ TEST_F(ResolverTest, FindsHyphenatedPackageThroughAmentPrefix)
   make_package("prefix/share/example-robot-parts", "example_robot_parts_xml_name");
   const fs::path mesh = write("prefix/share/example-robot-parts/robots/arm/meshes/link.stl");
   ResourceResolver resolver;
-  resolver.set_ament_prefixes({(root_ / "prefix").string()});
-  const auto found = resolver.resolve("package://example-robot-parts/robots/arm/meshes/link.stl", "");
+  resolver.set_ament_prefixes({ (root_ / "prefix").string() });
+  const auto found =
+    resolver.resolve("package://example-robot-parts/robots/arm/meshes/link.stl", "");
   ASSERT_TRUE(found.ok) << found.error;
   EXPECT_EQ(found.path, mesh.string());
 }
@@ -108,8 +114,8 @@ TEST_F(ResolverTest, AddsNoPackageWhenNoFolderAboveTheFileHasPackageXml)
   PackageSearchReport report;
   EXPECT_EQ(resolver.find_package("loose", &report), "");
   ASSERT_EQ(report.looked_in.size(), 1u);
-  EXPECT_EQ(report.looked_in[0], "the folders above '" + urdf.string() +
-                                   "' up to the filesystem root (no package.xml there)");
+  EXPECT_EQ(report.looked_in[0],
+    "the folders above '" + urdf.string() + "' up to the filesystem root (no package.xml there)");
 }
 
 TEST_F(ResolverTest, ReadsAmentPrefixPathFromTheEnvironment)
@@ -133,11 +139,12 @@ TEST_F(ResolverTest, FindsNestedPackageOnRosPackagePath)
   make_package("ws/src/group/deep-pkg-other", "deep-pkg-other");
   const fs::path mesh = write("ws/src/group/deep-pkg/meshes/m.stl");
   ResourceResolver resolver;
-  resolver.set_ros_package_path({(root_ / "ws").string()});
+  resolver.set_ros_package_path({ (root_ / "ws").string() });
   const auto found = resolver.resolve("package://deep-pkg/meshes/m.stl", "");
   ASSERT_TRUE(found.ok) << found.error;
   EXPECT_EQ(found.path, mesh.string());
-  EXPECT_EQ(resolver.find_package("deep-pkg-other"), (root_ / "ws/src/group/deep-pkg-other").string());
+  EXPECT_EQ(
+    resolver.find_package("deep-pkg-other"), (root_ / "ws/src/group/deep-pkg-other").string());
 }
 
 TEST_F(ResolverTest, SkipsFoldersMarkedColconIgnore)
@@ -145,7 +152,7 @@ TEST_F(ResolverTest, SkipsFoldersMarkedColconIgnore)
   make_package("ws/ignored/pkg", "hidden_pkg");
   write("ws/ignored/COLCON_IGNORE", "");
   ResourceResolver resolver;
-  resolver.set_ros_package_path({(root_ / "ws").string()});
+  resolver.set_ros_package_path({ (root_ / "ws").string() });
   EXPECT_EQ(resolver.find_package("hidden_pkg"), "");
 }
 
@@ -153,13 +160,15 @@ TEST_F(ResolverTest, MissingPackageNamesTheUriAndWhereItLooked)
 {
   ResourceResolver resolver;
   resolver.add_search_path((root_ / "nothing_here").string());
-  resolver.set_ament_prefixes({(root_ / "prefix").string()});
+  resolver.set_ament_prefixes({ (root_ / "prefix").string() });
   const auto found = resolver.resolve("package://no-such-pkg/meshes/a.stl", "");
   ASSERT_FALSE(found.ok);
-  EXPECT_NE(found.error.find("'package://no-such-pkg/meshes/a.stl'"), std::string::npos) << found.error;
+  EXPECT_NE(found.error.find("'package://no-such-pkg/meshes/a.stl'"), std::string::npos)
+    << found.error;
   EXPECT_NE(found.error.find("package 'no-such-pkg' not found"), std::string::npos) << found.error;
   EXPECT_NE(found.error.find((root_ / "nothing_here").string()), std::string::npos) << found.error;
-  EXPECT_NE(found.error.find((root_ / "prefix/share/no-such-pkg").string()), std::string::npos) << found.error;
+  EXPECT_NE(found.error.find((root_ / "prefix/share/no-such-pkg").string()), std::string::npos)
+    << found.error;
 }
 
 TEST(ResourceResolver, MissingPackageWithNoLocationsSaysSo)
@@ -167,7 +176,8 @@ TEST(ResourceResolver, MissingPackageWithNoLocationsSaysSo)
   ResourceResolver resolver;
   const auto found = resolver.resolve("package://pkg/a.stl", "");
   ASSERT_FALSE(found.ok);
-  EXPECT_NE(found.error.find("AMENT_PREFIX_PATH and ROS_PACKAGE_PATH are empty"), std::string::npos) << found.error;
+  EXPECT_NE(found.error.find("AMENT_PREFIX_PATH and ROS_PACKAGE_PATH are empty"), std::string::npos)
+    << found.error;
 }
 
 TEST_F(ResolverTest, MissingFileNamesTheUriAndThePathTried)
@@ -178,7 +188,8 @@ TEST_F(ResolverTest, MissingFileNamesTheUriAndThePathTried)
   const auto found = resolver.resolve("package://arm/meshes/gone.stl", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("'package://arm/meshes/gone.stl'"), std::string::npos) << found.error;
-  EXPECT_NE(found.error.find((root_ / "pkgs/arm/meshes/gone.stl").string()), std::string::npos) << found.error;
+  EXPECT_NE(found.error.find((root_ / "pkgs/arm/meshes/gone.stl").string()), std::string::npos)
+    << found.error;
 }
 
 TEST_F(ResolverTest, FileUrisAndAbsolutePaths)
@@ -215,8 +226,8 @@ TEST(ResourceResolver, RelativePathsWithParentFolderFromTheBaseFolder)
 TEST(ResourceResolver, RefusesUnknownSchemesAndSaysWhatIsSupported)
 {
   ResourceResolver resolver;
-  for (const std::string uri : {"http://example.org/robot/mesh.stl", "model://arm/meshes/a.dae",
-                                "https://example.org/x.stl"})
+  for (const std::string uri : { "http://example.org/robot/mesh.stl", "model://arm/meshes/a.dae",
+         "https://example.org/x.stl" })
   {
     const auto found = resolver.resolve(uri, "");
     ASSERT_FALSE(found.ok) << uri;
@@ -237,7 +248,8 @@ TEST(ResourceResolver, RefusesEmptyAndIncompleteUris)
   EXPECT_NE(found.error.find("no file path"), std::string::npos) << found.error;
   found = resolver.resolve("package:///", "");
   ASSERT_FALSE(found.ok);
-  EXPECT_NE(found.error.find("no package name and no file path after package://"), std::string::npos)
+  EXPECT_NE(
+    found.error.find("no package name and no file path after package://"), std::string::npos)
     << found.error;
   // A folder named like the package is a package in a search path: "." and ".." are not names.
   found = resolver.resolve("package://../surgical_arm/meshes/base.stl", "");
@@ -328,12 +340,14 @@ TEST_F(ResolverTest, ByDefaultMeshesOutsideThePackageRootsAreRefused)
   auto found = resolver.resolve("package://pkg/../../outside/x.stl", "");
   ASSERT_FALSE(found.ok);
   EXPECT_NE(found.error.find("outside its package folder"), std::string::npos) << found.error;
-  for (const std::string& uri : {"file://" + outside.string(), outside.string(), std::string("file:///etc/hostname")})
+  for (const std::string& uri :
+    { "file://" + outside.string(), outside.string(), std::string("file:///etc/hostname") })
   {
     found = resolver.resolve(uri, "");
     ASSERT_FALSE(found.ok) << uri;
     EXPECT_TRUE(found.error.find("outside the allowed roots") != std::string::npos ||
-                found.error.find("no such file") != std::string::npos) << found.error;
+      found.error.find("no such file") != std::string::npos)
+      << found.error;
   }
   EXPECT_TRUE(resolver.resolve("mesh.stl", (root_ / "robot_files").string()).ok);
   EXPECT_TRUE(resolver.resolve(beside_urdf.string(), (root_ / "robot_files").string()).ok);

@@ -32,16 +32,16 @@ RobotLoader loader_with_shipped_robots()
   return RobotLoader(resolver);
 }
 
-void expect_bounds_near(const ros2vtk_test::Bounds& actual, const ros2vtk_test::Bounds& expected, double tolerance,
-                        const std::string& what)
+void expect_bounds_near(const ros2vtk_test::Bounds& actual, const ros2vtk_test::Bounds& expected,
+  double tolerance, const std::string& what)
 {
   for (size_t i = 0; i < 6; ++i)
     EXPECT_NEAR(actual[i], expected[i], tolerance) << what << ", bound " << i;
 }
 
 // Colours from mesh files come through single-precision floats (assimp), hence the default.
-void expect_rgba(const std::array<double, 4>& actual, const std::array<double, 4>& expected, const std::string& what,
-                 double tolerance = 1e-9)
+void expect_rgba(const std::array<double, 4>& actual, const std::array<double, 4>& expected,
+  const std::string& what, double tolerance = 1e-9)
 {
   for (size_t i = 0; i < 4; ++i)
     EXPECT_NEAR(actual[i], expected[i], tolerance) << what << ", channel " << i;
@@ -55,17 +55,24 @@ struct ExpectedVisual
   double scale;
   std::array<double, 4> rgba;
 };
-const std::array<double, 4> kSlate{{0.25, 0.28, 0.32, 1.0}}, kWhite{{0.92, 0.92, 0.9, 1.0}},
-  kBlue{{0.15, 0.35, 0.75, 1.0}}, kSteel{{0.7, 0.72, 0.75, 1.0}}, kSignal{{0.95, 0.45, 0.1, 1.0}};
+const std::array<double, 4> kSlate{ { 0.25, 0.28, 0.32, 1.0 } }, kWhite{ { 0.92, 0.92, 0.9, 1.0 } },
+  kBlue{ { 0.15, 0.35, 0.75, 1.0 } }, kSteel{ { 0.7, 0.72, 0.75, 1.0 } },
+  kSignal{ { 0.95, 0.45, 0.1, 1.0 } };
 const std::vector<std::pair<std::string, std::vector<ExpectedVisual>>> kSurgicalArm = {
-  {"base_link", {{VisualKind::Mesh, "base.stl", 1.0, kSlate}, {VisualKind::Cylinder, nullptr, 0, kSignal}}},
-  {"column_link", {{VisualKind::Mesh, "column.stl", 0.001, kWhite}}},
-  {"upper_arm_link", {{VisualKind::Sphere, nullptr, 0, kBlue}, {VisualKind::Mesh, "upper_arm.stl", 1.0, kWhite}}},
-  {"forearm_link", {{VisualKind::Sphere, nullptr, 0, kBlue}, {VisualKind::Mesh, "forearm.stl", 0.001, kWhite}}},
-  {"wrist_link", {{VisualKind::Mesh, "wrist.stl", 1.0, kSlate}}},
-  {"instrument_link", {{VisualKind::Mesh, "instrument.STL", 1.0, kSteel}}},
-  {"needle_guide_link", {{VisualKind::Mesh, "needle_guide.stl", 0.001, kSignal}}},
-  {"needle_tip", {{VisualKind::Box, nullptr, 0, kSignal}}},
+  { "base_link",
+    { { VisualKind::Mesh, "base.stl", 1.0, kSlate },
+      { VisualKind::Cylinder, nullptr, 0, kSignal } } },
+  { "column_link", { { VisualKind::Mesh, "column.stl", 0.001, kWhite } } },
+  { "upper_arm_link",
+    { { VisualKind::Sphere, nullptr, 0, kBlue },
+      { VisualKind::Mesh, "upper_arm.stl", 1.0, kWhite } } },
+  { "forearm_link",
+    { { VisualKind::Sphere, nullptr, 0, kBlue },
+      { VisualKind::Mesh, "forearm.stl", 0.001, kWhite } } },
+  { "wrist_link", { { VisualKind::Mesh, "wrist.stl", 1.0, kSlate } } },
+  { "instrument_link", { { VisualKind::Mesh, "instrument.STL", 1.0, kSteel } } },
+  { "needle_guide_link", { { VisualKind::Mesh, "needle_guide.stl", 0.001, kSignal } } },
+  { "needle_tip", { { VisualKind::Box, nullptr, 0, kSignal } } },
 };
 
 TEST(RobotLoader, SurgicalArmLoadsEveryVisualWithItsColourAndMeshBounds)
@@ -98,12 +105,13 @@ TEST(RobotLoader, SurgicalArmLoadsEveryVisualWithItsColourAndMeshBounds)
       expect_rgba(visual.display_color(), expected[v].rgba, what);
       if (expected[v].mesh_file)
       {
-        const std::string file = ros2vtk_test::robots_dir() + "/surgical_arm/meshes/" + expected[v].mesh_file;
+        const std::string file =
+          ros2vtk_test::robots_dir() + "/surgical_arm/meshes/" + expected[v].mesh_file;
         const double s = expected[v].scale;
         EXPECT_EQ(visual.mesh_path, fs::canonical(file).string()) << what;
-        EXPECT_EQ(visual.mesh_scale, (std::array<double, 3>{{s, s, s}})) << what;
+        EXPECT_EQ(visual.mesh_scale, (std::array<double, 3>{ { s, s, s } })) << what;
         expect_bounds_near(ros2vtk_test::bounds_of(visual.geometry),
-                           ros2vtk_test::binary_stl_bounds(file, {{s, s, s}}), 1e-6, what);
+          ros2vtk_test::binary_stl_bounds(file, { { s, s, s } }), 1e-6, what);
       }
     }
   }
@@ -117,8 +125,8 @@ TEST(RobotLoader, SurgicalArmMeshesInMillimetresComeOutInMetres)
   ASSERT_TRUE(loader.load_file(ros2vtk_test::surgical_arm_urdf(), &robot, &error)) << error;
   // column.stl is a cylinder of radius 60 mm and length 400 mm, scaled by 0.001 in the URDF.
   const LinkVisual& column = robot.link("column_link")->visuals[0];
-  expect_bounds_near(ros2vtk_test::bounds_of(column.geometry), {{-0.06, 0.06, -0.06, 0.06, 0.0, 0.4}}, 1e-4,
-                     "column");
+  expect_bounds_near(ros2vtk_test::bounds_of(column.geometry),
+    { { -0.06, 0.06, -0.06, 0.06, 0.0, 0.4 } }, 1e-4, "column");
 }
 
 TEST(RobotLoader, PrimitivesAndVisualOrigins)
@@ -129,8 +137,8 @@ TEST(RobotLoader, PrimitivesAndVisualOrigins)
   ASSERT_TRUE(loader.load_file(ros2vtk_test::surgical_arm_urdf(), &robot, &error)) << error;
   // base_link's cylinder: radius 0.02, length 0.05, along z, at (0.12, 0.12, 0.125).
   const LinkVisual& cylinder = robot.link("base_link")->visuals[1];
-  expect_bounds_near(ros2vtk_test::bounds_of(cylinder.geometry), {{-0.02, 0.02, -0.02, 0.02, -0.025, 0.025}}, 1e-6,
-                     "cylinder");
+  expect_bounds_near(ros2vtk_test::bounds_of(cylinder.geometry),
+    { { -0.02, 0.02, -0.02, 0.02, -0.025, 0.025 } }, 1e-6, "cylinder");
   EXPECT_DOUBLE_EQ(cylinder.origin->GetElement(0, 3), 0.12);
   EXPECT_DOUBLE_EQ(cylinder.origin->GetElement(1, 3), 0.12);
   EXPECT_DOUBLE_EQ(cylinder.origin->GetElement(2, 3), 0.125);
@@ -138,11 +146,11 @@ TEST(RobotLoader, PrimitivesAndVisualOrigins)
     for (int c = 0; c < 3; ++c)
       EXPECT_DOUBLE_EQ(cylinder.origin->GetElement(r, c), r == c ? 1.0 : 0.0);
   const LinkVisual& sphere = robot.link("upper_arm_link")->visuals[0];
-  expect_bounds_near(ros2vtk_test::bounds_of(sphere.geometry), {{-0.06, 0.06, -0.06, 0.06, -0.06, 0.06}}, 1e-3,
-                     "sphere");
+  expect_bounds_near(ros2vtk_test::bounds_of(sphere.geometry),
+    { { -0.06, 0.06, -0.06, 0.06, -0.06, 0.06 } }, 1e-3, "sphere");
   const LinkVisual& box = robot.link("needle_tip")->visuals[0];
-  expect_bounds_near(ros2vtk_test::bounds_of(box.geometry), {{-0.002, 0.002, -0.002, 0.002, -0.002, 0.002}}, 1e-9,
-                     "box");
+  expect_bounds_near(ros2vtk_test::bounds_of(box.geometry),
+    { { -0.002, 0.002, -0.002, 0.002, -0.002, 0.002 } }, 1e-9, "box");
 }
 
 TEST(RobotLoader, SecondLoadServesEveryMeshFromTheCache)
@@ -156,36 +164,40 @@ TEST(RobotLoader, SecondLoadServesEveryMeshFromTheCache)
   EXPECT_EQ(loader.mesh_files_read(), 7u);
   EXPECT_EQ(second.visual_count(), first.visual_count());
   // Same mesh, different scale: a separate cache entry.
-  const std::string base = fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes/base.stl").string();
-  const std::string xml = "<robot name='r'><link name='a'><visual><geometry><mesh filename='" + base +
-                          "' scale='2 2 2'/></geometry></visual></link></robot>";
+  const std::string base =
+    fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes/base.stl").string();
+  const std::string xml = "<robot name='r'><link name='a'><visual><geometry><mesh filename='" +
+    base + "' scale='2 2 2'/></geometry></visual></link></robot>";
   RobotVisuals scaled;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &scaled, &error)) << error;
   EXPECT_EQ(loader.mesh_files_read(), 8u);
   expect_bounds_near(ros2vtk_test::bounds_of(scaled.links[0].visuals[0].geometry),
-                     ros2vtk_test::binary_stl_bounds(base, {{2, 2, 2}}), 1e-6, "scaled base");
+    ros2vtk_test::binary_stl_bounds(base, { { 2, 2, 2 } }), 1e-6, "scaled base");
 }
 
 TEST(RobotLoader, FileUrisAbsolutePathsAndMirroringScale)
 {
-  const std::string meshes = fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes").string();
+  const std::string meshes =
+    fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes").string();
   const std::string xml = "<robot name='uris'>"
-                          "<link name='a'><visual><geometry><mesh filename='file://" + meshes +
-                          "/base.stl'/></geometry></visual></link>"
-                          "<link name='b'><visual><geometry><mesh filename='" + meshes +
-                          "/wrist.stl' scale='-1 1 1'/></geometry></visual></link>"
-                          "<joint name='j' type='fixed'><parent link='a'/><child link='b'/></joint></robot>";
+                          "<link name='a'><visual><geometry><mesh filename='file://" +
+    meshes +
+    "/base.stl'/></geometry></visual></link>"
+    "<link name='b'><visual><geometry><mesh filename='" +
+    meshes +
+    "/wrist.stl' scale='-1 1 1'/></geometry></visual></link>"
+    "<joint name='j' type='fixed'><parent link='a'/><child link='b'/></joint></robot>";
   ResourceResolver resolver;
   resolver.add_allowed_root(meshes); // meshes outside every root are refused by default
-  RobotLoader loader{resolver};
+  RobotLoader loader{ resolver };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
   EXPECT_TRUE(robot.warnings().empty()) << robot.warnings().front();
   expect_bounds_near(ros2vtk_test::bounds_of(robot.link("a")->visuals[0].geometry),
-                     ros2vtk_test::binary_stl_bounds(meshes + "/base.stl"), 1e-6, "file://");
+    ros2vtk_test::binary_stl_bounds(meshes + "/base.stl"), 1e-6, "file://");
   expect_bounds_near(ros2vtk_test::bounds_of(robot.link("b")->visuals[0].geometry),
-                     ros2vtk_test::binary_stl_bounds(meshes + "/wrist.stl", {{-1, 1, 1}}), 1e-6, "mirrored");
+    ros2vtk_test::binary_stl_bounds(meshes + "/wrist.stl", { { -1, 1, 1 } }), 1e-6, "mirrored");
 }
 
 TEST(RobotLoader, PackageNamesWithHyphensThroughAmentPrefix)
@@ -194,14 +206,17 @@ TEST(RobotLoader, PackageNamesWithHyphensThroughAmentPrefix)
   const fs::path prefix = fs::temp_directory_path() / ("ros2vtk_hyphen_" + std::to_string(seed()));
   const fs::path package = prefix / "share" / "my-robot-parts";
   fs::create_directories(package / "meshes");
-  std::ofstream(package / "package.xml") << "<package format='3'><name>my-robot-parts</name></package>";
+  std::ofstream(package / "package.xml")
+    << "<package format='3'><name>my-robot-parts</name></package>";
   const std::string source = ros2vtk_test::robots_dir() + "/surgical_arm/meshes/wrist.stl";
   fs::copy_file(source, package / "meshes" / "wrist.stl");
   ResourceResolver resolver;
-  resolver.set_ament_prefixes({prefix.string()});
+  resolver.set_ament_prefixes({ prefix.string() });
   RobotLoader loader(resolver);
-  const std::string xml = "<robot name='h'><link name='a'><visual><geometry>"
-                          "<mesh filename='package://my-robot-parts/meshes/wrist.stl'/></geometry></visual></link></robot>";
+  const std::string xml =
+    "<robot name='h'><link name='a'><visual><geometry>"
+    "<mesh "
+    "filename='package://my-robot-parts/meshes/wrist.stl'/></geometry></visual></link></robot>";
   RobotVisuals robot;
   std::string error;
   const bool ok = loader.load_xml(xml, RobotLoadOptions(), &robot, &error);
@@ -210,7 +225,7 @@ TEST(RobotLoader, PackageNamesWithHyphensThroughAmentPrefix)
   EXPECT_TRUE(robot.warnings().empty()) << robot.warnings().front();
   EXPECT_EQ(robot.links[0].visuals[0].kind, VisualKind::Mesh);
   expect_bounds_near(ros2vtk_test::bounds_of(robot.links[0].visuals[0].geometry),
-                     ros2vtk_test::binary_stl_bounds(source), 1e-6, "hyphenated package");
+    ros2vtk_test::binary_stl_bounds(source), 1e-6, "hyphenated package");
 }
 
 TEST(RobotLoader, MissingMeshIsAWarningAndAPlaceholderWhileTheRestLoads)
@@ -218,7 +233,8 @@ TEST(RobotLoader, MissingMeshIsAWarningAndAPlaceholderWhileTheRestLoads)
   RobotLoader loader = loader_with_shipped_robots();
   RobotVisuals robot;
   std::string error;
-  ASSERT_TRUE(loader.load_file(ros2vtk_test::data_dir() + "/missing_mesh.urdf", &robot, &error)) << error;
+  ASSERT_TRUE(loader.load_file(ros2vtk_test::data_dir() + "/missing_mesh.urdf", &robot, &error))
+    << error;
   ASSERT_EQ(robot.links.size(), 3u);
   EXPECT_EQ(robot.placeholder_count(), 1u);
 
@@ -227,18 +243,18 @@ TEST(RobotLoader, MissingMeshIsAWarningAndAPlaceholderWhileTheRestLoads)
   ASSERT_EQ(forearm->visuals.size(), 2u);
   const LinkVisual& missing = forearm->visuals[0];
   EXPECT_EQ(missing.kind, VisualKind::Placeholder);
-  expect_bounds_near(ros2vtk_test::bounds_of(missing.geometry), {{-0.005, 0.005, -0.005, 0.005, -0.005, 0.005}},
-                     1e-9, "placeholder");
+  expect_bounds_near(ros2vtk_test::bounds_of(missing.geometry),
+    { { -0.005, 0.005, -0.005, 0.005, -0.005, 0.005 } }, 1e-9, "placeholder");
   ASSERT_EQ(forearm->warnings.size(), 1u);
   const std::string& warning = forearm->warnings[0];
   EXPECT_EQ(warning.rfind("link 'forearm_link': could not load mesh "
                           "'package://ros2vtk_surgical_arm/meshes/does_not_exist.stl': ",
-                          0),
-            0u)
+              0),
+    0u)
     << warning;
   EXPECT_NE(warning.find("no such file"), std::string::npos) << warning;
   EXPECT_EQ(forearm->visuals[1].kind, VisualKind::Sphere);
-  expect_rgba(forearm->visuals[1].display_color(), {{0.1, 0.8, 0.2, 1}}, "green sphere");
+  expect_rgba(forearm->visuals[1].display_color(), { { 0.1, 0.8, 0.2, 1 } }, "green sphere");
 
   // The other links load: an OBJ with two materials and a scaled DAE keeping its own colour.
   const LinkVisual& obj = robot.link("base_link")->visuals[0];
@@ -247,11 +263,11 @@ TEST(RobotLoader, MissingMeshIsAWarningAndAPlaceholderWhileTheRestLoads)
   EXPECT_TRUE(robot.link("base_link")->warnings.empty());
   const LinkVisual& dae = robot.link("tool_link")->visuals[0];
   EXPECT_EQ(dae.kind, VisualKind::Mesh);
-  expect_bounds_near(ros2vtk_test::bounds_of(dae.geometry), {{-0.01, 0.01, -0.01, 0.01, 0.03, 0.05}}, 1e-7,
-                     "DAE x2");
+  expect_bounds_near(ros2vtk_test::bounds_of(dae.geometry),
+    { { -0.01, 0.01, -0.01, 0.01, 0.03, 0.05 } }, 1e-7, "DAE x2");
   EXPECT_FALSE(dae.has_material_color);
   ASSERT_TRUE(dae.has_mesh_color);
-  expect_rgba(dae.display_color(), {{0.8, 0.2, 0.1, 1.0}}, "DAE colour", 1e-6);
+  expect_rgba(dae.display_color(), { { 0.8, 0.2, 0.1, 1.0 } }, "DAE colour", 1e-6);
 }
 
 TEST(RobotLoader, MaterialsNamedAtRobotLevelInlineReusedTexturedAndAbsent)
@@ -273,22 +289,24 @@ TEST(RobotLoader, MaterialsNamedAtRobotLevelInlineReusedTexturedAndAbsent)
     <joint name="de" type="fixed"><parent link="d"/><child link="e"/></joint>
     <joint name="ef" type="fixed"><parent link="e"/><child link="f"/></joint>
   </robot>)";
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
-  auto visual = [&](const char* link) { return robot.link(link)->visuals.at(0); };
+  auto visual = [&](const char* link) {
+    return robot.link(link)->visuals.at(0);
+  };
   EXPECT_EQ(visual("a").material_name, "red");
-  expect_rgba(visual("a").material_color, {{1, 0, 0, 1}}, "robot-level");
-  expect_rgba(visual("b").material_color, {{0.1, 0.2, 0.3, 0.4}}, "inline");
+  expect_rgba(visual("a").material_color, { { 1, 0, 0, 1 } }, "robot-level");
+  expect_rgba(visual("b").material_color, { { 0.1, 0.2, 0.3, 0.4 } }, "inline");
   ASSERT_TRUE(visual("c").has_material_color);
-  expect_rgba(visual("c").material_color, {{0.1, 0.2, 0.3, 0.4}}, "reused by name");
+  expect_rgba(visual("c").material_color, { { 0.1, 0.2, 0.3, 0.4 } }, "reused by name");
   EXPECT_FALSE(visual("d").has_material_color);
   EXPECT_EQ(visual("d").material_texture, "package://p/textures/wood.png");
   ASSERT_TRUE(visual("e").has_material_color) << "an explicit black is a colour";
-  expect_rgba(visual("e").material_color, {{0, 0, 0, 1}}, "black");
+  expect_rgba(visual("e").material_color, { { 0, 0, 0, 1 } }, "black");
   EXPECT_FALSE(visual("f").has_material_color);
-  expect_rgba(visual("f").display_color(), {{0.7, 0.7, 0.7, 1.0}}, "default grey");
+  expect_rgba(visual("f").display_color(), { { 0.7, 0.7, 0.7, 1.0 } }, "default grey");
 }
 
 TEST(RobotLoader, VisualOriginRotation)
@@ -296,13 +314,13 @@ TEST(RobotLoader, VisualOriginRotation)
   const std::string xml = R"(<robot name="r"><link name="a"><visual>
       <origin xyz="1 2 3" rpy="0 0 1.5707963267948966"/><geometry><sphere radius="0.1"/></geometry>
     </visual></link></robot>)";
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
   const vtkMatrix4x4* m = robot.links[0].visuals[0].origin;
   // A quarter turn about z: x -> y, y -> -x.
-  const double expected[4][4] = {{0, -1, 0, 1}, {1, 0, 0, 2}, {0, 0, 1, 3}, {0, 0, 0, 1}};
+  const double expected[4][4] = { { 0, -1, 0, 1 }, { 1, 0, 0, 2 }, { 0, 0, 1, 3 }, { 0, 0, 0, 1 } };
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c)
       EXPECT_NEAR(m->GetElement(r, c), expected[r][c], 1e-12) << r << "," << c;
@@ -310,13 +328,16 @@ TEST(RobotLoader, VisualOriginRotation)
 
 TEST(RobotLoader, ZeroScaleAndBadPrimitivesArePlaceholdersWithWarnings)
 {
-  const std::string base = fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes/base.stl").string();
+  const std::string base =
+    fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes/base.stl").string();
   const std::string xml = "<robot name='r'><link name='a'>"
-                          "<visual><geometry><mesh filename='" + base + "' scale='1 0 1'/></geometry></visual>"
-                          "<visual><geometry><sphere radius='-1'/></geometry></visual>"
-                          "<visual><geometry><box size='0.1 0.1 0.1'/></geometry></visual>"
-                          "</link></robot>";
-  RobotLoader loader{ResourceResolver()};
+                          "<visual><geometry><mesh filename='" +
+    base +
+    "' scale='1 0 1'/></geometry></visual>"
+    "<visual><geometry><sphere radius='-1'/></geometry></visual>"
+    "<visual><geometry><box size='0.1 0.1 0.1'/></geometry></visual>"
+    "</link></robot>";
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   ASSERT_TRUE(loader.load_xml(xml, RobotLoadOptions(), &robot, &error)) << error;
@@ -327,7 +348,8 @@ TEST(RobotLoader, ZeroScaleAndBadPrimitivesArePlaceholdersWithWarnings)
   EXPECT_EQ(link.visuals[2].kind, VisualKind::Box);
   ASSERT_EQ(link.warnings.size(), 2u);
   EXPECT_NE(link.warnings[0].find("scale"), std::string::npos) << link.warnings[0];
-  EXPECT_NE(link.warnings[1].find("sphere radius must be positive"), std::string::npos) << link.warnings[1];
+  EXPECT_NE(link.warnings[1].find("sphere radius must be positive"), std::string::npos)
+    << link.warnings[1];
 }
 
 struct BrokenUrdf
@@ -336,7 +358,10 @@ struct BrokenUrdf
   const char* expected_words;
 };
 
-void PrintTo(const BrokenUrdf& broken, std::ostream* out) { *out << broken.file; }
+void PrintTo(const BrokenUrdf& broken, std::ostream* out)
+{
+  *out << broken.file;
+}
 
 class MalformedUrdf : public ::testing::TestWithParam<BrokenUrdf>
 {
@@ -345,7 +370,7 @@ class MalformedUrdf : public ::testing::TestWithParam<BrokenUrdf>
 TEST_P(MalformedUrdf, FailsWithAMessageNamingTheProblem)
 {
   const std::string path = ros2vtk_test::data_dir() + "/malformed/" + GetParam().file;
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   EXPECT_FALSE(loader.load_file(path, &robot, &error));
@@ -355,23 +380,25 @@ TEST_P(MalformedUrdf, FailsWithAMessageNamingTheProblem)
 }
 
 INSTANTIATE_TEST_SUITE_P(RobotLoader, MalformedUrdf,
-                         ::testing::Values(BrokenUrdf{"unclosed_tags.urdf", "XML"},
-                                           BrokenUrdf{"joint_to_unknown_link.urdf", "no_such_link"},
-                                           BrokenUrdf{"no_robot_element.urdf", "robot"},
-                                           BrokenUrdf{"unknown_joint_type.urdf", "telescopic"},
-                                           BrokenUrdf{"does_not_exist.urdf", "no such file"}));
+  ::testing::Values(BrokenUrdf{ "unclosed_tags.urdf", "XML" },
+    BrokenUrdf{ "joint_to_unknown_link.urdf", "no_such_link" },
+    BrokenUrdf{ "no_robot_element.urdf", "robot" },
+    BrokenUrdf{ "unknown_joint_type.urdf", "telescopic" },
+    BrokenUrdf{ "does_not_exist.urdf", "no such file" }));
 
 TEST(RobotLoader, VisualsDroppedByUrdfdomAreReportedNotLostSilently)
 {
   // urdfdom accepts the URDF but drops every visual of a link once one fails to parse.
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
-  ASSERT_TRUE(loader.load_file(ros2vtk_test::data_dir() + "/dropped_visual.urdf", &robot, &error)) << error;
+  ASSERT_TRUE(loader.load_file(ros2vtk_test::data_dir() + "/dropped_visual.urdf", &robot, &error))
+    << error;
   const LinkVisuals& link = robot.links.at(0);
   EXPECT_TRUE(link.visuals.empty());
   ASSERT_EQ(link.warnings.size(), 1u);
-  EXPECT_NE(link.warnings[0].find("link 'base_link': urdfdom dropped 2 of its 2 visuals"), std::string::npos)
+  EXPECT_NE(link.warnings[0].find("link 'base_link': urdfdom dropped 2 of its 2 visuals"),
+    std::string::npos)
     << link.warnings[0];
   ASSERT_FALSE(robot.urdf_warnings.empty());
   EXPECT_NE(robot.urdf_warnings[0].find("[0.1 0.1]"), std::string::npos) << robot.urdf_warnings[0];
@@ -382,9 +409,10 @@ TEST(RobotLoader, VisualsDroppedByUrdfdomAreReportedNotLostSilently)
 TEST(RobotLoader, ChainOfTenThousandLinksFromAFileLoadsRootFirst)
 {
   const int links = 10000;
-  const fs::path file = fs::temp_directory_path() / ("ros2vtk_chain_" + std::to_string(::getpid()) + ".urdf");
+  const fs::path file =
+    fs::temp_directory_path() / ("ros2vtk_chain_" + std::to_string(::getpid()) + ".urdf");
   std::ofstream(file) << ros2vtk_test::chain_urdf(links);
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   const bool loaded = loader.load_file(file.string(), &robot, &error);
@@ -399,7 +427,7 @@ TEST(RobotLoader, ChainOfTenThousandLinksFromAFileLoadsRootFirst)
 
 TEST(RobotLoader, EmptyUrdfTextIsAnError)
 {
-  RobotLoader loader{ResourceResolver()};
+  RobotLoader loader{ ResourceResolver() };
   RobotVisuals robot;
   std::string error;
   EXPECT_FALSE(loader.load_xml("  \n", RobotLoadOptions(), &robot, &error));
@@ -426,12 +454,14 @@ TEST(RobotLoader, LoadersSharingAMeshCacheReadEachMeshOnceUntilTheFileChanges)
   EXPECT_EQ(second.placeholder_count(), 0u);
 
   // A mesh file that changes is read again.
-  const fs::path folder = fs::temp_directory_path() / ("ros2vtk_mesh_cache_" + std::to_string(::getpid()));
+  const fs::path folder =
+    fs::temp_directory_path() / ("ros2vtk_mesh_cache_" + std::to_string(::getpid()));
   fs::create_directories(folder);
   const std::string mesh = (folder / "part.stl").string();
   ros2vtk_test::write_triangle_stl(mesh, 0.05f);
-  const std::string xml = "<robot name='r'><link name='a'><visual><geometry><mesh filename='part.stl'/>"
-                          "</geometry></visual></link></robot>";
+  const std::string xml =
+    "<robot name='r'><link name='a'><visual><geometry><mesh filename='part.stl'/>"
+    "</geometry></visual></link></robot>";
   RobotLoadOptions options;
   options.base_folder = folder.string(); // as a URDF file in that folder would
   RobotVisuals part;

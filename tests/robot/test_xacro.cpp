@@ -16,8 +16,7 @@
 namespace fs = std::filesystem;
 using namespace ros2vtk::robot;
 
-namespace
-{
+namespace {
 void write(const fs::path& path, const std::string& text)
 {
   fs::create_directories(path.parent_path());
@@ -34,7 +33,8 @@ protected:
     this->Root = fs::temp_directory_path() / ("ros2vtk_xacro_" + std::to_string(::getpid()));
     const fs::path prefix = this->Root / "prefix";
     write(prefix / "share/ament_index/resource_index/packages/demo_arm", "");
-    write(prefix / "share/demo_arm/urdf/parts.xacro", R"(<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+    write(prefix / "share/demo_arm/urdf/parts.xacro",
+      R"(<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
   <xacro:macro name="boxed_link" params="name size">
     <link name="${name}"><visual><geometry><box size="${size} ${size} ${size}"/></geometry></visual></link>
   </xacro:macro>
@@ -121,7 +121,9 @@ TEST_F(Xacro, NoXacroInstalledSaysWhereItLookedAndHowToInstall)
   RobotVisuals robot;
   std::string error;
   EXPECT_FALSE(loader.load_file(this->Arm.string(), &robot, &error));
-  EXPECT_NE(error.find("cannot expand the xacro file '" + this->Arm.string() + "'"), std::string::npos) << error;
+  EXPECT_NE(
+    error.find("cannot expand the xacro file '" + this->Arm.string() + "'"), std::string::npos)
+    << error;
   EXPECT_NE(error.find("no xacro processor found"), std::string::npos) << error;
   EXPECT_NE(error.find("pip install xacro"), std::string::npos) << error;
 }
@@ -129,7 +131,8 @@ TEST_F(Xacro, NoXacroInstalledSaysWhereItLookedAndHowToInstall)
 TEST_F(Xacro, XacrosOwnErrorIsPassedOn)
 {
   const fs::path bad = this->Root / "bad.urdf.xacro";
-  write(bad, R"(<robot name="x" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:nosuch/></robot>)");
+  write(
+    bad, R"(<robot name="x" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:nosuch/></robot>)");
   RobotLoader loader;
   RobotVisuals robot;
   std::string error;

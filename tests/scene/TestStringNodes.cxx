@@ -20,7 +20,8 @@ bool vtkROS2PublisherTestStringNode::Publish(const std::string& text)
   return this->PublishMessage(&message);
 }
 
-const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherTestStringNode::GetMessageTypeSupport() const
+const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherTestStringNode::GetMessageTypeSupport()
+  const
 {
   return StringMessage::type_support();
 }
@@ -31,7 +32,8 @@ std::string vtkROS2SubscriberTestStringNode::GetLastMessage() const
   return message ? message->data : std::string();
 }
 
-const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberTestStringNode::GetMessageTypeSupport() const
+const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberTestStringNode::GetMessageTypeSupport()
+  const
 {
   return StringMessage::type_support();
 }
@@ -46,9 +48,8 @@ void vtkROS2SubscriberTestStringNode::OnNewMessages()
   this->Batches.push_back(batch);
 }
 
-namespace
-{
-template <typename T>
+namespace {
+template<typename T>
 vtkROS2SceneNode* Create()
 {
   return T::New();

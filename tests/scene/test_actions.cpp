@@ -28,8 +28,7 @@
 
 #include <string>
 
-namespace
-{
+namespace {
 using ros2vtk_test::SpinUntil;
 
 class ActionTest : public ::testing::Test
@@ -81,10 +80,12 @@ TEST_F(ActionTest, GoalFeedbackAndResultArriveOnSpin)
 
   ASSERT_GT(this->Client->SendGoalYAML("{order: 3}"), 0);
   EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::WaitingForAcceptance);
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); })) << this->Output->Errors;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }))
+    << this->Output->Errors;
   EXPECT_EQ(this->Server->GetGoalField("order"), "3");
   EXPECT_EQ(this->Server->GetGoalIdAsString(), this->Client->GetGoalIdAsString());
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetGoalStatus() == vtkROS2ActionClientNode::Executing; }))
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] { return this->Client->GetGoalStatus() == vtkROS2ActionClientNode::Executing; }))
     << this->Client->GetStatusAsString();
 
   ASSERT_TRUE(this->Server->PublishFeedbackYAML("{sequence: [0, 1, 1]}"));
@@ -93,7 +94,8 @@ TEST_F(ActionTest, GoalFeedbackAndResultArriveOnSpin)
 
   ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2]}"));
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->IsGoalDone(); }));
-  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Succeeded) << this->Client->GetLastError();
+  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Succeeded)
+    << this->Client->GetLastError();
   EXPECT_EQ(this->Client->GetResultStatus(), 4);
   EXPECT_EQ(this->Client->GetResultYAML(), "sequence:\n- 0\n- 1\n- 1\n- 2\n");
   EXPECT_FALSE(this->Server->HasActiveGoal());
@@ -109,7 +111,8 @@ TEST_F(ActionTest, FinishedGoalsExpireAfterTheResultTimeout)
   EXPECT_EQ(this->Server->GetResultTimeout(), 900.0); // rclpy's ActionServer default
   this->Server->SetResultTimeout(0.3);
   ASSERT_GT(this->Client->SendGoalYAML("{order: 3}"), 0);
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); })) << this->Output->Errors;
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }))
+    << this->Output->Errors;
   ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2]}"));
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->IsGoalDone(); }));
   ASSERT_GT(this->Client->SendGoalYAML("{order: 4}"), 0); // a second goal, left running
@@ -118,11 +121,14 @@ TEST_F(ActionTest, FinishedGoalsExpireAfterTheResultTimeout)
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->GetNumberOfExpiredGoals() == 1; }));
   EXPECT_EQ(this->Server->GetNumberOfGoals(), 1);
   EXPECT_EQ(this->Server->GetNumberOfActiveGoals(), 1);
-  ros2vtk_test::SpinUntil(this->Logic, [] { return false; }, 0.5);
+  ros2vtk_test::SpinUntil(
+    this->Logic, [] { return false; }, 0.5);
   EXPECT_EQ(this->Server->GetNumberOfGoals(), 1); // running goals never expire
 
   this->Server->SetResultTimeout(-1);
-  EXPECT_NE(this->Output->Errors.find("SetResultTimeout: -1 is not a non-negative number of seconds"), std::string::npos);
+  EXPECT_NE(
+    this->Output->Errors.find("SetResultTimeout: -1 is not a non-negative number of seconds"),
+    std::string::npos);
   EXPECT_EQ(this->Server->GetResultTimeout(), 0.3);
   const std::string saved = this->Logic->GetScene()->WriteToXMLString();
   EXPECT_NE(saved.find("resultTimeout=\"0.3\""), std::string::npos) << saved;
@@ -137,7 +143,8 @@ TEST_F(ActionTest, CancelRequestedAndConfirmed)
   countCancel->SetCallback(&Count);
   this->Server->AddObserver(vtkROS2ActionServerNode::CancelRequestedEvent, countCancel);
   ASSERT_GT(this->Client->SendGoalYAML("{order: 10}"), 0);
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfGoalsAccepted() == 1; }));
+  ASSERT_TRUE(
+    SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfGoalsAccepted() == 1; }));
   EXPECT_FALSE(this->Server->ConfirmGoalCanceled("")) << "no cancel was requested yet";
   ASSERT_TRUE(this->Client->CancelGoal());
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->IsCancelRequested(); }));
@@ -157,7 +164,8 @@ TEST_F(ActionTest, TwoGoalsInFlightEachByIdAndCancelAll)
   vtkNew<vtkCallbackCommand> onFeedback;
   onFeedback->SetClientData(&feedbackGoal);
   onFeedback->SetCallback([](vtkObject* caller, unsigned long, void* goal, void*) {
-    *static_cast<std::string*>(goal) = static_cast<vtkROS2ActionClientNode*>(caller)->GetLastEventGoalId();
+    *static_cast<std::string*>(goal) =
+      static_cast<vtkROS2ActionClientNode*>(caller)->GetLastEventGoalId();
   });
   this->Client->AddObserver(vtkROS2ActionClientNode::FeedbackReceivedEvent, onFeedback);
 
@@ -170,15 +178,18 @@ TEST_F(ActionTest, TwoGoalsInFlightEachByIdAndCancelAll)
   EXPECT_EQ(this->Client->GetNthGoalId(0), first);
   EXPECT_EQ(this->Client->GetNthGoalId(1), second);
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfGoalsAccepted() == 2; }))
-    << this->Client->GetStatusAsStringById(first.c_str()) << ", " << this->Client->GetStatusAsString();
+    << this->Client->GetStatusAsStringById(first.c_str()) << ", "
+    << this->Client->GetStatusAsString();
 
   // The server's current goal is the oldest running one: feedback and result for the first.
   ASSERT_EQ(this->Server->GetGoalIdAsString(), first);
   ASSERT_TRUE(this->Server->PublishFeedbackYAML("{sequence: [0, 1, 1]}"));
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfFeedbacksById(first.c_str()) == 1; }));
+  ASSERT_TRUE(SpinUntil(
+    this->Logic, [&] { return this->Client->GetNumberOfFeedbacksById(first.c_str()) == 1; }));
   EXPECT_EQ(feedbackGoal, first);
   EXPECT_EQ(this->Client->GetNumberOfFeedbacksById(second.c_str()), 0);
-  EXPECT_EQ(this->Client->GetNumberOfFeedbacks(), 0) << "the single-goal API reads the last goal sent";
+  EXPECT_EQ(this->Client->GetNumberOfFeedbacks(), 0)
+    << "the single-goal API reads the last goal sent";
   ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2]}"));
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->IsGoalDoneById(first.c_str()); }));
   EXPECT_EQ(this->Client->GetGoalStatusById(first.c_str()), vtkROS2ActionClientNode::Succeeded);
@@ -228,22 +239,24 @@ TEST_F(ActionTest, ForeignFeedbackAndMalformedStatusAreIgnored)
   auto raw = ros2vtk::wire::Participant::create(
     "stranger", "", ros2vtk::wire::ParticipantOptions::from_environment(), &error);
   ASSERT_TRUE(raw) << error;
-  const ros2vtk::wire::ActionTypeSupport* type = ros2vtk::wire::find_action_type("test_msgs/action/Fibonacci");
+  const ros2vtk::wire::ActionTypeSupport* type =
+    ros2vtk::wire::find_action_type("test_msgs/action/Fibonacci");
   ASSERT_NE(type, nullptr);
   ros2vtk::scene::ActionMembers at;
   ASSERT_TRUE(ros2vtk::scene::find_action_members(*type, at, &error)) << error;
-  auto feedback = raw->create_publisher(
-    *type->feedback_message(), "/crowded/_action/feedback", ros2vtk::wire::QoS::default_profile(), &error);
+  auto feedback = raw->create_publisher(*type->feedback_message(), "/crowded/_action/feedback",
+    ros2vtk::wire::QoS::default_profile(), &error);
   // A status table that writes a sequence length far beyond the payload (what a broken or
   // hostile server would send): the client's reader must reject it.
   static ros2vtk::wire::MessageTypeSupport hostileStatus = *type->status();
   hostileStatus.serialize = [](const void*, ros2vtk::wire::CdrWriter& writer) {
     writer.write(static_cast<uint32_t>(0x7fffffff));
   };
-  auto status =
-    raw->create_publisher(hostileStatus, "/crowded/_action/status", ros2vtk::wire::QoS::transient_local(1), &error);
+  auto status = raw->create_publisher(
+    hostileStatus, "/crowded/_action/status", ros2vtk::wire::QoS::transient_local(1), &error);
   ASSERT_TRUE(feedback && status) << error;
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return feedback->matched_subscriptions() > 0 && status->matched_subscriptions() > 0; }));
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] { return feedback->matched_subscriptions() > 0 && status->matched_subscriptions() > 0; }));
 
   ASSERT_GT(this->Client->SendGoalYAML("{order: 4}"), 0);
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }));
@@ -255,18 +268,24 @@ TEST_F(ActionTest, ForeignFeedbackAndMalformedStatusAreIgnored)
   void* blank = hostileStatus.create();
   ASSERT_TRUE(status->publish(blank));
   hostileStatus.destroy(blank);
-  ros2vtk_test::SpinUntil(this->Logic, [] { return false; }, 0.5);
+  ros2vtk_test::SpinUntil(
+    this->Logic, [] { return false; }, 0.5);
   EXPECT_EQ(this->Client->GetNumberOfFeedbacks(), 0) << "feedback of another goal is not ours";
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
-    return this->Output->Warnings.find("malformed feedback/status sample(s) rejected") != std::string::npos;
-  })) << this->Output->Warnings;
-  EXPECT_NE(this->Output->Warnings.find("action '/crowded'"), std::string::npos) << this->Output->Warnings;
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] {
+      return this->Output->Warnings.find("malformed feedback/status sample(s) rejected") !=
+        std::string::npos;
+    }))
+    << this->Output->Warnings;
+  EXPECT_NE(this->Output->Warnings.find("action '/crowded'"), std::string::npos)
+    << this->Output->Warnings;
 
   ASSERT_TRUE(this->Server->PublishFeedbackYAML("{sequence: [0, 1, 1]}"));
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Client->GetNumberOfFeedbacks() == 1; }));
   ASSERT_TRUE(this->Server->SucceedGoal("{sequence: [0, 1, 1, 2, 3]}"));
   ASSERT_TRUE(this->Client->WaitForGoal(10.0));
-  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Succeeded) << this->Client->GetLastError();
+  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Succeeded)
+    << this->Client->GetLastError();
 }
 
 TEST_F(ActionTest, MalformedGoalRequestsAreRejectedAndTheServerKeepsServing)
@@ -296,9 +315,11 @@ TEST_F(ActionTest, MalformedGoalRequestsAreRejectedAndTheServerKeepsServing)
   void* ignored = hostileRequest.create();
   ASSERT_GT(client->send_request(ignored), 0);
   hostileRequest.destroy(ignored);
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
-    return this->Output->Warnings.find("malformed request(s) rejected") != std::string::npos;
-  })) << this->Output->Warnings;
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] {
+      return this->Output->Warnings.find("malformed request(s) rejected") != std::string::npos;
+    }))
+    << this->Output->Warnings;
   EXPECT_NE(this->Output->Warnings.find("action '/hostile_goals'"), std::string::npos);
   EXPECT_EQ(this->Server->GetNumberOfGoalsReceived(), 0) << "no malformed goal reached the script";
 
@@ -306,7 +327,8 @@ TEST_F(ActionTest, MalformedGoalRequestsAreRejectedAndTheServerKeepsServing)
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }));
   ASSERT_TRUE(this->Server->AbortGoal(""));
   ASSERT_TRUE(this->Client->WaitForGoal(10.0));
-  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Aborted) << this->Client->GetLastError();
+  EXPECT_EQ(this->Client->GetGoalStatus(), vtkROS2ActionClientNode::Aborted)
+    << this->Client->GetLastError();
   EXPECT_EQ(this->Client->GetResultStatus(), 6);
 }
 
@@ -314,7 +336,8 @@ TEST_F(ActionTest, BadUseGivesClearErrors)
 {
   this->MakePair("/misused");
   EXPECT_FALSE(this->Server->SucceedGoal("{sequence: [1]}"));
-  EXPECT_NE(this->Output->Errors.find("SucceedGoal: no goal is running"), std::string::npos) << this->Output->Errors;
+  EXPECT_NE(this->Output->Errors.find("SucceedGoal: no goal is running"), std::string::npos)
+    << this->Output->Errors;
   EXPECT_FALSE(this->Server->PublishFeedbackYAML("{sequence: [1]}"));
   EXPECT_FALSE(this->Client->CancelGoal());
   EXPECT_EQ(this->Client->SendGoalYAML("{order: not a number}"), -1);
@@ -322,9 +345,11 @@ TEST_F(ActionTest, BadUseGivesClearErrors)
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Server->HasActiveGoal(); }));
   EXPECT_FALSE(this->Server->SucceedGoal("{sequence: nope}")) << "invalid result YAML";
   EXPECT_TRUE(this->Server->HasActiveGoal()) << "the goal is still running";
-  EXPECT_EQ(this->Other->CreateAndAddActionServerNode("test_msgs/action/Fibonacci", "/misused"), nullptr);
+  EXPECT_EQ(
+    this->Other->CreateAndAddActionServerNode("test_msgs/action/Fibonacci", "/misused"), nullptr);
   EXPECT_EQ(this->Node->CreateAndAddActionClientNode("std_srvs/srv/SetBool", "/x"), nullptr);
-  EXPECT_NE(this->Output->Errors.find("unknown action type 'std_srvs/srv/SetBool'"), std::string::npos);
+  EXPECT_NE(
+    this->Output->Errors.find("unknown action type 'std_srvs/srv/SetBool'"), std::string::npos);
 }
 
 TEST_F(ActionTest, SavedSceneRestoresClientAndServer)
@@ -338,7 +363,8 @@ TEST_F(ActionTest, SavedSceneRestoresClientAndServer)
   ASSERT_NE(client, nullptr);
   EXPECT_STREQ(client->GetActionType(), "test_msgs/action/Fibonacci");
   EXPECT_EQ(client->GetTimeout(), 3.5);
-  auto* otherNode = vtkROS2NodeNode::SafeDownCast(other->GetScene()->GetNodeByID(this->Other->GetID()));
+  auto* otherNode =
+    vtkROS2NodeNode::SafeDownCast(other->GetScene()->GetNodeByID(this->Other->GetID()));
   ASSERT_NE(otherNode, nullptr);
   auto* server = otherNode->GetActionServerNodeByAction("/saved_action");
   ASSERT_NE(server, nullptr);
@@ -363,7 +389,8 @@ TEST_F(ActionTest, ActionTypeIsInTheNodeTypeCacheWhileAClientOrServerExists)
   EXPECT_EQ(others.find(fibonacci->type_hash), fibonacci->description);
   EXPECT_NE(ours.find(sendGoalHash), nullptr);
   // A second client of the same type counts; the type stays until the last one goes.
-  ASSERT_NE(this->Node->CreateAndAddActionClientNode("test_msgs/action/Fibonacci", "/cached_too"), nullptr);
+  ASSERT_NE(
+    this->Node->CreateAndAddActionClientNode("test_msgs/action/Fibonacci", "/cached_too"), nullptr);
   ASSERT_TRUE(this->Node->RemoveAndDeleteActionClientNode("/cached"));
   EXPECT_EQ(ours.find(fibonacci->type_hash), fibonacci->description);
   ASSERT_TRUE(this->Node->RemoveAndDeleteActionClientNode("/cached_too"));

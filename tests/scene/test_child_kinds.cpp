@@ -23,8 +23,7 @@
 
 #include "../robot/chain_urdf.hpp"
 
-namespace
-{
+namespace {
 const char* const CounterRole = "testCounter";
 } // namespace
 
@@ -65,12 +64,13 @@ protected:
 };
 vtkStandardNewMacro(vtkTestSpinCounterNode);
 
-namespace
-{
+namespace {
 // The one registration line (lets a scene file create the class by name).
 const bool Registered = ros2vtk::scene::NodeClassRegistry::instance().add(
   { "", "vtkTestSpinCounterNode", "", ros2vtk::scene::NodeDirection::Other,
-    [] { return static_cast<vtkROS2SceneNode*>(vtkTestSpinCounterNode::New()); } },
+    [] {
+      return static_cast<vtkROS2SceneNode*>(vtkTestSpinCounterNode::New());
+    } },
   nullptr);
 } // namespace
 
@@ -96,7 +96,8 @@ TEST(ChildKinds, ANodeClassFromOutsideTheRuntimeSpinsSavesAndLoads)
 
   vtkNew<vtkROS2Logic> other;
   ASSERT_TRUE(other->GetScene()->ReadFromXMLString(xml.c_str()));
-  auto* restored = vtkTestSpinCounterNode::SafeDownCast(other->GetScene()->GetNodeByID(counter->GetID()));
+  auto* restored =
+    vtkTestSpinCounterNode::SafeDownCast(other->GetScene()->GetNodeByID(counter->GetID()));
   ASSERT_NE(restored, nullptr);
   EXPECT_EQ(restored->Label, "first");
   vtkROS2NodeNode* restoredNode = other->GetDefaultROS2Node();
@@ -110,8 +111,7 @@ TEST(ChildKinds, ANodeClassFromOutsideTheRuntimeSpinsSavesAndLoads)
   EXPECT_EQ(restoredNode->FindChild(CounterRole, "first"), nullptr);
 }
 
-namespace
-{
+namespace {
 // Child visits while creating `count` lookups (each: a find that misses, then an add).
 vtkTypeUInt64 VisitsToCreateLookups(int count)
 {
@@ -127,7 +127,8 @@ vtkTypeUInt64 VisitsToCreateLookups(int count)
   const vtkTypeUInt64 visits = rosNode->GetNumberOfChildVisits() - before;
   // Every one is still found (and a changed key is found under its new value).
   EXPECT_NE(rosNode->GetTf2LookupNodeByParentChild("world", "link0"), nullptr);
-  vtkROS2Tf2LookupNode* last = rosNode->GetTf2LookupNodeByParentChild("world", ("link" + std::to_string(count - 1)).c_str());
+  vtkROS2Tf2LookupNode* last =
+    rosNode->GetTf2LookupNodeByParentChild("world", ("link" + std::to_string(count - 1)).c_str());
   EXPECT_NE(last, nullptr);
   last->SetChildID("renamed");
   EXPECT_EQ(rosNode->GetTf2LookupNodeByParentChild("world", "renamed"), last);
@@ -147,14 +148,13 @@ TEST(ChildKinds, CreatingLookupsVisitsChildrenLinearly)
   EXPECT_LE(large, 5u * small); // 4x the lookups, not 16x the visits
 }
 
-namespace
-{
+namespace {
 // Child visits while loading a URDF chain of `links` links from a file: the robot node makes one
 // lookup (and one model) per link, each found through the index first.
 vtkTypeUInt64 VisitsToLoadChainRobot(int links)
 {
-  const std::filesystem::path file =
-    std::filesystem::temp_directory_path() / ("ros2vtk_chain_" + std::to_string(links) + "_" + std::to_string(::getpid()) + ".urdf");
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+    ("ros2vtk_chain_" + std::to_string(links) + "_" + std::to_string(::getpid()) + ".urdf");
   std::ofstream(file) << ros2vtk_test::chain_urdf(links);
   vtkNew<vtkROS2Logic> logic;
   vtkROS2NodeNode* rosNode = logic->GetDefaultROS2Node();

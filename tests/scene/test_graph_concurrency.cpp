@@ -26,8 +26,7 @@
 #include <vector>
 #include <memory>
 
-namespace
-{
+namespace {
 using ros2vtk::wire::Participant;
 using ros2vtk::wire::ParticipantOptions;
 
@@ -133,5 +132,6 @@ static void ChurnAndExit()
 TEST(GraphConcurrency, TwoNodesChangingTheirEndpointsTogetherNeverDeadlock)
 {
   ::testing::FLAGS_gtest_death_test_style = "threadsafe"; // a fresh process, not a fork of this one
-  EXPECT_EXIT(ChurnAndExit(), ::testing::ExitedWithCode(0), "churn done, 0 endpoint creations failed");
+  EXPECT_EXIT(
+    ChurnAndExit(), ::testing::ExitedWithCode(0), "churn done, 0 endpoint creations failed");
 }

@@ -24,16 +24,16 @@ TEST(LinkStateMonitor, SaysItFoundNobodyAfterTheQuietTimeThenAtMostOncePerInterv
   LinkStateMonitor monitor(5s, 60s);
   const auto t0 = LinkStateMonitor::Clock::time_point{} + 100s;
   monitor.start(t0);
-  EXPECT_LT(monitor.alone_report_due(t0 + 4s), 0.0);     // too early
+  EXPECT_LT(monitor.alone_report_due(t0 + 4s), 0.0); // too early
   EXPECT_DOUBLE_EQ(monitor.alone_report_due(t0 + 5s), 5.0);
   EXPECT_DOUBLE_EQ(monitor.alone_report_due(t0 + 5s), 5.0); // due until reported
   monitor.alone_reported(t0 + 5s);
-  EXPECT_LT(monitor.alone_report_due(t0 + 64s), 0.0);    // within the minute: quiet
+  EXPECT_LT(monitor.alone_report_due(t0 + 64s), 0.0); // within the minute: quiet
   EXPECT_DOUBLE_EQ(monitor.alone_report_due(t0 + 65s), 65.0);
   monitor.alone_reported(t0 + 65s);
-  monitor.update(1, t0 + 70s);                           // a peer: nothing to say
+  monitor.update(1, t0 + 70s); // a peer: nothing to say
   EXPECT_LT(monitor.alone_report_due(t0 + 200s), 0.0);
-  monitor.update(0, t0 + 200s);                          // lost again: the quiet time starts over
+  monitor.update(0, t0 + 200s); // lost again: the quiet time starts over
   EXPECT_LT(monitor.alone_report_due(t0 + 204s), 0.0);
   EXPECT_DOUBLE_EQ(monitor.alone_report_due(t0 + 205s), 5.0);
 }

@@ -23,8 +23,7 @@
 using ros2vtk::scene::NodeClassRegistry;
 using ros2vtk::scene::NodeDirection;
 
-namespace
-{
+namespace {
 using ros2vtk_test::CapturingOutputWindow;
 
 class NodeClassRegistryTest : public ::testing::Test
@@ -50,7 +49,8 @@ TEST_F(NodeClassRegistryTest, ResolvesShortClassAndMRMLNames)
     ASSERT_NE(resolution.mapped_class, nullptr) << name << ": " << resolution.error;
     EXPECT_EQ(resolution.mapped_class->class_name, "vtkROS2PublisherTestStringNode") << name;
   }
-  const auto subscriber = registry.resolve(NodeDirection::Subscriber, "vtkMRMLROS2SubscriberTestStringNode");
+  const auto subscriber =
+    registry.resolve(NodeDirection::Subscriber, "vtkMRMLROS2SubscriberTestStringNode");
   ASSERT_NE(subscriber.mapped_class, nullptr) << subscriber.error;
   EXPECT_EQ(subscriber.mapped_class->class_name, "vtkROS2SubscriberTestStringNode");
 }
@@ -92,10 +92,11 @@ TEST_F(NodeClassRegistryTest, SlicerClassNamesFindOurEquivalents)
 
 TEST_F(NodeClassRegistryTest, AClassOfTheOtherDirectionNamesTheRightCall)
 {
-  const auto resolution =
-    NodeClassRegistry::instance().resolve(NodeDirection::Publisher, "vtkROS2SubscriberTestStringNode");
+  const auto resolution = NodeClassRegistry::instance().resolve(
+    NodeDirection::Publisher, "vtkROS2SubscriberTestStringNode");
   EXPECT_EQ(resolution.mapped_class, nullptr);
-  EXPECT_NE(resolution.error.find("CreateAndAddSubscriberNode"), std::string::npos) << resolution.error;
+  EXPECT_NE(resolution.error.find("CreateAndAddSubscriberNode"), std::string::npos)
+    << resolution.error;
 }
 
 TEST_F(NodeClassRegistryTest, ARosTypeWithOneMappedClassGivesThatClass)
@@ -126,9 +127,11 @@ TEST_F(NodeClassRegistryTest, UnknownTypesListTheKnownNames)
     const auto resolution = NodeClassRegistry::instance().resolve(NodeDirection::Publisher, name);
     EXPECT_EQ(resolution.mapped_class, nullptr) << name;
     EXPECT_EQ(resolution.generic_type, nullptr) << name;
-    EXPECT_NE(resolution.error.find(std::string("'") + name + "'"), std::string::npos) << resolution.error;
+    EXPECT_NE(resolution.error.find(std::string("'") + name + "'"), std::string::npos)
+      << resolution.error;
     EXPECT_NE(resolution.error.find("TestString"), std::string::npos) << resolution.error;
-    EXPECT_NE(resolution.error.find("geometry_msgs/msg/Point"), std::string::npos) << resolution.error;
+    EXPECT_NE(resolution.error.find("geometry_msgs/msg/Point"), std::string::npos)
+      << resolution.error;
   }
 }
 
@@ -140,8 +143,11 @@ TEST_F(NodeClassRegistryTest, RefusesIncompleteAndConflictingClasses)
   EXPECT_FALSE(error.empty());
   error.clear();
   // Same short name as the registered TestString publisher, different class.
-  EXPECT_FALSE(registry.add({ "TestString", "vtkROS2PublisherOtherNode", "std_msgs/msg/String",
-                              NodeDirection::Publisher, [] { return static_cast<vtkROS2SceneNode*>(nullptr); } },
+  EXPECT_FALSE(registry.add(
+    { "TestString", "vtkROS2PublisherOtherNode", "std_msgs/msg/String", NodeDirection::Publisher,
+      [] {
+        return static_cast<vtkROS2SceneNode*>(nullptr);
+      } },
     &error));
   EXPECT_NE(error.find("TestString"), std::string::npos) << error;
   // Registering the same class again is harmless.
@@ -211,7 +217,8 @@ TEST_F(NodeClassRegistryTest, RemoveAndDeleteTakesTheNodeOutOfDDSAndScene)
   vtkNew<vtkROS2Logic> logic;
   vtkROS2NodeNode* node = logic->GetDefaultROS2Node();
   ASSERT_NE(node, nullptr);
-  vtkSmartPointer<vtkROS2PublisherNode> pub = node->CreateAndAddPublisherNode("TestString", "/gone");
+  vtkSmartPointer<vtkROS2PublisherNode> pub =
+    node->CreateAndAddPublisherNode("TestString", "/gone");
   ASSERT_NE(pub, nullptr);
   EXPECT_TRUE(node->RemoveAndDeletePublisherNode("/gone"));
   EXPECT_FALSE(pub->IsAddedToROS2Node());

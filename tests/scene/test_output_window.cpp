@@ -27,7 +27,8 @@ TEST(OutputWindow, KeepsTextWithoutVTKFramingWhole)
 {
   std::string file, function, message;
   int line = -1;
-  vtkROS2OutputWindow::ParseVTKMessage("plain text (not from a macro): here\n", file, line, function, message);
+  vtkROS2OutputWindow::ParseVTKMessage(
+    "plain text (not from a macro): here\n", file, line, function, message);
   EXPECT_EQ(file, "");
   EXPECT_EQ(line, 0);
   EXPECT_EQ(function, "");

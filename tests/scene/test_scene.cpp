@@ -15,8 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace
-{
+namespace {
 // Records (event id, node ID) of every event the scene fires.
 struct EventLog
 {
@@ -275,14 +274,15 @@ TEST(SceneFile, RejectsBadDocumentsWithoutCrashing)
   EXPECT_FALSE(scene->ReadFromXMLString("not xml at all <"));
   EXPECT_FALSE(scene->ReadFromXMLString("<Other version=\"1\"/>"));
   EXPECT_FALSE(scene->ReadFromXMLString("<ROS2Scene version=\"99\"/>"));
-  EXPECT_FALSE(scene->ReadFromXMLString(
-    "<ROS2Scene version=\"1\"><vtkNoSuchNode id=\"x1\"/></ROS2Scene>"));
+  EXPECT_FALSE(
+    scene->ReadFromXMLString("<ROS2Scene version=\"1\"><vtkNoSuchNode id=\"x1\"/></ROS2Scene>"));
   EXPECT_FALSE(scene->ReadFromXMLString(
     "<ROS2Scene version=\"1\"><vtkROS2NodeNode name=\"no id\"/></ROS2Scene>"));
   EXPECT_FALSE(scene->ReadFromXMLString("<ROS2Scene version=\"1\"><vtkROS2NodeNode id=\"a\"/>"
                                         "<vtkROS2NodeNode id=\"a\"/></ROS2Scene>"));
-  EXPECT_FALSE(scene->ReadFromXMLString("<ROS2Scene version=\"1\"><vtkROS2NodeNode id=\"a\">"
-                                        "<Attribute value=\"no name\"/></vtkROS2NodeNode></ROS2Scene>"));
+  EXPECT_FALSE(
+    scene->ReadFromXMLString("<ROS2Scene version=\"1\"><vtkROS2NodeNode id=\"a\">"
+                             "<Attribute value=\"no name\"/></vtkROS2NodeNode></ROS2Scene>"));
   EXPECT_FALSE(scene->ReadFromXMLFile("/nonexistent/dir/scene.xml"));
   EXPECT_FALSE(scene->WriteToXMLFile("/nonexistent/dir/scene.xml"));
   scene->GlobalWarningDisplayOn();
@@ -324,7 +324,8 @@ TEST(SceneFile, FailingReadsLeaveTheSceneUnchanged)
   EXPECT_EQ(scene->GetNodeByID(a->GetID()), a.GetPointer());
   EXPECT_EQ(a->GetNodeReference("peer"), b.GetPointer());
   // A valid read still replaces everything.
-  ASSERT_TRUE(scene->ReadFromXMLString(("<ROS2Scene version=\"1\">" + valid + "</ROS2Scene>").c_str()));
+  ASSERT_TRUE(
+    scene->ReadFromXMLString(("<ROS2Scene version=\"1\">" + valid + "</ROS2Scene>").c_str()));
   ASSERT_EQ(scene->GetNumberOfNodes(), 1);
   EXPECT_STREQ(scene->GetNthNode(0)->GetName(), "new");
 }

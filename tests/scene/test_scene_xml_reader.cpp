@@ -44,8 +44,9 @@ std::string with_attributes(int count)
 TEST(SceneXmlReader, BuildsTheTreeInDocumentOrderWithDecodedAttributes)
 {
   std::string error;
-  auto root = ReadSceneXml("<ROS2Scene version=\"1\"><a id=\"x\" note=\"&lt;&amp;&quot;\"><b/></a><c id=\"y\"/>"
-                           "</ROS2Scene>",
+  auto root = ReadSceneXml(
+    "<ROS2Scene version=\"1\"><a id=\"x\" note=\"&lt;&amp;&quot;\"><b/></a><c id=\"y\"/>"
+    "</ROS2Scene>",
     &error);
   ASSERT_TRUE(root) << error;
   EXPECT_STREQ(root->GetName(), "ROS2Scene");
@@ -103,7 +104,9 @@ TEST(SceneXmlReader, MalformedTextAndInvalidUtf8)
   EXPECT_FALSE(ReadSceneXml("<a><b></a>", &error));
   EXPECT_NE(error.find("not a well-formed XML document"), std::string::npos) << error;
   EXPECT_FALSE(ReadSceneXml("", &error));
-  auto root = ReadSceneXml("<a n=\"x\xff" "y\"/>", &error);
+  auto root = ReadSceneXml("<a n=\"x\xff"
+                           "y\"/>",
+    &error);
   ASSERT_TRUE(root) << error;
   EXPECT_STREQ(root->GetAttribute("n"), "x\xEF\xBF\xBDy"); // U+FFFD, the project's policy
 }

@@ -27,12 +27,9 @@
 #include <string>
 #include <thread>
 
-namespace
-{
+namespace {
 using Clock = std::chrono::steady_clock;
 using ros2vtk_test::SpinUntil;
-
-
 
 class ServiceTest : public ::testing::Test
 {
@@ -89,7 +86,8 @@ TEST_F(ServiceTest, SynchronousAndAsynchronousCallsAreAnsweredOnSpin)
   int responses = 0;
   vtkNew<vtkCallbackCommand> count;
   count->SetClientData(&responses);
-  count->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
   client->AddObserver(vtkROS2ServiceClientNode::ResponseReceivedEvent, count);
   ASSERT_TRUE(client->SetRequestField("data", "false"));
   const vtkTypeInt64 id = client->SendAsyncRequest();
@@ -113,7 +111,8 @@ TEST_F(ServiceTest, MalformedRequestsAreRejectedWithAReasonAndTheServerKeepsAnsw
   ASSERT_TRUE(raw) << error;
   // A request table that is SetBool_Request on the wire but writes 7 as the bool (a CDR bool is
   // 0 or 1): what a broken or hostile client would send.
-  const ros2vtk::wire::ServiceTypeSupport* setBool = ros2vtk::wire::find_service_type("std_srvs/srv/SetBool");
+  const ros2vtk::wire::ServiceTypeSupport* setBool =
+    ros2vtk::wire::find_service_type("std_srvs/srv/SetBool");
   ASSERT_NE(setBool, nullptr);
   static ros2vtk::wire::MessageTypeSupport hostileRequest = *setBool->request();
   static const ros2vtk::wire::MessageTypeSupport* realResponse = setBool->response();
@@ -123,7 +122,8 @@ TEST_F(ServiceTest, MalformedRequestsAreRejectedWithAReasonAndTheServerKeepsAnsw
   static const ros2vtk::wire::ServiceTypeSupport hostile{ "std_srvs/srv/SetBool",
     [] { return static_cast<const ros2vtk::wire::MessageTypeSupport*>(&hostileRequest); },
     [] { return realResponse; }, setBool->type_hash, setBool->description };
-  auto rawClient = raw->create_service_client(hostile, "/hostile", ros2vtk::wire::QoS::services(), &error);
+  auto rawClient =
+    raw->create_service_client(hostile, "/hostile", ros2vtk::wire::QoS::services(), &error);
   ASSERT_TRUE(rawClient) << error;
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return rawClient->is_server_available(); }));
   void* ignored = hostileRequest.create();
@@ -136,12 +136,14 @@ TEST_F(ServiceTest, MalformedRequestsAreRejectedWithAReasonAndTheServerKeepsAnsw
     << "rejected " << server->GetNumberOfRejectedRequests();
   EXPECT_EQ(server->GetNumberOfRequests(), 0) << "no malformed request reached the observer";
   EXPECT_NE(server->GetLastRejection(), "");
-  EXPECT_NE(this->Output->Errors.find("malformed request"), std::string::npos) << this->Output->Errors;
+  EXPECT_NE(this->Output->Errors.find("malformed request"), std::string::npos)
+    << this->Output->Errors;
   EXPECT_NE(this->Output->Errors.find("/hostile"), std::string::npos) << this->Output->Errors;
 
   auto* client = this->Node->CreateAndAddServiceClientNode("std_srvs/srv/SetBool", "/hostile");
   ASSERT_NE(client, nullptr);
-  EXPECT_EQ(client->Call("{data: true}", 5.0), "success: true\nmessage: set true\n") << client->GetLastError();
+  EXPECT_EQ(client->Call("{data: true}", 5.0), "success: true\nmessage: set true\n")
+    << client->GetLastError();
 }
 
 TEST_F(ServiceTest, UnansweredRequestGetsTheDefaultResponseAfterTheTimeout)
@@ -160,7 +162,8 @@ TEST_F(ServiceTest, UnansweredRequestGetsTheDefaultResponseAfterTheTimeout)
   EXPECT_EQ(client->Call("{}", 1.0), "");
   EXPECT_EQ(client->GetStatus(), vtkROS2ServiceClientNode::TimedOut);
   EXPECT_STREQ(client->GetLastError(), "timed out: /silent sent no response within 1 s");
-  EXPECT_NE(this->Output->Errors.find("dropped without a response"), std::string::npos) << this->Output->Errors;
+  EXPECT_NE(this->Output->Errors.find("dropped without a response"), std::string::npos)
+    << this->Output->Errors;
 }
 
 TEST_F(ServiceTest, DeferredAnswerFromALaterSpin)
@@ -172,20 +175,24 @@ TEST_F(ServiceTest, DeferredAnswerFromALaterSpin)
   ASSERT_GT(client->SendAsyncRequestYAML("{}"), 0);
   ASSERT_TRUE(SpinUntil(this->Logic, [&] { return server->GetNumberOfPendingRequests() == 1; }));
   ASSERT_TRUE(server->SendResponseYAML("{success: true, message: done later}"));
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return client->GetStatus() == vtkROS2ServiceClientNode::Succeeded; }));
+  ASSERT_TRUE(SpinUntil(
+    this->Logic, [&] { return client->GetStatus() == vtkROS2ServiceClientNode::Succeeded; }));
   EXPECT_EQ(client->GetResponseField("message"), "done later");
 }
 
 TEST_F(ServiceTest, BadUseGivesClearErrors)
 {
   EXPECT_EQ(this->Node->CreateAndAddServiceClientNode("std_srvs/srv/Nope", "/x"), nullptr);
-  EXPECT_NE(this->Output->Errors.find("unknown service type 'std_srvs/srv/Nope'"), std::string::npos);
-  EXPECT_NE(this->Output->Errors.find("std_srvs/srv/Trigger"), std::string::npos) << "known types listed";
+  EXPECT_NE(
+    this->Output->Errors.find("unknown service type 'std_srvs/srv/Nope'"), std::string::npos);
+  EXPECT_NE(this->Output->Errors.find("std_srvs/srv/Trigger"), std::string::npos)
+    << "known types listed";
   auto* client = this->Node->CreateAndAddServiceClientNode("std_srvs/srv/SetBool", "/x");
   ASSERT_NE(client, nullptr);
   EXPECT_EQ(this->Node->CreateAndAddServiceClientNode("std_srvs/srv/SetBool", "/x"), nullptr);
   EXPECT_FALSE(client->SetRequestField("dta", "true"));
-  EXPECT_NE(this->Output->Errors.find("has no field 'dta'"), std::string::npos) << this->Output->Errors;
+  EXPECT_NE(this->Output->Errors.find("has no field 'dta'"), std::string::npos)
+    << this->Output->Errors;
   EXPECT_FALSE(client->SetRequestField("data", "maybe"));
   EXPECT_FALSE(client->SetRequestYAML("{data: [1, 2]}"));
   EXPECT_EQ(client->Call("{data: 3.5}", 0.2), "");
@@ -212,8 +219,10 @@ TEST_F(ServiceTest, SavedSceneRestoresClientAndServer)
   this->Other = nullptr;
   ASSERT_TRUE(scene->ReadFromXMLString(xml.c_str())) << this->Output->Errors;
 
-  auto* restoredServer = vtkROS2ServiceServerNode::SafeDownCast(scene->GetNthNodeByClass(0, "vtkROS2ServiceServerNode"));
-  auto* restoredClient = vtkROS2ServiceClientNode::SafeDownCast(scene->GetNthNodeByClass(0, "vtkROS2ServiceClientNode"));
+  auto* restoredServer =
+    vtkROS2ServiceServerNode::SafeDownCast(scene->GetNthNodeByClass(0, "vtkROS2ServiceServerNode"));
+  auto* restoredClient =
+    vtkROS2ServiceClientNode::SafeDownCast(scene->GetNthNodeByClass(0, "vtkROS2ServiceClientNode"));
   ASSERT_NE(restoredServer, nullptr) << xml;
   ASSERT_NE(restoredClient, nullptr) << xml;
   EXPECT_STREQ(restoredClient->GetServiceType(), "std_srvs/srv/SetBool");

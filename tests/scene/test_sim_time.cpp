@@ -23,8 +23,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace
-{
+namespace {
 using ros2vtk_test::SpinUntil;
 
 constexpr vtkTypeInt64 kSecond = 1000000000;
@@ -101,14 +100,16 @@ TEST_F(SimTimeTest, ZeroUntilTheFirstClockThenFollowsItAndBroadcastsCarryIt)
   EXPECT_FALSE(this->Node->GetSimTimeReceived());
 
   this->StartSimulator();
-  ASSERT_TRUE(this->DriveClockTo(1000, 500)) << "node time stayed " << this->Node->GetNodeTimeNanoseconds();
+  ASSERT_TRUE(this->DriveClockTo(1000, 500))
+    << "node time stayed " << this->Node->GetNodeTimeNanoseconds();
   EXPECT_TRUE(this->Node->GetSimTimeReceived());
   EXPECT_DOUBLE_EQ(this->Node->GetNodeTime(), 1000.0000005);
   ASSERT_TRUE(this->DriveClockTo(1001, 0));
 
   // A broadcast stamped in simulated time, looked up by the simulator's own (wall-clock) node
   // and by this node: both see the simulated stamp.
-  vtkROS2Tf2BroadcasterNode* broadcaster = this->Node->CreateAndAddTf2BroadcasterNode("world", "tool");
+  vtkROS2Tf2BroadcasterNode* broadcaster =
+    this->Node->CreateAndAddTf2BroadcasterNode("world", "tool");
   vtkROS2Tf2LookupNode* remote = this->Simulator->CreateAndAddTf2LookupNode("world", "tool");
   vtkROS2Tf2LookupNode* local = this->Node->CreateAndAddTf2LookupNode("world", "tool");
   ASSERT_NE(broadcaster, nullptr);
@@ -116,10 +117,13 @@ TEST_F(SimTimeTest, ZeroUntilTheFirstClockThenFollowsItAndBroadcastsCarryIt)
   ASSERT_NE(local, nullptr);
   vtkNew<vtkMatrix4x4> matrix;
   matrix->SetElement(0, 3, 25.0);
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
-    broadcaster->Broadcast(matrix.GetPointer());
-    return std::string(remote->GetLookupStatus()) == "ok" && std::string(local->GetLookupStatus()) == "ok";
-  })) << remote->GetLookupStatus() << " / " << local->GetLookupStatus();
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] {
+      broadcaster->Broadcast(matrix.GetPointer());
+      return std::string(remote->GetLookupStatus()) == "ok" &&
+        std::string(local->GetLookupStatus()) == "ok";
+    }))
+    << remote->GetLookupStatus() << " / " << local->GetLookupStatus();
   EXPECT_DOUBLE_EQ(remote->GetLastLookupTime(), 1001.0);
   EXPECT_DOUBLE_EQ(local->GetLastLookupTime(), 1001.0);
   // Ages compare in each node's clock: 0 s of simulated time here; the wall-clock node sees a
@@ -155,7 +159,8 @@ TEST_F(SimTimeTest, AJumpBackInTimeClearsTheTfBuffer)
   ASSERT_TRUE(this->Node->SetUseSimTime(true));
   this->StartSimulator();
   ASSERT_TRUE(this->DriveClockTo(1000, 0));
-  vtkROS2Tf2BroadcasterNode* broadcaster = this->Node->CreateAndAddTf2BroadcasterNode("map", "robot");
+  vtkROS2Tf2BroadcasterNode* broadcaster =
+    this->Node->CreateAndAddTf2BroadcasterNode("map", "robot");
   vtkROS2Tf2LookupNode* lookup = this->Node->CreateAndAddTf2LookupNode("map", "robot");
   ASSERT_NE(broadcaster, nullptr);
   ASSERT_NE(lookup, nullptr);
@@ -165,14 +170,17 @@ TEST_F(SimTimeTest, AJumpBackInTimeClearsTheTfBuffer)
     return std::string(lookup->GetLookupStatus()) == "ok";
   }));
   EXPECT_DOUBLE_EQ(lookup->GetLastLookupTime(), 1000.0);
-  EXPECT_EQ(this->Output->Warnings.find("jumped back in time"), std::string::npos) << this->Output->Warnings;
-  SpinUntil(this->Logic, [] { return false; }, 0.3); // no broadcast in flight any more
+  EXPECT_EQ(this->Output->Warnings.find("jumped back in time"), std::string::npos)
+    << this->Output->Warnings;
+  SpinUntil(
+    this->Logic, [] { return false; }, 0.3); // no broadcast in flight any more
   // The replay restarts at 10 s: the transform stamped 1000 s must not stay the "latest" one,
   // so the buffer forgets it and the lookup fails until a new broadcast comes.
   ASSERT_TRUE(this->DriveClockTo(10, 0));
   this->Logic->Spin();
   EXPECT_STREQ(lookup->GetLookupStatus(), "failed");
-  EXPECT_NE(this->Output->Warnings.find("jumped back in time"), std::string::npos) << this->Output->Warnings;
+  EXPECT_NE(this->Output->Warnings.find("jumped back in time"), std::string::npos)
+    << this->Output->Warnings;
   ASSERT_TRUE(SpinUntil(this->Logic, [&] {
     broadcaster->Broadcast(matrix.GetPointer());
     return std::string(lookup->GetLookupStatus()) == "ok";
@@ -218,12 +226,14 @@ TEST_F(SimTimeTest, TfFramesAsYAMLListsEveryFrameWithItsDelayToTheNodeClock)
   fixed->SetStatic(true);
   vtkNew<vtkMatrix4x4> matrix;
   std::string yaml;
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
-    moving->Broadcast(matrix.GetPointer());
-    fixed->Broadcast(matrix.GetPointer());
-    yaml = this->Node->GetTf2FramesAsYAML();
-    return yaml.find("robot:") != std::string::npos && yaml.find("camera:") != std::string::npos;
-  })) << yaml;
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] {
+      moving->Broadcast(matrix.GetPointer());
+      fixed->Broadcast(matrix.GetPointer());
+      yaml = this->Node->GetTf2FramesAsYAML();
+      return yaml.find("robot:") != std::string::npos && yaml.find("camera:") != std::string::npos;
+    }))
+    << yaml;
   // The moving frame was stamped 1000 s by the node's clock; the clock moves on 2.5 s.
   ASSERT_TRUE(this->DriveClockTo(1002, 500000000));
   yaml = this->Node->GetTf2FramesAsYAML();

@@ -16,8 +16,7 @@
 
 #include <string>
 
-namespace
-{
+namespace {
 vtkNew<vtkPolyData> ThreePoints()
 {
   vtkNew<vtkPoints> points;
@@ -33,10 +32,12 @@ vtkNew<vtkPolyData> ThreePoints()
 TEST(SlicerCompat, SlicersModelAndTransformClassNamesGiveOurNodes)
 {
   vtkNew<vtkROS2Scene> scene;
-  EXPECT_STREQ(scene->AddNewNodeByClass("vtkMRMLModelNode", "model")->GetClassName(), "vtkROS2ModelNode");
+  EXPECT_STREQ(
+    scene->AddNewNodeByClass("vtkMRMLModelNode", "model")->GetClassName(), "vtkROS2ModelNode");
   EXPECT_STREQ(scene->AddNewNodeByClass("vtkMRMLLinearTransformNode", "t")->GetClassName(),
     "vtkROS2TransformNode");
-  EXPECT_STREQ(scene->AddNewNodeByClass("vtkMRMLTransformNode", "u")->GetClassName(), "vtkROS2TransformNode");
+  EXPECT_STREQ(
+    scene->AddNewNodeByClass("vtkMRMLTransformNode", "u")->GetClassName(), "vtkROS2TransformNode");
   EXPECT_STREQ(scene->GetNodeByID("vtkROS2ModelNode1")->GetName(), "model");
   EXPECT_EQ(scene->AddNewNodeByClass("vtkMRMLVolumeNode"), nullptr); // not one of ours
 }
@@ -57,7 +58,9 @@ TEST(SlicerCompat, AModelNodeCopiesPolyDataAndIsItsOwnDisplayNode)
 
   vtkNew<vtkMatrix4x4> matrix;
   EXPECT_FALSE(model->CopyContentFrom(matrix, &error));
-  EXPECT_NE(error.find("vtkROS2ModelNode cannot take the content of a vtkMatrix4x4"), std::string::npos) << error;
+  EXPECT_NE(
+    error.find("vtkROS2ModelNode cannot take the content of a vtkMatrix4x4"), std::string::npos)
+    << error;
   EXPECT_EQ(model->GetPolyData()->GetNumberOfPoints(), 3); // unchanged by the refusal
 
   model->CreateDefaultDisplayNodes();
@@ -91,7 +94,8 @@ TEST(SlicerCompat, PointSizeIsSavedAndABadOneRefused)
   const std::string xml = scene->WriteToXMLString();
   vtkNew<vtkROS2Scene> restored;
   ASSERT_TRUE(restored->ReadFromXMLString(xml.c_str())) << xml;
-  EXPECT_EQ(vtkROS2ModelNode::SafeDownCast(restored->GetNodeByID(model->GetID()))->GetPointSize(), 7.5);
+  EXPECT_EQ(
+    vtkROS2ModelNode::SafeDownCast(restored->GetNodeByID(model->GetID()))->GetPointSize(), 7.5);
 
   std::string bad = xml;
   const auto at = bad.find("pointSize=\"7.5\"");

@@ -31,12 +31,9 @@
 #include <thread>
 #include <vector>
 
-namespace
-{
+namespace {
 using Clock = std::chrono::steady_clock;
 using ros2vtk_test::SpinUntil;
-
-
 
 // Every ModifiedEvent of one subscriber: call data count and the thread it fired on.
 struct ModifiedLog
@@ -85,10 +82,12 @@ protected:
       this->Listener->CreateAndAddSubscriberNode("TestString", topic));
     ASSERT_NE(this->Publisher, nullptr) << this->Output->Errors;
     ASSERT_NE(this->Subscriber, nullptr) << this->Output->Errors;
-    ASSERT_TRUE(SpinUntil(this->Logic, [this] {
-      return this->Publisher->GetNumberOfMatchedSubscriptions() > 0 &&
-        this->Subscriber->GetNumberOfMatchedPublications() > 0;
-    })) << "publisher and subscriber never matched";
+    ASSERT_TRUE(SpinUntil(this->Logic,
+      [this] {
+        return this->Publisher->GetNumberOfMatchedSubscriptions() > 0 &&
+          this->Subscriber->GetNumberOfMatchedPublications() > 0;
+      }))
+      << "publisher and subscriber never matched";
   }
 
   vtkNew<ros2vtk_test::CapturingOutputWindow> Output;
@@ -138,7 +137,8 @@ TEST_F(SpinTest, NothingFiresUntilSpinThenOncePerSpinWithTheCountOnTheSpinningTh
   for (size_t i = 0; i < spinResults.size(); ++i)
   {
     EXPECT_EQ(static_cast<int>(this->Subscriber->Batches[i].size()), spinResults[i]);
-    seen.insert(seen.end(), this->Subscriber->Batches[i].begin(), this->Subscriber->Batches[i].end());
+    seen.insert(
+      seen.end(), this->Subscriber->Batches[i].begin(), this->Subscriber->Batches[i].end());
   }
   EXPECT_EQ(seen, (std::vector<std::string>{ "m0", "m1", "m2", "m3", "m4" }));
   EXPECT_EQ(this->Subscriber->GetLastMessage(), "m4");
@@ -163,7 +163,9 @@ TEST_F(SpinTest, MalformedSamplesAreCountedAndReportedRateLimited)
   // beyond the payload: what a broken or hostile peer would send (Publisher::publish_serialized
   // validates, so the bytes must come from the type's own serializer).
   static ros2vtk::wire::MessageTypeSupport hostile = ros2vtk::std_msgs::msg::String::type_support();
-  hostile.serialized_size = [](const void*) -> size_t { return 4 + 4 + 1; };
+  hostile.serialized_size = [](const void*) -> size_t {
+    return 4 + 4 + 1;
+  };
   hostile.serialize = [](const void*, ros2vtk::wire::CdrWriter& writer) {
     writer.write(static_cast<uint32_t>(0xffffff00u));
     writer.write(static_cast<uint8_t>('x'));
@@ -182,7 +184,8 @@ TEST_F(SpinTest, MalformedSamplesAreCountedAndReportedRateLimited)
     {
       ASSERT_TRUE(rawPublisher->publish(&ignored));
     }
-    ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Subscriber->GetNumberOfRejectedMessages() == sent; }))
+    ASSERT_TRUE(SpinUntil(
+      this->Logic, [&] { return this->Subscriber->GetNumberOfRejectedMessages() == sent; }))
       << "rejected " << this->Subscriber->GetNumberOfRejectedMessages() << " of " << sent;
     EXPECT_EQ(this->Output->NumberOfWarnings, 1) << this->Output->Warnings;
   }
@@ -270,7 +273,8 @@ TEST_F(SpinTest, LinkStateChangedEventFiresOnTheSpinningThreadWhenAPeerComesAndG
   });
   this->Listener->AddObserver(vtkROS2NodeNode::LinkStateChangedEvent, command);
   // The talker, a participant of this process, is found: "peers" (once, whatever else runs).
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return !log.states.empty(); })) << "no event for the talker";
+  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return !log.states.empty(); }))
+    << "no event for the talker";
   EXPECT_EQ(log.states.front(), "peers");
   EXPECT_STREQ(this->Listener->GetLinkState(), "peers");
   const size_t afterFound = log.states.size();
@@ -286,7 +290,8 @@ TEST_F(SpinTest, LinkStateChangedEventFiresOnTheSpinningThreadWhenAPeerComesAndG
   pollfd pfd{ fd, POLLIN, 0 };
   EXPECT_EQ(::poll(&pfd, 1, 5000), 1) << "losing a peer wakes the spinner";
   EXPECT_EQ(log.states.size(), afterFound) << "fired before any spin";
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] { return this->Listener->GetNumberOfDiscoveredParticipants() == 0; }))
+  ASSERT_TRUE(SpinUntil(
+    this->Logic, [&] { return this->Listener->GetNumberOfDiscoveredParticipants() == 0; }))
     << this->Listener->GetNumberOfDiscoveredParticipants() << " peers left";
   ASSERT_GT(log.states.size(), afterFound);
   EXPECT_EQ(log.states.back(), "no peers");
@@ -362,8 +367,8 @@ TEST_F(SpinTest, SavedSceneRestoresNodesEndpointsAndQoS)
 
   vtkNew<vtkROS2Logic> other;
   ASSERT_TRUE(other->GetScene()->ReadFromXMLString(xml.c_str())) << this->Output->Errors << xml;
-  auto* restoredSub =
-    vtkROS2SubscriberTestStringNode::SafeDownCast(other->GetScene()->GetNodeByID(subscriberID.c_str()));
+  auto* restoredSub = vtkROS2SubscriberTestStringNode::SafeDownCast(
+    other->GetScene()->GetNodeByID(subscriberID.c_str()));
   ASSERT_NE(restoredSub, nullptr) << xml;
   EXPECT_TRUE(restoredSub->IsAddedToROS2Node()) << this->Output->Errors;
   EXPECT_STREQ(restoredSub->GetTopic(), "/saved");
@@ -432,8 +437,9 @@ TEST_F(SpinTest, GenericNodeTypeIsFixedWhileAddedAndUnknownTypesAreNamed)
 
     this->Output->Errors.clear();
     EXPECT_FALSE(setType("no_pkg/msg/Nothing"));
-    EXPECT_NE(this->Output->Errors.find("unknown ROS message type 'no_pkg/msg/Nothing'"),
-      std::string::npos) << this->Output->Errors;
+    EXPECT_NE(
+      this->Output->Errors.find("unknown ROS message type 'no_pkg/msg/Nothing'"), std::string::npos)
+      << this->Output->Errors;
     EXPECT_NE(this->Output->Errors.find("geometry_msgs/msg/Point"), std::string::npos)
       << "the error lists the registered types";
 
@@ -444,21 +450,25 @@ TEST_F(SpinTest, GenericNodeTypeIsFixedWhileAddedAndUnknownTypesAreNamed)
     this->Output->Errors.clear();
     EXPECT_FALSE(setType("std_msgs/msg/String"));
     EXPECT_NE(this->Output->Errors.find("cannot change the type while added to a ROS node"),
-      std::string::npos) << this->Output->Errors;
+      std::string::npos)
+      << this->Output->Errors;
   }
 }
 
 TEST(DiscoveryServerSettings, ATcpServerOrAMalformedListIsRefusedWithWhatToDoInstead)
 {
   for (const auto& [servers, expected] : std::vector<std::pair<std::string, std::string>>{
-         { "TCPv4:[198.18.0.1]:42100", "TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
-                                       "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT" },
-         { "198.18.0.1:not_a_port", "is not a list of host:port (';'-separated, position = server id)" } })
+         { "TCPv4:[198.18.0.1]:42100",
+           "TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
+           "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT" },
+         { "198.18.0.1:not_a_port",
+           "is not a list of host:port (';'-separated, position = server id)" } })
   {
     ros2vtk::wire::ParticipantOptions options;
     options.discovery_servers = servers;
     std::string error;
-    EXPECT_EQ(ros2vtk::wire::Participant::create("client", "", options, &error), nullptr) << servers;
+    EXPECT_EQ(ros2vtk::wire::Participant::create("client", "", options, &error), nullptr)
+      << servers;
     EXPECT_NE(error.find(expected), std::string::npos) << error;
   }
 }

@@ -19,8 +19,7 @@
 #include <string>
 #include <thread>
 
-namespace
-{
+namespace {
 using ros2vtk_test::SpinUntil;
 using Clock = std::chrono::steady_clock;
 
@@ -30,7 +29,8 @@ void CountRejectionWarnings(const std::string& text, int& warnings, long& transf
   static const std::regex line("tf2: rejected ([0-9]+) transform\\(s\\)");
   warnings = 0;
   transforms = 0;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), line); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), line); it != std::sregex_iterator();
+       ++it)
   {
     ++warnings;
     transforms += std::stol((*it)[1].str());
@@ -69,14 +69,17 @@ TEST_F(Tf2RejectionsTest, ManyBadTransformsAreWarnedAtOnceThenAtMostOnceASecond)
   // Discovery: bad transforms until the first warning, which comes at once.
   int warnings = 0;
   long transforms = 0;
-  ASSERT_TRUE(SpinUntil(this->Logic, [&] {
-    EXPECT_TRUE(tf->PublishYAML(bad));
-    CountRejectionWarnings(this->Output->Warnings, warnings, transforms);
-    return warnings > 0;
-  })) << "no rejection warning; warnings: " << this->Output->Warnings;
+  ASSERT_TRUE(SpinUntil(this->Logic,
+    [&] {
+      EXPECT_TRUE(tf->PublishYAML(bad));
+      CountRejectionWarnings(this->Output->Warnings, warnings, transforms);
+      return warnings > 0;
+    }))
+    << "no rejection warning; warnings: " << this->Output->Warnings;
   const auto first = Clock::now();
   EXPECT_EQ(warnings, 1);
-  EXPECT_NE(this->Output->Warnings.find("TF_SELF_TRANSFORM"), std::string::npos) << this->Output->Warnings;
+  EXPECT_NE(this->Output->Warnings.find("TF_SELF_TRANSFORM"), std::string::npos)
+    << this->Output->Warnings;
 
   // 1.5 s of one bad transform per spin (hundreds of spins), then 1.2 s of spins without any,
   // so that what was held back is reported.
@@ -100,6 +103,7 @@ TEST_F(Tf2RejectionsTest, ManyBadTransformsAreWarnedAtOnceThenAtMostOnceASecond)
   // once, then no two within a second.
   EXPECT_GE(transforms, 100) << this->Output->Warnings;
   EXPECT_GE(warnings, 2) << this->Output->Warnings;
-  EXPECT_LE(warnings, 1 + static_cast<int>(elapsed)) << "in " << elapsed << " s:\n" << this->Output->Warnings;
+  EXPECT_LE(warnings, 1 + static_cast<int>(elapsed)) << "in " << elapsed << " s:\n"
+                                                     << this->Output->Warnings;
   EXPECT_LT(warnings * 10, transforms) << this->Output->Warnings;
 }

@@ -28,12 +28,12 @@ constexpr TimePoint sec(double seconds)
 inline Eigen::Quaterniond about(double x, double y, double z, double degrees)
 {
   const double half = degrees * kPi / 360.0;
-  return Eigen::Quaterniond(std::cos(half), x * std::sin(half), y * std::sin(half),
-    z * std::sin(half));
+  return Eigen::Quaterniond(
+    std::cos(half), x * std::sin(half), y * std::sin(half), z * std::sin(half));
 }
 
-inline Transform make_transform(const Eigen::Vector3d& t,
-  const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity())
+inline Transform make_transform(
+  const Eigen::Vector3d& t, const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity())
 {
   Transform transform;
   transform.translation = t;
@@ -54,11 +54,12 @@ inline TransformStamped make_stamped(const std::string& parent, const std::strin
 }
 
 /// Same rotation: q and -q are the same rotation, so compare |dot| with 1.
-inline ::testing::AssertionResult same_rotation(const Eigen::Quaterniond& actual,
-  const Eigen::Quaterniond& expected, double tolerance = 1e-9)
+inline ::testing::AssertionResult same_rotation(
+  const Eigen::Quaterniond& actual, const Eigen::Quaterniond& expected, double tolerance = 1e-9)
 {
   const double dot = std::abs(actual.normalized().dot(expected.normalized()));
-  if (std::abs(dot - 1.0) <= tolerance) {
+  if (std::abs(dot - 1.0) <= tolerance)
+  {
     return ::testing::AssertionSuccess();
   }
   return ::testing::AssertionFailure()
@@ -66,14 +67,15 @@ inline ::testing::AssertionResult same_rotation(const Eigen::Quaterniond& actual
     << expected.coeffs().transpose() << "), |dot| = " << dot;
 }
 
-inline ::testing::AssertionResult same_vector(const Eigen::Vector3d& actual,
-  const Eigen::Vector3d& expected, double tolerance = 1e-9)
+inline ::testing::AssertionResult same_vector(
+  const Eigen::Vector3d& actual, const Eigen::Vector3d& expected, double tolerance = 1e-9)
 {
-  if ((actual - expected).norm() <= tolerance) {
+  if ((actual - expected).norm() <= tolerance)
+  {
     return ::testing::AssertionSuccess();
   }
-  return ::testing::AssertionFailure() << "vector (" << actual.transpose() << ") differs from ("
-                                       << expected.transpose() << ")";
+  return ::testing::AssertionFailure()
+    << "vector (" << actual.transpose() << ") differs from (" << expected.transpose() << ")";
 }
 
 } // namespace tf2test

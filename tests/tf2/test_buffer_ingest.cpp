@@ -21,8 +21,8 @@ TEST(BufferIngest, AcceptsAValidTransform)
 {
   BufferCore buffer;
   std::string error = "untouched";
-  EXPECT_TRUE(buffer.set_transform(make_stamped("world", "base", sec(1), { 1, 2, 3 }), "test",
-    false, &error));
+  EXPECT_TRUE(buffer.set_transform(
+    make_stamped("world", "base", sec(1), { 1, 2, 3 }), "test", false, &error));
   EXPECT_EQ(error, "untouched");
   EXPECT_TRUE(buffer.frame_exists("world"));
   EXPECT_TRUE(buffer.frame_exists("base"));
@@ -32,14 +32,15 @@ TEST(BufferIngest, RejectsSelfTransform)
 {
   BufferCore buffer;
   std::string error;
-  EXPECT_FALSE(buffer.set_transform(make_stamped("base", "base", sec(1), { 0, 0, 0 }), "robot",
-    false, &error));
-  EXPECT_EQ(error, "TF_SELF_TRANSFORM: Ignoring transform from authority \"robot\" with frame_id "
-                   "and child_frame_id \"base\" because they are the same");
+  EXPECT_FALSE(buffer.set_transform(
+    make_stamped("base", "base", sec(1), { 0, 0, 0 }), "robot", false, &error));
+  EXPECT_EQ(error,
+    "TF_SELF_TRANSFORM: Ignoring transform from authority \"robot\" with frame_id "
+    "and child_frame_id \"base\" because they are the same");
   EXPECT_FALSE(buffer.frame_exists("base"));
   // "/base" and "base" are the same frame once the slash is stripped.
-  EXPECT_FALSE(buffer.set_transform(make_stamped("/base", "base", sec(1), { 0, 0, 0 }), "robot",
-    false, &error));
+  EXPECT_FALSE(buffer.set_transform(
+    make_stamped("/base", "base", sec(1), { 0, 0, 0 }), "robot", false, &error));
   EXPECT_TRUE(starts_with(error, "TF_SELF_TRANSFORM:")) << error;
 }
 
@@ -47,17 +48,19 @@ TEST(BufferIngest, RejectsMissingFrameIds)
 {
   BufferCore buffer;
   std::string error;
-  EXPECT_FALSE(buffer.set_transform(make_stamped("world", "", sec(1), { 0, 0, 0 }), "a", false,
-    &error));
-  EXPECT_EQ(error, "TF_NO_CHILD_FRAME_ID: Ignoring transform from authority \"a\" because "
-                   "child_frame_id not set");
-  EXPECT_FALSE(buffer.set_transform(make_stamped("", "base", sec(1), { 0, 0, 0 }), "a", false,
-    &error));
-  EXPECT_EQ(error, "TF_NO_FRAME_ID: Ignoring transform with child_frame_id \"base\" from "
-                   "authority \"a\" because frame_id not set");
+  EXPECT_FALSE(
+    buffer.set_transform(make_stamped("world", "", sec(1), { 0, 0, 0 }), "a", false, &error));
+  EXPECT_EQ(error,
+    "TF_NO_CHILD_FRAME_ID: Ignoring transform from authority \"a\" because "
+    "child_frame_id not set");
+  EXPECT_FALSE(
+    buffer.set_transform(make_stamped("", "base", sec(1), { 0, 0, 0 }), "a", false, &error));
+  EXPECT_EQ(error,
+    "TF_NO_FRAME_ID: Ignoring transform with child_frame_id \"base\" from "
+    "authority \"a\" because frame_id not set");
   // A lone "/" is empty after stripping.
-  EXPECT_FALSE(buffer.set_transform(make_stamped("/", "base", sec(1), { 0, 0, 0 }), "a", false,
-    &error));
+  EXPECT_FALSE(
+    buffer.set_transform(make_stamped("/", "base", sec(1), { 0, 0, 0 }), "a", false, &error));
   EXPECT_TRUE(starts_with(error, "TF_NO_FRAME_ID:")) << error;
   EXPECT_TRUE(buffer.all_frame_names().empty());
 }
@@ -78,11 +81,12 @@ TEST(BufferIngest, RejectsNaN)
   BufferCore buffer;
   std::string error;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_FALSE(buffer.set_transform(make_stamped("world", "base", sec(1), { 1, nan, 3 }), "a",
-    false, &error));
-  EXPECT_EQ(error, "TF_NAN_INPUT: Ignoring transform for child_frame_id \"base\" from authority "
-                   "\"a\" because of a nan value in the transform (1.000000 nan 3.000000) "
-                   "(0.000000 0.000000 0.000000 1.000000)");
+  EXPECT_FALSE(
+    buffer.set_transform(make_stamped("world", "base", sec(1), { 1, nan, 3 }), "a", false, &error));
+  EXPECT_EQ(error,
+    "TF_NAN_INPUT: Ignoring transform for child_frame_id \"base\" from authority "
+    "\"a\" because of a nan value in the transform (1.000000 nan 3.000000) "
+    "(0.000000 0.000000 0.000000 1.000000)");
   EXPECT_FALSE(buffer.frame_exists("base"));
 
   // NaN in the quaternion also makes it denormalised: both lines, as tf2 logs both.
@@ -98,8 +102,8 @@ TEST(BufferIngest, RejectsInfinity)
   BufferCore buffer;
   std::string error;
   const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_FALSE(buffer.set_transform(make_stamped("world", "base", sec(1), { inf, 0, 0 }), "a",
-    false, &error));
+  EXPECT_FALSE(
+    buffer.set_transform(make_stamped("world", "base", sec(1), { inf, 0, 0 }), "a", false, &error));
   EXPECT_TRUE(starts_with(error, "TF_NAN_INPUT:")) << error;
   EXPECT_NE(error.find("infinite"), std::string::npos) << error;
 }
@@ -110,11 +114,12 @@ TEST(BufferIngest, QuaternionToleranceIsOneHundredthOnTheSquaredNorm)
   std::string error;
   // |q|^2 = 1.006^2 = 1.012036: off by more than 0.01 -> rejected.
   EXPECT_FALSE(buffer.set_transform(
-    make_stamped("world", "a", sec(1), { 0, 0, 0 }, Eigen::Quaterniond(1.006, 0, 0, 0)), "x",
-    false, &error));
-  EXPECT_EQ(error, "TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id \"a\" from "
-                   "authority \"x\" because of an invalid quaternion in the transform "
-                   "(0.000000 0.000000 0.000000 1.006000)");
+    make_stamped("world", "a", sec(1), { 0, 0, 0 }, Eigen::Quaterniond(1.006, 0, 0, 0)), "x", false,
+    &error));
+  EXPECT_EQ(error,
+    "TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id \"a\" from "
+    "authority \"x\" because of an invalid quaternion in the transform "
+    "(0.000000 0.000000 0.000000 1.006000)");
   // |q|^2 = 0.995^2 = 0.990025: off by 0.009975 -> accepted.
   EXPECT_TRUE(buffer.set_transform(
     make_stamped("world", "b", sec(1), { 0, 0, 0 }, Eigen::Quaterniond(0.995, 0, 0, 0)), "x"));
@@ -153,11 +158,12 @@ TEST(BufferIngest, RefusesOldDataWithTf2Message)
   BufferCore buffer;
   ASSERT_TRUE(buffer.set_transform(make_stamped("world", "base", sec(20), { 0, 0, 0 }), "x"));
   std::string error;
-  EXPECT_FALSE(buffer.set_transform(make_stamped("world", "base", sec(5), { 0, 0, 0 }), "late",
-    false, &error));
-  EXPECT_EQ(error, "TF_OLD_DATA ignoring data from the past for frame base at time 5.000000 "
-                   "according to authority late\nPossible reasons are listed at "
-                   "http://wiki.ros.org/tf/Errors%20explained");
+  EXPECT_FALSE(buffer.set_transform(
+    make_stamped("world", "base", sec(5), { 0, 0, 0 }), "late", false, &error));
+  EXPECT_EQ(error,
+    "TF_OLD_DATA ignoring data from the past for frame base at time 5.000000 "
+    "according to authority late\nPossible reasons are listed at "
+    "http://wiki.ros.org/tf/Errors%20explained");
   // The same old stamp is fine for a static transform: it replaces the cache.
   EXPECT_TRUE(buffer.set_transform(make_stamped("world", "base", sec(5), { 0, 0, 0 }), "s", true));
 }

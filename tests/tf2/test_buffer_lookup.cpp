@@ -16,10 +16,12 @@ namespace {
 /// every frame with one sample at t = 5 s.
 void add_robot(BufferCore& buffer, TimePoint t = sec(5))
 {
-  ASSERT_TRUE(buffer.set_transform(make_stamped("world", "base", t, { 1, 0, 0 }, about(0, 0, 1, 90)), "robot"));
+  ASSERT_TRUE(buffer.set_transform(
+    make_stamped("world", "base", t, { 1, 0, 0 }, about(0, 0, 1, 90)), "robot"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("base", "arm", t, { 0, 2, 0 }), "robot"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("arm", "hand", t, { 0, 0, 1 }), "robot"));
-  ASSERT_TRUE(buffer.set_transform(make_stamped("base", "sensor", t, { 0, 0, 3 }, about(1, 0, 0, 180)), "robot"));
+  ASSERT_TRUE(buffer.set_transform(
+    make_stamped("base", "sensor", t, { 0, 0, 3 }, about(1, 0, 0, 180)), "robot"));
 }
 
 } // namespace
@@ -82,7 +84,8 @@ TEST(BufferLookup, SubtreeLookupIgnoresStaleFramesAboveTheCommonParent)
   // arm/hand/sensor move on to t = 6 s; world -> base stays at 5 s.
   ASSERT_TRUE(buffer.set_transform(make_stamped("base", "arm", sec(6), { 0, 2, 0 }), "robot"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("arm", "hand", sec(6), { 0, 0, 1 }), "robot"));
-  ASSERT_TRUE(buffer.set_transform(make_stamped("base", "sensor", sec(6), { 0, 0, 3 }, about(1, 0, 0, 180)), "robot"));
+  ASSERT_TRUE(buffer.set_transform(
+    make_stamped("base", "sensor", sec(6), { 0, 0, 3 }, about(1, 0, 0, 180)), "robot"));
   const LookupResult r = buffer.lookup_transform("sensor", "hand", sec(5.5));
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_TRUE(same_vector(r.transform.translation, { 0, -2, 2 }));
@@ -132,12 +135,14 @@ TEST(BufferLookup, EmptyOrSlashedNamesAreInvalidArguments)
   add_robot(buffer);
   LookupResult r = buffer.lookup_transform("", "base", sec(5));
   EXPECT_EQ(r.error, Tf2Error::InvalidArgument);
-  EXPECT_EQ(r.message, "Invalid argument \"\" passed to lookupTransform argument target_frame - "
-                       "in tf2 frame_ids cannot be empty");
+  EXPECT_EQ(r.message,
+    "Invalid argument \"\" passed to lookupTransform argument target_frame - "
+    "in tf2 frame_ids cannot be empty");
   r = buffer.lookup_transform("world", "/base", sec(5));
   EXPECT_EQ(r.error, Tf2Error::InvalidArgument);
-  EXPECT_EQ(r.message, "Invalid argument \"/base\" passed to lookupTransform argument "
-                       "source_frame - in tf2 frame_ids cannot start with a '/'");
+  EXPECT_EQ(r.message,
+    "Invalid argument \"/base\" passed to lookupTransform argument "
+    "source_frame - in tf2 frame_ids cannot start with a '/'");
 }
 
 TEST(BufferLookup, DisconnectedTrees)
@@ -148,7 +153,8 @@ TEST(BufferLookup, DisconnectedTrees)
   const std::string expected = "Could not find a connection between 'a' and 'b' because they "
                                "are not part of the same tree.Tf has two or more unconnected "
                                "trees.";
-  for (TimePoint t : { kLatestTime, sec(1) }) {
+  for (TimePoint t : { kLatestTime, sec(1) })
+  {
     const LookupResult r = buffer.lookup_transform("a", "b", t);
     EXPECT_FALSE(r.ok);
     EXPECT_EQ(r.error, Tf2Error::Connectivity);
@@ -169,7 +175,8 @@ TEST(BufferLookup, TwoFrameLoopIsDetected)
   ASSERT_TRUE(buffer.set_transform(make_stamped("a", "b", sec(1), { 1, 0, 0 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("b", "a", sec(1), { 1, 0, 0 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("other", "c", sec(1), { 1, 0, 0 }), "x"));
-  for (TimePoint t : { kLatestTime, sec(1) }) {
+  for (TimePoint t : { kLatestTime, sec(1) })
+  {
     const LookupResult r = buffer.lookup_transform("c", "a", t);
     EXPECT_FALSE(r.ok);
     EXPECT_EQ(r.error, Tf2Error::Lookup);
@@ -267,9 +274,10 @@ TEST(BufferLookup, CanTransformAgreesWithLookup)
   EXPECT_TRUE(buffer.can_transform("sensor", "hand", kLatestTime));
   EXPECT_TRUE(buffer.can_transform("ghost", "ghost", sec(1))); // same name: always
   EXPECT_FALSE(buffer.can_transform("sensor", "hand", sec(6), &error));
-  EXPECT_EQ(error, "Lookup would require extrapolation at time 6.000000, but only time 5.000000 "
-                   "is in the buffer, when looking up transform from frame [hand] to frame "
-                   "[sensor]");
+  EXPECT_EQ(error,
+    "Lookup would require extrapolation at time 6.000000, but only time 5.000000 "
+    "is in the buffer, when looking up transform from frame [hand] to frame "
+    "[sensor]");
 }
 
 // Issue 11.5: frame chains come from the network. Like tf2 (MAX_GRAPH_DEPTH = 1000), a walk
@@ -278,14 +286,17 @@ TEST(BufferLookup, ChainsDeeperThanTf2AllowsAreReportedAsALoop)
 {
   BufferCore buffer;
   const int frames = 1500;
-  for (int i = 1; i < frames; ++i) {
+  for (int i = 1; i < frames; ++i)
+  {
     ASSERT_TRUE(buffer.set_transform(
-      make_stamped("f" + std::to_string(i - 1), "f" + std::to_string(i), sec(1), { 0.001, 0, 0 }), "x"));
+      make_stamped("f" + std::to_string(i - 1), "f" + std::to_string(i), sec(1), { 0.001, 0, 0 }),
+      "x"));
   }
   const LookupResult within = buffer.lookup_transform("f0", "f1000", sec(1));
   ASSERT_TRUE(within.ok) << within.message.substr(0, 200);
   EXPECT_NEAR(within.transform.translation.x(), 1.0, 1e-9);
-  for (TimePoint t : { kLatestTime, sec(1) }) {
+  for (TimePoint t : { kLatestTime, sec(1) })
+  {
     const LookupResult deep = buffer.lookup_transform("f0", "f1499", t);
     EXPECT_FALSE(deep.ok);
     EXPECT_EQ(deep.error, Tf2Error::Lookup);

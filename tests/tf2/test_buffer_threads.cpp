@@ -17,10 +17,12 @@ TEST(BufferThreads, InsertWhileLookingUp)
   std::atomic<bool> done{ false };
   std::atomic<int> failed_inserts{ 0 };
   std::thread writer([&] {
-    for (int i = 2; i <= kSamples; ++i) {
+    for (int i = 2; i <= kSamples; ++i)
+    {
       // x grows with the stamp in milliseconds, so every interpolated x equals the lookup time.
       const double ms = i;
-      if (!buffer.set_transform(make_stamped("world", "base", sec(ms / 1000), { ms, 0, 0 }), "x")) {
+      if (!buffer.set_transform(make_stamped("world", "base", sec(ms / 1000), { ms, 0, 0 }), "x"))
+      {
         ++failed_inserts;
       }
     }
@@ -28,10 +30,12 @@ TEST(BufferThreads, InsertWhileLookingUp)
   });
   int inconsistent = 0;
   int lookups = 0;
-  while (!done) {
+  while (!done)
+  {
     const LookupResult r = buffer.lookup_transform("world", "base", kLatestTime);
     ++lookups;
-    if (!r.ok || std::abs(r.transform.translation.x() - time_to_seconds(r.stamp) * 1000) > 1e-6) {
+    if (!r.ok || std::abs(r.transform.translation.x() - time_to_seconds(r.stamp) * 1000) > 1e-6)
+    {
       ++inconsistent;
     }
   }

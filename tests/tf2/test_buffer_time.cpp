@@ -28,8 +28,10 @@ TEST(BufferTime, LatestCommonTimeIsTheOldestNewestStampOnThePath)
 {
   BufferCore buffer;
   // world -> base: newest 10 s. base -> arm: newest 7 s. arm -> hand: static.
-  ASSERT_TRUE(buffer.set_transform(make_stamped("world", "base", sec(6), { 1, 0, 0 }, about(0, 0, 1, 90)), "x"));
-  ASSERT_TRUE(buffer.set_transform(make_stamped("world", "base", sec(10), { 3, 0, 0 }, about(0, 0, 1, 90)), "x"));
+  ASSERT_TRUE(buffer.set_transform(
+    make_stamped("world", "base", sec(6), { 1, 0, 0 }, about(0, 0, 1, 90)), "x"));
+  ASSERT_TRUE(buffer.set_transform(
+    make_stamped("world", "base", sec(10), { 3, 0, 0 }, about(0, 0, 1, 90)), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("base", "arm", sec(6), { 0, 2, 0 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("base", "arm", sec(7), { 0, 4, 0 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("arm", "hand", sec(0), { 0, 0, 1 }), "x", true));
@@ -63,7 +65,8 @@ TEST(BufferTime, StaticFramesHoldAtAnyTime)
 {
   BufferCore buffer;
   ASSERT_TRUE(buffer.set_transform(make_stamped("world", "map", sec(0), { 0, 5, 0 }), "s", true));
-  for (TimePoint t : { sec(0.001), sec(123), sec(1e6) }) {
+  for (TimePoint t : { sec(0.001), sec(123), sec(1e6) })
+  {
     const LookupResult r = buffer.lookup_transform("world", "map", t);
     ASSERT_TRUE(r.ok) << r.message;
     EXPECT_EQ(r.stamp, t);
@@ -90,7 +93,8 @@ TEST(BufferTime, StaticFramesHoldAtAnyTime)
 TEST(BufferTime, SamplesExpireTenSecondsBehindTheNewest)
 {
   BufferCore buffer;
-  for (double s : { 1.0, 5.0, 11.0 }) {
+  for (double s : { 1.0, 5.0, 11.0 })
+  {
     ASSERT_TRUE(buffer.set_transform(make_stamped("a", "b", sec(s), { s, 0, 0 }), "x"));
   }
   ASSERT_TRUE(buffer.lookup_transform("a", "b", sec(3)).ok); // 1 s still there
@@ -98,9 +102,10 @@ TEST(BufferTime, SamplesExpireTenSecondsBehindTheNewest)
   const LookupResult r = buffer.lookup_transform("a", "b", sec(3));
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.error, Tf2Error::BackwardExtrapolation);
-  EXPECT_EQ(r.message, "Lookup would require extrapolation into the past.  Requested time "
-                       "3.000000 but the earliest data is at time 5.000000, when looking up "
-                       "transform from frame [b] to frame [a]");
+  EXPECT_EQ(r.message,
+    "Lookup would require extrapolation into the past.  Requested time "
+    "3.000000 but the earliest data is at time 5.000000, when looking up "
+    "transform from frame [b] to frame [a]");
   const LookupResult kept = buffer.lookup_transform("a", "b", sec(8));
   ASSERT_TRUE(kept.ok) << kept.message;
   EXPECT_TRUE(same_vector(kept.transform.translation, { 8, 0, 0 }));
@@ -115,9 +120,10 @@ TEST(BufferTime, ForwardExtrapolationMessage)
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.error, Tf2Error::ForwardExtrapolation);
   EXPECT_TRUE(is_extrapolation(r.error));
-  EXPECT_EQ(r.message, "Lookup would require extrapolation into the future.  Requested time "
-                       "3.000000 but the latest data is at time 2.500000, when looking up "
-                       "transform from frame [a] to frame [b]");
+  EXPECT_EQ(r.message,
+    "Lookup would require extrapolation into the future.  Requested time "
+    "3.000000 but the latest data is at time 2.500000, when looking up "
+    "transform from frame [a] to frame [b]");
 }
 
 TEST(BufferTime, SingleSampleNeedsAnExactStamp)
@@ -127,9 +133,10 @@ TEST(BufferTime, SingleSampleNeedsAnExactStamp)
   EXPECT_TRUE(buffer.lookup_transform("a", "b", sec(5)).ok);
   const LookupResult r = buffer.lookup_transform("a", "b", sec(5.25));
   EXPECT_EQ(r.error, Tf2Error::NoDataForExtrapolation);
-  EXPECT_EQ(r.message, "Lookup would require extrapolation at time 5.250000, but only time "
-                       "5.000000 is in the buffer, when looking up transform from frame [b] to "
-                       "frame [a]");
+  EXPECT_EQ(r.message,
+    "Lookup would require extrapolation at time 5.250000, but only time "
+    "5.000000 is in the buffer, when looking up transform from frame [b] to "
+    "frame [a]");
 }
 
 TEST(BufferTime, ClearForgetsDynamicHistoryButNotStaticFrames)

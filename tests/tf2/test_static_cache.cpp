@@ -15,7 +15,8 @@ TEST(StaticCache, LastValueHoldsAtEveryTime)
 
   cache.insert(TransformRecord{ sec(5), make_transform({ 1, 0, 0 }), 1, 2 });
   cache.insert(TransformRecord{ sec(6), make_transform({ 2, 0, 0 }), 1, 2 });
-  for (TimePoint t : { TimePoint(0), sec(1), sec(6), sec(1e6) }) {
+  for (TimePoint t : { TimePoint(0), sec(1), sec(6), sec(1e6) })
+  {
     ASSERT_TRUE(cache.sample(t, out));
     EXPECT_DOUBLE_EQ(out.transform.translation.x(), 2.0);
     EXPECT_EQ(out.stamp, t); // stamped with the requested time, as tf2 does

@@ -23,7 +23,8 @@ TransformRecord record(TimePoint stamp, double x, FrameId parent = kParent,
 std::vector<TimePoint> stamps(const TimeCache& cache)
 {
   std::vector<TimePoint> out;
-  for (const auto& r : cache.records()) {
+  for (const auto& r : cache.records())
+  {
     out.push_back(r.stamp);
   }
   return out;
@@ -128,20 +129,22 @@ TEST(TimeCache, ForwardAndBackwardExtrapolationAreRefused)
   SampleError error;
   EXPECT_FALSE(cache.sample(sec(4.5), out, &error));
   EXPECT_EQ(error.code, Tf2Error::ForwardExtrapolation);
-  EXPECT_EQ(error.message, "Lookup would require extrapolation into the future.  Requested time "
-                           "4.500000 but the latest data is at time 4.000000");
+  EXPECT_EQ(error.message,
+    "Lookup would require extrapolation into the future.  Requested time "
+    "4.500000 but the latest data is at time 4.000000");
   EXPECT_FALSE(cache.sample(sec(1), out, &error));
   EXPECT_EQ(error.code, Tf2Error::BackwardExtrapolation);
-  EXPECT_EQ(error.message, "Lookup would require extrapolation into the past.  Requested time "
-                           "1.000000 but the earliest data is at time 2.000000");
+  EXPECT_EQ(error.message,
+    "Lookup would require extrapolation into the past.  Requested time "
+    "1.000000 but the earliest data is at time 2.000000");
 }
 
 TEST(TimeCache, InterpolatesAtTheMidpoint)
 {
   TimeCache cache;
   cache.insert(record(sec(1), 0, kParent));
-  cache.insert(TransformRecord{ sec(3), make_transform({ 2, 4, -6 }, about(0, 0, 1, 90)),
-    kParent, kChild });
+  cache.insert(
+    TransformRecord{ sec(3), make_transform({ 2, 4, -6 }, about(0, 0, 1, 90)), kParent, kChild });
   TransformRecord out;
   ASSERT_TRUE(cache.sample(sec(2), out));
   EXPECT_TRUE(same_vector(out.transform.translation, { 1, 2, -3 }));
@@ -161,7 +164,8 @@ TEST(TimeCache, ExactStampsReturnTheStoredSample)
   cache.insert(record(sec(2), 20));
   cache.insert(record(sec(3), 30));
   TransformRecord out;
-  for (double s : { 1.0, 2.0, 3.0 }) {
+  for (double s : { 1.0, 2.0, 3.0 })
+  {
     ASSERT_TRUE(cache.sample(sec(s), out));
     EXPECT_DOUBLE_EQ(out.transform.translation.x(), 10 * s);
   }
@@ -178,13 +182,13 @@ TEST(TimeCache, NoInterpolationAcrossAParentChange)
   cache.insert(record(sec(3), 50, kOtherParent));
   TransformRecord out;
   ASSERT_TRUE(cache.sample(sec(2.5), out));
-  EXPECT_EQ(out.parent, kParent);                   // the older sample's parent...
+  EXPECT_EQ(out.parent, kParent);                       // the older sample's parent...
   EXPECT_DOUBLE_EQ(out.transform.translation.x(), 2.0); // ...and its value, not a blend
   EXPECT_EQ(cache.parent_at(sec(2.5)), kParent);
   EXPECT_EQ(cache.parent_at(sec(3)), kOtherParent);
   EXPECT_EQ(cache.parent_at(sec(1.5)), kParent);
-  EXPECT_EQ(cache.latest_time_and_parent(),
-    (std::pair<TimePoint, FrameId>{ sec(3), kOtherParent }));
+  EXPECT_EQ(
+    cache.latest_time_and_parent(), (std::pair<TimePoint, FrameId>{ sec(3), kOtherParent }));
   EXPECT_EQ(cache.parent_at(sec(4)), kNoFrame); // forward extrapolation
 }
 

@@ -40,8 +40,8 @@ TEST(Transform, IsometryRoundTrip)
 {
   const Transform t = make_transform({ 0.5, -1, 2 }, about(1, 0, 0, 30));
   const Eigen::Isometry3d iso = t.to_isometry();
-  EXPECT_TRUE(same_vector(iso * Eigen::Vector3d(0, 1, 0),
-    { 0.5, -1 + std::cos(kPi / 6), 2 + std::sin(kPi / 6) }));
+  EXPECT_TRUE(same_vector(
+    iso * Eigen::Vector3d(0, 1, 0), { 0.5, -1 + std::cos(kPi / 6), 2 + std::sin(kPi / 6) }));
   const Transform back = Transform::from_isometry(iso);
   EXPECT_TRUE(same_vector(back.translation, t.translation));
   EXPECT_TRUE(same_rotation(back.rotation, t.rotation));
@@ -76,7 +76,8 @@ TEST(Transform, SlerpTakesTheShortPath)
   // the other way; the short path still goes through +45 deg about z.
   const Transform a = make_transform({ 0, 0, 0 });
   const Eigen::Quaterniond q = about(0, 0, 1, 90);
-  const Transform b = make_transform({ 0, 0, 0 }, Eigen::Quaterniond(-q.w(), -q.x(), -q.y(), -q.z()));
+  const Transform b =
+    make_transform({ 0, 0, 0 }, Eigen::Quaterniond(-q.w(), -q.x(), -q.y(), -q.z()));
   const Transform mid = interpolate(a, b, 0.5);
   EXPECT_TRUE(same_vector(mid.apply({ 1, 0, 0 }), { std::sqrt(0.5), std::sqrt(0.5), 0 }));
 }

@@ -22,7 +22,7 @@ class RecordingReceiver : public eprosima::fastdds::rtps::TransportReceiverInter
 {
 public:
   void OnDataReceived(const rtps::octet* data, uint32_t size, const rtps::Locator_t& local,
-                      const rtps::Locator_t& remote) override
+    const rtps::Locator_t& remote) override
   {
     received.emplace_back(reinterpret_cast<const char*>(data), size);
     locals.push_back(local.port);
@@ -42,10 +42,11 @@ rtps::Locator_t udp(uint32_t port)
   return locator;
 }
 
-bool hold(ReceptionGate& gate, RecordingReceiver& receiver, std::string bytes, uint32_t local, uint32_t remote)
+bool hold(ReceptionGate& gate, RecordingReceiver& receiver, std::string bytes, uint32_t local,
+  uint32_t remote)
 {
   const bool held = gate.hold(&receiver, reinterpret_cast<const rtps::octet*>(bytes.data()),
-                              static_cast<uint32_t>(bytes.size()), udp(local), udp(remote));
+    static_cast<uint32_t>(bytes.size()), udp(local), udp(remote));
   bytes.assign(bytes.size(), 'x'); // the transport's buffer is reused for the next datagram
   return held;
 }
@@ -58,10 +59,12 @@ TEST(ReceptionGate, KeepsWhatArrivesBeforeItOpensAndHandsItOnInOrder)
   EXPECT_TRUE(hold(gate, user, "RTPS HEARTBEAT", 7411, 50002));
   EXPECT_TRUE(hold(gate, metatraffic, "RTPS ACKNACK", 7410, 50001));
   EXPECT_EQ(gate.held(), 3u);
-  EXPECT_TRUE(metatraffic.received.empty()); // nothing reaches a receiver that is not registered yet
+  EXPECT_TRUE(
+    metatraffic.received.empty()); // nothing reaches a receiver that is not registered yet
 
   EXPECT_EQ(gate.open(), 3u);
-  EXPECT_EQ(metatraffic.received, (std::vector<std::string>{ "RTPS DATA(p) of a peer", "RTPS ACKNACK" }));
+  EXPECT_EQ(
+    metatraffic.received, (std::vector<std::string>{ "RTPS DATA(p) of a peer", "RTPS ACKNACK" }));
   EXPECT_EQ(metatraffic.locals, (std::vector<uint32_t>{ 7410, 7410 }));
   EXPECT_EQ(metatraffic.remotes, (std::vector<uint32_t>{ 50001, 50001 }));
   EXPECT_EQ(user.received, (std::vector<std::string>{ "RTPS HEARTBEAT" }));

@@ -31,20 +31,22 @@ TEST(GraphCache, TopicsTypesAndCountsFromLocalAndRemoteEndpoints)
   graph.add_local_endpoint(gid(1, 1), true, "rt/chatter", "std_msgs::msg::dds_::String_");
   graph.add_remote_endpoint(gid(2, 1), false, "rt/chatter", "std_msgs::msg::dds_::String_");
   graph.add_remote_endpoint(gid(2, 2), false, "rt/chatter", "std_msgs::msg::dds_::String_");
-  graph.add_remote_endpoint(gid(3, 1), true, "rt/ns/pose", "geometry_msgs::msg::dds_::PoseStamped_");
+  graph.add_remote_endpoint(
+    gid(3, 1), true, "rt/ns/pose", "geometry_msgs::msg::dds_::PoseStamped_");
   graph.add_remote_endpoint(gid(3, 2), true, "rt/ns/pose", "geometry_msgs::msg::dds_::Pose_");
   // Service topics and the graph topic are not ROS topics.
   graph.add_remote_endpoint(gid(3, 3), false, "rq/slicer/get_parametersRequest",
-                            "rcl_interfaces::srv::dds_::GetParameters_Request_");
-  graph.add_remote_endpoint(gid(3, 4), false, "ros_discovery_info",
-                            "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
+    "rcl_interfaces::srv::dds_::GetParameters_Request_");
+  graph.add_remote_endpoint(
+    gid(3, 4), false, "ros_discovery_info", "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_");
 
   const auto topics = graph.topic_names_and_types();
   ASSERT_EQ(topics.size(), 2u);
   EXPECT_EQ(topics[0].name, "/chatter");
   EXPECT_EQ(topics[0].types, std::vector<std::string>{ "std_msgs/msg/String" });
   EXPECT_EQ(topics[1].name, "/ns/pose");
-  EXPECT_EQ(topics[1].types, (std::vector<std::string>{ "geometry_msgs/msg/Pose", "geometry_msgs/msg/PoseStamped" }));
+  EXPECT_EQ(topics[1].types,
+    (std::vector<std::string>{ "geometry_msgs/msg/Pose", "geometry_msgs/msg/PoseStamped" }));
   EXPECT_EQ(graph.count_endpoints("rt/chatter", true), 1u);
   EXPECT_EQ(graph.count_endpoints("rt/chatter", false), 2u);
   EXPECT_EQ(graph.count_endpoints("rt/none", false), 0u);
@@ -124,18 +126,21 @@ TEST(GraphCache, WriterIsMatchedToTheNodeWhoseAnnouncementListsIt)
   EXPECT_EQ(graph.node_of_writer(gid(2, 1)), ""); // before any announcement
   EXPECT_EQ(graph.publisher_nodes("rt/tf_static"), std::vector<std::string>{ "?" });
 
-  graph.record_announcement(announcement(2, { { "/", "robot_state_publisher", { gid(2, 1), gid(2, 2) }, {} } }));
+  graph.record_announcement(
+    announcement(2, { { "/", "robot_state_publisher", { gid(2, 1), gid(2, 2) }, {} } }));
   // Two nodes in one participant: each writer goes to the node listing it, in its namespace.
-  graph.record_announcement(announcement(
-    3, { { "/", "other", {}, { gid(3, 1) } }, { "/cameras", "camera_mount", { gid(3, 1) }, { gid(3, 2) } } }));
+  graph.record_announcement(announcement(3,
+    { { "/", "other", {}, { gid(3, 1) } },
+      { "/cameras", "camera_mount", { gid(3, 1) }, { gid(3, 2) } } }));
   EXPECT_EQ(graph.node_of_writer(gid(2, 1)), "/robot_state_publisher");
   EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "/robot_state_publisher");
-  EXPECT_EQ(graph.node_of_writer(gid(3, 1)), "/cameras/camera_mount"); // not "other", which lists it as a reader
-  EXPECT_EQ(graph.node_of_writer(gid(3, 2)), "");  // a reader is nobody's writer
-  EXPECT_EQ(graph.node_of_writer(gid(4, 1)), "");  // participant 4 has not announced
-  EXPECT_EQ(graph.node_of_writer(gid(9, 9)), "");  // unknown everywhere
+  EXPECT_EQ(graph.node_of_writer(gid(3, 1)),
+    "/cameras/camera_mount");                     // not "other", which lists it as a reader
+  EXPECT_EQ(graph.node_of_writer(gid(3, 2)), ""); // a reader is nobody's writer
+  EXPECT_EQ(graph.node_of_writer(gid(4, 1)), ""); // participant 4 has not announced
+  EXPECT_EQ(graph.node_of_writer(gid(9, 9)), ""); // unknown everywhere
   EXPECT_EQ(graph.publisher_nodes("rt/tf_static"),
-            (std::vector<std::string>{ "/cameras/camera_mount", "/robot_state_publisher", "?" }));
+    (std::vector<std::string>{ "/cameras/camera_mount", "/robot_state_publisher", "?" }));
   EXPECT_EQ(graph.publisher_nodes("rt/tf"), std::vector<std::string>{ "/robot_state_publisher" });
   const auto publishers = graph.remote_publishers("rt/tf_static");
   ASSERT_EQ(publishers.size(), 3u); // by writer gid: participant 2's, 3's, 4's
@@ -154,8 +159,8 @@ TEST(GraphCache, NewerAnnouncementReplacesTheParticipantsNodes)
   EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "");
   // The participant creates a second node owning the second writer: its next announcement lists
   // both nodes (rmw republishes the whole participant's state on every change).
-  graph.record_announcement(announcement(2, { { "/", "talker", { gid(2, 1) }, {} },
-                                              { "/ns", "second", { gid(2, 2) }, {} } }));
+  graph.record_announcement(announcement(
+    2, { { "/", "talker", { gid(2, 1) }, {} }, { "/ns", "second", { gid(2, 2) }, {} } }));
   EXPECT_EQ(graph.node_of_writer(gid(2, 1)), "/talker");
   EXPECT_EQ(graph.node_of_writer(gid(2, 2)), "/ns/second");
   // The first node is destroyed: its writer is no longer anybody's.

@@ -77,7 +77,7 @@ TEST(Names, DdsManglingOfRmwFastrtps)
   EXPECT_FALSE(dds_to_topic("rq/slicer/get_parametersRequest", topic));
   EXPECT_EQ(dds_type_to_ros("std_msgs::msg::dds_::String_"), "std_msgs/msg/String");
   EXPECT_EQ(dds_type_to_ros("rcl_interfaces::srv::dds_::GetParameters_Request_"),
-            "rcl_interfaces/srv/GetParameters_Request");
+    "rcl_interfaces/srv/GetParameters_Request");
   EXPECT_EQ(dds_type_to_ros("NotARosType"), "NotARosType");
 }
 

@@ -60,7 +60,8 @@ TEST(ParameterStore, DeclareGetAndTypes)
   ASSERT_EQ(values.size(), 2u);
   EXPECT_EQ(values[0].string_value, "ct");
   EXPECT_EQ(values[1].double_value, 0.5);
-  EXPECT_EQ(store.get_parameter_types({ "gain", "frame" }), (std::vector<uint8_t>{ kDouble, kString }));
+  EXPECT_EQ(
+    store.get_parameter_types({ "gain", "frame" }), (std::vector<uint8_t>{ kDouble, kString }));
   // rclcpp answers an empty list when any name is undeclared.
   EXPECT_TRUE(store.get_parameters({ "gain", "missing" }).empty());
   EXPECT_TRUE(store.get_parameter_types({ "missing" }).empty());
@@ -71,8 +72,8 @@ TEST(ParameterStore, SetParametersIsPerItem)
 {
   ParameterStore store;
   ASSERT_TRUE(store.declare("count", integer(1), nullptr));
-  const auto results = store.set_parameters(
-    { parameter("count", integer(2)), parameter("count", text("two")), parameter("nope", integer(3)) });
+  const auto results = store.set_parameters({ parameter("count", integer(2)),
+    parameter("count", text("two")), parameter("nope", integer(3)) });
   ASSERT_EQ(results.size(), 3u);
   EXPECT_TRUE(results[0].successful);
   EXPECT_TRUE(results[0].reason.empty());
@@ -87,13 +88,16 @@ TEST(ParameterStore, SetAtomicallyIsAllOrNothing)
   ParameterStore store;
   ASSERT_TRUE(store.declare("a", integer(1), nullptr));
   ASSERT_TRUE(store.declare("b", integer(1), nullptr));
-  auto result = store.set_parameters_atomically({ parameter("a", integer(5)), parameter("b", text("x")) });
+  auto result =
+    store.set_parameters_atomically({ parameter("a", integer(5)), parameter("b", text("x")) });
   EXPECT_FALSE(result.successful);
   EXPECT_EQ(store.get("a")->integer_value, 1); // nothing applied
-  result = store.set_parameters_atomically({ parameter("a", integer(5)), parameter("c", integer(1)) });
+  result =
+    store.set_parameters_atomically({ parameter("a", integer(5)), parameter("c", integer(1)) });
   EXPECT_FALSE(result.successful);
   EXPECT_EQ(result.reason, "One or more parameters were not declared before setting");
-  result = store.set_parameters_atomically({ parameter("a", integer(5)), parameter("b", integer(6)) });
+  result =
+    store.set_parameters_atomically({ parameter("a", integer(5)), parameter("b", integer(6)) });
   EXPECT_TRUE(result.successful);
   EXPECT_EQ(store.get("a")->integer_value, 5);
   EXPECT_EQ(store.get("b")->integer_value, 6);
@@ -112,8 +116,8 @@ TEST(ParameterStore, ReadOnlyAndRanges)
   range.step = 2;
   ranged.integer_range.push_back(range);
   ASSERT_TRUE(store.declare("even", integer(0), ranged, nullptr));
-  const auto results = store.set_parameters({ parameter("fixed", integer(2)), parameter("even", integer(4)),
-                                              parameter("even", integer(5)), parameter("even", integer(12)) });
+  const auto results = store.set_parameters({ parameter("fixed", integer(2)),
+    parameter("even", integer(4)), parameter("even", integer(5)), parameter("even", integer(12)) });
   EXPECT_FALSE(results[0].successful);
   EXPECT_NE(results[0].reason.find("read-only"), std::string::npos);
   EXPECT_TRUE(results[1].successful);
@@ -127,9 +131,11 @@ TEST(ParameterStore, ValidatorCanRefuseWithItsReason)
   ParameterStore store;
   ASSERT_TRUE(store.declare("mode", text("auto"), nullptr));
   store.set_validator([](const rcl::Parameter& p) {
-    return p.value.string_value == "manual" || p.value.string_value == "auto" ? std::string() : "unknown mode";
+    return p.value.string_value == "manual" || p.value.string_value == "auto" ? std::string()
+                                                                              : "unknown mode";
   });
-  const auto results = store.set_parameters({ parameter("mode", text("manual")), parameter("mode", text("x")) });
+  const auto results =
+    store.set_parameters({ parameter("mode", text("manual")), parameter("mode", text("x")) });
   EXPECT_TRUE(results[0].successful);
   EXPECT_EQ(results[1].reason, "unknown mode");
   EXPECT_EQ(store.get("mode")->string_value, "manual");
@@ -150,9 +156,12 @@ TEST(ParameterStore, PostSetCallbacksSeeEverySuccessfulSetAndNothingElse)
     seen.push_back(batch);
   });
   ASSERT_TRUE(store.declare("late", integer(7), nullptr)); // a declaration is not a set
-  store.set_parameters({ parameter("count", integer(2)), parameter("count", text("x")), parameter("nope", integer(3)) });
-  store.set_parameters_atomically({ parameter("count", integer(4)), parameter("other", integer(5)) });
-  store.set_parameters_atomically({ parameter("count", integer(6)), parameter("other", text("y")) }); // refused
+  store.set_parameters({ parameter("count", integer(2)), parameter("count", text("x")),
+    parameter("nope", integer(3)) });
+  store.set_parameters_atomically(
+    { parameter("count", integer(4)), parameter("other", integer(5)) });
+  store.set_parameters_atomically(
+    { parameter("count", integer(6)), parameter("other", text("y")) }); // refused
   EXPECT_EQ(seen, (std::vector<std::string>{ "count=2 ", "count=4 other=5 " }));
   store.remove_post_set_callback(id);
   store.set_parameters({ parameter("count", integer(8)) });
@@ -164,7 +173,9 @@ TEST(ParameterStore, ListByPrefixAndDepth)
   ParameterStore store;
   for (const char* name : { "a", "b.c", "b.d.e", "f.g" })
     ASSERT_TRUE(store.declare(name, integer(0), nullptr));
-  auto names = [](const rcl::ListParametersResult& r) { return r.names; };
+  auto names = [](const rcl::ListParametersResult& r) {
+    return r.names;
+  };
   auto all = store.list_parameters({}, 0);
   EXPECT_EQ(all.names.size(), 4u);
   // depth 1 with no prefix: names with fewer than 1 dot.
@@ -214,19 +225,21 @@ TEST(ParameterStore, OversizedValuesAreRefusedWithAReason)
   rcl::ParameterValue ints;
   ints.type = kIntegerArray;
   ints.integer_array_value.assign(2, 1);
-  const auto results = store.set_parameters(
-    { parameter("frame", text(std::string(8, 'x'))), parameter("frame", text(std::string(9, 'x'))),
-      parameter("frame", ints) });
+  const auto results = store.set_parameters({ parameter("frame", text(std::string(8, 'x'))),
+    parameter("frame", text(std::string(9, 'x'))), parameter("frame", ints) });
   EXPECT_TRUE(results[0].successful);
   EXPECT_FALSE(results[1].successful);
   EXPECT_EQ(results[1].reason,
-            "parameter 'frame' cannot be set: its string value holds 9 bytes, more than this node accepts (8)");
+    "parameter 'frame' cannot be set: its string value holds 9 bytes, more than this node accepts "
+    "(8)");
   // Refused for its size before its type.
   EXPECT_FALSE(results[2].successful);
-  EXPECT_NE(results[2].reason.find("integer_array value holds 16 bytes"), std::string::npos) << results[2].reason;
+  EXPECT_NE(results[2].reason.find("integer_array value holds 16 bytes"), std::string::npos)
+    << results[2].reason;
   EXPECT_EQ(store.get("frame")->string_value, std::string(8, 'x'));
   // The atomic set refuses too, with the same reason.
-  const auto atomic = store.set_parameters_atomically({ parameter("frame", text(std::string(9, 'y'))) });
+  const auto atomic =
+    store.set_parameters_atomically({ parameter("frame", text(std::string(9, 'y'))) });
   EXPECT_FALSE(atomic.successful);
   EXPECT_EQ(atomic.reason, results[1].reason);
   // Our own declarations are not bounded.

@@ -61,7 +61,8 @@ TEST(QoS, EveryListedProfileNameParsesAndTheAliasesToo)
     size_t end = names.find(", ", start);
     end = end == std::string::npos ? names.size() : end;
     QoS qos;
-    EXPECT_TRUE(QoS::from_name(names.substr(start, end - start), qos)) << names.substr(start, end - start);
+    EXPECT_TRUE(QoS::from_name(names.substr(start, end - start), qos))
+      << names.substr(start, end - start);
     ++count;
     start = end + 2;
   }

@@ -76,11 +76,13 @@ TEST(ROSClock, CountsSourceChangesAndJumpsBackOnly)
 TEST(ROSClock, DefaultsToTheRealSystemClock)
 {
   ROSClock clock;
-  const int64_t before =
-    std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const int64_t before = std::chrono::duration_cast<std::chrono::nanoseconds>(
+    std::chrono::system_clock::now().time_since_epoch())
+                           .count();
   const int64_t now = clock.now();
-  const int64_t after =
-    std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const int64_t after = std::chrono::duration_cast<std::chrono::nanoseconds>(
+    std::chrono::system_clock::now().time_since_epoch())
+                          .count();
   EXPECT_LE(before, now);
   EXPECT_LE(now, after);
 }

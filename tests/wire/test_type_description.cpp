@@ -25,12 +25,15 @@ namespace tdi = ::ros2vtk::type_description_interfaces;
 
 // rosidl's hashes (share/std_msgs/msg/String.json, geometry_msgs/msg/PoseStamped.json,
 // std_srvs/srv/SetBool.json).
-const char* const kStringHash = "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18";
-const char* const kPoseStampedHash = "RIHS01_10f3786d7d40fd2b54367835614bff85d4ad3b5dab62bf8bca0cc232d73b4cd8";
-const char* const kSetBoolHash = "RIHS01_abe9e4bb6b41b40e6789712c00ec8871923e089af3f667a79992a428cff2da0a";
+const char* const kStringHash =
+  "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18";
+const char* const kPoseStampedHash =
+  "RIHS01_10f3786d7d40fd2b54367835614bff85d4ad3b5dab62bf8bca0cc232d73b4cd8";
+const char* const kSetBoolHash =
+  "RIHS01_abe9e4bb6b41b40e6789712c00ec8871923e089af3f667a79992a428cff2da0a";
 
-tdi::srv::GetTypeDescription_Response ask(const wire::NodeTypeCache& types, const std::string& type_name,
-                                          const std::string& type_hash)
+tdi::srv::GetTypeDescription_Response ask(
+  const wire::NodeTypeCache& types, const std::string& type_name, const std::string& type_hash)
 {
   tdi::srv::GetTypeDescription_Request request;
   request.type_name = type_name;
@@ -68,8 +71,10 @@ TEST(NodeTypeCache, ServesATypeWhileAnEndpointHoldsIt)
   const auto& string_type = ros2vtk::std_msgs::msg::String::type_support();
   EXPECT_EQ(types.find(kStringHash), nullptr);
   {
-    wire::NodeTypeCache::Registration publisher = types.add(string_type.type_hash, string_type.description);
-    wire::NodeTypeCache::Registration subscription = types.add(string_type.type_hash, string_type.description);
+    wire::NodeTypeCache::Registration publisher =
+      types.add(string_type.type_hash, string_type.description);
+    wire::NodeTypeCache::Registration subscription =
+      types.add(string_type.type_hash, string_type.description);
     EXPECT_EQ(types.size(), 1u);
     EXPECT_EQ(types.find(kStringHash), string_type.description);
     std::string upper = kStringHash;
@@ -78,7 +83,9 @@ TEST(NodeTypeCache, ServesATypeWhileAnEndpointHoldsIt)
       upper[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(upper[i])));
     }
     EXPECT_EQ(types.find(upper), string_type.description); // rosidl parses hex either way
-    { wire::NodeTypeCache::Registration gone = std::move(publisher); }
+    {
+      wire::NodeTypeCache::Registration gone = std::move(publisher);
+    }
     EXPECT_EQ(types.find(kStringHash), string_type.description); // the subscription still uses it
   }
   EXPECT_EQ(types.find(kStringHash), nullptr);
@@ -107,9 +114,8 @@ TEST(TypeDescriptionRequest, KnownMessageTypeAsRosidlDescribesIt)
   EXPECT_EQ(description.type_description.fields[0].type.type_id, 1); // FIELD_TYPE_NESTED_TYPE
   EXPECT_EQ(description.type_description.fields[0].type.nested_type_name, "std_msgs/msg/Header");
   EXPECT_EQ(referenced_names(description),
-            (std::vector<std::string>{ "builtin_interfaces/msg/Time", "geometry_msgs/msg/Point",
-                                       "geometry_msgs/msg/Pose", "geometry_msgs/msg/Quaternion",
-                                       "std_msgs/msg/Header" }));
+    (std::vector<std::string>{ "builtin_interfaces/msg/Time", "geometry_msgs/msg/Point",
+      "geometry_msgs/msg/Pose", "geometry_msgs/msg/Quaternion", "std_msgs/msg/Header" }));
   // geometry_msgs/msg/Quaternion.json: "float64 w 1" is written "1.0".
   const auto& quaternion = description.referenced_type_descriptions[3];
   ASSERT_EQ(quaternion.fields.size(), 4u);
@@ -136,9 +142,9 @@ TEST(TypeDescriptionRequest, KnownServiceTypeWithItsSynthesizedEvent)
   EXPECT_EQ(fields[2].name, "event_message");
   EXPECT_EQ(fields[2].type.nested_type_name, "std_srvs/srv/SetBool_Event");
   EXPECT_EQ(referenced_names(response.type_description),
-            (std::vector<std::string>{ "builtin_interfaces/msg/Time", "service_msgs/msg/ServiceEventInfo",
-                                       "std_srvs/srv/SetBool_Event", "std_srvs/srv/SetBool_Request",
-                                       "std_srvs/srv/SetBool_Response" }));
+    (std::vector<std::string>{ "builtin_interfaces/msg/Time", "service_msgs/msg/ServiceEventInfo",
+      "std_srvs/srv/SetBool_Event", "std_srvs/srv/SetBool_Request",
+      "std_srvs/srv/SetBool_Response" }));
   const auto& event = response.type_description.referenced_type_descriptions[2];
   ASSERT_EQ(event.fields.size(), 3u);
   EXPECT_EQ(event.fields[1].type.type_id, 97); // FIELD_TYPE_NESTED_TYPE_BOUNDED_SEQUENCE
@@ -175,9 +181,9 @@ TEST(TypeDescriptionRequest, MalformedHashesAreRefusedWithAReason)
   const auto& string_type = ros2vtk::std_msgs::msg::String::type_support();
   auto held = types.add(string_type.type_hash, string_type.description);
   const std::string good = kStringHash;
-  for (const std::string& bad :
-       { std::string(), std::string("garbage"), good.substr(0, good.size() - 1), good + "0",
-         "RIHS02_" + good.substr(7), "RIHS01_" + std::string(63, '0') + "g", std::string(good).insert(7, 1, '\0') })
+  for (const std::string& bad : { std::string(), std::string("garbage"),
+         good.substr(0, good.size() - 1), good + "0", "RIHS02_" + good.substr(7),
+         "RIHS01_" + std::string(63, '0') + "g", std::string(good).insert(7, 1, '\0') })
   {
     const auto response = ask(types, "std_msgs/msg/String", bad);
     EXPECT_FALSE(response.successful) << bad;

@@ -76,8 +76,8 @@ bool numbers_to_array(const double* values, size_t count, vtkDataArray* array, s
   return true;
 }
 
-bool array_to_numbers(vtkDataArray* array, const NumberLimits& limits, std::vector<double>* values,
-  std::string* error)
+bool array_to_numbers(
+  vtkDataArray* array, const NumberLimits& limits, std::vector<double>* values, std::string* error)
 {
   const char* where = "array_to_numbers";
   if (!array || !values)
@@ -100,9 +100,9 @@ bool array_to_numbers(vtkDataArray* array, const NumberLimits& limits, std::vect
       }
       if (value < limits.lowest || value > limits.highest)
       {
-        return fail(error, where, "value " + index + " (" + detail::number_text(value) +
-            ") is outside [" + detail::number_text(limits.lowest) + ", " +
-            detail::number_text(limits.highest) + "]");
+        return fail(error, where,
+          "value " + index + " (" + detail::number_text(value) + ") is outside [" +
+            detail::number_text(limits.lowest) + ", " + detail::number_text(limits.highest) + "]");
       }
       if (limits.integral && std::trunc(value) != value)
       {

@@ -19,7 +19,7 @@ inline bool host_is_big_endian()
 }
 
 /// Copies one value of N bytes from src to dst, reversing its bytes when `swap` is set.
-template <int N>
+template<int N>
 inline void copy_value(const uint8_t* src, uint8_t* dst, bool swap)
 {
   if (swap)
@@ -36,7 +36,7 @@ inline void copy_value(const uint8_t* src, uint8_t* dst, bool swap)
 }
 
 /// Reads a T stored at an unaligned address, optionally byte-swapped.
-template <typename T>
+template<typename T>
 inline T load_value(const uint8_t* src, bool swap)
 {
   T value;

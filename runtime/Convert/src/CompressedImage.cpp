@@ -104,8 +104,8 @@ std::string png_problem(const std::vector<uint8_t>& d)
       depth = body[8];
       colorType = body[9];
       interlace = body[12];
-      const bool depthOk = (colorType == 0 && (depth == 1 || depth == 2 || depth == 4 ||
-                                                depth == 8 || depth == 16)) ||
+      const bool depthOk =
+        (colorType == 0 && (depth == 1 || depth == 2 || depth == 4 || depth == 8 || depth == 16)) ||
         (colorType == 3 && (depth == 1 || depth == 2 || depth == 4 || depth == 8)) ||
         ((colorType == 2 || colorType == 4 || colorType == 6) && (depth == 8 || depth == 16));
       if (width < 1 || height < 1 || width > 1000000 || height > 1000000 || !depthOk ||
@@ -156,8 +156,10 @@ std::string png_problem(const std::vector<uint8_t>& d)
   const uint32_t dx[7] = { 8, 8, 4, 4, 2, 2, 1 }, dy[7] = { 8, 8, 8, 4, 4, 2, 2 };
   for (int p = 0; p < (interlace ? 7 : 1); ++p)
   {
-    const uint64_t w = interlace ? (width > x0[p] ? (width - x0[p] + dx[p] - 1) / dx[p] : 0) : width;
-    const uint64_t h = interlace ? (height > y0[p] ? (height - y0[p] + dy[p] - 1) / dy[p] : 0) : height;
+    const uint64_t w =
+      interlace ? (width > x0[p] ? (width - x0[p] + dx[p] - 1) / dx[p] : 0) : width;
+    const uint64_t h =
+      interlace ? (height > y0[p] ? (height - y0[p] + dy[p] - 1) / dy[p] : 0) : height;
     if (w > 0 && h > 0)
     {
       passes.emplace_back(h, (w * bitsPerPixel + 7) / 8);
@@ -234,7 +236,10 @@ std::string jpeg_problem(const std::vector<uint8_t>& d)
     }
     if (marker == 0xd8 || marker == 0xd9 || marker == 0x00)
     {
-      return "unexpected marker 0xff" + std::string(marker == 0x00 ? "00" : marker == 0xd8 ? "d8" : "d9") +
+      return "unexpected marker 0xff" +
+        std::string(marker == 0x00 ? "00"
+            : marker == 0xd8       ? "d8"
+                                   : "d9") +
         " before the scan";
     }
     if (at + 2 > d.size())
@@ -316,8 +321,8 @@ bool compressed_to_image(const std::string& format, const std::vector<uint8_t>& 
   vtkImageData* decoded = reader->GetOutput();
   const int* dims = decoded ? decoded->GetDimensions() : nullptr;
   vtkDataArray* scalars = decoded ? decoded->GetPointData()->GetScalars() : nullptr;
-  if (!catcher->Text.empty() || reader->GetErrorCode() != 0 || !scalars || !dims ||
-    dims[0] < 1 || dims[1] < 1 ||
+  if (!catcher->Text.empty() || reader->GetErrorCode() != 0 || !scalars || !dims || dims[0] < 1 ||
+    dims[1] < 1 ||
     scalars->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2])
   {
     return fail(error, where,
@@ -358,11 +363,12 @@ bool image_to_compressed(vtkImageData* image, const std::string& codec, std::str
   }
   const int type = scalars->GetDataType();
   const int components = scalars->GetNumberOfComponents();
-  if (isPng && ((type != VTK_UNSIGNED_CHAR && type != VTK_UNSIGNED_SHORT) || components < 1 ||
-                 components > 4))
+  if (isPng &&
+    ((type != VTK_UNSIGNED_CHAR && type != VTK_UNSIGNED_SHORT) || components < 1 || components > 4))
   {
     return fail(error, where,
-      std::string("png takes unsigned char or unsigned short scalars with 1 to 4 components, not ") +
+      std::string(
+        "png takes unsigned char or unsigned short scalars with 1 to 4 components, not ") +
         scalars->GetDataTypeAsString() + " x " + std::to_string(components));
   }
   if (isJpeg && (type != VTK_UNSIGNED_CHAR || (components != 1 && components != 3)))

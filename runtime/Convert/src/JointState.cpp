@@ -27,8 +27,8 @@ vtkSmartPointer<vtkDoubleArray> double_column(const char* name, const std::vecto
 }
 
 /// Reads a numeric column (absent -> empty vector).
-bool read_double_column(vtkTable* table, const char* name, std::vector<double>* values,
-  std::string* error)
+bool read_double_column(
+  vtkTable* table, const char* name, std::vector<double>* values, std::string* error)
 {
   vtkAbstractArray* column = table->GetColumnByName(name);
   values->clear();
@@ -52,17 +52,16 @@ bool read_double_column(vtkTable* table, const char* name, std::vector<double>* 
 
 } // namespace
 
-bool joint_state_to_table(const std::vector<std::string>& name,
-  const std::vector<double>& position, const std::vector<double>& velocity,
-  const std::vector<double>& effort, vtkTable* table, std::string* error)
+bool joint_state_to_table(const std::vector<std::string>& name, const std::vector<double>& position,
+  const std::vector<double>& velocity, const std::vector<double>& effort, vtkTable* table,
+  std::string* error)
 {
   const char* where = "joint_state_to_table";
   if (!table)
   {
     return fail(error, where, "output table is null");
   }
-  const size_t joints =
-    std::max({ name.size(), position.size(), velocity.size(), effort.size() });
+  const size_t joints = std::max({ name.size(), position.size(), velocity.size(), effort.size() });
   const struct
   {
     const char* label;

@@ -91,8 +91,8 @@ void solid_shape(MarkerShape shape, double sx, double sy, double sz, vtkPolyData
 
 }
 
-bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData* poly_data,
-  std::string* error)
+bool marker_to_poly_data(
+  const Marker& marker, double length_scale, vtkPolyData* poly_data, std::string* error)
 {
   const char* where = "marker_to_poly_data";
   if (!poly_data)
@@ -112,8 +112,8 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (std::fabs(norm - 1.0) > 1e-3)
   {
-    return fail(error, where, "the orientation is not a unit quaternion (norm " +
-        detail::number_text(norm) + ")");
+    return fail(error, where,
+      "the orientation is not a unit quaternion (norm " + detail::number_text(norm) + ")");
   }
   const bool solid = marker.shape == MarkerShape::Arrow || marker.shape == MarkerShape::Cube ||
     marker.shape == MarkerShape::Sphere || marker.shape == MarkerShape::Cylinder ||
@@ -138,12 +138,14 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
     case MarkerShape::SphereList:
     {
       // One solid per point, each centred on its point (RViz's CUBE_LIST / SPHERE_LIST).
-      if (marker.points.size() % 3 != 0 || !detail::all_finite(marker.points.data(), static_cast<int>(marker.points.size())))
+      if (marker.points.size() % 3 != 0 ||
+        !detail::all_finite(marker.points.data(), static_cast<int>(marker.points.size())))
       {
         return fail(error, where, "the points have a NaN or infinite coordinate");
       }
       vtkNew<vtkPolyData> unit;
-      solid_shape(marker.shape == MarkerShape::CubeList ? MarkerShape::Cube : MarkerShape::Sphere, sx, sy, sz, unit);
+      solid_shape(marker.shape == MarkerShape::CubeList ? MarkerShape::Cube : MarkerShape::Sphere,
+        sx, sy, sz, unit);
       vtkNew<vtkAppendPolyData> all;
       for (size_t i = 0; i + 2 < marker.points.size(); i += 3)
       {
@@ -170,7 +172,8 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
     {
       if ((marker.points.size() / 3) % 2 != 0)
       {
-        return fail(error, where, "a line list needs an even number of points (pairs), not " +
+        return fail(error, where,
+          "a line list needs an even number of points (pairs), not " +
             std::to_string(marker.points.size() / 3));
       }
       if (!xyz_to_polyline(marker.points, length_scale, shape, error))
@@ -206,9 +209,10 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
       break;
     }
     default:
-      return fail(error, where, "this marker type is not supported (supported: arrow, cube, "
-                                "sphere, cylinder, line strip, line list, cube list, sphere "
-                                "list, points)");
+      return fail(error, where,
+        "this marker type is not supported (supported: arrow, cube, "
+        "sphere, cylinder, line strip, line list, cube list, sphere "
+        "list, points)");
   }
 
   vtkNew<vtkTransform> pose;
@@ -247,8 +251,8 @@ bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData*
   return true;
 }
 
-bool poly_data_to_marker(vtkPolyData* poly_data, double length_scale, Marker* marker,
-  std::string* error)
+bool poly_data_to_marker(
+  vtkPolyData* poly_data, double length_scale, Marker* marker, std::string* error)
 {
   const char* where = "poly_data_to_marker";
   if (!poly_data || !marker)
@@ -341,8 +345,9 @@ bool MarkerSet::to_poly_data(double length_scale, vtkPolyData* poly_data, std::s
     if (!marker_to_poly_data(entry.second, length_scale, piece, &reason))
     {
       // add() checked it at scale 1; only a scale overflowing to infinity gets here.
-      return fail(error, where, "marker (ns '" + entry.first.first + "', id " +
-          std::to_string(entry.first.second) + "): " + reason);
+      return fail(error, where,
+        "marker (ns '" + entry.first.first + "', id " + std::to_string(entry.first.second) +
+          "): " + reason);
     }
     // Only the arrays every piece has survive the append: keep the colour, drop the rest.
     vtkDataArray* color = piece->GetPointData()->GetArray("Color");

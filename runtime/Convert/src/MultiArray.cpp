@@ -19,7 +19,8 @@ using detail::fail;
 
 namespace {
 
-/// A multi-array layout reduced to a row-major grid: element (i, j) = data[offset + i*row_stride + j].
+/// A multi-array layout reduced to a row-major grid: element (i, j) = data[offset + i*row_stride +
+/// j].
 struct Grid
 {
   uint64_t rows = 0;
@@ -103,23 +104,22 @@ bool resolve_grid(const MultiArrayLayout& layout, size_t data_size, const char* 
     {
       return fail(error, where,
         "layout (" + std::to_string(g.rows) + " x " + std::to_string(g.cols) + ", offset " +
-          std::to_string(g.offset) + ", row stride " + std::to_string(g.row_stride) +
-          ") needs " + std::to_string(last + 1) + " data values but there are " +
-          std::to_string(data_size));
+          std::to_string(g.offset) + ", row stride " + std::to_string(g.row_stride) + ") needs " +
+          std::to_string(last + 1) + " data values but there are " + std::to_string(data_size));
     }
   }
   *grid = std::move(g);
   return true;
 }
 
-template <typename T>
+template<typename T>
 struct ArrayFor;
-template <>
+template<>
 struct ArrayFor<int64_t>
 {
   using type = vtkTypeInt64Array;
 };
-template <>
+template<>
 struct ArrayFor<double>
 {
   using type = vtkDoubleArray;
@@ -166,8 +166,8 @@ bool read_value(vtkDataArray* array, vtkIdType index, int component, double* val
   return true;
 }
 
-bool read_value(vtkDataArray* array, vtkIdType index, int component, int64_t* value,
-  std::string* reason)
+bool read_value(
+  vtkDataArray* array, vtkIdType index, int component, int64_t* value, std::string* reason)
 {
   const int type = array->GetDataType();
   if (type == VTK_FLOAT || type == VTK_DOUBLE)
@@ -196,9 +196,9 @@ bool read_value(vtkDataArray* array, vtkIdType index, int component, int64_t* va
   return true;
 }
 
-template <typename T>
-bool grid_to_table(const MultiArrayLayout& layout, const std::vector<T>& data, vtkTable* table,
-  std::string* error)
+template<typename T>
+bool grid_to_table(
+  const MultiArrayLayout& layout, const std::vector<T>& data, vtkTable* table, std::string* error)
 {
   const char* where = "multi_array_to_table";
   if (!table)
@@ -233,9 +233,9 @@ bool grid_to_table(const MultiArrayLayout& layout, const std::vector<T>& data, v
   return true;
 }
 
-template <typename T>
-bool table_to_grid(vtkTable* table, MultiArrayLayout* layout, std::vector<T>* data,
-  std::string* error)
+template<typename T>
+bool table_to_grid(
+  vtkTable* table, MultiArrayLayout* layout, std::vector<T>* data, std::string* error)
 {
   const char* where = "table_to_multi_array";
   if (!table || !layout || !data)
@@ -295,7 +295,7 @@ bool table_to_grid(vtkTable* table, MultiArrayLayout* layout, std::vector<T>* da
   return true;
 }
 
-template <typename T>
+template<typename T>
 bool grid_to_array(const MultiArrayLayout& layout, const std::vector<T>& data,
   typename ArrayFor<T>::type* array, std::string* error)
 {
@@ -327,9 +327,9 @@ bool grid_to_array(const MultiArrayLayout& layout, const std::vector<T>& data,
   return true;
 }
 
-template <typename T>
-bool array_to_grid(vtkDataArray* array, MultiArrayLayout* layout, std::vector<T>* data,
-  std::string* error)
+template<typename T>
+bool array_to_grid(
+  vtkDataArray* array, MultiArrayLayout* layout, std::vector<T>* data, std::string* error)
 {
   const char* where = "array_to_multi_array";
   if (!array || !layout || !data)
@@ -383,14 +383,14 @@ bool multi_array_to_table(const MultiArrayLayout& layout, const std::vector<doub
   return grid_to_table(layout, data, table, error);
 }
 
-bool table_to_multi_array(vtkTable* table, MultiArrayLayout* layout, std::vector<int64_t>* data,
-  std::string* error)
+bool table_to_multi_array(
+  vtkTable* table, MultiArrayLayout* layout, std::vector<int64_t>* data, std::string* error)
 {
   return table_to_grid(table, layout, data, error);
 }
 
-bool table_to_multi_array(vtkTable* table, MultiArrayLayout* layout, std::vector<double>* data,
-  std::string* error)
+bool table_to_multi_array(
+  vtkTable* table, MultiArrayLayout* layout, std::vector<double>* data, std::string* error)
 {
   return table_to_grid(table, layout, data, error);
 }
@@ -407,14 +407,14 @@ bool multi_array_to_array(const MultiArrayLayout& layout, const std::vector<doub
   return grid_to_array(layout, data, array, error);
 }
 
-bool array_to_multi_array(vtkDataArray* array, MultiArrayLayout* layout,
-  std::vector<int64_t>* data, std::string* error)
+bool array_to_multi_array(
+  vtkDataArray* array, MultiArrayLayout* layout, std::vector<int64_t>* data, std::string* error)
 {
   return array_to_grid(array, layout, data, error);
 }
 
-bool array_to_multi_array(vtkDataArray* array, MultiArrayLayout* layout,
-  std::vector<double>* data, std::string* error)
+bool array_to_multi_array(
+  vtkDataArray* array, MultiArrayLayout* layout, std::vector<double>* data, std::string* error)
 {
   return array_to_grid(array, layout, data, error);
 }

@@ -30,15 +30,24 @@ int vtk_type_of(uint8_t datatype)
 {
   switch (datatype)
   {
-    case point_field::kInt8: return VTK_SIGNED_CHAR;
-    case point_field::kUInt8: return VTK_UNSIGNED_CHAR;
-    case point_field::kInt16: return VTK_SHORT;
-    case point_field::kUInt16: return VTK_UNSIGNED_SHORT;
-    case point_field::kInt32: return VTK_INT;
-    case point_field::kUInt32: return VTK_UNSIGNED_INT;
-    case point_field::kFloat32: return VTK_FLOAT;
-    case point_field::kFloat64: return VTK_DOUBLE;
-    default: return 0;
+    case point_field::kInt8:
+      return VTK_SIGNED_CHAR;
+    case point_field::kUInt8:
+      return VTK_UNSIGNED_CHAR;
+    case point_field::kInt16:
+      return VTK_SHORT;
+    case point_field::kUInt16:
+      return VTK_UNSIGNED_SHORT;
+    case point_field::kInt32:
+      return VTK_INT;
+    case point_field::kUInt32:
+      return VTK_UNSIGNED_INT;
+    case point_field::kFloat32:
+      return VTK_FLOAT;
+    case point_field::kFloat64:
+      return VTK_DOUBLE;
+    default:
+      return 0;
   }
 }
 
@@ -47,21 +56,31 @@ uint8_t datatype_of(int vtk_type)
 {
   switch (vtk_type)
   {
-    case VTK_SIGNED_CHAR: return point_field::kInt8;
-    case VTK_CHAR: return std::numeric_limits<char>::is_signed ? point_field::kInt8 : point_field::kUInt8;
-    case VTK_UNSIGNED_CHAR: return point_field::kUInt8;
-    case VTK_SHORT: return point_field::kInt16;
-    case VTK_UNSIGNED_SHORT: return point_field::kUInt16;
-    case VTK_INT: return point_field::kInt32;
-    case VTK_UNSIGNED_INT: return point_field::kUInt32;
-    case VTK_FLOAT: return point_field::kFloat32;
-    case VTK_DOUBLE: return point_field::kFloat64;
-    default: return 0;
+    case VTK_SIGNED_CHAR:
+      return point_field::kInt8;
+    case VTK_CHAR:
+      return std::numeric_limits<char>::is_signed ? point_field::kInt8 : point_field::kUInt8;
+    case VTK_UNSIGNED_CHAR:
+      return point_field::kUInt8;
+    case VTK_SHORT:
+      return point_field::kInt16;
+    case VTK_UNSIGNED_SHORT:
+      return point_field::kUInt16;
+    case VTK_INT:
+      return point_field::kInt32;
+    case VTK_UNSIGNED_INT:
+      return point_field::kUInt32;
+    case VTK_FLOAT:
+      return point_field::kFloat32;
+    case VTK_DOUBLE:
+      return point_field::kFloat64;
+    default:
+      return 0;
   }
 }
 
 /// Reads one value of `datatype` at p as double (used for the NaN test and for x, y, z).
-template <typename Src>
+template<typename Src>
 double load_as_double(const uint8_t* p, bool swap)
 {
   return static_cast<double>(detail::load_value<Src>(p, swap));
@@ -73,20 +92,28 @@ LoadFn loader_for(uint8_t datatype)
 {
   switch (datatype)
   {
-    case point_field::kInt8: return &load_as_double<int8_t>;
-    case point_field::kUInt8: return &load_as_double<uint8_t>;
-    case point_field::kInt16: return &load_as_double<int16_t>;
-    case point_field::kUInt16: return &load_as_double<uint16_t>;
-    case point_field::kInt32: return &load_as_double<int32_t>;
-    case point_field::kUInt32: return &load_as_double<uint32_t>;
-    case point_field::kFloat32: return &load_as_double<float>;
-    default: return &load_as_double<double>;
+    case point_field::kInt8:
+      return &load_as_double<int8_t>;
+    case point_field::kUInt8:
+      return &load_as_double<uint8_t>;
+    case point_field::kInt16:
+      return &load_as_double<int16_t>;
+    case point_field::kUInt16:
+      return &load_as_double<uint16_t>;
+    case point_field::kInt32:
+      return &load_as_double<int32_t>;
+    case point_field::kUInt32:
+      return &load_as_double<uint32_t>;
+    case point_field::kFloat32:
+      return &load_as_double<float>;
+    default:
+      return &load_as_double<double>;
   }
 }
 
 /// One coordinate for every listed point: dst[3*i + axis] = value * scale. Templated on the
 /// source type so the datatype switch happens once per field, not once per point.
-template <typename Src, typename Dst>
+template<typename Src, typename Dst>
 void extract_coordinate(const uint8_t* data, const std::vector<size_t>& points, uint32_t offset,
   bool swap, double scale, int axis, Dst* dst)
 {
@@ -97,25 +124,41 @@ void extract_coordinate(const uint8_t* data, const std::vector<size_t>& points, 
   }
 }
 
-template <typename Dst>
+template<typename Dst>
 void extract_coordinate_any(uint8_t datatype, const uint8_t* data,
   const std::vector<size_t>& points, uint32_t offset, bool swap, double scale, int axis, Dst* dst)
 {
   switch (datatype)
   {
-    case point_field::kInt8: extract_coordinate<int8_t>(data, points, offset, swap, scale, axis, dst); break;
-    case point_field::kUInt8: extract_coordinate<uint8_t>(data, points, offset, swap, scale, axis, dst); break;
-    case point_field::kInt16: extract_coordinate<int16_t>(data, points, offset, swap, scale, axis, dst); break;
-    case point_field::kUInt16: extract_coordinate<uint16_t>(data, points, offset, swap, scale, axis, dst); break;
-    case point_field::kInt32: extract_coordinate<int32_t>(data, points, offset, swap, scale, axis, dst); break;
-    case point_field::kUInt32: extract_coordinate<uint32_t>(data, points, offset, swap, scale, axis, dst); break;
-    case point_field::kFloat32: extract_coordinate<float>(data, points, offset, swap, scale, axis, dst); break;
-    default: extract_coordinate<double>(data, points, offset, swap, scale, axis, dst); break;
+    case point_field::kInt8:
+      extract_coordinate<int8_t>(data, points, offset, swap, scale, axis, dst);
+      break;
+    case point_field::kUInt8:
+      extract_coordinate<uint8_t>(data, points, offset, swap, scale, axis, dst);
+      break;
+    case point_field::kInt16:
+      extract_coordinate<int16_t>(data, points, offset, swap, scale, axis, dst);
+      break;
+    case point_field::kUInt16:
+      extract_coordinate<uint16_t>(data, points, offset, swap, scale, axis, dst);
+      break;
+    case point_field::kInt32:
+      extract_coordinate<int32_t>(data, points, offset, swap, scale, axis, dst);
+      break;
+    case point_field::kUInt32:
+      extract_coordinate<uint32_t>(data, points, offset, swap, scale, axis, dst);
+      break;
+    case point_field::kFloat32:
+      extract_coordinate<float>(data, points, offset, swap, scale, axis, dst);
+      break;
+    default:
+      extract_coordinate<double>(data, points, offset, swap, scale, axis, dst);
+      break;
   }
 }
 
 /// Copies a field's raw values (count per point, N bytes each) into a VTK array's memory.
-template <int N>
+template<int N>
 void copy_field_values(const uint8_t* data, const std::vector<size_t>& points, uint32_t offset,
   uint32_t count, bool swap, uint8_t* dst)
 {
@@ -135,10 +178,18 @@ void copy_field_values_any(size_t size, const uint8_t* data, const std::vector<s
 {
   switch (size)
   {
-    case 1: copy_field_values<1>(data, points, offset, count, swap, dst); break;
-    case 2: copy_field_values<2>(data, points, offset, count, swap, dst); break;
-    case 4: copy_field_values<4>(data, points, offset, count, swap, dst); break;
-    default: copy_field_values<8>(data, points, offset, count, swap, dst); break;
+    case 1:
+      copy_field_values<1>(data, points, offset, count, swap, dst);
+      break;
+    case 2:
+      copy_field_values<2>(data, points, offset, count, swap, dst);
+      break;
+    case 4:
+      copy_field_values<4>(data, points, offset, count, swap, dst);
+      break;
+    default:
+      copy_field_values<8>(data, points, offset, count, swap, dst);
+      break;
   }
 }
 
@@ -154,8 +205,8 @@ std::string field_names(const std::vector<PointField>& fields)
 }
 
 /// Checks every field against point_step and returns the x, y, z fields.
-bool check_fields(const PointCloud2Layout& layout, const char* where,
-  const PointField* xyz[3], std::string* error)
+bool check_fields(
+  const PointCloud2Layout& layout, const char* where, const PointField* xyz[3], std::string* error)
 {
   xyz[0] = xyz[1] = xyz[2] = nullptr;
   for (const PointField& field : layout.fields)
@@ -208,14 +259,19 @@ size_t point_field_size(uint8_t datatype)
   switch (datatype)
   {
     case point_field::kInt8:
-    case point_field::kUInt8: return 1;
+    case point_field::kUInt8:
+      return 1;
     case point_field::kInt16:
-    case point_field::kUInt16: return 2;
+    case point_field::kUInt16:
+      return 2;
     case point_field::kInt32:
     case point_field::kUInt32:
-    case point_field::kFloat32: return 4;
-    case point_field::kFloat64: return 8;
-    default: return 0;
+    case point_field::kFloat32:
+      return 4;
+    case point_field::kFloat64:
+      return 8;
+    default:
+      return 0;
   }
 }
 
@@ -249,8 +305,8 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
   {
     return fail(error, where,
       "data has " + std::to_string(data_size) + " bytes but row_step " +
-        std::to_string(layout.row_step) + " x height " + std::to_string(layout.height) +
-        " needs " + std::to_string(needed));
+        std::to_string(layout.row_step) + " x height " + std::to_string(layout.height) + " needs " +
+        std::to_string(needed));
   }
   const uint64_t total = static_cast<uint64_t>(layout.width) * layout.height;
   if (total > 0 && !data)
@@ -271,8 +327,8 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
   {
     for (uint32_t col = 0; col < layout.width; ++col)
     {
-      const size_t base = static_cast<size_t>(row) * layout.row_step +
-        static_cast<size_t>(col) * layout.point_step;
+      const size_t base =
+        static_cast<size_t>(row) * layout.row_step + static_cast<size_t>(col) * layout.point_step;
       if (policy != NonFinitePoints::Keep)
       {
         const uint8_t* p = data + base;
@@ -331,8 +387,8 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
         {
           return fail(error, where,
             "point at byte " + std::to_string(points[i]) + ": " + xyz[axis]->name + " = " +
-              detail::number_text(in) + " is not finite once scaled by " + detail::number_text(length_scale) +
-              (float_points ? " into float32" : ""));
+              detail::number_text(in) + " is not finite once scaled by " +
+              detail::number_text(length_scale) + (float_points ? " into float32" : ""));
         }
       }
     }
@@ -345,13 +401,13 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
     {
       continue;
     }
-    auto array =
-      vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(vtk_type_of(field.datatype)));
+    auto array = vtkSmartPointer<vtkDataArray>::Take(
+      vtkDataArray::CreateDataArray(vtk_type_of(field.datatype)));
     array->SetName(field.name.c_str());
     array->SetNumberOfComponents(static_cast<int>(field.count));
     array->SetNumberOfTuples(count);
-    copy_field_values_any(point_field_size(field.datatype), data, points, field.offset,
-      field.count, swap, static_cast<uint8_t*>(array->GetVoidPointer(0)));
+    copy_field_values_any(point_field_size(field.datatype), data, points, field.offset, field.count,
+      swap, static_cast<uint8_t*>(array->GetVoidPointer(0)));
     arrays.push_back(array);
   }
 
@@ -386,7 +442,8 @@ bool poly_data_to_point_cloud2(vtkPolyData* poly_data, double length_scale,
   const char* where = "poly_data_to_point_cloud2";
   if (!poly_data || !layout || !data)
   {
-    return fail(error, where, poly_data ? "output layout or data is null" : "input poly data is null");
+    return fail(
+      error, where, poly_data ? "output layout or data is null" : "input poly data is null");
   }
   if (!detail::check_length_scale(length_scale, where, error))
   {

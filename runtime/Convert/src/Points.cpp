@@ -15,33 +15,33 @@ using detail::fail;
 
 namespace {
 
-template <typename T>
+template<typename T>
 struct VtkTypeOf;
-template <>
+template<>
 struct VtkTypeOf<float>
 {
   static constexpr int value = VTK_FLOAT;
 };
-template <>
+template<>
 struct VtkTypeOf<double>
 {
   static constexpr int value = VTK_DOUBLE;
 };
 
-template <typename T>
+template<typename T>
 bool finite_triple(const T* p)
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
 /// A finite coordinate that is not finite once scaled into T (1e37 m is a float, 1e40 mm is not).
-template <typename T>
+template<typename T>
 bool overflows(T value, double scale)
 {
   return std::isfinite(value) && !detail::finite_in<T>(value * scale);
 }
 
-template <typename T>
+template<typename T>
 bool to_points(const T* xyz, size_t count, double length_scale, NonFinitePoints policy,
   vtkPoints* points, std::string* error)
 {
@@ -81,7 +81,8 @@ bool to_points(const T* xyz, size_t count, double length_scale, NonFinitePoints 
       }
       else if (policy == NonFinitePoints::Reject)
       {
-        return fail(error, where, "point " + std::to_string(i) + " has a NaN or infinite coordinate");
+        return fail(
+          error, where, "point " + std::to_string(i) + " has a NaN or infinite coordinate");
       }
     }
   }
@@ -104,7 +105,7 @@ bool to_points(const T* xyz, size_t count, double length_scale, NonFinitePoints 
   return true;
 }
 
-template <typename T>
+template<typename T>
 bool vector_to_points(const std::vector<T>& xyz, double length_scale, NonFinitePoints policy,
   vtkPoints* points, std::string* error)
 {
@@ -116,7 +117,7 @@ bool vector_to_points(const std::vector<T>& xyz, double length_scale, NonFiniteP
   return to_points(xyz.data(), xyz.size() / 3, length_scale, policy, points, error);
 }
 
-template <typename T>
+template<typename T>
 bool from_points(vtkPoints* points, double length_scale, std::vector<T>* xyz, std::string* error)
 {
   const char* where = "points_to_xyz";
@@ -168,14 +169,14 @@ bool xyz_to_points(const std::vector<double>& xyz, double length_scale, NonFinit
   return vector_to_points(xyz, length_scale, policy, points, error);
 }
 
-bool points_to_xyz(vtkPoints* points, double length_scale, std::vector<float>* xyz,
-  std::string* error)
+bool points_to_xyz(
+  vtkPoints* points, double length_scale, std::vector<float>* xyz, std::string* error)
 {
   return from_points(points, length_scale, xyz, error);
 }
 
-bool points_to_xyz(vtkPoints* points, double length_scale, std::vector<double>* xyz,
-  std::string* error)
+bool points_to_xyz(
+  vtkPoints* points, double length_scale, std::vector<double>* xyz, std::string* error)
 {
   return from_points(points, length_scale, xyz, error);
 }

@@ -16,8 +16,8 @@ namespace convert {
 
 using detail::fail;
 
-bool xyz_to_polyline(const std::vector<double>& xyz, double length_scale, vtkPolyData* polyline,
-  std::string* error)
+bool xyz_to_polyline(
+  const std::vector<double>& xyz, double length_scale, vtkPolyData* polyline, std::string* error)
 {
   const char* where = "xyz_to_polyline";
   if (!polyline)
@@ -46,8 +46,8 @@ bool xyz_to_polyline(const std::vector<double>& xyz, double length_scale, vtkPol
   points->SetNumberOfPoints(count);
   for (vtkIdType i = 0; i < count; ++i)
   {
-    points->SetPoint(i, xyz[3 * i] * length_scale, xyz[3 * i + 1] * length_scale,
-      xyz[3 * i + 2] * length_scale);
+    points->SetPoint(
+      i, xyz[3 * i] * length_scale, xyz[3 * i + 1] * length_scale, xyz[3 * i + 2] * length_scale);
   }
   vtkNew<vtkCellArray> lines;
   if (count >= 2)
@@ -65,8 +65,8 @@ bool xyz_to_polyline(const std::vector<double>& xyz, double length_scale, vtkPol
   return true;
 }
 
-bool polyline_to_xyz(vtkPolyData* polyline, double length_scale, std::vector<double>* xyz,
-  std::string* error)
+bool polyline_to_xyz(
+  vtkPolyData* polyline, double length_scale, std::vector<double>* xyz, std::string* error)
 {
   const char* where = "polyline_to_xyz";
   if (!polyline || !xyz)

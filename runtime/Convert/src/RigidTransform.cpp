@@ -23,8 +23,8 @@ using detail::number_text;
 namespace {
 
 /// Checks a ROS pose and returns its rotation as a unit Eigen quaternion.
-bool checked_rotation(const RigidPose& pose, const char* where, Eigen::Quaterniond* rotation,
-  std::string* error)
+bool checked_rotation(
+  const RigidPose& pose, const char* where, Eigen::Quaterniond* rotation, std::string* error)
 {
   if (!detail::all_finite(pose.translation.data(), 3))
   {
@@ -34,7 +34,8 @@ bool checked_rotation(const RigidPose& pose, const char* where, Eigen::Quaternio
   {
     return fail(error, where, "quaternion contains NaN or infinity");
   }
-  const Eigen::Quaterniond q(pose.rotation[3], pose.rotation[0], pose.rotation[1], pose.rotation[2]);
+  const Eigen::Quaterniond q(
+    pose.rotation[3], pose.rotation[0], pose.rotation[1], pose.rotation[2]);
   const double norm2 = q.squaredNorm();
   if (std::abs(norm2 - 1.0) >= kQuaternionNormTolerance)
   {
@@ -71,8 +72,8 @@ void fill_matrix(const RigidPose& pose, const Eigen::Quaterniond& rotation, doub
 
 } // namespace
 
-bool pose_to_matrix(const RigidPose& pose, double length_scale, vtkMatrix4x4* matrix,
-  std::string* error)
+bool pose_to_matrix(
+  const RigidPose& pose, double length_scale, vtkMatrix4x4* matrix, std::string* error)
 {
   const char* where = "pose_to_matrix";
   if (!matrix)
@@ -91,17 +92,16 @@ bool pose_to_matrix(const RigidPose& pose, double length_scale, vtkMatrix4x4* ma
     if (!std::isfinite(pose.translation[static_cast<size_t>(axis)] * length_scale))
     {
       return fail(error, where,
-        "translation (" + number_text(pose.translation[0]) + ", " + number_text(pose.translation[1]) +
-          ", " + number_text(pose.translation[2]) + ") is not finite once scaled by " +
-          number_text(length_scale));
+        "translation (" + number_text(pose.translation[0]) + ", " +
+          number_text(pose.translation[1]) + ", " + number_text(pose.translation[2]) +
+          ") is not finite once scaled by " + number_text(length_scale));
     }
   }
   fill_matrix(pose, rotation, length_scale, matrix);
   return true;
 }
 
-bool matrix_to_pose(vtkMatrix4x4* matrix, double length_scale, RigidPose* pose,
-  std::string* error)
+bool matrix_to_pose(vtkMatrix4x4* matrix, double length_scale, RigidPose* pose, std::string* error)
 {
   const char* where = "matrix_to_pose";
   if (!matrix || !pose)
@@ -159,15 +159,16 @@ bool matrix_to_pose(vtkMatrix4x4* matrix, double length_scale, RigidPose* pose,
     m[11] / length_scale } };
   if (!detail::all_finite(translation.data(), 3))
   {
-    return fail(error, where, "translation is not finite once scaled by 1/" + number_text(length_scale));
+    return fail(
+      error, where, "translation is not finite once scaled by 1/" + number_text(length_scale));
   }
   pose->translation = translation;
   pose->rotation = { { q.x(), q.y(), q.z(), q.w() } };
   return true;
 }
 
-bool pose_to_transform(const RigidPose& pose, double length_scale, vtkTransform* transform,
-  std::string* error)
+bool pose_to_transform(
+  const RigidPose& pose, double length_scale, vtkTransform* transform, std::string* error)
 {
   if (!transform)
   {
@@ -182,8 +183,8 @@ bool pose_to_transform(const RigidPose& pose, double length_scale, vtkTransform*
   return true;
 }
 
-bool transform_to_pose(vtkTransform* transform, double length_scale, RigidPose* pose,
-  std::string* error)
+bool transform_to_pose(
+  vtkTransform* transform, double length_scale, RigidPose* pose, std::string* error)
 {
   if (!transform)
   {

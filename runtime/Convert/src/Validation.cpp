@@ -23,8 +23,8 @@ bool fail(std::string* error, const char* where, const std::string& what)
     {
       --cut;
     }
-    *error = std::string(where) + ": " + what.substr(0, cut) + "... (" + std::to_string(what.size()) +
-      " bytes)";
+    *error = std::string(where) + ": " + what.substr(0, cut) + "... (" +
+      std::to_string(what.size()) + " bytes)";
   }
   return false;
 }

@@ -30,14 +30,15 @@ inline bool all_finite(const double* values, int count)
 }
 
 /// True when `value` is finite and fits T (a float holds 1e37 m, not 1e40 mm).
-template <typename T>
+template<typename T>
 bool finite_in(double value)
 {
-  return std::isfinite(value) && std::fabs(value) <= static_cast<double>(std::numeric_limits<T>::max());
+  return std::isfinite(value) &&
+    std::fabs(value) <= static_cast<double>(std::numeric_limits<T>::max());
 }
 
 /// `value` as T, out-of-range values as +-infinity (a plain cast of 1e40 to float is undefined).
-template <typename T>
+template<typename T>
 T narrow_coordinate(double value)
 {
   if (std::isfinite(value) && std::fabs(value) > static_cast<double>(std::numeric_limits<T>::max()))

@@ -12,8 +12,7 @@ namespace convert {
 
 using detail::fail;
 
-bool values_to_array(const double* values, size_t count, vtkDoubleArray* array,
-  std::string* error)
+bool values_to_array(const double* values, size_t count, vtkDoubleArray* array, std::string* error)
 {
   const char* where = "values_to_array";
   if (!array)
@@ -58,8 +57,8 @@ bool array_to_values(vtkDataArray* array, size_t count, double* values, std::str
   }
   for (size_t i = 0; i < count; ++i)
   {
-    const double value = array->GetComponent(static_cast<vtkIdType>(i / components),
-      static_cast<int>(i % components));
+    const double value =
+      array->GetComponent(static_cast<vtkIdType>(i / components), static_cast<int>(i % components));
     if (!std::isfinite(value))
     {
       return fail(error, where, "value " + std::to_string(i) + " is NaN or infinite");
@@ -67,8 +66,8 @@ bool array_to_values(vtkDataArray* array, size_t count, double* values, std::str
   }
   for (size_t i = 0; i < count; ++i)
   {
-    values[i] = array->GetComponent(static_cast<vtkIdType>(i / components),
-      static_cast<int>(i % components));
+    values[i] =
+      array->GetComponent(static_cast<vtkIdType>(i / components), static_cast<int>(i % components));
   }
   return true;
 }

@@ -27,7 +27,7 @@ struct Getter
   vtkObject* (*last)(vtkROS2SceneNode*);
 };
 
-template <class Node>
+template<class Node>
 vtkObject* LastOf(vtkROS2SceneNode* node)
 {
   Node* subscriber = Node::SafeDownCast(node);

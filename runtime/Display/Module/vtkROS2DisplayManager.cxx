@@ -28,7 +28,7 @@ vtkStandardNewMacro(vtkROS2DisplayManager);
 
 namespace {
 
-template <class Manager>
+template<class Manager>
 vtkROS2DisplayableManager* MakeManager()
 {
   return Manager::New();
@@ -79,7 +79,8 @@ public:
   {
     if (this->PendingSet.erase(node))
     {
-      this->Pending.erase(std::remove(this->Pending.begin(), this->Pending.end(), node), this->Pending.end());
+      this->Pending.erase(
+        std::remove(this->Pending.begin(), this->Pending.end(), node), this->Pending.end());
     }
   }
 };
@@ -145,8 +146,8 @@ void vtkROS2DisplayManager::SetScene(vtkROS2Scene* scene)
   {
     internals.SceneObservers.push_back(
       scene->AddObserver(vtkROS2Scene::NodeAddedEvent, this, &vtkROS2DisplayManager::OnSceneEvent));
-    internals.SceneObservers.push_back(
-      scene->AddObserver(vtkROS2Scene::NodeRemovedEvent, this, &vtkROS2DisplayManager::OnSceneEvent));
+    internals.SceneObservers.push_back(scene->AddObserver(
+      vtkROS2Scene::NodeRemovedEvent, this, &vtkROS2DisplayManager::OnSceneEvent));
     // A scene deleted first removes its observers before it clears its nodes (vtkObject does),
     // so NodeRemovedEvent never comes: let go of every node while they still exist.
     internals.SceneObservers.push_back(
@@ -195,7 +196,8 @@ void vtkROS2DisplayManager::ObserveNode(vtkROS2SceneNode* node)
     return;
   }
   std::vector<unsigned long>& tags = internals.NodeObservers[node];
-  tags.push_back(node->AddObserver(vtkCommand::ModifiedEvent, this, &vtkROS2DisplayManager::OnNodeEvent));
+  tags.push_back(
+    node->AddObserver(vtkCommand::ModifiedEvent, this, &vtkROS2DisplayManager::OnNodeEvent));
   if (vtkROS2TransformNode::SafeDownCast(node))
   {
     tags.push_back(node->AddObserver(
@@ -401,7 +403,8 @@ int vtkROS2DisplayManager::GetNumberOfDisplayedNodes() const
 }
 
 //------------------------------------------------------------------------------
-vtkROS2DisplayableManager* vtkROS2DisplayManager::GetDisplayableManagerForNode(vtkROS2SceneNode* node) const
+vtkROS2DisplayableManager* vtkROS2DisplayManager::GetDisplayableManagerForNode(
+  vtkROS2SceneNode* node) const
 {
   auto owner = this->Internals->Owner.find(node);
   return owner == this->Internals->Owner.end() ? nullptr : owner->second;

@@ -185,7 +185,8 @@ vtkROS2SceneNode* vtkROS2DisplayableManager::GetNodeForProp(vtkProp* prop) const
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2DisplayableManager::GetParentTransformToWorld(vtkROS2SceneNode* node, vtkMatrix4x4* matrix)
+void vtkROS2DisplayableManager::GetParentTransformToWorld(
+  vtkROS2SceneNode* node, vtkMatrix4x4* matrix)
 {
   matrix->Identity();
   if (!node)

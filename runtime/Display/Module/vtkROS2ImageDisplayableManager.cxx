@@ -50,7 +50,8 @@ bool AttributeNumber(vtkROS2SceneNode* node, const char* name, double& value)
 //------------------------------------------------------------------------------
 bool vtkROS2ImageDisplayableManager::CanDisplay(vtkROS2SceneNode* node)
 {
-  return ros2vtk::display::IsSubscriberOf(node, "vtkImageData") || vtkROS2VolumeNode::SafeDownCast(node);
+  return ros2vtk::display::IsSubscriberOf(node, "vtkImageData") ||
+    vtkROS2VolumeNode::SafeDownCast(node);
 }
 
 //------------------------------------------------------------------------------
@@ -99,9 +100,11 @@ void vtkROS2ImageDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtkProp*
   vtkVolume* volume = GetVolume(prop);
   auto* image = vtkImageData::SafeDownCast(slice->GetMapper()->GetInput());
   auto* volumeNode = vtkROS2VolumeNode::SafeDownCast(node);
-  auto* message = volumeNode ? volumeNode->GetImageData()
-                             : vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node));
-  if (!message || !message->GetPointData()->GetScalars() || (volumeNode && !volumeNode->GetVisibility()))
+  auto* message = volumeNode
+    ? volumeNode->GetImageData()
+    : vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node));
+  if (!message || !message->GetPointData()->GetScalars() ||
+    (volumeNode && !volumeNode->GetVisibility()))
   {
     slice->VisibilityOff();
     volume->VisibilityOff();

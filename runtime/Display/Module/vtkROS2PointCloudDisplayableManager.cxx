@@ -51,7 +51,8 @@ void vtkROS2PointCloudDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtk
   // Shapes (lines, polygons, strips: e.g. a MarkerArray drawn by its kind) are drawn as they
   // are, surfaces lit, with their RGBA colours; a cloud gets one vertex per point.
   const bool shapes = polyData &&
-    (polyData->GetNumberOfLines() + polyData->GetNumberOfPolys() + polyData->GetNumberOfStrips()) > 0;
+    (polyData->GetNumberOfLines() + polyData->GetNumberOfPolys() + polyData->GetNumberOfStrips()) >
+      0;
   if (shapes)
   {
     cloud->ShallowCopy(polyData);
@@ -117,7 +118,8 @@ void vtkROS2PointCloudDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtk
     }
   }
   actor->GetProperty()->SetColor(color);
-  actor->GetProperty()->SetPointSize(this->DisplayManager ? this->DisplayManager->GetPointSize() : 3.0);
+  actor->GetProperty()->SetPointSize(
+    this->DisplayManager ? this->DisplayManager->GetPointSize() : 3.0);
   actor->SetVisibility(count > 0);
 }
 

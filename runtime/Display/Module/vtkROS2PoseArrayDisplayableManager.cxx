@@ -59,14 +59,17 @@ void vtkROS2PoseArrayDisplayableManager::UpdateProp(vtkROS2SceneNode* node, vtkP
   vtkNew<vtkDoubleArray> directions;
   directions->SetNumberOfComponents(3);
   directions->SetName("direction");
-  if (auto* collection = vtkTransformCollection::SafeDownCast(ros2vtk::display::LastMessageObject(node)))
+  if (auto* collection =
+        vtkTransformCollection::SafeDownCast(ros2vtk::display::LastMessageObject(node)))
   {
     collection->InitTraversal();
     while (vtkLinearTransform* pose = collection->GetNextItem())
     {
       vtkMatrix4x4* matrix = pose->GetMatrix();
-      points->InsertNextPoint(matrix->GetElement(0, 3), matrix->GetElement(1, 3), matrix->GetElement(2, 3));
-      directions->InsertNextTuple3(matrix->GetElement(0, 0), matrix->GetElement(1, 0), matrix->GetElement(2, 0));
+      points->InsertNextPoint(
+        matrix->GetElement(0, 3), matrix->GetElement(1, 3), matrix->GetElement(2, 3));
+      directions->InsertNextTuple3(
+        matrix->GetElement(0, 0), matrix->GetElement(1, 0), matrix->GetElement(2, 0));
     }
   }
   poses->Initialize();

@@ -93,7 +93,10 @@ public:
   bool ViewChanged = true; // plane, camera or slice properties need applying
   int Intersected = 0;
 
-  vtkImageData* CurrentImage() { return this->VolumeNode ? this->NodeImage.GetPointer() : this->Image.GetPointer(); }
+  vtkImageData* CurrentImage()
+  {
+    return this->VolumeNode ? this->NodeImage.GetPointer() : this->Image.GetPointer();
+  }
 };
 
 //------------------------------------------------------------------------------
@@ -143,12 +146,30 @@ void vtkROS2SliceView::SetRenderer(vtkRenderer* renderer)
   this->Modified();
 }
 
-vtkRenderer* vtkROS2SliceView::GetRenderer() const { return this->Internals->Renderer; }
-vtkROS2Scene* vtkROS2SliceView::GetScene() const { return this->Internals->Scene; }
-vtkImageData* vtkROS2SliceView::GetImageData() const { return this->Internals->Image; }
-vtkROS2SceneNode* vtkROS2SliceView::GetVolumeNode() const { return this->Internals->VolumeNode; }
-vtkImageSlice* vtkROS2SliceView::GetImageSlice() const { return this->Internals->Slice; }
-int vtkROS2SliceView::GetNumberOfIntersectedModels() const { return this->Internals->Intersected; }
+vtkRenderer* vtkROS2SliceView::GetRenderer() const
+{
+  return this->Internals->Renderer;
+}
+vtkROS2Scene* vtkROS2SliceView::GetScene() const
+{
+  return this->Internals->Scene;
+}
+vtkImageData* vtkROS2SliceView::GetImageData() const
+{
+  return this->Internals->Image;
+}
+vtkROS2SceneNode* vtkROS2SliceView::GetVolumeNode() const
+{
+  return this->Internals->VolumeNode;
+}
+vtkImageSlice* vtkROS2SliceView::GetImageSlice() const
+{
+  return this->Internals->Slice;
+}
+int vtkROS2SliceView::GetNumberOfIntersectedModels() const
+{
+  return this->Internals->Intersected;
+}
 
 //------------------------------------------------------------------------------
 void vtkROS2SliceView::SetScene(vtkROS2Scene* scene)
@@ -193,9 +214,11 @@ void vtkROS2SliceView::SetImageData(vtkImageData* image)
 //------------------------------------------------------------------------------
 void vtkROS2SliceView::SetVolumeNode(vtkROS2SceneNode* node)
 {
-  if (node && !ros2vtk::display::IsSubscriberOf(node, "vtkImageData") && !vtkROS2VolumeNode::SafeDownCast(node))
+  if (node && !ros2vtk::display::IsSubscriberOf(node, "vtkImageData") &&
+    !vtkROS2VolumeNode::SafeDownCast(node))
   {
-    vtkErrorMacro("SetVolumeNode: " << node->GetClassName() << " is neither a volume node nor receives vtkImageData");
+    vtkErrorMacro("SetVolumeNode: " << node->GetClassName()
+                                    << " is neither a volume node nor receives vtkImageData");
     return;
   }
   this->Internals->VolumeNode = node;
@@ -253,8 +276,9 @@ bool vtkROS2SliceView::Update()
     {
       internals.VolumeNodeTime = node->GetMTime();
       auto* volumeNode = vtkROS2VolumeNode::SafeDownCast(node);
-      if (auto* image = volumeNode ? volumeNode->GetImageData()
-                                   : vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node)))
+      if (auto* image = volumeNode
+          ? volumeNode->GetImageData()
+          : vtkImageData::SafeDownCast(ros2vtk::display::LastMessageObject(node)))
       {
         internals.NodeImage->ShallowCopy(image);
         internals.NodeImage->Modified();
@@ -303,8 +327,10 @@ bool vtkROS2SliceView::Update()
       double range[2];
       image->GetScalarRange(range);
       const bool automatic = internals.Window <= 0;
-      internals.Slice->GetProperty()->SetColorWindow(automatic ? std::max(range[1] - range[0], 1.0) : internals.Window);
-      internals.Slice->GetProperty()->SetColorLevel(automatic ? 0.5 * (range[0] + range[1]) : internals.Level);
+      internals.Slice->GetProperty()->SetColorWindow(
+        automatic ? std::max(range[1] - range[0], 1.0) : internals.Window);
+      internals.Slice->GetProperty()->SetColorLevel(
+        automatic ? 0.5 * (range[0] + range[1]) : internals.Level);
     }
     this->UpdateCamera();
     changed = true;
@@ -348,7 +374,8 @@ void vtkROS2SliceView::UpdateCamera()
   camera->SetFocalPoint(internals.Center);
   const double distance = orientation.cameraSide * (10.0 * halfHeight + 1000.0);
   camera->SetPosition(internals.Center[0] + distance * orientation.normal[0],
-    internals.Center[1] + distance * orientation.normal[1], internals.Center[2] + distance * orientation.normal[2]);
+    internals.Center[1] + distance * orientation.normal[1],
+    internals.Center[2] + distance * orientation.normal[2]);
   camera->SetViewUp(const_cast<double*>(orientation.viewUp));
   camera->SetParallelScale(halfHeight);
   renderer->ResetCameraClippingRange();
@@ -410,7 +437,8 @@ bool vtkROS2SliceView::UpdateIntersections()
       bool moved = false;
       for (int k = 0; k < 16 && !moved; ++k)
       {
-        moved = matrix->GetElement(k / 4, k % 4) != cut->ToWorld->GetMatrix()->GetElement(k / 4, k % 4);
+        moved =
+          matrix->GetElement(k / 4, k % 4) != cut->ToWorld->GetMatrix()->GetElement(k / 4, k % 4);
       }
       if (moved)
       {
@@ -421,7 +449,8 @@ bool vtkROS2SliceView::UpdateIntersections()
       cut->Actor->GetProperty()->SetColor(color[0], color[1], color[2]);
       cut->Actor->SetVisibility(model->GetVisibility());
       const double offset = kLineOffset * orientation.cameraSide;
-      cut->Actor->SetPosition(offset * orientation.normal[0], offset * orientation.normal[1], offset * orientation.normal[2]);
+      cut->Actor->SetPosition(offset * orientation.normal[0], offset * orientation.normal[1],
+        offset * orientation.normal[2]);
     }
   }
   for (auto it = internals.Cuts.begin(); it != internals.Cuts.end();)
@@ -446,7 +475,8 @@ bool vtkROS2SliceView::UpdateIntersections()
     for (auto& cut : internals.Cuts)
     {
       cut.second->Cutter->Update();
-      if (cut.second->Cutter->GetOutput()->GetNumberOfPoints() > 0 && cut.second->Actor->GetVisibility())
+      if (cut.second->Cutter->GetOutput()->GetNumberOfPoints() > 0 &&
+        cut.second->Actor->GetVisibility())
       {
         ++internals.Intersected;
       }
@@ -472,7 +502,7 @@ void vtkROS2SliceView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Orientation: " << this->GetOrientation() << "\n";
-  os << indent << "SliceCenter: " << this->Internals->Center[0] << " " << this->Internals->Center[1] << " "
-     << this->Internals->Center[2] << "\n";
+  os << indent << "SliceCenter: " << this->Internals->Center[0] << " " << this->Internals->Center[1]
+     << " " << this->Internals->Center[2] << "\n";
   os << indent << "IntersectedModels: " << this->Internals->Intersected << "\n";
 }

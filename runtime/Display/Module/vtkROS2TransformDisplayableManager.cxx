@@ -92,5 +92,6 @@ void vtkROS2TransformDisplayableManager::UpdatePose(vtkROS2SceneNode* node, vtkP
   vtkNew<vtkMatrix4x4> matrix;
   transform->GetMatrixTransformToWorld(matrix);
   vtkTransform::SafeDownCast(axes->GetUserTransform())->SetMatrix(matrix);
-  LabelOf(prop)->SetPosition(matrix->GetElement(0, 3), matrix->GetElement(1, 3), matrix->GetElement(2, 3));
+  LabelOf(prop)->SetPosition(
+    matrix->GetElement(0, 3), matrix->GetElement(1, 3), matrix->GetElement(2, 3));
 }

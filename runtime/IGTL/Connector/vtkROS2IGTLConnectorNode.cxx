@@ -80,11 +80,20 @@ std::string xml_escape(const std::string& text)
   {
     switch (c)
     {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -171,10 +180,10 @@ public:
   vtkWeakPointer<vtkROS2NodeNode> ROSNode;
   vtkNew<vtkMatrix4x4> WorldToSlicer;
   vtkNew<vtkMatrix4x4> SlicerToWorld;
-  std::map<std::string, SentModel> SentModels;       // by model node ID
-  std::map<std::string, vtkTypeInt64> SentMessages;  // subscriber node ID → count sent
-  std::map<std::string, Route> Routes;               // by device name
-  std::map<std::string, std::string> ReceivedNodes;  // device (type-qualified) → node ID
+  std::map<std::string, SentModel> SentModels;      // by model node ID
+  std::map<std::string, vtkTypeInt64> SentMessages; // subscriber node ID → count sent
+  std::map<std::string, Route> Routes;              // by device name
+  std::map<std::string, std::string> ReceivedNodes; // device (type-qualified) → node ID
   std::set<std::string> ReceivedNodeIDs;
   std::map<std::string, vtkSmartPointer<vtkImageData>> ReceivedImages;
   std::map<std::string, std::string> ReceivedStrings;
@@ -185,7 +194,8 @@ public:
   void SendScene(vtkROS2IGTLConnectorNode* self);
   void Send(const igtl::Frame& frame, bool retain);
   std::string Device(const char* name);
-  vtkROS2TransformNode* ReceivedTransformNode(vtkROS2IGTLConnectorNode* self, const std::string& device);
+  vtkROS2TransformNode* ReceivedTransformNode(
+    vtkROS2IGTLConnectorNode* self, const std::string& device);
   void Publish(vtkROS2IGTLConnectorNode* self, const std::string& device, vtkObject* value,
     const std::string* text);
   static bool IsRobotDescription(vtkROS2Scene* scene, vtkROS2SubscriberNode* subscriber);
@@ -209,7 +219,9 @@ const bool ConnectorRegistered = [] {
   std::string error;
   return ros2vtk::scene::NodeClassRegistry::instance().add(
     { "", "vtkROS2IGTLConnectorNode", "", ros2vtk::scene::NodeDirection::Other,
-      []() -> vtkROS2SceneNode* { return vtkROS2IGTLConnectorNode::New(); } },
+      []() -> vtkROS2SceneNode* {
+        return vtkROS2IGTLConnectorNode::New();
+      } },
     &error);
 }();
 } // namespace
@@ -438,7 +450,8 @@ bool vtkROS2IGTLConnectorNode::MapDeviceToTf(
   return true;
 }
 
-bool vtkROS2IGTLConnectorNode::MapDeviceToTopic(const char* device, const char* topic, const char* type)
+bool vtkROS2IGTLConnectorNode::MapDeviceToTopic(
+  const char* device, const char* topic, const char* type)
 {
   if (!device || !*device || !topic || !*topic || !type || !*type)
   {
@@ -551,8 +564,10 @@ bool vtkROS2IGTLConnectorNode::ReadXML(vtkXMLDataElement* element)
     }
     const char* device = map->GetAttribute("device");
     const bool ok = map->GetAttribute("parentFrame")
-      ? this->MapDeviceToTf(device, map->GetAttribute("parentFrame"), map->GetAttribute("childFrame"))
-      : this->MapDeviceToTopic(device, map->GetAttribute("topic"), map->GetAttribute("messageType"));
+      ? this->MapDeviceToTf(
+          device, map->GetAttribute("parentFrame"), map->GetAttribute("childFrame"))
+      : this->MapDeviceToTopic(
+          device, map->GetAttribute("topic"), map->GetAttribute("messageType"));
     if (!ok)
     {
       vtkErrorMacro("ReadXML: DeviceMap " << i << " is incomplete");
@@ -601,8 +616,9 @@ int vtkROS2IGTLConnectorNode::WriteSlicerScene(const char* path)
   {
     out << " serverHostname=\"" << xml_escape(host) << "\"";
   }
-  out << " serverPort=\"" << this->Port
-      << "\" persistent=\"1\" checkCRC=\"1\" state=\"1\" restrictDeviceName=\"0\"></IGTLConnector>\n";
+  out
+    << " serverPort=\"" << this->Port
+    << "\" persistent=\"1\" checkCRC=\"1\" state=\"1\" restrictDeviceName=\"0\"></IGTLConnector>\n";
   std::map<std::string, std::string> transformIDs; // device → id in the file
   int models = 0;
   vtkROS2Scene* scene = this->GetScene();
@@ -625,12 +641,13 @@ int vtkROS2IGTLConnectorNode::WriteSlicerScene(const char* path)
     ++models;
     const std::string displayID = "vtkMRMLModelDisplayNode" + std::to_string(models);
     const double* color = model->GetColor();
-    out << " <ModelDisplay id=\"" << displayID << "\" name=\"ModelDisplay\" color=\"" << color[0] << " "
-        << color[1] << " " << color[2] << "\" visibility=\"true\"></ModelDisplay>\n";
+    out << " <ModelDisplay id=\"" << displayID << "\" name=\"ModelDisplay\" color=\"" << color[0]
+        << " " << color[1] << " " << color[2] << "\" visibility=\"true\"></ModelDisplay>\n";
     out << " <Model id=\"vtkMRMLModelNode" << models << "\" name=\""
         << xml_escape(MakeDeviceName(model->GetName() ? model->GetName() : ""))
         << "\" references=\"display:" << displayID << ";"
-        << (this->ModelsInWorld ? std::string() : "transform:" + transformID + ";") << "\"></Model>\n";
+        << (this->ModelsInWorld ? std::string() : "transform:" + transformID + ";")
+        << "\"></Model>\n";
   }
   out << "</MRML>\n";
   out.close();
@@ -712,7 +729,8 @@ std::string vtkROS2IGTLConnectorNode::vtkInternals::Device(const char* name)
   std::string device = vtkROS2IGTLConnectorNode::MakeDeviceName(full);
   if (device != full && this->Warned.insert(full).second)
   {
-    this->AddLog("node '" + full + "' is device '" + device + "' (OpenIGTLink names have 20 bytes)");
+    this->AddLog(
+      "node '" + full + "' is device '" + device + "' (OpenIGTLink names have 20 bytes)");
   }
   return device;
 }
@@ -726,7 +744,8 @@ std::string vtkROS2IGTLConnectorNode::MakeDeviceName(const std::string& nodeName
   }
   // Robot nodes are named "<robot>:<link>[:visualN]": the robot prefix goes first.
   const std::size_t colon = nodeName.find(':');
-  if (colon != std::string::npos && nodeName.size() - colon - 1 <= 20 && colon + 1 < nodeName.size())
+  if (colon != std::string::npos && nodeName.size() - colon - 1 <= 20 &&
+    colon + 1 < nodeName.size())
   {
     return nodeName.substr(colon + 1);
   }
@@ -737,7 +756,8 @@ std::string vtkROS2IGTLConnectorNode::MakeDeviceName(const std::string& nodeName
     hash = (hash ^ c) * 16777619u;
   }
   static const char* hex = "0123456789abcdef";
-  std::string device = nodeName.substr(colon != std::string::npos && colon + 1 < nodeName.size() ? colon + 1 : 0, 16);
+  std::string device =
+    nodeName.substr(colon != std::string::npos && colon + 1 < nodeName.size() ? colon + 1 : 0, 16);
   device += '~';
   for (int shift = 8; shift >= 0; shift -= 4)
   {
@@ -809,7 +829,8 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
       // Every spin: the newest pose replaces an unsent one in each peer's queue.
       transform->GetMatrixTransformToWorld(world);
       vtkMatrix4x4::Multiply4x4(this->WorldToSlicer, world, slicer);
-      this->Send(igtl::encode_transform(this->Device(transform->GetName()), to_array(slicer), now), false);
+      this->Send(
+        igtl::encode_transform(this->Device(transform->GetName()), to_array(slicer), now), false);
     }
     else if (auto* model = vtkROS2ModelNode::SafeDownCast(node))
     {
@@ -889,8 +910,9 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
         continue;
       }
       sentCount = count;
-      const std::string device = this->Device(
-        subscriber->GetName() && *subscriber->GetName() ? subscriber->GetName() : subscriber->GetTopic());
+      const std::string device =
+        this->Device(subscriber->GetName() && *subscriber->GetName() ? subscriber->GetName()
+                                                                     : subscriber->GetTopic());
       if (auto* strings = vtkROS2SubscriberStringNode::SafeDownCast(subscriber))
       {
         this->Send(igtl::encode_string(device, strings->GetLastMessage(), now), true);
@@ -960,8 +982,8 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
         while (vtkTransform* element = collection->GetNextItem())
         {
           igtl::TrackingItem item;
-          item.name = vtkROS2IGTLConnectorNode::MakeDeviceName(
-            device + "_" + std::to_string(items.size()));
+          item.name =
+            vtkROS2IGTLConnectorNode::MakeDeviceName(device + "_" + std::to_string(items.size()));
           vtkMatrix4x4::Multiply4x4(slicer, element->GetMatrix(), world);
           item.matrix = to_array(world);
           igtl::PointItem point;
@@ -969,7 +991,8 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
           point.group = "Selected";
           point.rgba = { { 255, 128, 128, 255 } }; // Slicer's default colour of a selected point
           point.position = { { static_cast<float>(world->GetElement(0, 3)),
-            static_cast<float>(world->GetElement(1, 3)), static_cast<float>(world->GetElement(2, 3)) } };
+            static_cast<float>(world->GetElement(1, 3)),
+            static_cast<float>(world->GetElement(2, 3)) } };
           points.push_back(point);
           items.push_back(item);
         }
@@ -1006,7 +1029,8 @@ void vtkROS2IGTLConnectorNode::vtkInternals::SendScene(vtkROS2IGTLConnectorNode*
           double pout[4];
           slicer->MultiplyPoint(pin, pout);
           mesh.points.insert(mesh.points.end(),
-            { static_cast<float>(pout[0]), static_cast<float>(pout[1]), static_cast<float>(pout[2]) });
+            { static_cast<float>(pout[0]), static_cast<float>(pout[1]),
+              static_cast<float>(pout[2]) });
           mesh.vertices.push_back({ static_cast<std::uint32_t>(p) });
         }
         this->Send(igtl::encode_polydata(device, mesh, now), true);
@@ -1066,17 +1090,20 @@ void vtkROS2IGTLConnectorNode::vtkInternals::Publish(vtkROS2IGTLConnectorNode* s
     {
       if (this->Warned.insert(device + ":tf").second)
       {
-        this->AddLog("'" + device + "' cannot go to tf: only a TRANSFORM, a POSITION or a TDATA "
+        this->AddLog("'" + device +
+          "' cannot go to tf: only a TRANSFORM, a POSITION or a TDATA "
           "element (mapped by its element name) is one transform");
       }
       return;
     }
     if (!route.broadcaster)
     {
-      route.broadcaster = rosNode->GetTf2BroadcasterNodeByParentChild(route.parent.c_str(), route.child.c_str());
+      route.broadcaster =
+        rosNode->GetTf2BroadcasterNodeByParentChild(route.parent.c_str(), route.child.c_str());
       if (!route.broadcaster)
       {
-        route.broadcaster = rosNode->CreateAndAddTf2BroadcasterNode(route.parent.c_str(), route.child.c_str());
+        route.broadcaster =
+          rosNode->CreateAndAddTf2BroadcasterNode(route.parent.c_str(), route.child.c_str());
       }
     }
     if (route.broadcaster)
@@ -1103,8 +1130,8 @@ void vtkROS2IGTLConnectorNode::vtkInternals::Publish(vtkROS2IGTLConnectorNode* s
   }
   // Any publisher class: the generic entry routes the value to its own Publish, or says why not.
   vtkROS2PublisherNode* publisher = route.publisher;
-  const bool published = text ? publisher->PublishValue(vtkVariant(*text)) > 0
-                              : publisher->PublishObject(value) > 0;
+  const bool published =
+    text ? publisher->PublishValue(vtkVariant(*text)) > 0 : publisher->PublishObject(value) > 0;
   if (!published && this->Warned.insert(device + ":type").second)
   {
     this->AddLog("'" + device + "' → " + route.topic + ": " + publisher->GetLastPublishError());

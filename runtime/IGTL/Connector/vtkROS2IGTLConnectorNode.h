@@ -72,7 +72,8 @@ public:
   int GetNumberOfClients() const;
   vtkTypeInt64 GetNumberOfMessagesSent() const;
   vtkTypeInt64 GetNumberOfMessagesReceived() const { return this->MessagesReceived; }
-  /// Messages dropped as malformed: header, size limit, CRC, v2 sections, or a body unfit for its type.
+  /// Messages dropped as malformed: header, size limit, CRC, v2 sections, or a body unfit for its
+  /// type.
   vtkTypeInt64 GetNumberOfBadMessages() const;
   vtkTypeInt64 GetNumberOfDroppedMessages() const;
   /// Recent events (connections, disconnections, bad input and why), newest last.
@@ -105,8 +106,8 @@ public:
   /// device's name and class instead of creating one, and keeps its parent, so the link TRANSFORMs
   /// and (with ModelsInWorld off) the link-local POLYDATA land in this hierarchy: the robot's
   /// models under their link transforms, each mesh sent once per connection (with ModelsInWorld
-  /// on, the models are written at the scene root, as their meshes are then baked). Returns the number
-  /// of models written, or -1 (GetLastError) when the file cannot be written.
+  /// on, the models are written at the scene root, as their meshes are then baked). Returns the
+  /// number of models written, or -1 (GetLastError) when the file cannot be written.
   int WriteSlicerScene(const char* path);
 
   /// Slicer → ROS. Device names are Slicer node names. `type` for a topic: a publisher short

@@ -38,8 +38,8 @@ Frame frame_of(::igtl::MessageBase* message, const char* type, const std::string
 void stamp(::igtl::MessageBase* message, const std::string& device, std::uint64_t timestamp)
 {
   message->SetDeviceName(device.substr(0, 20).c_str());
-  message->SetTimeStamp(static_cast<unsigned int>(timestamp >> 32),
-    static_cast<unsigned int>(timestamp & 0xffffffffu));
+  message->SetTimeStamp(
+    static_cast<unsigned int>(timestamp >> 32), static_cast<unsigned int>(timestamp & 0xffffffffu));
 }
 
 bool unpack(const Frame& frame, ::igtl::MessageBase* message, std::string& error)
@@ -163,8 +163,8 @@ Frame encode_string(const std::string& device, const std::string& text, std::uin
   return frame;
 }
 
-Frame encode_points(const std::string& device, const std::vector<PointItem>& points,
-  std::uint64_t timestamp)
+Frame encode_points(
+  const std::string& device, const std::vector<PointItem>& points, std::uint64_t timestamp)
 {
   ::igtl::PointMessage::Pointer message = ::igtl::PointMessage::New();
   stamp(message, device, timestamp);
@@ -184,8 +184,8 @@ Frame encode_points(const std::string& device, const std::vector<PointItem>& poi
   return frame;
 }
 
-Frame encode_tracking_data(const std::string& device, const std::vector<TrackingItem>& items,
-  std::uint64_t timestamp)
+Frame encode_tracking_data(
+  const std::string& device, const std::vector<TrackingItem>& items, std::uint64_t timestamp)
 {
   ::igtl::TrackingDataMessage::Pointer message = ::igtl::TrackingDataMessage::New();
   stamp(message, device, timestamp);
@@ -225,8 +225,8 @@ Frame encode_image(const std::string& device, const Image& image, std::uint64_t 
   to_igtl(centred, m);
   message->SetMatrix(m);
   message->AllocateScalars();
-  const std::size_t size = std::min<std::size_t>(image.data.size(),
-    static_cast<std::size_t>(message->GetImageSize()));
+  const std::size_t size =
+    std::min<std::size_t>(image.data.size(), static_cast<std::size_t>(message->GetImageSize()));
   std::memcpy(message->GetScalarPointer(), image.data.data(), size);
   message->Pack();
   Frame frame = frame_of(message, "IMAGE", device);
@@ -422,7 +422,9 @@ bool decode_image(const Frame& frame, Image& image, std::string& error)
   const int components = h[2];
   const int scalar = h[3];
   const bool big_endian = h[4] == 1;
-  auto u16 = [&](int at) { return (std::size_t(h[at]) << 8) | h[at + 1]; };
+  auto u16 = [&](int at) {
+    return (std::size_t(h[at]) << 8) | h[at + 1];
+  };
   const std::size_t si = u16(6), sj = u16(8), sk = u16(10);
   const std::size_t oi = u16(60), oj = u16(62), ok = u16(64); // sub-volume offset
   const std::size_t di = u16(66), dj = u16(68), dk = u16(70); // sub-volume size

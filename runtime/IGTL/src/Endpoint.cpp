@@ -115,8 +115,8 @@ bool Endpoint::start(const Options& options, std::string& error)
   }
   int one = 1;
   setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-  if (bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0 ||
-    listen(fd, 8) != 0 || !set_non_blocking(fd))
+  if (bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0 || listen(fd, 8) != 0 ||
+    !set_non_blocking(fd))
   {
     error = "cannot listen on " + options.host + ":" + std::to_string(options.port) + ": " +
       std::strerror(errno);
@@ -313,7 +313,8 @@ void Endpoint::poll(std::vector<Received>& received)
 bool Endpoint::read(Peer& peer, std::vector<Received>& received, std::string& error)
 {
   std::uint8_t buffer[65536];
-  for (int round = 0; round < 64; ++round) // bounded per poll: one flooding peer cannot starve the rest
+  for (int round = 0; round < 64;
+       ++round) // bounded per poll: one flooding peer cannot starve the rest
   {
     const ssize_t n = recv(peer.fd, buffer, sizeof(buffer), MSG_DONTWAIT);
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR))
@@ -322,7 +323,8 @@ bool Endpoint::read(Peer& peer, std::vector<Received>& received, std::string& er
     }
     if (n <= 0)
     {
-      error = n == 0 ? "disconnected" : std::string("connection lost (") + std::strerror(errno) + ")";
+      error =
+        n == 0 ? "disconnected" : std::string("connection lost (") + std::strerror(errno) + ")";
       if (peer.reader.buffered() > 0)
       {
         error += " in the middle of a message (" + std::to_string(peer.reader.buffered()) +

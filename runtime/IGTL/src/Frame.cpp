@@ -149,7 +149,8 @@ std::vector<std::uint8_t> encode_frame(const Frame& frame)
   igtl_header header;
   std::memset(&header, 0, sizeof(header));
   header.version = v2 ? 2 : 1;
-  std::memcpy(header.name, frame.type.data(), std::min<std::size_t>(frame.type.size(), IGTL_HEADER_TYPE_SIZE));
+  std::memcpy(header.name, frame.type.data(),
+    std::min<std::size_t>(frame.type.size(), IGTL_HEADER_TYPE_SIZE));
   std::memcpy(header.device_name, frame.device.data(),
     std::min<std::size_t>(frame.device.size(), IGTL_HEADER_NAME_SIZE)); // truncated to 20 bytes
   header.timestamp = frame.timestamp;
@@ -180,7 +181,8 @@ void FrameReader::feed(const std::uint8_t* data, std::size_t size)
   }
   else if (this->Offset > (1u << 20))
   {
-    this->Buffer.erase(this->Buffer.begin(), this->Buffer.begin() + static_cast<long>(this->Offset));
+    this->Buffer.erase(
+      this->Buffer.begin(), this->Buffer.begin() + static_cast<long>(this->Offset));
     this->Offset = 0;
   }
   this->Buffer.insert(this->Buffer.end(), data, data + size);

@@ -83,40 +83,63 @@ size_t align_up(size_t offset, size_t alignment)
   return (offset + alignment - 1) / alignment * alignment;
 }
 
-template <typename T>
+template<typename T>
 T& at(void* p)
 {
   return *static_cast<T*>(p);
 }
 
-template <typename T>
+template<typename T>
 const T& at(const void* p)
 {
   return *static_cast<const T*>(p);
 }
 
 /// Calls f(T{}) with the C++ type of a primitive field type (not string / message).
-template <typename F>
+template<typename F>
 void with_primitive(FieldType type, F&& f)
 {
   switch (type)
   {
-    case FieldType::Bool: f(bool{}); break;
+    case FieldType::Bool:
+      f(bool{});
+      break;
     case FieldType::Byte:
     case FieldType::Char:
-    case FieldType::UInt8: f(uint8_t{}); break;
-    case FieldType::Int8: f(int8_t{}); break;
-    case FieldType::Int16: f(int16_t{}); break;
-    case FieldType::UInt16: f(uint16_t{}); break;
-    case FieldType::Int32: f(int32_t{}); break;
-    case FieldType::UInt32: f(uint32_t{}); break;
-    case FieldType::Int64: f(int64_t{}); break;
-    case FieldType::UInt64: f(uint64_t{}); break;
-    case FieldType::Float32: f(float{}); break;
-    case FieldType::Float64: f(double{}); break;
+    case FieldType::UInt8:
+      f(uint8_t{});
+      break;
+    case FieldType::Int8:
+      f(int8_t{});
+      break;
+    case FieldType::Int16:
+      f(int16_t{});
+      break;
+    case FieldType::UInt16:
+      f(uint16_t{});
+      break;
+    case FieldType::Int32:
+      f(int32_t{});
+      break;
+    case FieldType::UInt32:
+      f(uint32_t{});
+      break;
+    case FieldType::Int64:
+      f(int64_t{});
+      break;
+    case FieldType::UInt64:
+      f(uint64_t{});
+      break;
+    case FieldType::Float32:
+      f(float{});
+      break;
+    case FieldType::Float64:
+      f(double{});
+      break;
     case FieldType::String:
     case FieldType::WString:
-    case FieldType::Message: break;
+    case FieldType::Message:
+      break;
   }
 }
 
@@ -165,10 +188,18 @@ void construct_element(const Element& e, void* p)
 {
   switch (e.type)
   {
-    case FieldType::Message: e.nested->construct(p); break;
-    case FieldType::String: new (p) std::string(); break;
-    case FieldType::WString: new (p) std::u16string(); break;
-    default: std::memset(p, 0, e.size); break;
+    case FieldType::Message:
+      e.nested->construct(p);
+      break;
+    case FieldType::String:
+      new (p) std::string();
+      break;
+    case FieldType::WString:
+      new (p) std::u16string();
+      break;
+    default:
+      std::memset(p, 0, e.size);
+      break;
   }
 }
 
@@ -178,10 +209,17 @@ void destroy_element(const Element& e, void* p)
   using std::u16string;
   switch (e.type)
   {
-    case FieldType::Message: e.nested->destroy(p); break;
-    case FieldType::String: static_cast<string*>(p)->~string(); break;
-    case FieldType::WString: static_cast<u16string*>(p)->~u16string(); break;
-    default: break;
+    case FieldType::Message:
+      e.nested->destroy(p);
+      break;
+    case FieldType::String:
+      static_cast<string*>(p)->~string();
+      break;
+    case FieldType::WString:
+      static_cast<u16string*>(p)->~u16string();
+      break;
+    default:
+      break;
   }
 }
 
@@ -189,10 +227,18 @@ void copy_element(const Element& e, const void* from, void* to)
 {
   switch (e.type)
   {
-    case FieldType::Message: e.nested->copy(from, to); break;
-    case FieldType::String: at<std::string>(to) = at<std::string>(from); break;
-    case FieldType::WString: at<std::u16string>(to) = at<std::u16string>(from); break;
-    default: std::memcpy(to, from, e.size); break;
+    case FieldType::Message:
+      e.nested->copy(from, to);
+      break;
+    case FieldType::String:
+      at<std::string>(to) = at<std::string>(from);
+      break;
+    case FieldType::WString:
+      at<std::u16string>(to) = at<std::u16string>(from);
+      break;
+    default:
+      std::memcpy(to, from, e.size);
+      break;
   }
 }
 
@@ -200,10 +246,14 @@ bool equal_element(const Element& e, const void* a, const void* b)
 {
   switch (e.type)
   {
-    case FieldType::Message: return e.nested->equal(a, b);
-    case FieldType::String: return at<std::string>(a) == at<std::string>(b);
-    case FieldType::WString: return at<std::u16string>(a) == at<std::u16string>(b);
-    default: break;
+    case FieldType::Message:
+      return e.nested->equal(a, b);
+    case FieldType::String:
+      return at<std::string>(a) == at<std::string>(b);
+    case FieldType::WString:
+      return at<std::u16string>(a) == at<std::u16string>(b);
+    default:
+      break;
   }
   bool same = false;
   with_primitive(e.type, [&](auto tag) {
@@ -217,18 +267,22 @@ size_t element_size(const Element& e, const void* p, size_t offset)
 {
   switch (e.type)
   {
-    case FieldType::Message: return e.nested->body_size(p, offset);
+    case FieldType::Message:
+      return e.nested->body_size(p, offset);
     case FieldType::String:
     {
       const size_t length = at<std::string>(p).size();
-      return align_up(offset, 4) + 4 + (e.string_bound ? std::min<size_t>(length, e.string_bound) : length) + 1;
+      return align_up(offset, 4) + 4 +
+        (e.string_bound ? std::min<size_t>(length, e.string_bound) : length) + 1;
     }
     case FieldType::WString:
     {
       const size_t length = at<std::u16string>(p).size();
-      return align_up(offset, 4) + 4 + 4 * (e.string_bound ? std::min<size_t>(length, e.string_bound) : length);
+      return align_up(offset, 4) + 4 +
+        4 * (e.string_bound ? std::min<size_t>(length, e.string_bound) : length);
     }
-    default: return align_up(offset, e.size) + e.size;
+    default:
+      return align_up(offset, e.size) + e.size;
   }
 }
 
@@ -236,20 +290,25 @@ void serialize_element(const Element& e, const void* p, CdrWriter& writer)
 {
   switch (e.type)
   {
-    case FieldType::Message: e.nested->serialize(p, writer); return;
+    case FieldType::Message:
+      e.nested->serialize(p, writer);
+      return;
     case FieldType::String:
     {
       const std::string& s = at<std::string>(p);
-      writer.write_string(e.string_bound && s.size() > e.string_bound ? s.substr(0, e.string_bound) : s);
+      writer.write_string(
+        e.string_bound && s.size() > e.string_bound ? s.substr(0, e.string_bound) : s);
       return;
     }
     case FieldType::WString:
     {
       const std::u16string& s = at<std::u16string>(p);
-      writer.write_wstring(e.string_bound && s.size() > e.string_bound ? s.substr(0, e.string_bound) : s);
+      writer.write_wstring(
+        e.string_bound && s.size() > e.string_bound ? s.substr(0, e.string_bound) : s);
       return;
     }
-    default: break;
+    default:
+      break;
   }
   with_primitive(e.type, [&](auto tag) {
     using T = decltype(tag);
@@ -261,10 +320,14 @@ bool deserialize_element(const Element& e, void* p, CdrReader& reader)
 {
   switch (e.type)
   {
-    case FieldType::Message: return e.nested->deserialize(p, reader);
-    case FieldType::String: return reader.read_string(at<std::string>(p), e.string_bound);
-    case FieldType::WString: return reader.read_wstring(at<std::u16string>(p), e.string_bound);
-    default: break;
+    case FieldType::Message:
+      return e.nested->deserialize(p, reader);
+    case FieldType::String:
+      return reader.read_string(at<std::string>(p), e.string_bound);
+    case FieldType::WString:
+      return reader.read_wstring(at<std::u16string>(p), e.string_bound);
+    default:
+      break;
   }
   bool ok = false;
   with_primitive(e.type, [&](auto tag) {
@@ -279,7 +342,8 @@ bool deserialize_element(const Element& e, void* p, CdrReader& reader)
 void container_reallocate(DynamicContainer& c, size_t count)
 {
   const Element& e = *c.element;
-  unsigned char* data = count ? static_cast<unsigned char*>(::operator new(count * e.size)) : nullptr;
+  unsigned char* data =
+    count ? static_cast<unsigned char*>(::operator new(count* e.size)) : nullptr;
   const size_t kept = std::min(count, c.count);
   if (is_primitive(e.type))
   {
@@ -359,12 +423,16 @@ void apply_scalar_default(const Element& e, const DefaultScalar& value, void* p)
 {
   switch (e.type)
   {
-    case FieldType::String: at<std::string>(p) = value.s; return;
+    case FieldType::String:
+      at<std::string>(p) = value.s;
+      return;
     case FieldType::WString:
       at<std::u16string>(p) = yaml_detail::utf32_to_utf16(yaml_detail::decode_utf8(value.s));
       return;
-    case FieldType::Message: return;
-    default: break;
+    case FieldType::Message:
+      return;
+    default:
+      break;
   }
   with_primitive(e.type, [&](auto tag) {
     using T = decltype(tag);
@@ -395,8 +463,10 @@ void DynamicType::construct(void* message) const
         apply_scalar_default(m.element, m.defaults[0], p);
       continue;
     }
-    DynamicContainer& c = *new (p) DynamicContainer{ &m.element, m.container == Container::Array, 0, nullptr };
-    const size_t count = m.container == Container::Array ? m.array_size : (m.has_default ? m.defaults.size() : 0);
+    DynamicContainer& c =
+      *new (p) DynamicContainer{ &m.element, m.container == Container::Array, 0, nullptr };
+    const size_t count =
+      m.container == Container::Array ? m.array_size : (m.has_default ? m.defaults.size() : 0);
     if (count)
       container_reallocate(c, count);
     if (m.has_default)
@@ -558,7 +628,8 @@ bool DynamicType::deserialize(void* message, CdrReader& reader) const
         minimum = m.element.nested->min_serialized_size;
       else if (is_primitive(m.element.type))
         minimum = m.element.size;
-      if (!reader.read_length(count, minimum, m.container == Container::BoundedSequence ? m.array_size : 0))
+      if (!reader.read_length(
+            count, minimum, m.container == Container::BoundedSequence ? m.array_size : 0))
         return false;
       if (count != c.count)
         container_reallocate(c, count);
@@ -588,7 +659,7 @@ bool DynamicType::deserialize(void* message, CdrReader& reader) const
 
 std::array<std::atomic<const DynamicType*>, kMaxDynamicTypes> g_slots{};
 
-template <size_t I>
+template<size_t I>
 void* slot_create()
 {
   const DynamicType* type = g_slots[I].load(std::memory_order_acquire);
@@ -597,7 +668,7 @@ void* slot_create()
   return message;
 }
 
-template <size_t I>
+template<size_t I>
 const MessageTypeSupport* slot_nested()
 {
   return &g_slots[I].load(std::memory_order_acquire)->table;
@@ -606,13 +677,13 @@ const MessageTypeSupport* slot_nested()
 using CreateFunction = void* (*)();
 using NestedFunction = const MessageTypeSupport* (*)();
 
-template <size_t... I>
+template<size_t... I>
 constexpr std::array<CreateFunction, sizeof...(I)> make_creates(std::index_sequence<I...>)
 {
   return { { &slot_create<I>... } };
 }
 
-template <size_t... I>
+template<size_t... I>
 constexpr std::array<NestedFunction, sizeof...(I)> make_nesteds(std::index_sequence<I...>)
 {
   return { { &slot_nested<I>... } };
@@ -686,7 +757,8 @@ std::string quoted(const std::string& text)
 
 bool is_identifier(const std::string& text, size_t max_length)
 {
-  if (text.empty() || text.size() > max_length || !std::isalpha(static_cast<unsigned char>(text[0])))
+  if (text.empty() || text.size() > max_length ||
+    !std::isalpha(static_cast<unsigned char>(text[0])))
     return false;
   for (char c : text)
   {
@@ -706,7 +778,8 @@ bool is_type_name(const std::string& text, size_t max_length)
   while (true)
   {
     const size_t slash = text.find('/', start);
-    const std::string part = text.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    const std::string part =
+      text.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
     if (!is_identifier(part, max_length))
       return false;
     ++parts;
@@ -737,20 +810,60 @@ bool primitive_of(uint8_t base, FieldType* type, size_t* size)
 {
   switch (base)
   {
-    case 2: *type = FieldType::Int8; *size = 1; return true;
-    case 3: *type = FieldType::UInt8; *size = 1; return true;
-    case 4: *type = FieldType::Int16; *size = 2; return true;
-    case 5: *type = FieldType::UInt16; *size = 2; return true;
-    case 6: *type = FieldType::Int32; *size = 4; return true;
-    case 7: *type = FieldType::UInt32; *size = 4; return true;
-    case 8: *type = FieldType::Int64; *size = 8; return true;
-    case 9: *type = FieldType::UInt64; *size = 8; return true;
-    case 10: *type = FieldType::Float32; *size = 4; return true;
-    case 11: *type = FieldType::Float64; *size = 8; return true;
-    case 13: *type = FieldType::Char; *size = 1; return true; // IDL char: one byte
-    case 15: *type = FieldType::Bool; *size = 1; return true;
-    case 16: *type = FieldType::Byte; *size = 1; return true;
-    default: return false;
+    case 2:
+      *type = FieldType::Int8;
+      *size = 1;
+      return true;
+    case 3:
+      *type = FieldType::UInt8;
+      *size = 1;
+      return true;
+    case 4:
+      *type = FieldType::Int16;
+      *size = 2;
+      return true;
+    case 5:
+      *type = FieldType::UInt16;
+      *size = 2;
+      return true;
+    case 6:
+      *type = FieldType::Int32;
+      *size = 4;
+      return true;
+    case 7:
+      *type = FieldType::UInt32;
+      *size = 4;
+      return true;
+    case 8:
+      *type = FieldType::Int64;
+      *size = 8;
+      return true;
+    case 9:
+      *type = FieldType::UInt64;
+      *size = 8;
+      return true;
+    case 10:
+      *type = FieldType::Float32;
+      *size = 4;
+      return true;
+    case 11:
+      *type = FieldType::Float64;
+      *size = 8;
+      return true;
+    case 13:
+      *type = FieldType::Char;
+      *size = 1;
+      return true; // IDL char: one byte
+    case 15:
+      *type = FieldType::Bool;
+      *size = 1;
+      return true;
+    case 16:
+      *type = FieldType::Byte;
+      *size = 1;
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -771,7 +884,9 @@ bool parse_scalar(FieldType type, const std::string& text, DefaultScalar& out)
   switch (type)
   {
     case FieldType::String:
-    case FieldType::WString: out.s = text; return true;
+    case FieldType::WString:
+      out.s = text;
+      return true;
     case FieldType::Bool:
       if (t == "True" || t == "true" || t == "1")
         out.b = true;
@@ -789,8 +904,10 @@ bool parse_scalar(FieldType type, const std::string& text, DefaultScalar& out)
       out.d = std::strtod(t.c_str(), &end);
       return end == t.c_str() + t.size();
     }
-    case FieldType::Message: return false;
-    default: break;
+    case FieldType::Message:
+      return false;
+    default:
+      break;
   }
   bool ok = false;
   with_primitive(type, [&](auto tag) {
@@ -838,12 +955,24 @@ bool parse_python_string(const std::string& text, size_t& i, std::string& out)
     c = text[i++];
     switch (c)
     {
-      case 'n': out += '\n'; break;
-      case 't': out += '\t'; break;
-      case 'r': out += '\r'; break;
-      case '\\': out += '\\'; break;
-      case '\'': out += '\''; break;
-      case '"': out += '"'; break;
+      case 'n':
+        out += '\n';
+        break;
+      case 't':
+        out += '\t';
+        break;
+      case 'r':
+        out += '\r';
+        break;
+      case '\\':
+        out += '\\';
+        break;
+      case '\'':
+        out += '\'';
+        break;
+      case '"':
+        out += '"';
+        break;
       case 'x':
       {
         if (i + 2 > text.size())
@@ -856,7 +985,8 @@ bool parse_python_string(const std::string& text, size_t& i, std::string& out)
         i += 2;
         break;
       }
-      default: return false;
+      default:
+        return false;
     }
   }
   if (i >= text.size())
@@ -867,8 +997,8 @@ bool parse_python_string(const std::string& text, size_t& i, std::string& out)
 
 /// A container default: "[1, 2, 3]", "['a', 'b']" (Python's str() of a list; rclpy serves
 /// tuples: "(False, True, False)", "(1,)").
-bool parse_list(FieldType type, const std::string& text, std::vector<DefaultScalar>& out,
-                uint64_t max_elements)
+bool parse_list(
+  FieldType type, const std::string& text, std::vector<DefaultScalar>& out, uint64_t max_elements)
 {
   const std::string t = trim(text);
   const bool list = t.size() >= 2 && t.front() == '[' && t.back() == ']';
@@ -896,7 +1026,8 @@ bool parse_list(FieldType type, const std::string& text, std::vector<DefaultScal
     else
     {
       const size_t comma = body.find(',', i);
-      const std::string item = body.substr(i, comma == std::string::npos ? std::string::npos : comma - i);
+      const std::string item =
+        body.substr(i, comma == std::string::npos ? std::string::npos : comma - i);
       if (!parse_scalar(type, item, value))
         return false;
       i = comma == std::string::npos ? body.size() : comma;
@@ -933,10 +1064,11 @@ struct Builder
   bool check_fields(const IndividualDescription& type)
   {
     if (type.fields.empty())
-      return fail("type " + quoted(type.type_name) + " has no fields (rosidl gives empty types one)");
+      return fail(
+        "type " + quoted(type.type_name) + " has no fields (rosidl gives empty types one)");
     if (type.fields.size() > limits.max_fields)
       return fail("type " + quoted(type.type_name) + " has " + std::to_string(type.fields.size()) +
-                  " fields (limit " + std::to_string(limits.max_fields) + ")");
+        " fields (limit " + std::to_string(limits.max_fields) + ")");
     std::set<std::string> names;
     for (const DescriptionField& field : type.fields)
     {
@@ -965,38 +1097,44 @@ struct Builder
       }
       FieldType element = FieldType::UInt8;
       size_t size = 0;
-      const bool known = base == kNestedType || base == 17 || base == 18 || base == kBoundedString ||
-        base == kBoundedWString || primitive_of(base, &element, &size);
+      const bool known = base == kNestedType || base == 17 || base == 18 ||
+        base == kBoundedString || base == kBoundedWString || primitive_of(base, &element, &size);
       if (!known || base > kBoundedWString)
         return fail(where + ": unknown or unsupported type id " + std::to_string(id) +
-                    " (long double, wchar and fixed strings are not ROS 2 .msg types)");
+          " (long double, wchar and fixed strings are not ROS 2 .msg types)");
       if (container == Container::Array || container == Container::BoundedSequence)
       {
         if (field.capacity == 0)
           return fail(where + ": an array or bounded sequence with capacity 0");
         if (container == Container::Array && field.capacity > limits.max_array_size)
-          return fail(where + ": array size " + std::to_string(field.capacity) + " exceeds the limit " +
-                      std::to_string(limits.max_array_size));
+          return fail(where + ": array size " + std::to_string(field.capacity) +
+            " exceeds the limit " + std::to_string(limits.max_array_size));
         if (field.capacity > std::numeric_limits<uint32_t>::max())
-          return fail(where + ": capacity " + std::to_string(field.capacity) + " does not fit a CDR length");
+          return fail(
+            where + ": capacity " + std::to_string(field.capacity) + " does not fit a CDR length");
       }
       else if (field.capacity != 0)
-        return fail(where + ": capacity " + std::to_string(field.capacity) + " on a field that is no array or bounded sequence");
+        return fail(where + ": capacity " + std::to_string(field.capacity) +
+          " on a field that is no array or bounded sequence");
       const bool bounded_string = base == kBoundedString || base == kBoundedWString;
-      if (bounded_string && (field.string_capacity == 0 || field.string_capacity >= std::numeric_limits<uint32_t>::max()))
-        return fail(where + ": bounded string with capacity " + std::to_string(field.string_capacity));
+      if (bounded_string &&
+        (field.string_capacity == 0 ||
+          field.string_capacity >= std::numeric_limits<uint32_t>::max()))
+        return fail(
+          where + ": bounded string with capacity " + std::to_string(field.string_capacity));
       if (!bounded_string && field.string_capacity != 0)
         return fail(where + ": string capacity on a field that is no bounded string");
       if (base == kNestedType)
       {
         if (by_name.find(field.nested_type_name) == by_name.end())
           return fail(where + ": its type " + quoted(field.nested_type_name) +
-                      " is missing from the referenced types");
+            " is missing from the referenced types");
       }
       else if (!field.nested_type_name.empty())
         return fail(where + ": a nested type name on a field that is not nested");
       if (field.default_value.size() > limits.max_default_value_length)
-        return fail(where + ": default value longer than " + std::to_string(limits.max_default_value_length) + " bytes");
+        return fail(where + ": default value longer than " +
+          std::to_string(limits.max_default_value_length) + " bytes");
       // Defaults are checked here, not only when the type is built: the hash leaves them out,
       // so a cached type of the same hash would otherwise let a malformed one through.
       if (!field.default_value.empty() && base != kNestedType)
@@ -1007,12 +1145,15 @@ struct Builder
           element = FieldType::WString;
         DefaultScalar scalar;
         std::vector<DefaultScalar> values;
-        const uint64_t room = container == Container::Sequence ? limits.max_default_elements : field.capacity;
-        const bool ok = container == Container::None ? parse_scalar(element, field.default_value, scalar)
-                                                     : parse_list(element, field.default_value, values, room);
+        const uint64_t room =
+          container == Container::Sequence ? limits.max_default_elements : field.capacity;
+        const bool ok = container == Container::None
+          ? parse_scalar(element, field.default_value, scalar)
+          : parse_list(element, field.default_value, values, room);
         if (!ok)
-          return fail(where + ": default value " + quoted(field.default_value) + " does not read as " +
-                      field_type_name(element) + (container == Container::None ? "" : " list"));
+          return fail(where + ": default value " + quoted(field.default_value) +
+            " does not read as " + field_type_name(element) +
+            (container == Container::None ? "" : " list"));
       }
     }
     return true;
@@ -1021,14 +1162,16 @@ struct Builder
   bool visit(const std::string& name, size_t level, std::vector<std::string>& path)
   {
     if (level > limits.max_depth)
-      return fail("nesting deeper than " + std::to_string(limits.max_depth) + " levels (" + quoted(name) + ")");
+      return fail("nesting deeper than " + std::to_string(limits.max_depth) + " levels (" +
+        quoted(name) + ")");
     int& s = state[name];
     if (s == 1)
     {
       std::string cycle;
       for (const std::string& step : path)
         cycle += step + " -> ";
-      return fail("the types refer to each other in a cycle: " + clip_for_message(cycle + name, 400));
+      return fail(
+        "the types refer to each other in a cycle: " + clip_for_message(cycle + name, 400));
     }
     if (s == 2)
       return true;
@@ -1039,7 +1182,8 @@ struct Builder
       return false;
     for (const DescriptionField& field : type.fields)
     {
-      if (field.type_id % kArrayOffset == kNestedType && !visit(field.nested_type_name, level + 1, path))
+      if (field.type_id % kArrayOffset == kNestedType &&
+        !visit(field.nested_type_name, level + 1, path))
         return false;
     }
     path.pop_back();
@@ -1061,7 +1205,8 @@ struct Builder
       pending.pop_back();
       for (const DescriptionField& field : by_name[current]->fields)
       {
-        if (field.type_id % kArrayOffset == kNestedType && seen.insert(field.nested_type_name).second)
+        if (field.type_id % kArrayOffset == kNestedType &&
+          seen.insert(field.nested_type_name).second)
           pending.push_back(field.nested_type_name);
       }
     }
@@ -1077,22 +1222,23 @@ void fill_description_table(DynamicType& type, const TypeDescriptionData& closur
   for (const IndividualDescription& referenced : closure.referenced)
     type.described.push_back(referenced);
   std::sort(type.described.begin() + 1, type.described.end(),
-            [](const IndividualDescription& a, const IndividualDescription& b) { return a.type_name < b.type_name; });
+    [](const IndividualDescription& a, const IndividualDescription& b) {
+      return a.type_name < b.type_name;
+    });
   for (const IndividualDescription& individual : type.described)
   {
     std::vector<TypeDescriptionField> fields;
     for (const DescriptionField& f : individual.fields)
     {
       fields.push_back({ f.name.c_str(), f.type_id, f.capacity, f.string_capacity,
-                         f.nested_type_name.c_str(), f.default_value.c_str() });
+        f.nested_type_name.c_str(), f.default_value.c_str() });
     }
     type.described_fields.push_back(std::move(fields));
   }
   for (size_t i = 0; i < type.described.size(); ++i)
   {
     type.described_tables.push_back({ type.described[i].type_name.c_str(),
-                                      static_cast<uint32_t>(type.described_fields[i].size()),
-                                      type.described_fields[i].data() });
+      static_cast<uint32_t>(type.described_fields[i].size()), type.described_fields[i].data() });
   }
   type.description_table.type = type.described_tables[0];
   type.description_table.referenced_count = static_cast<uint32_t>(type.described_tables.size() - 1);
@@ -1100,9 +1246,8 @@ void fill_description_table(DynamicType& type, const TypeDescriptionData& closur
 }
 
 /// Builds one type whose referenced types are built already (`built`). Registry locked.
-std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name, const std::string& hash,
-                                       const std::map<std::string, const DynamicType*>& built,
-                                       size_t slot)
+std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name,
+  const std::string& hash, const std::map<std::string, const DynamicType*>& built, size_t slot)
 {
   const IndividualDescription& source = *builder.by_name[name];
   auto type = std::make_unique<DynamicType>();
@@ -1175,28 +1320,32 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
       }
       else
       {
-        const uint64_t room = m.container == Container::Sequence ? builder.limits.max_default_elements
-                                                                 : m.array_size;
+        const uint64_t room =
+          m.container == Container::Sequence ? builder.limits.max_default_elements : m.array_size;
         ok = parse_list(e.type, field.default_value, m.defaults, room);
       }
       if (!ok)
       {
-        builder.fail(where + ": default value " + quoted(field.default_value) + " does not read as " +
-                     field_type_name(e.type) + (m.container == Container::None ? "" : " list"));
+        builder.fail(where + ": default value " + quoted(field.default_value) +
+          " does not read as " + field_type_name(e.type) +
+          (m.container == Container::None ? "" : " list"));
         return nullptr;
       }
     }
     // What one default message holds, to refuse descriptions whose default value alone is huge.
-    const uint64_t items = m.container == Container::Array ? m.array_size
+    const uint64_t items = m.container == Container::Array
+      ? m.array_size
       : (m.container == Container::None ? 1 : m.defaults.size());
     const uint64_t cost = items > std::numeric_limits<uint64_t>::max() / elements_per_item
-      ? std::numeric_limits<uint64_t>::max() : items * elements_per_item;
+      ? std::numeric_limits<uint64_t>::max()
+      : items * elements_per_item;
     default_elements = default_elements > std::numeric_limits<uint64_t>::max() - cost
-      ? std::numeric_limits<uint64_t>::max() : default_elements + cost;
+      ? std::numeric_limits<uint64_t>::max()
+      : default_elements + cost;
     if (default_elements > builder.limits.max_default_elements)
     {
       builder.fail(where + ": a default " + quoted(name) + " would hold more than " +
-                   std::to_string(builder.limits.max_default_elements) + " elements");
+        std::to_string(builder.limits.max_default_elements) + " elements");
       return nullptr;
     }
     // Layout.
@@ -1211,10 +1360,11 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
     uint64_t minimum = 0;
     if (m.container == Container::None)
       minimum = e.type == FieldType::Message ? e.nested->min_serialized_size
-        : (is_primitive(e.type) ? e.size : 4);
+                                             : (is_primitive(e.type) ? e.size : 4);
     else if (m.container == Container::Array)
       minimum = static_cast<uint64_t>(m.array_size) *
-        (e.type == FieldType::Message ? e.nested->min_serialized_size : (is_primitive(e.type) ? e.size : 4));
+        (e.type == FieldType::Message ? e.nested->min_serialized_size
+                                      : (is_primitive(e.type) ? e.size : 4));
     else
       minimum = 4;
     type->min_serialized_size = static_cast<size_t>(
@@ -1230,7 +1380,9 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
     info.name = m.name.c_str();
     info.type = m.element.type;
     info.container = m.container;
-    info.array_size = m.container == Container::Array || m.container == Container::BoundedSequence ? m.array_size : 0;
+    info.array_size = m.container == Container::Array || m.container == Container::BoundedSequence
+      ? m.array_size
+      : 0;
     info.string_bound = m.element.string_bound;
     info.offset = m.offset;
     info.nested = m.element.type == FieldType::Message ? kNested[m.element.nested->slot] : nullptr;
@@ -1271,9 +1423,7 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
 } // namespace
 
 const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& description,
-                                                     const std::string& expected_hash,
-                                                     std::string* error,
-                                                     const DynamicTypeLimits& limits)
+  const std::string& expected_hash, std::string* error, const DynamicTypeLimits& limits)
 {
   Builder builder{ description, limits, error, {}, {}, {}, {} };
   const std::string& main = description.type.type_name;
@@ -1285,7 +1435,7 @@ const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& 
   if (description.referenced.size() > limits.max_types)
   {
     builder.fail(std::to_string(description.referenced.size()) + " referenced types (limit " +
-                 std::to_string(limits.max_types) + ")");
+      std::to_string(limits.max_types) + ")");
     return nullptr;
   }
   builder.by_name[main] = &description.type;
@@ -1315,7 +1465,7 @@ const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& 
   if (!expected_hash.empty() && lower(expected_hash) != lower(hash))
   {
     builder.fail("its hash " + hash + " differs from the hash the publisher announces, " +
-                 clip_for_message(expected_hash, 80));
+      clip_for_message(expected_hash, 80));
     return nullptr;
   }
 
@@ -1331,7 +1481,8 @@ const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& 
   std::vector<std::unique_ptr<DynamicType>> fresh;
   for (const std::string& name : builder.order)
   {
-    const std::string own_hash = name == main ? hash : type_description_hash(builder.closure(name), error);
+    const std::string own_hash =
+      name == main ? hash : type_description_hash(builder.closure(name), error);
     if (own_hash.empty())
       return nullptr;
     auto existing = r.by_hash.find(own_hash);
@@ -1342,7 +1493,8 @@ const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& 
     }
     if (r.used_slots + fresh.size() >= kMaxDynamicTypes)
     {
-      builder.fail("this process holds " + std::to_string(kMaxDynamicTypes) + " runtime types already");
+      builder.fail(
+        "this process holds " + std::to_string(kMaxDynamicTypes) + " runtime types already");
       return nullptr;
     }
     auto type = build_one(builder, name, own_hash, built, r.used_slots + fresh.size());

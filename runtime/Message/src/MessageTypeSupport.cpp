@@ -49,22 +49,38 @@ const char* field_type_name(FieldType type)
 {
   switch (type)
   {
-    case FieldType::Bool: return "bool";
-    case FieldType::Byte: return "byte";
-    case FieldType::Char: return "char";
-    case FieldType::Int8: return "int8";
-    case FieldType::UInt8: return "uint8";
-    case FieldType::Int16: return "int16";
-    case FieldType::UInt16: return "uint16";
-    case FieldType::Int32: return "int32";
-    case FieldType::UInt32: return "uint32";
-    case FieldType::Int64: return "int64";
-    case FieldType::UInt64: return "uint64";
-    case FieldType::Float32: return "float32";
-    case FieldType::Float64: return "float64";
-    case FieldType::String: return "string";
-    case FieldType::WString: return "wstring";
-    case FieldType::Message: return "message";
+    case FieldType::Bool:
+      return "bool";
+    case FieldType::Byte:
+      return "byte";
+    case FieldType::Char:
+      return "char";
+    case FieldType::Int8:
+      return "int8";
+    case FieldType::UInt8:
+      return "uint8";
+    case FieldType::Int16:
+      return "int16";
+    case FieldType::UInt16:
+      return "uint16";
+    case FieldType::Int32:
+      return "int32";
+    case FieldType::UInt32:
+      return "uint32";
+    case FieldType::Int64:
+      return "int64";
+    case FieldType::UInt64:
+      return "uint64";
+    case FieldType::Float32:
+      return "float32";
+    case FieldType::Float64:
+      return "float64";
+    case FieldType::String:
+      return "string";
+    case FieldType::WString:
+      return "wstring";
+    case FieldType::Message:
+      return "message";
   }
   return "unknown";
 }
@@ -178,8 +194,8 @@ std::vector<std::string> registered_service_types()
   return names;
 }
 
-void serialize_message(const MessageTypeSupport& type, const void* message,
-                       std::vector<uint8_t>& buffer)
+void serialize_message(
+  const MessageTypeSupport& type, const void* message, std::vector<uint8_t>& buffer)
 {
   CdrWriter writer(buffer);
   writer.reserve(type.serialized_size(message));
@@ -187,7 +203,7 @@ void serialize_message(const MessageTypeSupport& type, const void* message,
 }
 
 bool deserialize_message(const MessageTypeSupport& type, const uint8_t* data, size_t size,
-                         void* message, std::string* error)
+  void* message, std::string* error)
 {
   CdrReader reader(data, size);
   const bool ok = reader.ok() && type.deserialize(message, reader) && reader.ok();

@@ -28,7 +28,7 @@ std::u16string utf32_to_utf16(const std::u32string& text);
 /// A string as the value of a block mapping at `indent`, in the style PyYAML picks.
 std::string format_scalar_string(const std::u32string& text, int indent);
 
-template <typename T>
+template<typename T>
 const T& at(const void* pointer)
 {
   return *static_cast<const T*>(pointer);

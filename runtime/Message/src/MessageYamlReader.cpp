@@ -33,8 +33,8 @@ bool is_plain(const YAML::Node& node)
 }
 
 /// Decimal or 0x-hexadecimal integer literal with an optional sign.
-bool parse_integer_literal(const std::string& text, bool& negative, unsigned long long& magnitude,
-                           bool& overflow)
+bool parse_integer_literal(
+  const std::string& text, bool& negative, unsigned long long& magnitude, bool& overflow)
 {
   size_t i = 0;
   negative = false;
@@ -77,8 +77,8 @@ bool parse_float_literal(const std::string& text, double& value, bool& overflow)
   }
   if (body == ".inf" || body == ".Inf" || body == ".INF")
   {
-    value = negative ? -std::numeric_limits<double>::infinity()
-                     : std::numeric_limits<double>::infinity();
+    value =
+      negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
     return true;
   }
   if (body == ".nan" || body == ".NaN" || body == ".NAN")
@@ -153,8 +153,8 @@ public:
 
   std::string error;
 
-  bool read_message(const MessageTypeSupport& type, const YAML::Node& node, void* message,
-                    const std::string& path)
+  bool read_message(
+    const MessageTypeSupport& type, const YAML::Node& node, void* message, const std::string& path)
   {
     if (!spend(path))
     {
@@ -179,8 +179,8 @@ public:
       const std::string field_path = path.empty() ? name : path + "." + name;
       if (!field)
       {
-        return fail(field_path, std::string("unknown field of ") + type.ros_type +
-                      " (fields: " + field_list(type) + ")");
+        return fail(field_path,
+          std::string("unknown field of ") + type.ros_type + " (fields: " + field_list(type) + ")");
       }
       if (!read_field(*field, entry.second, field_address(message, *field), field_path))
       {
@@ -205,8 +205,9 @@ private:
     {
       return true;
     }
-    return fail(path, "the YAML expands to more than " + std::to_string(budget_) +
-                  " values for its " + std::to_string(source_.size()) + " bytes (aliases?)");
+    return fail(path,
+      "the YAML expands to more than " + std::to_string(budget_) + " values for its " +
+        std::to_string(source_.size()) + " bytes (aliases?)");
   }
 
   /// The scalar's text, with yaml-cpp's blank single-quoted scalars repaired.
@@ -225,7 +226,8 @@ private:
     if (error.empty())
     {
       // `what` may quote the user's text; capped at a character boundary (issue 11.9).
-      error = clip_for_message((path.empty() ? std::string("<message>") : path) + ": " + what, 1000);
+      error =
+        clip_for_message((path.empty() ? std::string("<message>") : path) + ": " + what, 1000);
     }
     return false;
   }
@@ -255,8 +257,8 @@ private:
     return names.empty() ? "none" : names;
   }
 
-  bool read_field(const FieldInfo& field, const YAML::Node& node, void* value,
-                  const std::string& path)
+  bool read_field(
+    const FieldInfo& field, const YAML::Node& node, void* value, const std::string& path)
   {
     if (field.container == Container::None)
     {
@@ -269,13 +271,15 @@ private:
     const size_t count = node.size();
     if (field.container == Container::Array && count != field.array_size)
     {
-      return fail(path, "expected exactly " + std::to_string(field.array_size) +
-                    " elements, got " + std::to_string(count));
+      return fail(path,
+        "expected exactly " + std::to_string(field.array_size) + " elements, got " +
+          std::to_string(count));
     }
     if (field.container == Container::BoundedSequence && count > field.array_size)
     {
-      return fail(path, "at most " + std::to_string(field.array_size) + " elements allowed, got " +
-                    std::to_string(count));
+      return fail(path,
+        "at most " + std::to_string(field.array_size) + " elements allowed, got " +
+          std::to_string(count));
     }
     if (!field.resize(value, count))
     {
@@ -340,17 +344,17 @@ private:
     return "nothing (null)";
   }
 
-  template <typename T>
+  template<typename T>
   bool read_integer(const YAML::Node& node, void* value, const std::string& path)
   {
     bool negative = false;
     bool overflow = false;
     unsigned long long magnitude = 0;
     if (!node.IsScalar() || !is_plain(node) ||
-        !parse_integer_literal(node.Scalar(), negative, magnitude, overflow))
+      !parse_integer_literal(node.Scalar(), negative, magnitude, overflow))
     {
-      return fail(path, std::string("expected an integer (") + type_name_of<T>() + "), got " +
-                    describe(node));
+      return fail(path,
+        std::string("expected an integer (") + type_name_of<T>() + "), got " + describe(node));
     }
     using Limits = std::numeric_limits<T>;
     bool in_range = !overflow;
@@ -358,8 +362,7 @@ private:
     {
       // The magnitude of the most negative value is max + 1.
       in_range = magnitude == 0 ||
-        (Limits::is_signed &&
-         magnitude <= static_cast<unsigned long long>(Limits::max()) + 1ULL);
+        (Limits::is_signed && magnitude <= static_cast<unsigned long long>(Limits::max()) + 1ULL);
     }
     else if (in_range)
     {
@@ -383,16 +386,23 @@ private:
     return true;
   }
 
-  template <typename T>
+  template<typename T>
   static const char* type_name_of()
   {
-    if (std::is_same<T, int8_t>::value) return "int8";
-    if (std::is_same<T, uint8_t>::value) return "uint8";
-    if (std::is_same<T, int16_t>::value) return "int16";
-    if (std::is_same<T, uint16_t>::value) return "uint16";
-    if (std::is_same<T, int32_t>::value) return "int32";
-    if (std::is_same<T, uint32_t>::value) return "uint32";
-    if (std::is_same<T, int64_t>::value) return "int64";
+    if (std::is_same<T, int8_t>::value)
+      return "int8";
+    if (std::is_same<T, uint8_t>::value)
+      return "uint8";
+    if (std::is_same<T, int16_t>::value)
+      return "int16";
+    if (std::is_same<T, uint16_t>::value)
+      return "uint16";
+    if (std::is_same<T, int32_t>::value)
+      return "int32";
+    if (std::is_same<T, uint32_t>::value)
+      return "uint32";
+    if (std::is_same<T, int64_t>::value)
+      return "int64";
     return "uint64";
   }
 
@@ -400,15 +410,17 @@ private:
   {
     double parsed = 0.0;
     bool overflow = false;
-    if (!node.IsScalar() || !is_plain(node) || !parse_float_literal(node.Scalar(), parsed, overflow))
+    if (!node.IsScalar() || !is_plain(node) ||
+      !parse_float_literal(node.Scalar(), parsed, overflow))
     {
-      return fail(path, std::string("expected a number (") + field_type_name(type) + "), got " +
-                    describe(node));
+      return fail(path,
+        std::string("expected a number (") + field_type_name(type) + "), got " + describe(node));
     }
     if (type == FieldType::Float32)
     {
-      if (overflow || (std::isfinite(parsed) &&
-                       std::fabs(parsed) > static_cast<double>(std::numeric_limits<float>::max())))
+      if (overflow ||
+        (std::isfinite(parsed) &&
+          std::fabs(parsed) > static_cast<double>(std::numeric_limits<float>::max())))
       {
         return fail(path, node.Scalar() + " is out of range for float32");
       }
@@ -447,42 +459,55 @@ private:
         return true;
       }
     }
-    return fail(path, "expected a byte (one character U+0000..U+00FF or 0..255), got " +
-                  describe(node));
+    return fail(
+      path, "expected a byte (one character U+0000..U+00FF or 0..255), got " + describe(node));
   }
 
-  bool read_element(const FieldInfo& field, const YAML::Node& node, void* value,
-                    const std::string& path)
+  bool read_element(
+    const FieldInfo& field, const YAML::Node& node, void* value, const std::string& path)
   {
     switch (field.type)
     {
-      case FieldType::Bool: return read_bool(node, *static_cast<bool*>(value), path);
-      case FieldType::Byte: return read_byte(node, value, path);
+      case FieldType::Bool:
+        return read_bool(node, *static_cast<bool*>(value), path);
+      case FieldType::Byte:
+        return read_byte(node, value, path);
       case FieldType::Char:
-      case FieldType::UInt8: return read_integer<uint8_t>(node, value, path);
-      case FieldType::Int8: return read_integer<int8_t>(node, value, path);
-      case FieldType::Int16: return read_integer<int16_t>(node, value, path);
-      case FieldType::UInt16: return read_integer<uint16_t>(node, value, path);
-      case FieldType::Int32: return read_integer<int32_t>(node, value, path);
-      case FieldType::UInt32: return read_integer<uint32_t>(node, value, path);
-      case FieldType::Int64: return read_integer<int64_t>(node, value, path);
-      case FieldType::UInt64: return read_integer<uint64_t>(node, value, path);
+      case FieldType::UInt8:
+        return read_integer<uint8_t>(node, value, path);
+      case FieldType::Int8:
+        return read_integer<int8_t>(node, value, path);
+      case FieldType::Int16:
+        return read_integer<int16_t>(node, value, path);
+      case FieldType::UInt16:
+        return read_integer<uint16_t>(node, value, path);
+      case FieldType::Int32:
+        return read_integer<int32_t>(node, value, path);
+      case FieldType::UInt32:
+        return read_integer<uint32_t>(node, value, path);
+      case FieldType::Int64:
+        return read_integer<int64_t>(node, value, path);
+      case FieldType::UInt64:
+        return read_integer<uint64_t>(node, value, path);
       case FieldType::Float32:
-      case FieldType::Float64: return read_float(node, field.type, value, path);
+      case FieldType::Float64:
+        return read_float(node, field.type, value, path);
       case FieldType::String:
-      case FieldType::WString: return read_string(field, node, value, path);
-      case FieldType::Message: return read_message(*field.nested(), node, value, path);
+      case FieldType::WString:
+        return read_string(field, node, value, path);
+      case FieldType::Message:
+        return read_message(*field.nested(), node, value, path);
     }
     return fail(path, "unsupported field type");
   }
 
-  bool read_string(const FieldInfo& field, const YAML::Node& node, void* value,
-                   const std::string& path)
+  bool read_string(
+    const FieldInfo& field, const YAML::Node& node, void* value, const std::string& path)
   {
     if (!node.IsScalar())
     {
-      return fail(path, std::string("expected a ") + field_type_name(field.type) + ", got " +
-                    describe(node));
+      return fail(
+        path, std::string("expected a ") + field_type_name(field.type) + ", got " + describe(node));
     }
     std::string text = scalar(node);
     if (!spend(path, text.size()))
@@ -494,8 +519,9 @@ private:
     {
       if (field.string_bound != 0 && text.size() > field.string_bound)
       {
-        return fail(path, "string of " + std::to_string(text.size()) + " bytes exceeds its bound " +
-                      std::to_string(field.string_bound));
+        return fail(path,
+          "string of " + std::to_string(text.size()) + " bytes exceeds its bound " +
+            std::to_string(field.string_bound));
       }
       *static_cast<std::string*>(value) = text;
       return true;
@@ -503,8 +529,9 @@ private:
     const std::u16string wide = utf32_to_utf16(decode_utf8(text));
     if (field.string_bound != 0 && wide.size() > field.string_bound)
     {
-      return fail(path, "wstring of " + std::to_string(wide.size()) +
-                    " units exceeds its bound " + std::to_string(field.string_bound));
+      return fail(path,
+        "wstring of " + std::to_string(wide.size()) + " units exceeds its bound " +
+          std::to_string(field.string_bound));
     }
     *static_cast<std::u16string*>(value) = wide;
     return true;
@@ -525,8 +552,8 @@ namespace ros2vtk {
 namespace wire {
 using namespace yaml_detail; // the helpers shared by the YAML files (MessageYamlDetail.hpp)
 
-bool from_yaml(const MessageTypeSupport& type, const std::string& yaml, void* message,
-               std::string* error)
+bool from_yaml(
+  const MessageTypeSupport& type, const std::string& yaml, void* message, std::string* error)
 {
   std::string failure;
   try

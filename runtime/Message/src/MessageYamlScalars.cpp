@@ -97,7 +97,7 @@ ScalarAnalysis analyze_scalar(const std::u32string& s)
     {
       // allow_unicode=True: these are written as they are; everything else is escaped.
       const bool unicode = (ch == 0x85 || (ch >= 0xA0 && ch <= 0xD7FF) ||
-                            (ch >= 0xE000 && ch <= 0xFFFD) || (ch >= 0x10000 && ch < 0x10FFFF)) &&
+                             (ch >= 0xE000 && ch <= 0xFFFD) || (ch >= 0x10000 && ch < 0x10FFFF)) &&
         ch != 0xFEFF;
       if (!unicode)
       {
@@ -130,7 +130,7 @@ ScalarAnalysis analyze_scalar(const std::u32string& s)
   }
   result.multiline = line_breaks;
   if (leading_space || leading_break || trailing_space || trailing_break || line_breaks ||
-      block_indicators)
+    block_indicators)
   {
     result.allow_block_plain = false;
   }
@@ -236,8 +236,8 @@ std::string double_quoted(const std::u32string& text)
   std::string out = "\"";
   for (char32_t ch : text)
   {
-    const bool printable = (ch >= 0x20 && ch <= 0x7E) || (ch >= 0xA0 && ch <= 0xD7FF) ||
-      (ch >= 0xE000 && ch <= 0xFFFD);
+    const bool printable =
+      (ch >= 0x20 && ch <= 0x7E) || (ch >= 0xA0 && ch <= 0xD7FF) || (ch >= 0xE000 && ch <= 0xFFFD);
     const bool needs_escape = ch == U'"' || ch == U'\\' || ch == 0x85 || ch == 0x2028 ||
       ch == 0x2029 || ch == 0xFEFF || !printable;
     if (!needs_escape)
@@ -248,22 +248,53 @@ std::string double_quoted(const std::u32string& text)
     const char* short_escape = nullptr;
     switch (ch)
     {
-      case 0x00: short_escape = "\\0"; break;
-      case 0x07: short_escape = "\\a"; break;
-      case 0x08: short_escape = "\\b"; break;
-      case 0x09: short_escape = "\\t"; break;
-      case 0x0A: short_escape = "\\n"; break;
-      case 0x0B: short_escape = "\\v"; break;
-      case 0x0C: short_escape = "\\f"; break;
-      case 0x0D: short_escape = "\\r"; break;
-      case 0x1B: short_escape = "\\e"; break;
-      case U'"': short_escape = "\\\""; break;
-      case U'\\': short_escape = "\\\\"; break;
-      case 0x85: short_escape = "\\N"; break;
-      case 0xA0: short_escape = "\\_"; break;
-      case 0x2028: short_escape = "\\L"; break;
-      case 0x2029: short_escape = "\\P"; break;
-      default: break;
+      case 0x00:
+        short_escape = "\\0";
+        break;
+      case 0x07:
+        short_escape = "\\a";
+        break;
+      case 0x08:
+        short_escape = "\\b";
+        break;
+      case 0x09:
+        short_escape = "\\t";
+        break;
+      case 0x0A:
+        short_escape = "\\n";
+        break;
+      case 0x0B:
+        short_escape = "\\v";
+        break;
+      case 0x0C:
+        short_escape = "\\f";
+        break;
+      case 0x0D:
+        short_escape = "\\r";
+        break;
+      case 0x1B:
+        short_escape = "\\e";
+        break;
+      case U'"':
+        short_escape = "\\\"";
+        break;
+      case U'\\':
+        short_escape = "\\\\";
+        break;
+      case 0x85:
+        short_escape = "\\N";
+        break;
+      case 0xA0:
+        short_escape = "\\_";
+        break;
+      case 0x2028:
+        short_escape = "\\L";
+        break;
+      case 0x2029:
+        short_escape = "\\P";
+        break;
+      default:
+        break;
     }
     if (short_escape)
     {
@@ -346,7 +377,7 @@ std::string format_yaml_float(double value)
     text += digits.substr(0, 1) + "." + (count > 1 ? digits.substr(1) : std::string("0"));
     char exponent_text[16];
     std::snprintf(exponent_text, sizeof(exponent_text), "e%c%02d", exponent < 0 ? '-' : '+',
-                  std::abs(exponent));
+      std::abs(exponent));
     text += exponent_text;
   }
   else if (decimal_point <= 0)

@@ -122,7 +122,7 @@ std::u32string utf16_to_utf32(const std::u16string& text)
   {
     const char32_t unit = text[i];
     if (unit >= 0xD800 && unit <= 0xDBFF && i + 1 < text.size() && text[i + 1] >= 0xDC00 &&
-        text[i + 1] <= 0xDFFF)
+      text[i + 1] <= 0xDFFF)
     {
       out.push_back(0x10000 + ((unit - 0xD800) << 10) + (text[i + 1] - 0xDC00));
       ++i;

@@ -42,25 +42,38 @@ std::string format_scalar(FieldType type, const void* value, int indent)
 {
   switch (type)
   {
-    case FieldType::Bool: return at<bool>(value) ? "true" : "false";
+    case FieldType::Bool:
+      return at<bool>(value) ? "true" : "false";
     case FieldType::Byte:
       // rosidl_runtime_py turns bytes into ''.join(chr(b)): one character per byte.
       return format_scalar_string(std::u32string(1, at<uint8_t>(value)), indent);
     case FieldType::Char:
-    case FieldType::UInt8: return std::to_string(at<uint8_t>(value));
-    case FieldType::Int8: return std::to_string(at<int8_t>(value));
-    case FieldType::Int16: return std::to_string(at<int16_t>(value));
-    case FieldType::UInt16: return std::to_string(at<uint16_t>(value));
-    case FieldType::Int32: return std::to_string(at<int32_t>(value));
-    case FieldType::UInt32: return std::to_string(at<uint32_t>(value));
-    case FieldType::Int64: return std::to_string(at<int64_t>(value));
-    case FieldType::UInt64: return std::to_string(at<uint64_t>(value));
-    case FieldType::Float32: return format_yaml_float(static_cast<double>(at<float>(value)));
-    case FieldType::Float64: return format_yaml_float(at<double>(value));
-    case FieldType::String: return format_scalar_string(decode_utf8(at<std::string>(value)), indent);
+    case FieldType::UInt8:
+      return std::to_string(at<uint8_t>(value));
+    case FieldType::Int8:
+      return std::to_string(at<int8_t>(value));
+    case FieldType::Int16:
+      return std::to_string(at<int16_t>(value));
+    case FieldType::UInt16:
+      return std::to_string(at<uint16_t>(value));
+    case FieldType::Int32:
+      return std::to_string(at<int32_t>(value));
+    case FieldType::UInt32:
+      return std::to_string(at<uint32_t>(value));
+    case FieldType::Int64:
+      return std::to_string(at<int64_t>(value));
+    case FieldType::UInt64:
+      return std::to_string(at<uint64_t>(value));
+    case FieldType::Float32:
+      return format_yaml_float(static_cast<double>(at<float>(value)));
+    case FieldType::Float64:
+      return format_yaml_float(at<double>(value));
+    case FieldType::String:
+      return format_scalar_string(decode_utf8(at<std::string>(value)), indent);
     case FieldType::WString:
       return format_scalar_string(utf16_to_utf32(at<std::u16string>(value)), indent);
-    case FieldType::Message: break;
+    case FieldType::Message:
+      break;
   }
   return "";
 }
@@ -72,8 +85,8 @@ public:
 
   /// The fields of `message` as a block mapping at `indent`. When `inline_first`, the first
   /// key continues the current line (a `- ` sequence item).
-  void write_fields(const MessageTypeSupport& type, const void* message, int indent,
-                    bool inline_first)
+  void write_fields(
+    const MessageTypeSupport& type, const void* message, int indent, bool inline_first)
   {
     bool first = true;
     for (uint32_t i = 0; i < type.field_count; ++i)
@@ -132,14 +145,12 @@ private:
       }
       else
       {
-        text += ' ' + format_scalar(field.type, field.element(mutable_value, i), indent + 2) +
-          '\n';
+        text += ' ' + format_scalar(field.type, field.element(mutable_value, i), indent + 2) + '\n';
       }
     }
   }
 
-  void write_nested(const MessageTypeSupport& type, const void* message, int indent,
-                    bool as_item)
+  void write_nested(const MessageTypeSupport& type, const void* message, int indent, bool as_item)
   {
     if (visible_field_count(type) == 0)
     {

@@ -26,7 +26,10 @@ enum class Numbers
   Any    ///< names, booleans: counted, not parsed
 };
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool is_space(char c)
+{
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
 
 // A token as assimp's fast number parsers read it: signs, digits (and '.', 'e' for floats), all of
 // it consumed, finite. Hex, "nan" and locale forms are refused: assimp and strtod disagree on them.
@@ -43,8 +46,9 @@ bool is_number(const char* begin, const char* end, Numbers kind, long double* va
   static const std::array<bool, 256> float_chars = allowed_table("0123456789+-.eE");
   static const std::array<bool, 256> integer_chars = allowed_table("0123456789+-");
   static const std::array<bool, 256> index_chars = allowed_table("0123456789");
-  const std::array<bool, 256>& allowed =
-    kind == Numbers::Float ? float_chars : kind == Numbers::Integer ? integer_chars : index_chars;
+  const std::array<bool, 256>& allowed = kind == Numbers::Float ? float_chars
+    : kind == Numbers::Integer                                  ? integer_chars
+                                                                : index_chars;
   const std::ptrdiff_t length = end - begin;
   if (length > 64)
     return false;
@@ -57,7 +61,8 @@ bool is_number(const char* begin, const char* end, Numbers kind, long double* va
   }
   // Fast path: [sign] digits [. digits] with at least one digit and no exponent is what strtold
   // reads whole, and it is finite (at most 64 characters); a value is only needed for indices.
-  const char* p = begin + ((kind != Numbers::Index && length > 0 && (*begin == '+' || *begin == '-')) ? 1 : 0);
+  const char* p =
+    begin + ((kind != Numbers::Index && length > 0 && (*begin == '+' || *begin == '-')) ? 1 : 0);
   if (!exponent && p != end)
   {
     std::uint64_t integer = 0;
@@ -79,7 +84,8 @@ bool is_number(const char* begin, const char* end, Numbers kind, long double* va
     {
       if (kind == Numbers::Float)
         return true;
-      *value = (*begin == '-') ? -static_cast<long double>(integer) : static_cast<long double>(integer);
+      *value =
+        (*begin == '-') ? -static_cast<long double>(integer) : static_cast<long double>(integer);
       return kind == Numbers::Index ? *value < 2147483648.0L : std::fabs(*value) < 9.2e18L;
     }
   }
@@ -135,7 +141,8 @@ constexpr std::uint64_t kRequired = ~std::uint64_t(0); // attribute_count: no de
 // A count-like attribute: decimal digits only. Absent reads as `fallback`, or fails when the
 // fallback is kRequired (COLLADA requires count on arrays, accessors and primitives, and assimp
 // 5.2 crashes on an array without one: found by the mutation test).
-bool attribute_count(const tinyxml2::XMLElement* element, const char* name, std::uint64_t fallback, std::uint64_t* value)
+bool attribute_count(const tinyxml2::XMLElement* element, const char* name, std::uint64_t fallback,
+  std::uint64_t* value)
 {
   const char* text = element->Attribute(name);
   if (!text)
@@ -151,14 +158,15 @@ class Checker
 public:
   bool run(const tinyxml2::XMLElement* root)
   {
-    std::vector<const tinyxml2::XMLElement*> stack{root};
+    std::vector<const tinyxml2::XMLElement*> stack{ root };
     while (!stack.empty())
     {
       const tinyxml2::XMLElement* element = stack.back();
       stack.pop_back();
       if (!visit(element))
         return false;
-      for (const auto* child = element->LastChildElement(); child; child = child->PreviousSiblingElement())
+      for (const auto* child = element->LastChildElement(); child;
+           child = child->PreviousSiblingElement())
         stack.push_back(child);
     }
     return check_accessors();
@@ -176,18 +184,19 @@ private:
 
   bool fail(const tinyxml2::XMLElement* element, const std::string& why)
   {
-    problem = "line " + std::to_string(element->GetLineNum()) + ": <" + element->Name() + "> " + why;
+    problem =
+      "line " + std::to_string(element->GetLineNum()) + ": <" + element->Name() + "> " + why;
     return false;
   }
 
   bool visit(const tinyxml2::XMLElement* element)
   {
-    static const std::map<std::string, Numbers> arrays{
-      {"float_array", Numbers::Float}, {"int_array", Numbers::Integer}, {"bool_array", Numbers::Any},
-      {"Name_array", Numbers::Any},    {"IDREF_array", Numbers::Any},   {"SIDREF_array", Numbers::Any},
-      {"token_array", Numbers::Any}};
-    static const std::set<std::string> primitives{"triangles", "lines",     "polylist", "polygons",
-                                                  "linestrips", "tristrips", "trifans",  "vertex_weights"};
+    static const std::map<std::string, Numbers> arrays{ { "float_array", Numbers::Float },
+      { "int_array", Numbers::Integer }, { "bool_array", Numbers::Any },
+      { "Name_array", Numbers::Any }, { "IDREF_array", Numbers::Any },
+      { "SIDREF_array", Numbers::Any }, { "token_array", Numbers::Any } };
+    static const std::set<std::string> primitives{ "triangles", "lines", "polylist", "polygons",
+      "linestrips", "tristrips", "trifans", "vertex_weights" };
     const std::string name = element->Name();
     const auto array = arrays.find(name);
     if (array != arrays.end())
@@ -208,7 +217,8 @@ private:
     if (!attribute_count(element, "count", kRequired, &count))
       return fail(element, "has no count, or one that is not a number");
     if (count != tokens.count)
-      return fail(element, "announces " + std::to_string(count) + " values but holds " + std::to_string(tokens.count));
+      return fail(element,
+        "announces " + std::to_string(count) + " values but holds " + std::to_string(tokens.count));
     if (const char* id = element->Attribute("id"))
       array_sizes_[id] = count;
     return true;
@@ -216,9 +226,11 @@ private:
 
   bool visit_accessor(const tinyxml2::XMLElement* element)
   {
-    Accessor accessor{element, element->Attribute("source") ? element->Attribute("source") : "", 0, 1, 0};
-    if (!attribute_count(element, "count", kRequired, &accessor.count) || !attribute_count(element, "stride", 1, &accessor.stride) ||
-        !attribute_count(element, "offset", 0, &accessor.offset))
+    Accessor accessor{ element, element->Attribute("source") ? element->Attribute("source") : "", 0,
+      1, 0 };
+    if (!attribute_count(element, "count", kRequired, &accessor.count) ||
+      !attribute_count(element, "stride", 1, &accessor.stride) ||
+      !attribute_count(element, "offset", 0, &accessor.offset))
       return fail(element, "has no count, or a count, stride or offset that is not a number");
     accessors_.push_back(accessor);
     return true;
@@ -233,12 +245,14 @@ private:
         continue; // an external source: assimp does not follow it
       const auto array = array_sizes_.find(accessor.source.substr(1));
       if (array == array_sizes_.end())
-        return fail(accessor.element, "names the array '" + accessor.source + "', which the file does not hold");
+        return fail(accessor.element,
+          "names the array '" + accessor.source + "', which the file does not hold");
       const long double needed = static_cast<long double>(accessor.offset) +
-                                 static_cast<long double>(accessor.count) * static_cast<long double>(accessor.stride);
+        static_cast<long double>(accessor.count) * static_cast<long double>(accessor.stride);
       if (needed > static_cast<long double>(array->second))
-        return fail(accessor.element, "reads " + std::to_string(accessor.count) + " x " + std::to_string(accessor.stride) +
-                                        " values from '" + accessor.source + "', which holds " + std::to_string(array->second));
+        return fail(accessor.element,
+          "reads " + std::to_string(accessor.count) + " x " + std::to_string(accessor.stride) +
+            " values from '" + accessor.source + "', which holds " + std::to_string(array->second));
     }
     return true;
   }
@@ -249,7 +263,8 @@ private:
     if (!attribute_count(element, "count", kRequired, &count))
       return fail(element, "has no count, or one that is not a number");
     std::uint64_t stride = 1; // indices per vertex: the largest input offset + 1
-    for (const auto* input = element->FirstChildElement("input"); input; input = input->NextSiblingElement("input"))
+    for (const auto* input = element->FirstChildElement("input"); input;
+         input = input->NextSiblingElement("input"))
     {
       std::uint64_t offset = 0;
       if (!attribute_count(input, "offset", 0, &offset) || offset > 1000)
@@ -257,7 +272,8 @@ private:
       stride = std::max(stride, offset + 1);
     }
     const char* list_name = name == "vertex_weights" ? "v" : "p";
-    const bool one_list = name == "triangles" || name == "lines" || name == "polylist" || name == "vertex_weights";
+    const bool one_list =
+      name == "triangles" || name == "lines" || name == "polylist" || name == "vertex_weights";
     std::uint64_t lists = 0;
     Tokens indices;
     for (const auto* list = element->FirstChildElement(); list; list = list->NextSiblingElement())
@@ -271,8 +287,9 @@ private:
       if (!tokens.bad.empty())
         return fail(list, "holds '" + tokens.bad + "', which is not an index");
       if (tokens.count % stride != 0)
-        return fail(list, "holds " + std::to_string(tokens.count) + " indices, not a multiple of the " +
-                            std::to_string(stride) + " inputs");
+        return fail(list,
+          "holds " + std::to_string(tokens.count) + " indices, not a multiple of the " +
+            std::to_string(stride) + " inputs");
       indices.count += tokens.count;
     }
     if (one_list && lists > 1)
@@ -289,21 +306,24 @@ private:
       if (!sizes.bad.empty())
         return fail(vcount, "holds '" + sizes.bad + "', which is not a count");
       if (sizes.count != count)
-        return fail(element, "announces " + std::to_string(count) + " entries but its <vcount> holds " +
-                               std::to_string(sizes.count));
+        return fail(element,
+          "announces " + std::to_string(count) + " entries but its <vcount> holds " +
+            std::to_string(sizes.count));
       expected = sizes.sum * stride;
     }
     else if (lists != count)
     {
-      return fail(element, "announces " + std::to_string(count) + " index lists but holds " + std::to_string(lists));
+      return fail(element,
+        "announces " + std::to_string(count) + " index lists but holds " + std::to_string(lists));
     }
     else
     {
       return true;
     }
     if (static_cast<long double>(indices.count) != expected)
-      return fail(element, "holds " + std::to_string(indices.count) + " indices where its count and inputs announce " +
-                             std::to_string(static_cast<unsigned long long>(expected)));
+      return fail(element,
+        "holds " + std::to_string(indices.count) + " indices where its count and inputs announce " +
+          std::to_string(static_cast<unsigned long long>(expected)));
     return true;
   }
 
@@ -320,7 +340,7 @@ bool ColladaFileCheck::check(const std::string& path, std::string* error)
   {
     if (error)
       *error = "Collada file '" + path + "' is not well-formed XML: " +
-               (document.ErrorStr() ? std::string(document.ErrorStr()) : std::string("no root element"));
+        (document.ErrorStr() ? std::string(document.ErrorStr()) : std::string("no root element"));
     return false;
   }
   Checker checker;

@@ -8,7 +8,8 @@
 namespace ros2vtk {
 namespace robot {
 
-std::unique_ptr<JointStateKinematics> JointStateKinematics::from_urdf(const std::string& urdf_xml, std::string* error)
+std::unique_ptr<JointStateKinematics> JointStateKinematics::from_urdf(
+  const std::string& urdf_xml, std::string* error)
 {
   std::unique_ptr<KinematicTree> tree = KinematicTree::from_urdf(urdf_xml, error);
   if (!tree)
@@ -25,10 +26,12 @@ JointStateKinematics::JointStateKinematics(std::unique_ptr<KinematicTree> tree)
   this->reset();
 }
 
-double JointStateKinematics::clamp_into_limits(const JointInfo& joint, double value, bool* clamped) const
+double JointStateKinematics::clamp_into_limits(
+  const JointInfo& joint, double value, bool* clamped) const
 {
   double result = value;
-  const bool bounded = joint.type == JointInfo::Type::Revolute || joint.type == JointInfo::Type::Prismatic;
+  const bool bounded =
+    joint.type == JointInfo::Type::Revolute || joint.type == JointInfo::Type::Prismatic;
   if (bounded && joint.has_limits && joint.lower < joint.upper)
   {
     result = std::min(std::max(value, joint.lower), joint.upper);
@@ -50,7 +53,8 @@ void JointStateKinematics::reset()
   has_positions_ = false;
 }
 
-JointStateKinematics::SetResult JointStateKinematics::set_position(const std::string& joint, double value)
+JointStateKinematics::SetResult JointStateKinematics::set_position(
+  const std::string& joint, double value)
 {
   const JointInfo* info = tree_->joint(joint);
   if (!info)
@@ -104,8 +108,8 @@ double JointStateKinematics::position(const std::string& joint) const
   return info ? effective_position(*info) : std::numeric_limits<double>::quiet_NaN();
 }
 
-JointStateReport JointStateKinematics::apply_joint_state(const std::vector<std::string>& names,
-                                                         const std::vector<double>& positions)
+JointStateReport JointStateKinematics::apply_joint_state(
+  const std::vector<std::string>& names, const std::vector<double>& positions)
 {
   JointStateReport report;
   if (names.size() != positions.size())

@@ -40,7 +40,8 @@ JointInfo::Type to_type(int urdf_type)
 
 } // namespace
 
-std::unique_ptr<KinematicTree> KinematicTree::from_urdf(const std::string& urdf_xml, std::string* error)
+std::unique_ptr<KinematicTree> KinematicTree::from_urdf(
+  const std::string& urdf_xml, std::string* error)
 {
   if (urdf_xml.find_first_not_of(" \t\r\n") == std::string::npos)
   {
@@ -91,7 +92,8 @@ std::unique_ptr<KinematicTree> KinematicTree::from_urdf(const std::string& urdf_
     info.axis = Eigen::Vector3d(joint->axis.x, joint->axis.y, joint->axis.z);
     if (info.axis.norm() > 0)
       info.axis.normalize();
-    if (joint->limits && (info.type == JointInfo::Type::Revolute || info.type == JointInfo::Type::Prismatic))
+    if (joint->limits &&
+      (info.type == JointInfo::Type::Revolute || info.type == JointInfo::Type::Prismatic))
     {
       info.has_limits = true;
       info.lower = joint->limits->lower;
@@ -126,7 +128,7 @@ std::vector<std::string> KinematicTree::actuated_joints() const
   for (const auto& joint : joints_)
   {
     if (joint.is_moving() && joint.mimic_joint.empty() && joint.type != JointInfo::Type::Floating &&
-        joint.type != JointInfo::Type::Planar)
+      joint.type != JointInfo::Type::Planar)
       names.push_back(joint.name);
   }
   return names;
@@ -156,7 +158,8 @@ Eigen::Isometry3d joint_motion(const JointInfo& joint, double q)
   return motion;
 }
 
-std::vector<LinkTransform> KinematicTree::joint_transforms(const std::map<std::string, double>& positions) const
+std::vector<LinkTransform> KinematicTree::joint_transforms(
+  const std::map<std::string, double>& positions) const
 {
   auto position_of = [&](const JointInfo& joint) {
     const std::string& leader = joint.mimic_joint.empty() ? joint.name : joint.mimic_joint;
@@ -178,7 +181,8 @@ std::vector<LinkTransform> KinematicTree::joint_transforms(const std::map<std::s
   return result;
 }
 
-std::map<std::string, Eigen::Isometry3d> KinematicTree::link_poses(const std::map<std::string, double>& positions) const
+std::map<std::string, Eigen::Isometry3d> KinematicTree::link_poses(
+  const std::map<std::string, double>& positions) const
 {
   std::map<std::string, Eigen::Isometry3d> poses;
   poses[root_link_] = Eigen::Isometry3d::Identity();

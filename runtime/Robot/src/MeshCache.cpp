@@ -29,7 +29,7 @@ std::string MeshCache::key_of(const std::string& path, const std::array<double, 
   const auto size = std::filesystem::file_size(path, ec);
   char buffer[160];
   std::snprintf(buffer, sizeof(buffer), "|%lld|%llu|%.17g,%.17g,%.17g", time,
-                static_cast<unsigned long long>(ec ? 0 : size), scale[0], scale[1], scale[2]);
+    static_cast<unsigned long long>(ec ? 0 : size), scale[0], scale[1], scale[2]);
   return path + buffer;
 }
 

@@ -50,7 +50,8 @@ namespace {
 std::string lower_extension(const std::string& path)
 {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -99,7 +100,8 @@ vtkSmartPointer<vtkUnsignedCharArray> make_color_array(vtkIdType points)
   return colors;
 }
 
-void fill_color(vtkUnsignedCharArray* colors, vtkIdType from, vtkIdType to, const std::array<double, 4>& rgba)
+void fill_color(
+  vtkUnsignedCharArray* colors, vtkIdType from, vtkIdType to, const std::array<double, 4>& rgba)
 {
   for (vtkIdType i = from; i < to; ++i)
     for (int c = 0; c < 4; ++c)
@@ -133,9 +135,9 @@ bool finish(vtkPolyData* polydata, const std::string& path, MeshData* mesh, std:
   return true;
 }
 
-template <typename Reader>
+template<typename Reader>
 bool read_with_vtk(const std::string& path, const char* format, MeshData* mesh, std::string* error,
-                   vtkSmartPointer<vtkPolyData>* output)
+  vtkSmartPointer<vtkPolyData>* output)
 {
   vtkNew<Reader> reader;
   vtkNew<VtkMessageCollector> messages;
@@ -148,7 +150,7 @@ bool read_with_vtk(const std::string& path, const char* format, MeshData* mesh, 
   {
     if (error)
       *error = std::string("VTK's ") + format + " reader failed on '" + path + "'" +
-               (messages->errors.empty() ? std::string() : ": " + messages->summary());
+        (messages->errors.empty() ? std::string() : ": " + messages->summary());
     return false;
   }
   *output = reader->GetOutput();
@@ -188,7 +190,7 @@ bool check_binary_stl_size(const std::string& path, std::string* error)
   {
     if (error)
       *error = "STL file '" + path + "' is too short for a binary STL (" + std::to_string(got) +
-               " bytes) and is not ASCII STL";
+        " bytes) and is not ASCII STL";
     return false;
   }
   std::uint32_t count = 0;
@@ -197,8 +199,9 @@ bool check_binary_stl_size(const std::string& path, std::string* error)
   if (size < needed)
   {
     if (error)
-      *error = "STL file '" + path + "' is truncated: its header announces " + std::to_string(count) +
-               " triangles (" + std::to_string(needed) + " bytes) but the file has " + std::to_string(size) + " bytes";
+      *error = "STL file '" + path + "' is truncated: its header announces " +
+        std::to_string(count) + " triangles (" + std::to_string(needed) +
+        " bytes) but the file has " + std::to_string(size) + " bytes";
     return false;
   }
   return true;
@@ -216,18 +219,20 @@ bool load_stl(const std::string& path, MeshData* mesh, std::string* error)
 
 // ---- assimp -------------------------------------------------------------------------------
 
-bool material_diffuse(const aiScene* scene, unsigned index, std::array<double, 4>* rgba, std::vector<std::string>* textures)
+bool material_diffuse(const aiScene* scene, unsigned index, std::array<double, 4>* rgba,
+  std::vector<std::string>* textures)
 {
   if (index >= scene->mNumMaterials || !scene->mMaterials[index])
     return false;
   const aiMaterial* material = scene->mMaterials[index];
   aiString name;
   // assimp invents "DefaultMaterial" for meshes without one: that is not a colour of the file.
-  if (material->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME)
+  if (material->Get(AI_MATKEY_NAME, name) == AI_SUCCESS &&
+    std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME)
     return false;
   aiString texture;
   if (material->GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS && textures &&
-      std::find(textures->begin(), textures->end(), texture.C_Str()) == textures->end())
+    std::find(textures->begin(), textures->end(), texture.C_Str()) == textures->end())
     textures->push_back(texture.C_Str());
   aiColor4D diffuse;
   if (material->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) != AI_SUCCESS)
@@ -235,7 +240,8 @@ bool material_diffuse(const aiScene* scene, unsigned index, std::array<double, 4
   float opacity = 1.0f;
   if (material->Get(AI_MATKEY_OPACITY, opacity) != AI_SUCCESS)
     opacity = 1.0f;
-  *rgba = {{diffuse.r, diffuse.g, diffuse.b, std::clamp(static_cast<double>(diffuse.a * opacity), 0.0, 1.0)}};
+  *rgba = { { diffuse.r, diffuse.g, diffuse.b,
+    std::clamp(static_cast<double>(diffuse.a * opacity), 0.0, 1.0) } };
   return true;
 }
 
@@ -272,14 +278,14 @@ struct AssimpCollector
       const aiVector3D p = transform * mesh->mVertices[v];
       points->InsertNextPoint(p.x, p.y, p.z);
     }
-    std::array<double, 4> rgba{{1.0, 1.0, 1.0, 1.0}};
+    std::array<double, 4> rgba{ { 1.0, 1.0, 1.0, 1.0 } };
     const bool has_material_color = material_diffuse(scene, mesh->mMaterialIndex, &rgba, &textures);
     for (unsigned v = 0; v < mesh->mNumVertices; ++v)
     {
       if (mesh->HasVertexColors(0))
       {
         const aiColor4D& c = mesh->mColors[0][v];
-        point_colors.push_back({{c.r, c.g, c.b, c.a}});
+        point_colors.push_back({ { c.r, c.g, c.b, c.a } });
         point_colored.push_back(true);
       }
       else
@@ -317,9 +323,10 @@ bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* erro
   // coordinates as the link frame. Its <unit meter="…"> is applied (assimp scales the root node),
   // so a DAE in centimetres comes out in metres like RViz shows it.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-    importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  importer.SetPropertyInteger(
+    AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFile(path,
+    aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode)
   {
     if (error)
@@ -336,8 +343,10 @@ bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* erro
   polydata->SetPolys(collector.triangles);
   const auto& colors = collector.point_colors;
   std::set<std::array<double, 4>> distinct(colors.begin(), colors.end());
-  const bool all_colored = std::all_of(collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
-  const bool any_colored = std::any_of(collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
+  const bool all_colored = std::all_of(
+    collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
+  const bool any_colored = std::any_of(
+    collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
   if (any_colored && all_colored && distinct.size() == 1)
   {
     mesh->has_color = true;
@@ -371,26 +380,31 @@ bool check_mesh_file(const std::string& path, const std::string& extension, std:
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    return fail("cannot be opened: " + std::string(errno ? std::strerror(errno) : "unknown reason"));
+    return fail(
+      "cannot be opened: " + std::string(errno ? std::strerror(errno) : "unknown reason"));
   char head[64] = {};
   in.read(head, sizeof(head));
   const std::streamsize got = in.gcount();
   if (in.bad())
     return fail("cannot be read: " + std::string(errno ? std::strerror(errno) : "read error"));
   std::string format = extension.empty() ? std::string("mesh") : extension.substr(1);
-  std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  std::transform(format.begin(), format.end(), format.begin(),
+    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   if (got == 0)
     return fail("is empty (0 bytes), so it holds no " + format + " mesh");
   const std::string lfs_pointer = "version https://git-lfs.github.com/spec/";
   if (std::string(head, static_cast<size_t>(got)).compare(0, lfs_pointer.size(), lfs_pointer) == 0)
     return fail("is a Git LFS pointer, not the " + format +
-                " mesh itself: the repository was cloned without git-lfs (run `git lfs pull` in it)");
+      " mesh itself: the repository was cloned without git-lfs (run `git lfs pull` in it)");
   return true;
 }
 
 } // namespace
 
-std::vector<std::string> MeshLoader::vtk_extensions() { return {".stl"}; }
+std::vector<std::string> MeshLoader::vtk_extensions()
+{
+  return { ".stl" };
+}
 
 bool MeshLoader::assimp_reads(const std::string& extension)
 {
@@ -407,8 +421,9 @@ bool MeshLoader::load(const std::string& path, MeshData* mesh, std::string* erro
   if (extension.empty())
   {
     if (error)
-      *error = "mesh file '" + path + "' has no file extension, so its format is unknown (STL, PLY, OBJ, Collada "
-               ".dae, glTF/GLB and the other formats assimp reads are chosen by extension)";
+      *error = "mesh file '" + path +
+        "' has no file extension, so its format is unknown (STL, PLY, OBJ, Collada "
+        ".dae, glTF/GLB and the other formats assimp reads are chosen by extension)";
     return false;
   }
   if (!check_mesh_file(path, extension, error))
@@ -423,8 +438,9 @@ bool MeshLoader::load(const std::string& path, MeshData* mesh, std::string* erro
     {
       if (error)
         *error = "mesh file '" + path + "': the format '" + extension +
-                 "' is not supported (STL through VTK; PLY, OBJ, Collada .dae, glTF/GLB and the other formats "
-                 "assimp reads)";
+          "' is not supported (STL through VTK; PLY, OBJ, Collada .dae, glTF/GLB and the other "
+          "formats "
+          "assimp reads)";
       return false;
     }
     if (extension == ".dae" && !ColladaFileCheck::check(path, error))

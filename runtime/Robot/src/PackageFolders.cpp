@@ -22,7 +22,7 @@ constexpr std::uintmax_t kMaxPackageXmlBytes = 1u << 20;
 
 bool has_ignore_marker(const fs::path& folder)
 {
-  for (const char* marker : {"COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE"})
+  for (const char* marker : { "COLCON_IGNORE", "CATKIN_IGNORE", "AMENT_IGNORE" })
     if (fs::exists(folder / marker))
       return true;
   return false;
@@ -62,7 +62,8 @@ std::string package_xml_name(const fs::path& folder)
 {
   const fs::path package_xml = folder / "package.xml";
   std::error_code ec;
-  if (!fs::is_regular_file(package_xml, ec) || fs::file_size(package_xml, ec) > kMaxPackageXmlBytes || ec)
+  if (!fs::is_regular_file(package_xml, ec) ||
+    fs::file_size(package_xml, ec) > kMaxPackageXmlBytes || ec)
     return {};
   std::ifstream in(package_xml);
   std::stringstream text;
@@ -91,7 +92,7 @@ PackageTree crawl_for_packages(const std::string& folder)
   int visited = 0;
   // Breadth-first, like rospack's crawl: a folder with a package.xml is a package and is not
   // searched further (packages do not nest).
-  std::vector<std::pair<fs::path, int>> queue{{fs::path(folder), 0}};
+  std::vector<std::pair<fs::path, int>> queue{ { fs::path(folder), 0 } };
   for (size_t next = 0; next < queue.size() && visited < kMaxCrawledFolders; ++next)
   {
     const fs::path current = queue[next].first;
@@ -118,7 +119,8 @@ PackageTree crawl_for_packages(const std::string& folder)
   return tree;
 }
 
-PackagesAboveFile::PackagesAboveFile(const std::string& file) : file_(file)
+PackagesAboveFile::PackagesAboveFile(const std::string& file)
+  : file_(file)
 {
   std::error_code ec;
   fs::path folder = fs::absolute(fs::path(file), ec).parent_path();
@@ -127,7 +129,7 @@ PackagesAboveFile::PackagesAboveFile(const std::string& file) : file_(file)
   while (!folder.empty())
   {
     if (has_package_xml(folder))
-      packages_.push_back({normalised(folder).string(), package_xml_name(folder)});
+      packages_.push_back({ normalised(folder).string(), package_xml_name(folder) });
     if (folder == folder.root_path() || folder.parent_path() == folder)
       break;
     folder = folder.parent_path();
@@ -145,7 +147,10 @@ std::string PackagesAboveFile::find(const std::string& name) const
   return {};
 }
 
-std::string PackagesAboveFile::nearest() const { return packages_.empty() ? std::string() : packages_.front().folder; }
+std::string PackagesAboveFile::nearest() const
+{
+  return packages_.empty() ? std::string() : packages_.front().folder;
+}
 
 std::vector<std::string> PackagesAboveFile::folders() const
 {

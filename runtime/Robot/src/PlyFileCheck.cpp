@@ -35,13 +35,14 @@ struct PlyType
 
 const std::map<std::string, PlyType>& ply_types()
 {
-  static const std::map<std::string, PlyType> types{
-    {"char", {1, true, true}},     {"int8", {1, true, true}},     {"uchar", {1, true, false}},
-    {"uint8", {1, true, false}},   {"short", {2, true, true}},    {"int16", {2, true, true}},
-    {"ushort", {2, true, false}},  {"uint16", {2, true, false}},  {"int", {4, true, true}},
-    {"int32", {4, true, true}},    {"uint", {4, true, false}},    {"uint32", {4, true, false}},
-    {"float", {4, false, true}},   {"float32", {4, false, true}}, {"double", {8, false, true}},
-    {"float64", {8, false, true}}};
+  static const std::map<std::string, PlyType> types{ { "char", { 1, true, true } },
+    { "int8", { 1, true, true } }, { "uchar", { 1, true, false } }, { "uint8", { 1, true, false } },
+    { "short", { 2, true, true } }, { "int16", { 2, true, true } },
+    { "ushort", { 2, true, false } }, { "uint16", { 2, true, false } },
+    { "int", { 4, true, true } }, { "int32", { 4, true, true } }, { "uint", { 4, true, false } },
+    { "uint32", { 4, true, false } }, { "float", { 4, false, true } },
+    { "float32", { 4, false, true } }, { "double", { 8, false, true } },
+    { "float64", { 8, false, true } } };
   return types;
 }
 
@@ -49,8 +50,8 @@ struct PlyProperty
 {
   std::string name;
   bool list = false;
-  PlyType count_type{0, true, false}; ///< lists only
-  PlyType value_type{0, true, false};
+  PlyType count_type{ 0, true, false }; ///< lists only
+  PlyType value_type{ 0, true, false };
   bool vertex_index = false; ///< a face's vertex_indices list: values must name a vertex
 };
 
@@ -123,17 +124,20 @@ bool parse_header(const std::string& bytes, PlyHeader* header, std::string* why)
     }
     if (keyword == "format")
     {
-      static const std::map<std::string, PlyFormat> formats{{"ascii", PlyFormat::Ascii},
-                                                            {"binary_little_endian", PlyFormat::BinaryLittleEndian},
-                                                            {"binary_big_endian", PlyFormat::BinaryBigEndian}};
+      static const std::map<std::string, PlyFormat> formats{ { "ascii", PlyFormat::Ascii },
+        { "binary_little_endian", PlyFormat::BinaryLittleEndian },
+        { "binary_big_endian", PlyFormat::BinaryBigEndian } };
       if (rest.size() != 2 || formats.count(rest[0]) == 0)
-        return *why = at + "expected 'format ascii|binary_little_endian|binary_big_endian <version>'", false;
+        return *why =
+                 at + "expected 'format ascii|binary_little_endian|binary_big_endian <version>'",
+               false;
       header->format = formats.at(rest[0]);
       has_format = true;
     }
     else if (keyword == "element")
     {
-      if (rest.size() != 2 || rest[1].find_first_not_of("0123456789") != std::string::npos || rest[1].size() > 12)
+      if (rest.size() != 2 || rest[1].find_first_not_of("0123456789") != std::string::npos ||
+        rest[1].size() > 12)
         return *why = at + "expected 'element <name> <count>'", false;
       if (face_needs_indices)
         return *why = at + kNoIndices, false;
@@ -143,8 +147,8 @@ bool parse_header(const std::string& bytes, PlyHeader* header, std::string* why)
       // Every record takes at least one byte, so a count beyond the file size is a lie that
       // a reader would trust with its allocations.
       if (element.count > bytes.size())
-        return *why = at + "the element '" + element.name + "' announces " + rest[1] + " records, more than a " +
-                      std::to_string(bytes.size()) + "-byte file can hold",
+        return *why = at + "the element '" + element.name + "' announces " + rest[1] +
+                 " records, more than a " + std::to_string(bytes.size()) + "-byte file can hold",
                false;
       if (element.name == "vertex")
         header->vertices = element.count;
@@ -155,9 +159,12 @@ bool parse_header(const std::string& bytes, PlyHeader* header, std::string* why)
     {
       const auto& types = ply_types();
       const bool scalar = rest.size() == 2 && types.count(rest[0]);
-      const bool list = rest.size() == 4 && rest[0] == "list" && types.count(rest[1]) && types.count(rest[2]);
+      const bool list =
+        rest.size() == 4 && rest[0] == "list" && types.count(rest[1]) && types.count(rest[2]);
       if (header->elements.empty() || !(scalar || list))
-        return *why = at + "expected 'property <type> <name>' or 'property list <type> <type> <name>' after an element",
+        return *why = at +
+                 "expected 'property <type> <name>' or 'property list <type> <type> <name>' after "
+                 "an element",
                false;
       PlyElement& element = header->elements.back();
       PlyProperty property;
@@ -171,12 +178,14 @@ bool parse_header(const std::string& bytes, PlyHeader* header, std::string* why)
           return *why = at + "a list count of type '" + rest[1] + "' (counts are integers)", false;
       }
       // Faces are read through a list named vertex_indices (or vertex_index).
-      if (element.name == "vertex" && scalar && (property.name == "x" || property.name == "y" || property.name == "z"))
+      if (element.name == "vertex" && scalar &&
+        (property.name == "x" || property.name == "y" || property.name == "z"))
         vertex_axes.insert(property.name);
       if (list && (property.name == "vertex_indices" || property.name == "vertex_index"))
       {
         if (!property.value_type.integer)
-          return *why = at + "vertex indices of type '" + rest[2] + "' (indices are integers)", false;
+          return *why = at + "vertex indices of type '" + rest[2] + "' (indices are integers)",
+                 false;
         property.vertex_index = true;
         if (element.name == "face")
           face_needs_indices = false;
@@ -199,7 +208,8 @@ bool in_range(const PlyType& type, long double value)
     return type.bytes == 8 || std::fabs(value) <= std::numeric_limits<float>::max();
   const int bits = type.bytes * 8;
   const long double low = type.is_signed ? -std::ldexp(1.0L, bits - 1) : 0.0L;
-  const long double high = type.is_signed ? std::ldexp(1.0L, bits - 1) - 1 : std::ldexp(1.0L, bits) - 1;
+  const long double high =
+    type.is_signed ? std::ldexp(1.0L, bits - 1) - 1 : std::ldexp(1.0L, bits) - 1;
   return value >= low && value <= high;
 }
 
@@ -221,8 +231,8 @@ bool parse_ascii_value(const std::string& token, const PlyType& type, long doubl
   return in_range(type, *value);
 }
 
-bool read_binary_value(const std::string& bytes, std::size_t* pos, const PlyType& type, bool big_endian,
-                       long double* value)
+bool read_binary_value(const std::string& bytes, std::size_t* pos, const PlyType& type,
+  bool big_endian, long double* value)
 {
   const auto size = static_cast<std::size_t>(type.bytes);
   if (bytes.size() - *pos < size)
@@ -282,8 +292,8 @@ bool check_ascii_body(const std::string& bytes, const PlyHeader& header, std::st
     {
       const std::string at = "line " + std::to_string(number) + ": ";
       if (pos >= bytes.size())
-        return *why = "the body ends after " + std::to_string(record) + " of " + std::to_string(element.count) +
-                      " '" + element.name + "' records",
+        return *why = "the body ends after " + std::to_string(record) + " of " +
+                 std::to_string(element.count) + " '" + element.name + "' records",
                false;
       const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
       std::istringstream words(bytes.substr(pos, end - pos));
@@ -298,7 +308,8 @@ bool check_ascii_body(const std::string& bytes, const PlyHeader& header, std::st
         std::uint64_t values = 1;
         if (property.list)
         {
-          if (next >= tokens.size() || !parse_ascii_value(tokens[next], property.count_type, &value) || value < 0)
+          if (next >= tokens.size() ||
+            !parse_ascii_value(tokens[next], property.count_type, &value) || value < 0)
             return *why = at + "the list '" + property.name + "' has no valid count", false;
           if (property.vertex_index && value < 1)
             return *why = at + kEmptyFace, false;
@@ -306,28 +317,31 @@ bool check_ascii_body(const std::string& bytes, const PlyHeader& header, std::st
           ++next;
         }
         if (values > tokens.size() - next)
-          return *why = at + std::to_string(tokens.size()) + " values, fewer than the header announces for a '" +
-                        element.name + "' record",
+          return *why = at + std::to_string(tokens.size()) +
+                   " values, fewer than the header announces for a '" + element.name + "' record",
                  false;
         for (std::uint64_t k = 0; k < values; ++k, ++next)
         {
           if (!parse_ascii_value(tokens[next], property.value_type, &value))
-            return *why = at + "the value '" + tokens[next].substr(0, 32) + "' of '" + property.name +
-                          "' is not a number of its type",
+            return *why = at + "the value '" + tokens[next].substr(0, 32) + "' of '" +
+                     property.name + "' is not a number of its type",
                    false;
-          const std::string index_problem = property.vertex_index ? vertex_index_problem(value, header.vertices) : "";
+          const std::string index_problem =
+            property.vertex_index ? vertex_index_problem(value, header.vertices) : "";
           if (!index_problem.empty())
             return *why = at + index_problem, false;
         }
       }
       if (next != tokens.size())
         return *why = at + std::to_string(tokens.size()) + " values where the header announces " +
-                      std::to_string(next) + " for a '" + element.name + "' record",
+                 std::to_string(next) + " for a '" + element.name + "' record",
                false;
     }
   }
   if (bytes.find_first_not_of(" \t\r\n", std::min(pos, bytes.size())) != std::string::npos)
-    return *why = "line " + std::to_string(number) + ": data after the last record the header announces", false;
+    return *why =
+             "line " + std::to_string(number) + ": data after the last record the header announces",
+           false;
   return true;
 }
 
@@ -340,8 +354,8 @@ bool check_binary_body(const std::string& bytes, const PlyHeader& header, std::s
     for (std::uint64_t record = 0; record < element.count; ++record)
     {
       const std::string at = "byte " + std::to_string(pos) + ": ";
-      const std::string ends = "the body ends inside '" + element.name + "' record " + std::to_string(record) +
-                               " of " + std::to_string(element.count);
+      const std::string ends = "the body ends inside '" + element.name + "' record " +
+        std::to_string(record) + " of " + std::to_string(element.count);
       long double value = 0;
       for (const PlyProperty& property : element.properties)
       {
@@ -362,7 +376,8 @@ bool check_binary_body(const std::string& bytes, const PlyHeader& header, std::s
         for (std::uint64_t k = 0; k < values; ++k)
         {
           read_binary_value(bytes, &pos, property.value_type, big_endian, &value);
-          const std::string index_problem = property.vertex_index ? vertex_index_problem(value, header.vertices) : "";
+          const std::string index_problem =
+            property.vertex_index ? vertex_index_problem(value, header.vertices) : "";
           if (!index_problem.empty())
             return *why = at + index_problem, false;
         }

@@ -41,8 +41,9 @@ std::string percent_decode(const std::string& text)
   out.reserve(text.size());
   for (size_t i = 0; i < text.size(); ++i)
   {
-    if (text[i] == '%' && i + 2 < text.size() && std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(text[i + 2])))
+    if (text[i] == '%' && i + 2 < text.size() &&
+      std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+      std::isxdigit(static_cast<unsigned char>(text[i + 2])))
     {
       out.push_back(static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16)));
       i += 2;
@@ -67,7 +68,10 @@ bool is_inside(const fs::path& path, const fs::path& root)
   return mismatch.first == root_end;
 }
 
-std::string in_quotes(const std::string& text) { return "'" + text + "'"; }
+std::string in_quotes(const std::string& text)
+{
+  return "'" + text + "'";
+}
 
 std::string join(const std::vector<std::string>& items, const std::string& separator)
 {
@@ -87,7 +91,10 @@ ResourceResolver ResourceResolver::from_environment()
   return resolver;
 }
 
-void ResourceResolver::set_ament_prefixes(std::vector<std::string> prefixes) { ament_prefixes_ = std::move(prefixes); }
+void ResourceResolver::set_ament_prefixes(std::vector<std::string> prefixes)
+{
+  ament_prefixes_ = std::move(prefixes);
+}
 
 void ResourceResolver::set_ros_package_path(std::vector<std::string> folders)
 {
@@ -135,12 +142,13 @@ const PackageTree& ResourceResolver::crawled(const std::string& folder) const
 // take a folder named like the package): the search path itself, or a folder directly inside it.
 // Only direct children count: a folder of that name deeper down is more likely a sub-folder
 // (meshes/arm/) than the package, and is reported as rejected instead.
-std::string ResourceResolver::find_in_search_folder(const std::string& folder, const std::string& name,
-                                                    PackageSearchReport* report) const
+std::string ResourceResolver::find_in_search_folder(
+  const std::string& folder, const std::string& name, PackageSearchReport* report) const
 {
   const fs::path base(folder);
   std::error_code ec;
-  if (has_package_xml(base) && (package_xml_name(base) == name || normalised(base).filename() == name))
+  if (has_package_xml(base) &&
+    (package_xml_name(base) == name || normalised(base).filename() == name))
     return normalised(base).string();
   if (has_package_xml(base / "share" / name))
     return normalised(base / "share" / name).string();
@@ -155,12 +163,13 @@ std::string ResourceResolver::find_in_search_folder(const std::string& folder, c
   auto plain = tree.plain_folders.find(name);
   if (report && plain != tree.plain_folders.end())
     report->rejected.push_back(in_quotes(plain->second) +
-                               " is named like the package but has no package.xml and is neither a mesh search path "
-                               "nor directly inside one (add it, or the folder holding it, with AddMeshSearchPath)");
+      " is named like the package but has no package.xml and is neither a mesh search path "
+      "nor directly inside one (add it, or the folder holding it, with AddMeshSearchPath)");
   return {};
 }
 
-std::string ResourceResolver::find_package(const std::string& name, PackageSearchReport* report) const
+std::string ResourceResolver::find_package(
+  const std::string& name, PackageSearchReport* report) const
 {
   for (const auto& folder : search_paths_)
   {
@@ -180,10 +189,11 @@ std::string ResourceResolver::find_package(const std::string& name, PackageSearc
       std::vector<std::string> met = above.folders();
       for (auto& folder : met)
         folder = in_quotes(folder);
-      report->looked_in.push_back("the folders above " + in_quotes(above.file()) + " up to the filesystem root (" +
-                                  (met.empty() ? std::string("no package.xml there")
-                                               : "package.xml in " + join(met, ", ") + " names another package") +
-                                  ")");
+      report->looked_in.push_back("the folders above " + in_quotes(above.file()) +
+        " up to the filesystem root (" +
+        (met.empty() ? std::string("no package.xml there")
+                     : "package.xml in " + join(met, ", ") + " names another package") +
+        ")");
     }
   }
   for (const auto& prefix : ament_prefixes_)
@@ -193,7 +203,8 @@ std::string ResourceResolver::find_package(const std::string& name, PackageSearc
       return normalised(candidate).string();
     std::error_code ec;
     if (report && fs::is_directory(candidate, ec))
-      report->rejected.push_back(in_quotes(candidate.string()) + " has no package.xml, so it is not an installed package");
+      report->rejected.push_back(
+        in_quotes(candidate.string()) + " has no package.xml, so it is not an installed package");
     if (report)
       report->looked_in.push_back("AMENT_PREFIX_PATH " + in_quotes(candidate.string()));
   }
@@ -206,20 +217,23 @@ std::string ResourceResolver::find_package(const std::string& name, PackageSearc
     auto plain = tree.plain_folders.find(name);
     if (report && plain != tree.plain_folders.end())
       report->rejected.push_back(in_quotes(plain->second) +
-                                 " is named like the package but has no package.xml (ROS_PACKAGE_PATH takes only "
-                                 "folders with a package.xml; add it with AddMeshSearchPath)");
+        " is named like the package but has no package.xml (ROS_PACKAGE_PATH takes only "
+        "folders with a package.xml; add it with AddMeshSearchPath)");
     if (report)
       report->looked_in.push_back("ROS_PACKAGE_PATH " + in_quotes(folder));
   }
   return {};
 }
 
-std::string ResourceResolver::package_not_found(const std::string& name, const PackageSearchReport& report) const
+std::string ResourceResolver::package_not_found(
+  const std::string& name, const PackageSearchReport& report) const
 {
   std::string text = "package " + in_quotes(name) + " not found";
   if (report.looked_in.empty())
-    text += ": no package locations are set (no URDF file, AMENT_PREFIX_PATH and ROS_PACKAGE_PATH are empty and "
-            "no mesh search path was added; add the folder holding the package with AddMeshSearchPath)";
+    text +=
+      ": no package locations are set (no URDF file, AMENT_PREFIX_PATH and ROS_PACKAGE_PATH are "
+      "empty and "
+      "no mesh search path was added; add the folder holding the package with AddMeshSearchPath)";
   else
     text += " (looked in " + join(report.looked_in, "; ") + ")";
   // Each rejected folder once: the same crawl can be reported by more than one location.
@@ -247,8 +261,8 @@ std::vector<std::string> ResourceResolver::allowed_roots(const std::string& base
   return roots;
 }
 
-ResolvedResource ResourceResolver::check_file(const fs::path& candidate, const std::string& base_folder,
-                                              const std::string& package_folder) const
+ResolvedResource ResourceResolver::check_file(const fs::path& candidate,
+  const std::string& base_folder, const std::string& package_folder) const
 {
   ResolvedResource result;
   const fs::path resolved = normalised(candidate);
@@ -268,18 +282,18 @@ ResolvedResource ResourceResolver::check_file(const fs::path& candidate, const s
   {
     if (!package_folder.empty() && !is_inside(resolved, fs::path(package_folder)))
     {
-      result.error = in_quotes(resolved.string()) + " lies outside its package folder " + in_quotes(package_folder) +
-                     " (root check is on)";
+      result.error = in_quotes(resolved.string()) + " lies outside its package folder " +
+        in_quotes(package_folder) + " (root check is on)";
       return result;
     }
     const auto roots = allowed_roots(base_folder);
     const bool inside = std::any_of(roots.begin(), roots.end(),
-                                    [&](const std::string& root) { return is_inside(resolved, normalised(root)); });
+      [&](const std::string& root) { return is_inside(resolved, normalised(root)); });
     if (!inside)
     {
       result.error = in_quotes(resolved.string()) + " lies outside the allowed roots (" +
-                     (roots.empty() ? std::string("none are set") : join(roots, ", ")) +
-                     "; root check is on: add the folder as a mesh search path, or switch the check off)";
+        (roots.empty() ? std::string("none are set") : join(roots, ", ")) +
+        "; root check is on: add the folder as a mesh search path, or switch the check off)";
       return result;
     }
   }
@@ -291,8 +305,8 @@ ResolvedResource ResourceResolver::check_file(const fs::path& candidate, const s
   }
   if (bytes > max_file_bytes_)
   {
-    result.error = in_quotes(resolved.string()) + " is " + std::to_string(bytes) + " bytes, over the limit of " +
-                   std::to_string(max_file_bytes_) + " bytes";
+    result.error = in_quotes(resolved.string()) + " is " + std::to_string(bytes) +
+      " bytes, over the limit of " + std::to_string(max_file_bytes_) + " bytes";
     return result;
   }
   result.ok = true;
@@ -305,7 +319,8 @@ ResolvedResource ResourceResolver::check_file(const fs::path& candidate, const s
 // each search path, and with no base folder the current folder last. A leading `../` climbs out
 // of the URDF's folder, which a search path is not, so `../meshes/x.STL` is also tried as
 // `<search path>/meshes/x.STL`. Every candidate passes the same root check.
-ResolvedResource ResourceResolver::resolve_relative(const std::string& uri, const std::string& base_folder) const
+ResolvedResource ResourceResolver::resolve_relative(
+  const std::string& uri, const std::string& base_folder) const
 {
   const fs::path relative(uri);
   fs::path below_parents;
@@ -350,9 +365,10 @@ ResolvedResource ResourceResolver::resolve_relative(const std::string& uri, cons
   }
   result.error = "no such file (looked for " + join(missing, ", ") + ")";
   if (base_folder.empty())
-    result.error += "; the description has no folder of its own (it came from a parameter or a topic): give the "
-                    "folder relative mesh paths start from with SetMeshBaseFolder, or add the folder holding the "
-                    "meshes with AddMeshSearchPath";
+    result.error +=
+      "; the description has no folder of its own (it came from a parameter or a topic): give the "
+      "folder relative mesh paths start from with SetMeshBaseFolder, or add the folder holding the "
+      "meshes with AddMeshSearchPath";
   return result;
 }
 
@@ -360,24 +376,27 @@ ResolvedResource ResourceResolver::resolve_relative(const std::string& uri, cons
 // left empty). resource_retriever refuses it; yourdfpy and the other Python loaders take the path
 // relative to the description. So do we: inside the package holding the URDF file, then as a
 // relative mesh path (the base folder, the search paths), with the same root check.
-ResolvedResource ResourceResolver::resolve_without_package(const std::string& uri, const std::string& relative,
-                                                           const std::string& base_folder) const
+ResolvedResource ResourceResolver::resolve_without_package(
+  const std::string& uri, const std::string& relative, const std::string& base_folder) const
 {
   ResolvedResource result;
-  const std::string why = "no package name after package://, so '" + relative +
-                          "' was taken relative to the description";
+  const std::string why =
+    "no package name after package://, so '" + relative + "' was taken relative to the description";
   if (relative.empty())
   {
-    result.error = "could not resolve " + in_quotes(uri) + ": no package name and no file path after package://";
+    result.error =
+      "could not resolve " + in_quotes(uri) + ": no package name and no file path after package://";
     return result;
   }
   std::vector<std::string> missing;
-  for (auto above = urdf_files_.rbegin(); above != urdf_files_.rend(); ++above) // the latest file first
+  for (auto above = urdf_files_.rbegin(); above != urdf_files_.rend();
+       ++above) // the latest file first
   {
     const std::string package_folder = above->nearest();
     if (package_folder.empty())
       continue;
-    const ResolvedResource checked = check_file(fs::path(package_folder) / relative, base_folder, package_folder);
+    const ResolvedResource checked =
+      check_file(fs::path(package_folder) / relative, base_folder, package_folder);
     if (checked.ok)
       return checked;
     if (checked.error.compare(0, 13, "no such file ") != 0)
@@ -386,17 +405,18 @@ ResolvedResource ResourceResolver::resolve_without_package(const std::string& ur
       return result;
     }
     missing.push_back("the package of " + in_quotes(above->file()) + " (" +
-                      in_quotes((fs::path(package_folder) / relative).lexically_normal().string()) + ")");
+      in_quotes((fs::path(package_folder) / relative).lexically_normal().string()) + ")");
   }
   const ResolvedResource plain = resolve_relative(relative, base_folder);
   if (plain.ok)
     return plain;
   result.error = "could not resolve " + in_quotes(uri) + ": " + why + ": " +
-                 (missing.empty() ? std::string() : "not in " + join(missing, ", ") + "; ") + plain.error;
+    (missing.empty() ? std::string() : "not in " + join(missing, ", ") + "; ") + plain.error;
   return result;
 }
 
-ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::string& base_folder) const
+ResolvedResource ResourceResolver::resolve(
+  const std::string& uri, const std::string& base_folder) const
 {
   ResolvedResource result;
   auto fail = [&](const std::string& why) {
@@ -417,7 +437,8 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
     const std::string rest = uri.substr(std::string("package://").size());
     const size_t slash = rest.find('/');
     const std::string package = rest.substr(0, slash);
-    const std::string relative = slash == std::string::npos ? std::string() : rest.substr(slash + 1);
+    const std::string relative =
+      slash == std::string::npos ? std::string() : rest.substr(slash + 1);
     if (package.empty())
       return resolve_without_package(uri, relative, base_folder);
     // The folder-name rule below takes <search path>/<package>: "." and ".." would name the
@@ -443,7 +464,8 @@ ResolvedResource ResourceResolver::resolve(const std::string& uri, const std::st
   }
   else if (std::regex_search(uri, scheme, scheme_pattern))
   {
-    return fail("the scheme " + in_quotes(scheme[1].str() + "://") + " is not supported; use " + supported_forms());
+    return fail("the scheme " + in_quotes(scheme[1].str() + "://") + " is not supported; use " +
+      supported_forms());
   }
   else if (fs::path(uri).is_absolute())
   {

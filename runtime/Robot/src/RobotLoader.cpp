@@ -106,9 +106,10 @@ vtkSmartPointer<vtkMatrix4x4> to_matrix(const urdf::Pose& pose)
   {
     x = y = z = 0, w = 1;
   }
-  const double rotation[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                                 {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                                 {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+  const double rotation[3][3] = { { 1 - 2 * (y * y + z * z), 2 * (x * y - z * w),
+                                    2 * (x * z + y * w) },
+    { 2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w) },
+    { 2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y) } };
   auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c)
@@ -126,7 +127,10 @@ vtkSmartPointer<vtkPolyData> shallow_copy(vtkPolyData* source)
   return copy;
 }
 
-std::string in_quotes(const std::string& text) { return "'" + text + "'"; }
+std::string in_quotes(const std::string& text)
+{
+  return "'" + text + "'";
+}
 
 } // namespace
 
@@ -134,7 +138,8 @@ std::string mesh_warning(const std::string& link, const std::string& uri, const 
 {
   // The resolver's messages start by naming the URI too; say it once.
   const std::string repeated = "could not resolve " + in_quotes(uri) + ": ";
-  const std::string reason = why.compare(0, repeated.size(), repeated) == 0 ? why.substr(repeated.size()) : why;
+  const std::string reason =
+    why.compare(0, repeated.size(), repeated) == 0 ? why.substr(repeated.size()) : why;
   return "link " + in_quotes(link) + ": could not load mesh " + in_quotes(uri) + ": " + reason;
 }
 
@@ -144,7 +149,7 @@ std::array<double, 4> LinkVisual::display_color() const
     return material_color;
   if (has_mesh_color)
     return mesh_color;
-  return {{0.7, 0.7, 0.7, 1.0}};
+  return { { 0.7, 0.7, 0.7, 1.0 } };
 }
 
 const LinkVisuals* RobotVisuals::link(const std::string& name) const
@@ -213,8 +218,8 @@ std::string LinkVisuals::status() const
   size_t placeholders = 0;
   for (const auto& visual : visuals)
     placeholders += visual.kind == VisualKind::Placeholder ? 1 : 0;
-  return std::to_string(placeholders) + " of " + std::to_string(visuals.size()) + " visuals are placeholders: " +
-         warnings.front();
+  return std::to_string(placeholders) + " of " + std::to_string(visuals.size()) +
+    " visuals are placeholders: " + warnings.front();
 }
 
 std::string RobotVisuals::summary() const
@@ -227,10 +232,12 @@ std::string RobotVisuals::summary() const
       missing_meshes += !visual.mesh_uri.empty() && visual.kind == VisualKind::Placeholder ? 1 : 0;
   std::string line = std::to_string(visuals) + (visuals == 1 ? " visual, " : " visuals, ");
   if (missing_meshes == 0)
-    line += meshes == 0 ? "no meshes" : "all " + std::to_string(meshes) + (meshes == 1 ? " mesh" : " meshes") + " loaded";
+    line += meshes == 0
+      ? "no meshes"
+      : "all " + std::to_string(meshes) + (meshes == 1 ? " mesh" : " meshes") + " loaded";
   else
-    line += std::to_string(missing_meshes) + " of " + std::to_string(meshes) + (meshes == 1 ? " mesh" : " meshes") +
-            " missing";
+    line += std::to_string(missing_meshes) + " of " + std::to_string(meshes) +
+      (meshes == 1 ? " mesh" : " meshes") + " missing";
   const std::vector<std::string> all = warnings();
   if (all.empty())
     return line;
@@ -238,24 +245,31 @@ std::string RobotVisuals::summary() const
   for (const auto& warning : all)
     causes.insert(cause_of(warning));
   line += " (" + std::to_string(all.size()) + (all.size() == 1 ? " warning" : " warnings") + ", " +
-          std::to_string(causes.size()) + (causes.size() == 1 ? " cause" : " causes") + "); first: " + all.front();
+    std::to_string(causes.size()) + (causes.size() == 1 ? " cause" : " causes") +
+    "); first: " + all.front();
   return line;
 }
 
-RobotLoader::RobotLoader() : resolver_(ResourceResolver::from_environment()) {}
+RobotLoader::RobotLoader()
+  : resolver_(ResourceResolver::from_environment())
+{
+}
 
-RobotLoader::RobotLoader(ResourceResolver resolver) : resolver_(std::move(resolver)) {}
+RobotLoader::RobotLoader(ResourceResolver resolver)
+  : resolver_(std::move(resolver))
+{
+}
 
 bool RobotLoader::load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale,
-                                   const std::string& base_folder, LinkVisual* visual, std::string* why)
+  const std::string& base_folder, LinkVisual* visual, std::string* why)
 {
   for (double factor : scale)
   {
     if (!std::isfinite(factor) || factor == 0.0)
     {
       char text[160];
-      std::snprintf(text, sizeof(text), "the scale (%g %g %g) has a zero or non-finite factor", scale[0], scale[1],
-                    scale[2]);
+      std::snprintf(text, sizeof(text), "the scale (%g %g %g) has a zero or non-finite factor",
+        scale[0], scale[1], scale[2]);
       *why = text;
       return false;
     }
@@ -286,8 +300,8 @@ bool RobotLoader::load_mesh_visual(const std::string& uri, const std::array<doub
   return true;
 }
 
-bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& options, RobotVisuals* robot,
-                           std::string* error)
+bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& options,
+  RobotVisuals* robot, std::string* error)
 {
   if (!robot)
     return false;
@@ -295,14 +309,16 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
   std::string parse_error;
   // tinyxml2 first: for malformed XML it names the line and the problem, urdfdom only the latter.
   UrdfMaterials materials;
-  if (urdf_xml.find_first_not_of(" \t\r\n") != std::string::npos && !materials.read(urdf_xml, &parse_error))
+  if (urdf_xml.find_first_not_of(" \t\r\n") != std::string::npos &&
+    !materials.read(urdf_xml, &parse_error))
   {
     if (error)
       *error = parse_error;
     return false;
   }
   std::vector<std::string> urdf_messages;
-  urdf::ModelInterfaceSharedPtr model = parse_urdf_with_diagnostics(urdf_xml, &parse_error, &urdf_messages);
+  urdf::ModelInterfaceSharedPtr model =
+    parse_urdf_with_diagnostics(urdf_xml, &parse_error, &urdf_messages);
   if (!model)
   {
     if (error)
@@ -324,7 +340,7 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
   // An explicit stack, not recursion: a description from the network may be a chain of 10 000+
   // links (issue 11.2: ~7000 overflowed the stack).
   std::set<std::string> visited;
-  std::vector<urdf::LinkConstSharedPtr> pending{root};
+  std::vector<urdf::LinkConstSharedPtr> pending{ root };
   while (!pending.empty())
   {
     const urdf::LinkConstSharedPtr link = std::move(pending.back());
@@ -339,9 +355,9 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
     const bool lined_up = in_document == link->visual_array.size();
     if (!lined_up)
       entry.warnings.push_back("link " + in_quotes(link->name) + ": urdfdom dropped " +
-                               std::to_string(in_document - std::min(in_document, link->visual_array.size())) +
-                               " of its " + std::to_string(in_document) + " visuals" +
-                               (urdf_messages.empty() ? std::string() : " (urdfdom: " + urdf_messages.back() + ")"));
+        std::to_string(in_document - std::min(in_document, link->visual_array.size())) +
+        " of its " + std::to_string(in_document) + " visuals" +
+        (urdf_messages.empty() ? std::string() : " (urdfdom: " + urdf_messages.back() + ")"));
     for (size_t index = 0; index < link->visual_array.size(); ++index)
     {
       const urdf::VisualSharedPtr& source = link->visual_array[index];
@@ -359,7 +375,7 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
           material.name = source->material->name;
           material.has_color = source->material->texture_filename.empty();
           const urdf::Color& c = source->material->color;
-          material.rgba = {{c.r, c.g, c.b, c.a}};
+          material.rgba = { { c.r, c.g, c.b, c.a } };
           material.texture = source->material->texture_filename;
         }
       }
@@ -379,8 +395,9 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
         const auto* mesh = static_cast<const urdf::Mesh*>(geometry);
         visual.kind = VisualKind::Mesh;
         visual.mesh_uri = mesh->filename;
-        visual.mesh_scale = {{mesh->scale.x, mesh->scale.y, mesh->scale.z}};
-        if (!load_mesh_visual(mesh->filename, visual.mesh_scale, options.base_folder, &visual, &why))
+        visual.mesh_scale = { { mesh->scale.x, mesh->scale.y, mesh->scale.z } };
+        if (!load_mesh_visual(
+              mesh->filename, visual.mesh_scale, options.base_folder, &visual, &why))
           entry.warnings.push_back(mesh_warning(link->name, mesh->filename, why));
         else
           why.clear();
@@ -420,10 +437,11 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
       {
         // Primitive problems are not reported by mesh_warning above.
         if (visual.kind != VisualKind::Mesh)
-          entry.warnings.push_back("link " + in_quotes(link->name) + ": visual " + std::to_string(index) + " " + why +
-                                   "; a placeholder is shown");
+          entry.warnings.push_back("link " + in_quotes(link->name) + ": visual " +
+            std::to_string(index) + " " + why + "; a placeholder is shown");
         visual.kind = VisualKind::Placeholder;
-        visual.geometry = make_box(options.placeholder_size, options.placeholder_size, options.placeholder_size);
+        visual.geometry =
+          make_box(options.placeholder_size, options.placeholder_size, options.placeholder_size);
       }
       entry.visuals.push_back(std::move(visual));
     }
@@ -435,7 +453,8 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
   return true;
 }
 
-bool RobotLoader::read_urdf_file(const std::string& urdf_path, std::string* text, std::string* error) const
+bool RobotLoader::read_urdf_file(
+  const std::string& urdf_path, std::string* text, std::string* error) const
 {
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(urdf_path, ec);
@@ -450,8 +469,8 @@ bool RobotLoader::read_urdf_file(const std::string& urdf_path, std::string* text
   if (bytes > resolver_.max_file_bytes())
   {
     if (error)
-      *error = "URDF file " + in_quotes(urdf_path) + " is " + std::to_string(bytes) + " bytes, over the limit of " +
-               std::to_string(resolver_.max_file_bytes()) + " bytes";
+      *error = "URDF file " + in_quotes(urdf_path) + " is " + std::to_string(bytes) +
+        " bytes, over the limit of " + std::to_string(resolver_.max_file_bytes()) + " bytes";
     return false;
   }
   std::ifstream in(urdf_path, std::ios::binary);
@@ -467,8 +486,8 @@ bool RobotLoader::read_urdf_file(const std::string& urdf_path, std::string* text
   return true;
 }
 
-bool RobotLoader::load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
-                            RobotLoadOptions options)
+bool RobotLoader::load_file(
+  const std::string& urdf_path, RobotVisuals* robot, std::string* error, RobotLoadOptions options)
 {
   std::string text;
   if (!read_urdf_file(urdf_path, &text, error))

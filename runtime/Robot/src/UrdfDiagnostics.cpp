@@ -30,8 +30,8 @@ std::mutex& console_mutex()
 
 } // namespace
 
-urdf::ModelInterfaceSharedPtr parse_urdf_with_diagnostics(const std::string& urdf_xml, std::string* error,
-                                                          std::vector<std::string>* messages)
+urdf::ModelInterfaceSharedPtr parse_urdf_with_diagnostics(
+  const std::string& urdf_xml, std::string* error, std::vector<std::string>* messages)
 {
   if (urdf_xml.find_first_not_of(" \t\r\n") == std::string::npos)
   {
@@ -64,7 +64,8 @@ urdf::ModelInterfaceSharedPtr parse_urdf_with_diagnostics(const std::string& urd
     for (const auto& message : handler.messages)
       details += (details.empty() ? "" : "; ") + message;
     *error = "URDF rejected by urdfdom: " +
-             (details.empty() ? std::string("no diagnostic given (malformed XML or no <robot> element?)") : details);
+      (details.empty() ? std::string("no diagnostic given (malformed XML or no <robot> element?)")
+                       : details);
   }
   return model;
 }

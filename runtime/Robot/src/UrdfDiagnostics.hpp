@@ -16,8 +16,8 @@ namespace robot {
 /// `error` when it fails, and into `messages` either way (urdfdom also logs what it drops while
 /// accepting a URDF, e.g. a visual whose geometry does not parse). Kept off the console.
 /// Serialised by a mutex because console_bridge's output handler is process-wide.
-urdf::ModelInterfaceSharedPtr parse_urdf_with_diagnostics(const std::string& urdf_xml, std::string* error,
-                                                          std::vector<std::string>* messages = nullptr);
+urdf::ModelInterfaceSharedPtr parse_urdf_with_diagnostics(
+  const std::string& urdf_xml, std::string* error, std::vector<std::string>* messages = nullptr);
 
 } // namespace robot
 } // namespace ros2vtk

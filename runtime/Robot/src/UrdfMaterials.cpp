@@ -81,18 +81,21 @@ bool UrdfMaterials::read(const std::string& urdf_xml, std::string* error)
     if (!spec.name.empty())
       named[spec.name] = spec;
   }
-  for (const auto* link = robot->FirstChildElement("link"); link; link = link->NextSiblingElement("link"))
+  for (const auto* link = robot->FirstChildElement("link"); link;
+       link = link->NextSiblingElement("link"))
   {
     const char* link_name = link->Attribute("name");
     if (!link_name)
       continue;
     std::vector<MaterialSpec>& specs = visuals_[link_name];
-    for (const auto* visual = link->FirstChildElement("visual"); visual; visual = visual->NextSiblingElement("visual"))
+    for (const auto* visual = link->FirstChildElement("visual"); visual;
+         visual = visual->NextSiblingElement("visual"))
     {
       const tinyxml2::XMLElement* material = visual->FirstChildElement("material");
       MaterialSpec spec = material ? resolve(parse_material(material), named) : MaterialSpec();
       // A link-level material with a colour becomes known by name to later links, as in urdfdom.
-      if (material && !spec.name.empty() && (spec.has_color || !spec.texture.empty()) && !named.count(spec.name))
+      if (material && !spec.name.empty() && (spec.has_color || !spec.texture.empty()) &&
+        !named.count(spec.name))
         named[spec.name] = spec;
       specs.push_back(spec);
     }

@@ -19,7 +19,7 @@ struct MaterialSpec
 {
   std::string name;
   bool has_color = false;
-  std::array<double, 4> rgba{{1.0, 1.0, 1.0, 1.0}};
+  std::array<double, 4> rgba{ { 1.0, 1.0, 1.0, 1.0 } };
   std::string texture;
 };
 

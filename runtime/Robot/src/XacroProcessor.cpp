@@ -22,7 +22,8 @@ bool is_executable(const std::filesystem::path& path)
   if (ec || !std::filesystem::is_regular_file(status))
     return false;
   using std::filesystem::perms;
-  return (status.permissions() & (perms::owner_exec | perms::group_exec | perms::others_exec)) != perms::none;
+  return (status.permissions() & (perms::owner_exec | perms::group_exec | perms::others_exec)) !=
+    perms::none;
 }
 
 std::string on_path(const std::string& program)
@@ -71,7 +72,8 @@ bool XacroProcessor::is_xacro_file(const std::string& path)
   if (path.size() < suffix.size())
     return false;
   std::string end = path.substr(path.size() - suffix.size());
-  std::transform(end.begin(), end.end(), end.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(
+    end.begin(), end.end(), end.begin(), [](unsigned char c) { return std::tolower(c); });
   return end == suffix;
 }
 
@@ -100,7 +102,8 @@ std::string XacroProcessor::find_command(std::string* searched) const
   std::vector<std::string> looked;
   if (!command_.empty())
   {
-    const bool found = command_.find('/') == std::string::npos ? !on_path(command_).empty() : is_executable(command_);
+    const bool found = command_.find('/') == std::string::npos ? !on_path(command_).empty()
+                                                               : is_executable(command_);
     if (found)
       return command_.find('/') == std::string::npos ? on_path(command_) : command_;
     looked.push_back("the command set on the robot ('" + command_ + "')");
@@ -135,7 +138,8 @@ std::string XacroProcessor::find_command(std::string* searched) const
   return "";
 }
 
-bool XacroProcessor::expand(const std::string& path, size_t max_bytes, std::string* urdf, std::string* error) const
+bool XacroProcessor::expand(
+  const std::string& path, size_t max_bytes, std::string* urdf, std::string* error) const
 {
   auto fail = [&](const std::string& why) {
     if (error)
@@ -149,7 +153,7 @@ bool XacroProcessor::expand(const std::string& path, size_t max_bytes, std::stri
   const std::string command = find_command(&searched);
   if (command.empty())
     return fail("no xacro processor found (looked for " + searched +
-                "); install it into the Python environment ros2vtk runs in: pip install xacro");
+      "); install it into the Python environment ros2vtk runs in: pip install xacro");
 
   std::vector<std::string> words{ command, path };
   words.insert(words.end(), arguments_.begin(), arguments_.end());
@@ -167,7 +171,8 @@ bool XacroProcessor::expand(const std::string& path, size_t max_bytes, std::stri
   char* data = nullptr;
   int length = 0;
   int pipe;
-  while ((pipe = vtksysProcess_WaitForData(process.get(), &data, &length, nullptr)) != vtksysProcess_Pipe_None)
+  while ((pipe = vtksysProcess_WaitForData(process.get(), &data, &length, nullptr)) !=
+    vtksysProcess_Pipe_None)
   {
     std::string& target = pipe == vtksysProcess_Pipe_STDOUT ? out : err;
     if (pipe == vtksysProcess_Pipe_STDOUT || pipe == vtksysProcess_Pipe_STDERR)
@@ -189,7 +194,8 @@ bool XacroProcessor::expand(const std::string& path, size_t max_bytes, std::stri
     case vtksysProcess_State_Exited:
       break;
     case vtksysProcess_State_Expired:
-      return fail(command + " did not finish in " + std::to_string(static_cast<int>(timeout_)) + " s");
+      return fail(
+        command + " did not finish in " + std::to_string(static_cast<int>(timeout_)) + " s");
     case vtksysProcess_State_Exception:
       return fail(command + " crashed: " + vtksysProcess_GetExceptionString(process.get()));
     case vtksysProcess_State_Error:

@@ -227,7 +227,8 @@ std::vector<const NodeClassInfo*> NodeClassRegistry::classes(NodeDirection direc
 }
 
 //------------------------------------------------------------------------------
-NodeTypeResolution NodeClassRegistry::resolve(NodeDirection direction, const std::string& type) const
+NodeTypeResolution NodeClassRegistry::resolve(
+  NodeDirection direction, const std::string& type) const
 {
   NodeTypeResolution result;
   if (type.find('/') != std::string::npos)
@@ -253,8 +254,8 @@ NodeTypeResolution NodeClassRegistry::resolve(NodeDirection direction, const std
     std::string short_name = type;
     if (split_class_name(type, kind, short_name) && kind != to_string(direction))
     {
-      result.error = "'" + type + "' is a " + kind + " class; use CreateAndAdd" + kind +
-        "Node to create it";
+      result.error =
+        "'" + type + "' is a " + kind + " class; use CreateAndAdd" + kind + "Node to create it";
       return result;
     }
     result.mapped_class = this->find_short_name(direction, short_name);

@@ -74,8 +74,10 @@ public:
   /// Accepts a class name, an alias, or SlicerROS2's spelling of a class name ("vtkMRMLROS2…" for
   /// "vtkROS2…"). nullptr when unknown. Pointers stay valid for the life of the process.
   const NodeClassInfo* find_class(const std::string& class_name) const;
-  const NodeClassInfo* find_short_name(NodeDirection direction, const std::string& short_name) const;
-  std::vector<const NodeClassInfo*> find_ros_type(NodeDirection direction, const std::string& ros_type) const;
+  const NodeClassInfo* find_short_name(
+    NodeDirection direction, const std::string& short_name) const;
+  std::vector<const NodeClassInfo*> find_ros_type(
+    NodeDirection direction, const std::string& ros_type) const;
 
   /// Registered classes of one direction, sorted by class name.
   std::vector<const NodeClassInfo*> classes(NodeDirection direction) const;
@@ -91,8 +93,9 @@ public:
 private:
   NodeClassRegistry() = default;
   mutable std::mutex mutex_;
-  std::map<std::string, NodeClassInfo> classes_; // by class name; node-based, so pointers are stable
-  std::map<std::string, std::string> aliases_;   // alias -> class name
+  std::map<std::string, NodeClassInfo>
+    classes_;                                  // by class name; node-based, so pointers are stable
+  std::map<std::string, std::string> aliases_; // alias -> class name
 };
 
 /// "Publisher" / "Subscriber" / "Other".

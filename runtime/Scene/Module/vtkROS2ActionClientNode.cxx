@@ -43,8 +43,7 @@
 
 vtkStandardNewMacro(vtkROS2ActionClientNode);
 
-namespace
-{
+namespace {
 using Clock = std::chrono::steady_clock;
 using ros2vtk::scene::member;
 using ros2vtk::wire::MessagePtr;
@@ -133,7 +132,8 @@ public:
 
     bool Active() const
     {
-      return this->State == vtkROS2ActionClientNode::Accepted || this->State == vtkROS2ActionClientNode::Executing ||
+      return this->State == vtkROS2ActionClientNode::Accepted ||
+        this->State == vtkROS2ActionClientNode::Executing ||
         this->State == vtkROS2ActionClientNode::Canceling;
     }
   };
@@ -201,7 +201,8 @@ vtkROS2ActionClientNode::vtkROS2ActionClientNode()
 vtkROS2ActionClientNode::~vtkROS2ActionClientNode() = default;
 
 //------------------------------------------------------------------------------
-bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action)
+bool vtkROS2ActionClientNode::Attach(
+  vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action)
 {
   vtkInternals& internals = *this->Internals;
   if (!rosNode || !rosNode->GetParticipant())
@@ -219,19 +220,20 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   }
   const ros2vtk::wire::ActionTypeSupport* support = endpoints.Type;
   const auto& sendGoal = *support->send_goal();
-  auto sendGoalClient = participant.create_service_client(sendGoal, endpoints.SendGoal, endpoints.ServiceQoS, &error);
-  auto getResultClient = sendGoalClient
-    ? participant.create_service_client(*support->get_result(), endpoints.GetResult, endpoints.ServiceQoS, &error)
-    : nullptr;
-  auto cancelClient = getResultClient
-    ? participant.create_service_client(*support->cancel_goal(), endpoints.CancelGoal, endpoints.ServiceQoS, &error)
-    : nullptr;
-  auto feedback = cancelClient ? participant.create_subscription(*support->feedback_message(), endpoints.Feedback,
-                                   endpoints.FeedbackQoS, &error)
+  auto sendGoalClient =
+    participant.create_service_client(sendGoal, endpoints.SendGoal, endpoints.ServiceQoS, &error);
+  auto getResultClient = sendGoalClient ? participant.create_service_client(*support->get_result(),
+                                            endpoints.GetResult, endpoints.ServiceQoS, &error)
+                                        : nullptr;
+  auto cancelClient = getResultClient ? participant.create_service_client(*support->cancel_goal(),
+                                          endpoints.CancelGoal, endpoints.ServiceQoS, &error)
+                                      : nullptr;
+  auto feedback = cancelClient ? participant.create_subscription(*support->feedback_message(),
+                                   endpoints.Feedback, endpoints.FeedbackQoS, &error)
                                : nullptr;
-  auto status = feedback
-    ? participant.create_subscription(*support->status(), endpoints.Status, endpoints.StatusQoS, &error)
-    : nullptr;
+  auto status = feedback ? participant.create_subscription(
+                             *support->status(), endpoints.Status, endpoints.StatusQoS, &error)
+                         : nullptr;
   if (!status)
   {
     vtkErrorMacro("action client " << action << ": " << error);
@@ -250,7 +252,8 @@ bool vtkROS2ActionClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.CancelClient = std::move(cancelClient);
   internals.FeedbackSubscription = std::move(feedback);
   internals.StatusSubscription = std::move(status);
-  internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
+  internals.ActionTypeRegistration =
+    participant.type_cache().add(support->type_hash, support->description);
   this->EndpointAttached(rosNode, support->ros_type, action, endpoints.ResolvedName);
   return true;
 }
@@ -306,7 +309,8 @@ bool vtkROS2ActionClientNode::SetGoalYAML(const char* yaml)
 std::string vtkROS2ActionClientNode::GetGoalYAML() const
 {
   const vtkInternals& internals = *this->Internals;
-  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->goal(), internals.Goal.get()) : "";
+  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->goal(), internals.Goal.get())
+                        : "";
 }
 
 //------------------------------------------------------------------------------
@@ -319,7 +323,8 @@ bool vtkROS2ActionClientNode::SetGoalField(const char* path, const char* value)
     return false;
   }
   std::string error;
-  if (!ros2vtk::scene::set_field_from_text(*internals.Type->goal(), internals.Goal.get(), path, value, &error))
+  if (!ros2vtk::scene::set_field_from_text(
+        *internals.Type->goal(), internals.Goal.get(), path, value, &error))
   {
     vtkErrorMacro("SetGoalField: " << error);
     return false;
@@ -355,14 +360,16 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoal()
   goal.IdText = IdText(goal.GoalId);
   goal.GoalRequest = NewMessage(*type.send_goal()->request());
   member<UUID>(goal.GoalRequest.get(), internals.At.SendGoalId) = goal.GoalId;
-  type.goal()->copy(internals.Goal.get(), static_cast<char*>(goal.GoalRequest.get()) + internals.At.SendGoalGoal);
+  type.goal()->copy(
+    internals.Goal.get(), static_cast<char*>(goal.GoalRequest.get()) + internals.At.SendGoalGoal);
   goal.LastFeedback = NewMessage(*type.feedback());
   goal.Result = NewMessage(*type.result());
   internals.LastCancelReturnCode = -1;
   internals.LastError.clear();
   goal.GoalTimeout = this->EndpointTimeout;
-  goal.Deadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
+  goal.Deadline = Clock::now() +
+    std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(this->EndpointTimeout));
   // Written at once when the server is there; otherwise on the spin that sees it (requests
   // are volatile: one written before the server's reader matched would be lost).
   goal.State = WaitingForServer;
@@ -384,7 +391,8 @@ vtkTypeInt64 vtkROS2ActionClientNode::SendGoalYAML(const char* yaml)
 //------------------------------------------------------------------------------
 bool vtkROS2ActionClientNode::CancelGoal()
 {
-  return this->CancelGoalById(this->Internals->Current ? this->Internals->Current->IdText.c_str() : "");
+  return this->CancelGoalById(
+    this->Internals->Current ? this->Internals->Current->IdText.c_str() : "");
 }
 
 //------------------------------------------------------------------------------
@@ -394,8 +402,8 @@ bool vtkROS2ActionClientNode::CancelGoalById(const char* goalId)
   if (!this->Internals->CancelClient || !goal || !goal->Active())
   {
     const std::string which = goalId && *goalId ? std::string(goalId) + " " : std::string();
-    vtkErrorMacro("CancelGoal: no accepted goal " << which << "is running (status: "
-                                                  << this->GetStatusAsStringById(goalId) << ")");
+    vtkErrorMacro("CancelGoal: no accepted goal "
+      << which << "is running (status: " << this->GetStatusAsStringById(goalId) << ")");
     return false;
   }
   ros2vtk::action_msgs::srv::CancelGoal_Request request;
@@ -431,7 +439,8 @@ bool vtkROS2ActionClientNode::CancelGoalsBefore(int sec, unsigned int nanosec)
                                         << " ns is not a time (seconds >= 0, nanoseconds < 1e9)");
     return false;
   }
-  // Zero goal id and a stamp: every goal accepted at or before it (rcl_action_process_cancel_request).
+  // Zero goal id and a stamp: every goal accepted at or before it
+  // (rcl_action_process_cancel_request).
   ros2vtk::action_msgs::srv::CancelGoal_Request request;
   request.goal_info.stamp.sec = sec;
   request.goal_info.stamp.nanosec = nanosec;
@@ -445,11 +454,13 @@ bool vtkROS2ActionClientNode::SendCancelRequest(const void* request)
   internals.CancelSequence = internals.CancelClient->send_request(request);
   if (internals.CancelSequence < 0)
   {
-    internals.LastError = "Fast DDS refused to write the cancel request to " + std::string(this->GetActionName());
+    internals.LastError =
+      "Fast DDS refused to write the cancel request to " + std::string(this->GetActionName());
     return false;
   }
-  internals.CancelDeadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
+  internals.CancelDeadline = Clock::now() +
+    std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(this->EndpointTimeout));
   return true;
 }
 
@@ -499,7 +510,8 @@ int vtkROS2ActionClientNode::ProcessAction()
     GoalRecord* goal = nullptr;
     for (auto& candidate : internals.Goals)
     {
-      if (candidate->State == WaitingForAcceptance && response.sequence_number == candidate->GoalSequence)
+      if (candidate->State == WaitingForAcceptance &&
+        response.sequence_number == candidate->GoalSequence)
       {
         goal = candidate.get();
       }
@@ -512,8 +524,8 @@ int vtkROS2ActionClientNode::ProcessAction()
     {
       goal->State = Accepted;
       ++internals.GoalsAccepted;
-      const auto& stamp =
-        member<ros2vtk::builtin_interfaces::msg::Time>(response.response.get(), internals.At.AcceptedStamp);
+      const auto& stamp = member<ros2vtk::builtin_interfaces::msg::Time>(
+        response.response.get(), internals.At.AcceptedStamp);
       goal->AcceptedSec = stamp.sec;
       goal->AcceptedNanosec = stamp.nanosec;
       auto request = NewMessage(*internals.Type->get_result()->request());
@@ -523,7 +535,8 @@ int vtkROS2ActionClientNode::ProcessAction()
       if (goal->ResultSequence < 0)
       {
         goal->State = Failed;
-        fail(*goal, "Fast DDS refused to write the result request to " + std::string(this->GetActionName()));
+        fail(*goal,
+          "Fast DDS refused to write the result request to " + std::string(this->GetActionName()));
       }
     }
     else
@@ -543,10 +556,12 @@ int vtkROS2ActionClientNode::ProcessAction()
     {
       if (goal->State == WaitingForServer || goal->GoalId != id)
       {
-        continue; // feedback goes to every client; each keeps its own goals' (docs/wire-notes.md §8.3)
+        continue; // feedback goes to every client; each keeps its own goals' (docs/wire-notes.md
+                  // §8.3)
       }
       internals.Type->feedback()->copy(
-        static_cast<const char*>(message.get()) + internals.At.FeedbackFeedback, goal->LastFeedback.get());
+        static_cast<const char*>(message.get()) + internals.At.FeedbackFeedback,
+        goal->LastFeedback.get());
       ++goal->Feedbacks;
       events.emplace_back(FeedbackReceivedEvent, goal->IdText);
     }
@@ -556,7 +571,8 @@ int vtkROS2ActionClientNode::ProcessAction()
   internals.StatusSubscription->take(messages);
   for (auto& message : messages)
   {
-    const auto& array = *static_cast<const ros2vtk::action_msgs::msg::GoalStatusArray*>(message.get());
+    const auto& array =
+      *static_cast<const ros2vtk::action_msgs::msg::GoalStatusArray*>(message.get());
     for (const auto& status : array.status_list)
     {
       for (auto& goal : internals.Goals)
@@ -601,17 +617,25 @@ int vtkROS2ActionClientNode::ProcessAction()
     }
     const void* answer = response.response.get();
     goal->ResultStatus = member<int8_t>(answer, internals.At.ResultStatus);
-    internals.Type->result()->copy(static_cast<const char*>(answer) + internals.At.ResultResult, goal->Result.get());
+    internals.Type->result()->copy(
+      static_cast<const char*>(answer) + internals.At.ResultResult, goal->Result.get());
     ++internals.Results;
     switch (goal->ResultStatus)
     {
-      case GoalStatus::STATUS_SUCCEEDED: goal->State = Succeeded; break;
-      case GoalStatus::STATUS_CANCELED: goal->State = Canceled; break;
-      case GoalStatus::STATUS_ABORTED: goal->State = Aborted; break;
+      case GoalStatus::STATUS_SUCCEEDED:
+        goal->State = Succeeded;
+        break;
+      case GoalStatus::STATUS_CANCELED:
+        goal->State = Canceled;
+        break;
+      case GoalStatus::STATUS_ABORTED:
+        goal->State = Aborted;
+        break;
       default:
         goal->State = Failed;
-        fail(*goal, std::string(this->GetActionName()) + " sent a result with status " + std::to_string(goal->ResultStatus) +
-            " (not succeeded, canceled or aborted)");
+        fail(*goal,
+          std::string(this->GetActionName()) + " sent a result with status " +
+            std::to_string(goal->ResultStatus) + " (not succeeded, canceled or aborted)");
     }
     events.emplace_back(ResultReceivedEvent, goal->IdText);
   }
@@ -626,10 +650,12 @@ int vtkROS2ActionClientNode::ProcessAction()
     }
     internals.CancelSequence = -1;
     internals.LastCancelReturnCode =
-      static_cast<const ros2vtk::action_msgs::srv::CancelGoal_Response*>(response.response.get())->return_code;
+      static_cast<const ros2vtk::action_msgs::srv::CancelGoal_Response*>(response.response.get())
+        ->return_code;
     if (internals.LastCancelReturnCode != 0)
     {
-      internals.LastError = std::string(this->GetActionName()) + " refused to cancel the goal (return code " +
+      internals.LastError = std::string(this->GetActionName()) +
+        " refused to cancel the goal (return code " +
         std::to_string(internals.LastCancelReturnCode) + ")";
     }
     events.emplace_back(CancelResponseEvent, "");
@@ -637,26 +663,29 @@ int vtkROS2ActionClientNode::ProcessAction()
   if (internals.CancelSequence >= 0 && now >= internals.CancelDeadline)
   {
     internals.CancelSequence = -1;
-    internals.LastError = "timed out: " + std::string(this->GetActionName()) + " did not answer the cancel request within " +
-      FormatSeconds(this->EndpointTimeout);
+    internals.LastError = "timed out: " + std::string(this->GetActionName()) +
+      " did not answer the cancel request within " + FormatSeconds(this->EndpointTimeout);
     events.emplace_back(CancelResponseEvent, "");
   }
 
   for (auto& goal : internals.Goals)
   {
-    if ((goal->State == WaitingForServer || goal->State == WaitingForAcceptance) && now >= goal->Deadline)
+    if ((goal->State == WaitingForServer || goal->State == WaitingForAcceptance) &&
+      now >= goal->Deadline)
     {
-      fail(*goal, goal->State == WaitingForServer
-          ? "timed out: no server for " + std::string(this->GetActionName()) + " (" + std::string(this->GetActionType()) + ") appeared within " +
-            FormatSeconds(goal->GoalTimeout)
-          : "timed out: " + std::string(this->GetActionName()) + " did not answer the goal within " + FormatSeconds(goal->GoalTimeout));
+      fail(*goal,
+        goal->State == WaitingForServer ? "timed out: no server for " +
+            std::string(this->GetActionName()) + " (" + std::string(this->GetActionType()) +
+            ") appeared within " + FormatSeconds(goal->GoalTimeout)
+                                        : "timed out: " + std::string(this->GetActionName()) +
+            " did not answer the goal within " + FormatSeconds(goal->GoalTimeout));
       goal->State = TimedOut;
       events.emplace_back(GoalFailedEvent, goal->IdText);
     }
   }
 
-  const uint64_t rejected =
-    internals.FeedbackSubscription->rejected_count() + internals.StatusSubscription->rejected_count();
+  const uint64_t rejected = internals.FeedbackSubscription->rejected_count() +
+    internals.StatusSubscription->rejected_count();
   const uint64_t fresh = rejected > internals.RejectedSeen ? rejected - internals.RejectedSeen : 0;
   internals.RejectedSeen = rejected;
   internals.Rejected += static_cast<vtkTypeInt64>(fresh);
@@ -666,8 +695,8 @@ int vtkROS2ActionClientNode::ProcessAction()
       ? internals.FeedbackSubscription->last_rejection()
       : internals.StatusSubscription->last_rejection();
     vtkWarningMacro("action '" << this->GetActionName() << "': " << due
-                               << " malformed feedback/status sample(s) rejected (total " << internals.Rejected
-                               << "; latest: " << reason << ")");
+                               << " malformed feedback/status sample(s) rejected (total "
+                               << internals.Rejected << "; latest: " << reason << ")");
   }
 
   if (events.empty())
@@ -685,7 +714,8 @@ int vtkROS2ActionClientNode::ProcessAction()
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2ActionClientNode::SpinSceneUntil(double timeoutSeconds, bool (*done)(const vtkROS2ActionClientNode*))
+bool vtkROS2ActionClientNode::SpinSceneUntil(
+  double timeoutSeconds, bool (*done)(const vtkROS2ActionClientNode*))
 {
   vtkInternals& internals = *this->Internals;
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
@@ -700,8 +730,8 @@ bool vtkROS2ActionClientNode::SpinSceneUntil(double timeoutSeconds, bool (*done)
     return false;
   }
   internals.InWait = true;
-  const Clock::time_point end =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeoutSeconds));
+  const Clock::time_point end = Clock::now() +
+    std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeoutSeconds));
   const int fd = rosNode->GetWakeUpFileDescriptor();
   bool finished = done(this);
   while (!finished && Clock::now() < end)
@@ -714,7 +744,8 @@ bool vtkROS2ActionClientNode::SpinSceneUntil(double timeoutSeconds, bool (*done)
     const int count = scene ? scene->GetNumberOfNodesByClass("vtkROS2NodeNode") : 0;
     for (int i = 0; i < count; ++i)
     {
-      if (auto* node = vtkROS2NodeNode::SafeDownCast(scene->GetNthNodeByClass(i, "vtkROS2NodeNode")))
+      if (auto* node =
+            vtkROS2NodeNode::SafeDownCast(scene->GetNthNodeByClass(i, "vtkROS2NodeNode")))
       {
         node->Spin();
       }
@@ -745,10 +776,12 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
   }
   if (internals.InWait)
   {
-    vtkErrorMacro("SendGoalAndWait: already waiting on this action client (called from an observer?)");
+    vtkErrorMacro(
+      "SendGoalAndWait: already waiting on this action client (called from an observer?)");
     return "";
   }
-  const double seconds = timeoutSeconds > 0 && std::isfinite(timeoutSeconds) ? timeoutSeconds : this->EndpointTimeout;
+  const double seconds =
+    timeoutSeconds > 0 && std::isfinite(timeoutSeconds) ? timeoutSeconds : this->EndpointTimeout;
   const double savedTimeout = this->EndpointTimeout;
   this->EndpointTimeout = seconds; // the goal's own deadline for server and acceptance
   const vtkTypeInt64 goal = this->SendGoalYAML(goalYAML);
@@ -758,12 +791,14 @@ std::string vtkROS2ActionClientNode::SendGoalAndWait(const char* goalYAML, doubl
     internals.LastError = "invalid goal YAML";
     return "";
   }
-  if (!this->SpinSceneUntil(seconds, [](const vtkROS2ActionClientNode* self) { return self->IsGoalDone(); }))
+  if (!this->SpinSceneUntil(
+        seconds, [](const vtkROS2ActionClientNode* self) { return self->IsGoalDone(); }))
   {
     if (internals.LastError.empty())
     {
-      internals.LastError = "timed out: " + std::string(this->GetActionName()) + " sent no result within " + FormatSeconds(seconds) +
-        " (the goal is " + this->GetStatusAsString() + ")";
+      internals.LastError = "timed out: " + std::string(this->GetActionName()) +
+        " sent no result within " + FormatSeconds(seconds) + " (the goal is " +
+        this->GetStatusAsString() + ")";
     }
     vtkErrorMacro("SendGoalAndWait " << this->GetActionName() << ": " << internals.LastError);
     return "";
@@ -785,28 +820,40 @@ bool vtkROS2ActionClientNode::WaitForGoal(double timeoutSeconds)
     vtkErrorMacro("WaitForGoal: " << timeoutSeconds << " is not a positive number of seconds");
     return false;
   }
-  return this->SpinSceneUntil(timeoutSeconds, [](const vtkROS2ActionClientNode* self) { return self->IsGoalDone(); });
+  return this->SpinSceneUntil(
+    timeoutSeconds, [](const vtkROS2ActionClientNode* self) { return self->IsGoalDone(); });
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
+namespace {
 const char* StateText(int state)
 {
   switch (state)
   {
-    case vtkROS2ActionClientNode::WaitingForServer: return "waiting for server";
-    case vtkROS2ActionClientNode::WaitingForAcceptance: return "waiting for acceptance";
-    case vtkROS2ActionClientNode::Rejected: return "rejected";
-    case vtkROS2ActionClientNode::Accepted: return "accepted";
-    case vtkROS2ActionClientNode::Executing: return "executing";
-    case vtkROS2ActionClientNode::Canceling: return "canceling";
-    case vtkROS2ActionClientNode::Succeeded: return "succeeded";
-    case vtkROS2ActionClientNode::Canceled: return "canceled";
-    case vtkROS2ActionClientNode::Aborted: return "aborted";
-    case vtkROS2ActionClientNode::TimedOut: return "timed out";
-    case vtkROS2ActionClientNode::Failed: return "failed";
-    default: return "idle";
+    case vtkROS2ActionClientNode::WaitingForServer:
+      return "waiting for server";
+    case vtkROS2ActionClientNode::WaitingForAcceptance:
+      return "waiting for acceptance";
+    case vtkROS2ActionClientNode::Rejected:
+      return "rejected";
+    case vtkROS2ActionClientNode::Accepted:
+      return "accepted";
+    case vtkROS2ActionClientNode::Executing:
+      return "executing";
+    case vtkROS2ActionClientNode::Canceling:
+      return "canceling";
+    case vtkROS2ActionClientNode::Succeeded:
+      return "succeeded";
+    case vtkROS2ActionClientNode::Canceled:
+      return "canceled";
+    case vtkROS2ActionClientNode::Aborted:
+      return "aborted";
+    case vtkROS2ActionClientNode::TimedOut:
+      return "timed out";
+    case vtkROS2ActionClientNode::Failed:
+      return "failed";
+    default:
+      return "idle";
   }
 }
 
@@ -819,8 +866,10 @@ bool StateDone(int state)
     case vtkROS2ActionClientNode::Canceled:
     case vtkROS2ActionClientNode::Aborted:
     case vtkROS2ActionClientNode::TimedOut:
-    case vtkROS2ActionClientNode::Failed: return true;
-    default: return false;
+    case vtkROS2ActionClientNode::Failed:
+      return true;
+    default:
+      return false;
   }
 }
 } // namespace
@@ -884,7 +933,8 @@ std::string vtkROS2ActionClientNode::GetFeedbackField(const char* path) const
     !ros2vtk::scene::get_field_as_text(*internals.Type->feedback(),
       goal ? goal->LastFeedback.get() : internals.BlankFeedback.get(), path, value, &error))
   {
-    vtkErrorMacro("GetFeedbackField: " << (internals.Type ? error : "the client has no action type yet"));
+    vtkErrorMacro(
+      "GetFeedbackField: " << (internals.Type ? error : "the client has no action type yet"));
     return "";
   }
   return value;
@@ -918,7 +968,8 @@ int vtkROS2ActionClientNode::GetNumberOfGoals() const
 std::string vtkROS2ActionClientNode::GetNthGoalId(int i) const
 {
   const auto& goals = this->Internals->Goals;
-  return i >= 0 && i < static_cast<int>(goals.size()) ? goals[static_cast<size_t>(i)]->IdText : std::string();
+  return i >= 0 && i < static_cast<int>(goals.size()) ? goals[static_cast<size_t>(i)]->IdText
+                                                      : std::string();
 }
 
 //------------------------------------------------------------------------------
@@ -957,7 +1008,8 @@ bool vtkROS2ActionClientNode::ForgetGoalById(const char* goalId)
     {
       if (!StateDone((*it)->State))
       {
-        vtkErrorMacro("ForgetGoalById: goal " << goalId << " is not finished (status: " << StateText((*it)->State) << ")");
+        vtkErrorMacro("ForgetGoalById: goal "
+          << goalId << " is not finished (status: " << StateText((*it)->State) << ")");
         return false;
       }
       if (internals.Current == it->get())
@@ -1088,7 +1140,8 @@ bool vtkROS2ActionClientNode::WaitForAllGoals(double timeoutSeconds)
     vtkErrorMacro("WaitForAllGoals: " << timeoutSeconds << " is not a positive number of seconds");
     return false;
   }
-  return this->SpinSceneUntil(timeoutSeconds, [](const vtkROS2ActionClientNode* self) { return self->AreAllGoalsDone(); });
+  return this->SpinSceneUntil(
+    timeoutSeconds, [](const vtkROS2ActionClientNode* self) { return self->AreAllGoalsDone(); });
 }
 
 //------------------------------------------------------------------------------
@@ -1110,9 +1163,9 @@ std::string vtkROS2ActionClientNode::GetLastFeedbackYAMLById(const char* goalId)
 {
   const vtkInternals& internals = *this->Internals;
   const auto* goal = internals.Find(goalId);
-  return internals.Type
-    ? ros2vtk::wire::to_yaml(*internals.Type->feedback(), goal ? goal->LastFeedback.get() : internals.BlankFeedback.get())
-    : "";
+  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->feedback(),
+                            goal ? goal->LastFeedback.get() : internals.BlankFeedback.get())
+                        : "";
 }
 
 //------------------------------------------------------------------------------
@@ -1120,9 +1173,9 @@ std::string vtkROS2ActionClientNode::GetResultYAMLById(const char* goalId) const
 {
   const vtkInternals& internals = *this->Internals;
   const auto* goal = internals.Find(goalId);
-  return internals.Type
-    ? ros2vtk::wire::to_yaml(*internals.Type->result(), goal ? goal->Result.get() : internals.BlankResult.get())
-    : "";
+  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->result(),
+                            goal ? goal->Result.get() : internals.BlankResult.get())
+                        : "";
 }
 
 //------------------------------------------------------------------------------
@@ -1133,10 +1186,11 @@ std::string vtkROS2ActionClientNode::GetResultFieldById(const char* goalId, cons
   std::string value;
   std::string error;
   if (!internals.Type || !path ||
-    !ros2vtk::scene::get_field_as_text(
-      *internals.Type->result(), goal ? goal->Result.get() : internals.BlankResult.get(), path, value, &error))
+    !ros2vtk::scene::get_field_as_text(*internals.Type->result(),
+      goal ? goal->Result.get() : internals.BlankResult.get(), path, value, &error))
   {
-    vtkErrorMacro("GetResultField: " << (internals.Type ? error : "the client has no action type yet"));
+    vtkErrorMacro(
+      "GetResultField: " << (internals.Type ? error : "the client has no action type yet"));
     return "";
   }
   return value;
@@ -1187,11 +1241,13 @@ void vtkROS2ActionClientNode::PrintSelf(ostream& os, vtkIndent indent)
 // vtkROS2NodeNode's methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…) live with the
 // kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2ActionClientNode* vtkROS2NodeNode::CreateAndAddActionClientNode(const char* type, const char* action)
+vtkROS2ActionClientNode* vtkROS2NodeNode::CreateAndAddActionClientNode(
+  const char* type, const char* action)
 {
   vtkNew<vtkROS2ActionClientNode> node;
-  const bool attached = this->AdoptKeyedChild("CreateAndAddActionClientNode", ActionClientRole, node, type, action, "action",
-    "this node has a client of ", "ros2:action_client:", [&] { return node->Attach(this, type, action); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddActionClientNode", ActionClientRole,
+    node, type, action, "action", "this node has a client of ",
+    "ros2:action_client:", [&] { return node->Attach(this, type, action); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -1204,7 +1260,8 @@ vtkROS2ActionClientNode* vtkROS2NodeNode::GetActionClientNodeByAction(const char
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteActionClientNode(const char* action)
 {
-  return this->RemoveKeyedChild("RemoveAndDeleteActionClientNode", ActionClientRole, action, "no client of ");
+  return this->RemoveKeyedChild(
+    "RemoveAndDeleteActionClientNode", ActionClientRole, action, "no client of ");
 }
 
 //------------------------------------------------------------------------------

@@ -98,7 +98,8 @@ public:
   /// The same for goal `goalId` (32 hex digits, GetNthGoalId).
   bool CancelGoalById(const char* goalId);
   /// Asks the server to cancel every goal it has (zero goal id and zero stamp, as rclcpp's
-  /// async_cancel_all_goals): the goals of other clients of the action too. False when not attached.
+  /// async_cancel_all_goals): the goals of other clients of the action too. False when not
+  /// attached.
   bool CancelAllGoals();
   /// Asks the server to cancel every goal it accepted at or before the time `sec`.`nanosec`
   /// on the server's clock (a zero goal id and this stamp, as rclcpp's async_cancel_goals_before):
@@ -161,7 +162,8 @@ public:
   /// rejected, 2 unknown goal id, 3 goal terminated); -1 before one.
   int GetLastCancelReturnCode() const;
   ///@{
-  /// Every goal sent and not forgotten, in order (ForgetGoalById, MaximumFinishedGoals), and each one's state by id
+  /// Every goal sent and not forgotten, in order (ForgetGoalById, MaximumFinishedGoals), and each
+  /// one's state by id
   /// ("" or an unknown id: idle, blank YAML, 0). GetLastEventGoalId: inside an observer, the goal
   /// the event is about ("" for CancelResponseEvent).
   int GetNumberOfGoals() const;
@@ -190,14 +192,18 @@ public:
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type ("pkg/action/X" or "pkg/X"), creates the wire
   /// endpoints on `rosNode`. False with vtkErrorMacro otherwise.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action) override;
+  bool Attach(
+    vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action) override;
   /// Releases the wire endpoints (the ROS node is being destroyed); the node stays in the scene.
   void Detach() override;
   /// Per Spin: sends a waiting goal once the server is there, takes answers, feedback, status.
   int ProcessAction();
 #endif
 
-  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessAction(); }
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override
+  {
+    return this->ProcessAction();
+  }
 
 protected:
   vtkROS2ActionClientNode();

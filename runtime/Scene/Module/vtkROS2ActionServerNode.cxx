@@ -36,8 +36,7 @@
 
 vtkStandardNewMacro(vtkROS2ActionServerNode);
 
-namespace
-{
+namespace {
 using ros2vtk::scene::member;
 using ros2vtk::wire::MessagePtr;
 using ros2vtk::wire::MessageTypeSupport;
@@ -83,8 +82,8 @@ public:
     GoalInfo Info;
     int8_t Status = GoalStatus::STATUS_EXECUTING;
     bool CancelRequested = false;
-    MessagePtr Request; // X_Goal
-    MessagePtr Result;  // X_Result once finished
+    MessagePtr Request;     // X_Goal
+    MessagePtr Result;      // X_Result once finished
     int64_t FinishedAt = 0; // node time (ns) when it ended: the result timeout runs from there
     std::vector<ros2vtk::wire::RequestId> ResultWaiters;
   };
@@ -121,7 +120,8 @@ public:
 
   Goal* Find(const UUID& id)
   {
-    auto it = std::find_if(this->Goals.begin(), this->Goals.end(), [&](const Goal& g) { return g.Info.goal_id == id; });
+    auto it = std::find_if(
+      this->Goals.begin(), this->Goals.end(), [&](const Goal& g) { return g.Info.goal_id == id; });
     return it == this->Goals.end() ? nullptr : &*it;
   }
 
@@ -142,10 +142,12 @@ public:
   MessagePtr ResultResponse(const Goal* goal) const
   {
     MessagePtr response = NewMessage(*this->Type->get_result()->response());
-    member<int8_t>(response.get(), this->At.ResultStatus) = goal ? goal->Status : GoalStatus::STATUS_UNKNOWN;
+    member<int8_t>(response.get(), this->At.ResultStatus) =
+      goal ? goal->Status : GoalStatus::STATUS_UNKNOWN;
     if (goal && goal->Result)
     {
-      this->Type->result()->copy(goal->Result.get(), static_cast<char*>(response.get()) + this->At.ResultResult);
+      this->Type->result()->copy(
+        goal->Result.get(), static_cast<char*>(response.get()) + this->At.ResultResult);
     }
     return response;
   }
@@ -172,7 +174,8 @@ vtkROS2ActionServerNode::vtkROS2ActionServerNode()
 vtkROS2ActionServerNode::~vtkROS2ActionServerNode() = default;
 
 //------------------------------------------------------------------------------
-bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action)
+bool vtkROS2ActionServerNode::Attach(
+  vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action)
 {
   vtkInternals& internals = *this->Internals;
   if (!rosNode || !rosNode->GetParticipant())
@@ -189,20 +192,20 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
     return false;
   }
   const ros2vtk::wire::ActionTypeSupport* support = endpoints.Type;
-  auto sendGoal =
-    participant.create_service_server(*support->send_goal(), endpoints.SendGoal, endpoints.ServiceQoS, &error);
-  auto getResult = sendGoal
-    ? participant.create_service_server(*support->get_result(), endpoints.GetResult, endpoints.ServiceQoS, &error)
-    : nullptr;
-  auto cancel = getResult
-    ? participant.create_service_server(*support->cancel_goal(), endpoints.CancelGoal, endpoints.ServiceQoS, &error)
-    : nullptr;
-  auto feedback = cancel ? participant.create_publisher(*support->feedback_message(), endpoints.Feedback,
-                             endpoints.FeedbackQoS, &error)
+  auto sendGoal = participant.create_service_server(
+    *support->send_goal(), endpoints.SendGoal, endpoints.ServiceQoS, &error);
+  auto getResult = sendGoal ? participant.create_service_server(*support->get_result(),
+                                endpoints.GetResult, endpoints.ServiceQoS, &error)
+                            : nullptr;
+  auto cancel = getResult ? participant.create_service_server(*support->cancel_goal(),
+                              endpoints.CancelGoal, endpoints.ServiceQoS, &error)
+                          : nullptr;
+  auto feedback = cancel ? participant.create_publisher(*support->feedback_message(),
+                             endpoints.Feedback, endpoints.FeedbackQoS, &error)
                          : nullptr;
-  auto status = feedback
-    ? participant.create_publisher(*support->status(), endpoints.Status, endpoints.StatusQoS, &error)
-    : nullptr;
+  auto status = feedback ? participant.create_publisher(
+                             *support->status(), endpoints.Status, endpoints.StatusQoS, &error)
+                         : nullptr;
   if (!status)
   {
     vtkErrorMacro("action server " << action << ": " << error);
@@ -216,7 +219,8 @@ bool vtkROS2ActionServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string
   internals.CancelServer = std::move(cancel);
   internals.FeedbackPublisher = std::move(feedback);
   internals.StatusPublisher = std::move(status);
-  internals.ActionTypeRegistration = participant.type_cache().add(support->type_hash, support->description);
+  internals.ActionTypeRegistration =
+    participant.type_cache().add(support->type_hash, support->description);
   internals.Goals.clear();
   this->EndpointAttached(rosNode, support->ros_type, action, endpoints.ResolvedName);
   return true;
@@ -290,7 +294,8 @@ int vtkROS2ActionServerNode::ProcessRequests()
   for (auto& request : requests)
   {
     ++handled;
-    vtkInternals::Goal* goal = internals.Find(member<UUID>(request.request.get(), internals.At.GetResultId));
+    vtkInternals::Goal* goal =
+      internals.Find(member<UUID>(request.request.get(), internals.At.GetResultId));
     if (goal && !goal->Result)
     {
       goal->ResultWaiters.push_back(request.id); // answered when the goal ends
@@ -308,7 +313,9 @@ int vtkROS2ActionServerNode::ProcessRequests()
   for (auto& request : requests)
   {
     ++handled;
-    const GoalInfo& asked = static_cast<const ros2vtk::action_msgs::srv::CancelGoal_Request*>(request.request.get())->goal_info;
+    const GoalInfo& asked =
+      static_cast<const ros2vtk::action_msgs::srv::CancelGoal_Request*>(request.request.get())
+        ->goal_info;
     CancelResponse response;
     response.return_code = CancelResponse::ERROR_NONE;
     const bool byId = !IsZero(asked.goal_id);
@@ -328,8 +335,9 @@ int vtkROS2ActionServerNode::ProcessRequests()
     {
       for (auto& goal : internals.Goals)
       {
-        const bool chosen = byTime ? (Nanoseconds(goal.Info.stamp) <= Nanoseconds(asked.stamp) || &goal == named)
-                                   : (!byId || &goal == named);
+        const bool chosen = byTime
+          ? (Nanoseconds(goal.Info.stamp) <= Nanoseconds(asked.stamp) || &goal == named)
+          : (!byId || &goal == named);
         if (chosen && goal.Status == GoalStatus::STATUS_EXECUTING)
         {
           goal.Status = GoalStatus::STATUS_CANCELING;
@@ -353,9 +361,10 @@ int vtkROS2ActionServerNode::ProcessRequests()
   const int64_t keep = static_cast<int64_t>(internals.ResultTimeout * 1e9);
   const size_t before = internals.Goals.size();
   internals.Goals.erase(std::remove_if(internals.Goals.begin(), internals.Goals.end(),
-                                       [&](const vtkInternals::Goal& goal) {
-                                         return goal.Result && goal.ResultWaiters.empty() && now - goal.FinishedAt > keep;
-                                       }),
+                          [&](const vtkInternals::Goal& goal) {
+                            return goal.Result && goal.ResultWaiters.empty() &&
+                              now - goal.FinishedAt > keep;
+                          }),
     internals.Goals.end());
   if (internals.Goals.size() != before)
   {
@@ -365,18 +374,21 @@ int vtkROS2ActionServerNode::ProcessRequests()
 
   const uint64_t malformed = internals.SendGoalServer->rejected_count() +
     internals.GetResultServer->rejected_count() + internals.CancelServer->rejected_count();
-  const uint64_t fresh = malformed > internals.MalformedSeen ? malformed - internals.MalformedSeen : 0;
+  const uint64_t fresh =
+    malformed > internals.MalformedSeen ? malformed - internals.MalformedSeen : 0;
   internals.MalformedSeen = malformed;
   internals.Malformed += static_cast<vtkTypeInt64>(fresh);
-  if (const uint64_t due = internals.MalformedReport.record(fresh, std::chrono::steady_clock::now()))
+  if (const uint64_t due =
+        internals.MalformedReport.record(fresh, std::chrono::steady_clock::now()))
   {
     std::string reason = internals.SendGoalServer->last_rejection();
     for (const auto* server : { internals.GetResultServer.get(), internals.CancelServer.get() })
     {
       reason = reason.empty() ? server->last_rejection() : reason;
     }
-    vtkWarningMacro("action '" << this->GetActionName() << "': " << due << " malformed request(s) rejected (total "
-                               << internals.Malformed << "; latest: " << reason << ")");
+    vtkWarningMacro("action '" << this->GetActionName() << "': " << due
+                               << " malformed request(s) rejected (total " << internals.Malformed
+                               << "; latest: " << reason << ")");
   }
 
   if (statusChanged)
@@ -430,7 +442,9 @@ std::string vtkROS2ActionServerNode::GetGoalField(const char* path) const
 {
   vtkInternals& internals = *this->Internals;
   const vtkInternals::Goal* goal = internals.Current();
-  const void* message = internals.Deciding ? internals.Deciding : goal ? goal->Request.get() : nullptr;
+  const void* message = internals.Deciding ? internals.Deciding
+    : goal                                 ? goal->Request.get()
+                                           : nullptr;
   std::string value;
   std::string error = "no goal is running";
   if (!internals.Type || !path || !message ||
@@ -489,7 +503,8 @@ bool vtkROS2ActionServerNode::PublishFeedbackYAML(const char* yaml)
   void* feedback = static_cast<char*>(message.get()) + internals.At.FeedbackFeedback;
   if (!ros2vtk::wire::from_yaml(*internals.Type->feedback(), yaml ? yaml : "", feedback, &error))
   {
-    vtkErrorMacro("PublishFeedbackYAML: invalid " << internals.Type->feedback()->ros_type << ": " << error);
+    vtkErrorMacro(
+      "PublishFeedbackYAML: invalid " << internals.Type->feedback()->ros_type << ": " << error);
     return false;
   }
   member<UUID>(message.get(), internals.At.FeedbackId) = goal->Info.goal_id;
@@ -516,7 +531,8 @@ bool vtkROS2ActionServerNode::Finish(int status, const char* resultYAML, const c
   if (resultYAML && *resultYAML &&
     !ros2vtk::wire::from_yaml(*internals.Type->result(), resultYAML, result.get(), &error))
   {
-    vtkErrorMacro("" << what << ": invalid " << internals.Type->result()->ros_type << ": " << error);
+    vtkErrorMacro(
+      "" << what << ": invalid " << internals.Type->result()->ros_type << ": " << error);
     return false;
   }
   goal->Status = static_cast<int8_t>(status);
@@ -550,11 +566,26 @@ bool vtkROS2ActionServerNode::ConfirmGoalCanceled(const char* resultYAML)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsReceived() const { return this->Internals->Received; }
-vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsAccepted() const { return this->Internals->Accepted; }
-vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsRejected() const { return this->Internals->Rejected; }
-vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfCancelRequests() const { return this->Internals->Cancels; }
-vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfResultsSent() const { return this->Internals->ResultsSent; }
+vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsReceived() const
+{
+  return this->Internals->Received;
+}
+vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsAccepted() const
+{
+  return this->Internals->Accepted;
+}
+vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfGoalsRejected() const
+{
+  return this->Internals->Rejected;
+}
+vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfCancelRequests() const
+{
+  return this->Internals->Cancels;
+}
+vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfResultsSent() const
+{
+  return this->Internals->ResultsSent;
+}
 
 void vtkROS2ActionServerNode::SetResultTimeout(double seconds)
 {
@@ -583,7 +614,8 @@ vtkTypeInt64 vtkROS2ActionServerNode::GetNumberOfExpiredGoals() const
 void vtkROS2ActionServerNode::WriteXML(vtkXMLDataElement* element)
 {
   this->Superclass::WriteXML(element);
-  if (this->Internals->ResultTimeout != kDefaultResultTimeout) // files with the default stay as before
+  if (this->Internals->ResultTimeout !=
+    kDefaultResultTimeout) // files with the default stay as before
   {
     element->SetDoubleAttribute("resultTimeout", this->Internals->ResultTimeout);
   }
@@ -596,7 +628,8 @@ bool vtkROS2ActionServerNode::ReadXML(vtkXMLDataElement* element)
     return false;
   }
   double seconds = 0; // absent in files of earlier versions: the default stays
-  if (element->GetScalarAttribute("resultTimeout", seconds) && seconds >= 0 && std::isfinite(seconds))
+  if (element->GetScalarAttribute("resultTimeout", seconds) && seconds >= 0 &&
+    std::isfinite(seconds))
   {
     this->Internals->ResultTimeout = seconds;
   }
@@ -610,8 +643,8 @@ int vtkROS2ActionServerNode::GetNumberOfGoals() const
 
 int vtkROS2ActionServerNode::GetNumberOfActiveGoals() const
 {
-  return static_cast<int>(std::count_if(this->Internals->Goals.begin(), this->Internals->Goals.end(),
-    [](const vtkInternals::Goal& g) { return !g.Result; }));
+  return static_cast<int>(std::count_if(this->Internals->Goals.begin(),
+    this->Internals->Goals.end(), [](const vtkInternals::Goal& g) { return !g.Result; }));
 }
 
 //------------------------------------------------------------------------------
@@ -626,11 +659,13 @@ void vtkROS2ActionServerNode::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's methods for this kind live with the kind (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2ActionServerNode* vtkROS2NodeNode::CreateAndAddActionServerNode(const char* type, const char* action)
+vtkROS2ActionServerNode* vtkROS2NodeNode::CreateAndAddActionServerNode(
+  const char* type, const char* action)
 {
   vtkNew<vtkROS2ActionServerNode> node;
-  const bool attached = this->AdoptKeyedChild("CreateAndAddActionServerNode", ActionServerRole, node, type, action, "action",
-    "this node serves ", "ros2:action_server:", [&] { return node->Attach(this, type, action); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddActionServerNode", ActionServerRole,
+    node, type, action, "action", "this node serves ",
+    "ros2:action_server:", [&] { return node->Attach(this, type, action); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -643,5 +678,6 @@ vtkROS2ActionServerNode* vtkROS2NodeNode::GetActionServerNodeByAction(const char
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteActionServerNode(const char* action)
 {
-  return this->RemoveKeyedChild("RemoveAndDeleteActionServerNode", ActionServerRole, action, "no server of ");
+  return this->RemoveKeyedChild(
+    "RemoveAndDeleteActionServerNode", ActionServerRole, action, "no server of ");
 }

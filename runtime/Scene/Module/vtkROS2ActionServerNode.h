@@ -100,13 +100,17 @@ public:
 
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type, creates the wire endpoints on `rosNode`.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action) override;
+  bool Attach(
+    vtkROS2NodeNode* rosNode, const std::string& type, const std::string& action) override;
   void Detach() override;
   /// Per Spin: takes goal, result and cancel requests and answers them.
   int ProcessRequests();
 #endif
 
-  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override
+  {
+    return this->ProcessRequests();
+  }
 
 protected:
   vtkROS2ActionServerNode();

@@ -60,7 +60,8 @@ void vtkROS2EndpointNode::OnRemovedFromScene()
 void vtkROS2EndpointNode::OnSceneRestored()
 {
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->IsEndpointAttached() && !this->EndpointType.empty())
+  if (rosNode && rosNode->GetParticipant() && !this->IsEndpointAttached() &&
+    !this->EndpointType.empty())
   {
     // A copy: Attach records the name it is given.
     const std::string type = this->EndpointType;
@@ -97,8 +98,8 @@ bool vtkROS2EndpointNode::ReadXML(vtkXMLDataElement* element)
     this->Name = name;
   }
   double timeout = 0;
-  if (this->TimeoutAttribute && element->GetScalarAttribute(this->TimeoutAttribute, timeout) && timeout > 0 &&
-    std::isfinite(timeout))
+  if (this->TimeoutAttribute && element->GetScalarAttribute(this->TimeoutAttribute, timeout) &&
+    timeout > 0 && std::isfinite(timeout))
   {
     this->EndpointTimeout = timeout;
   }

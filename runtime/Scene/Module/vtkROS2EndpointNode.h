@@ -32,16 +32,24 @@ public:
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type, creates the wire endpoints on `rosNode`. False
   /// with vtkErrorMacro otherwise.
-  virtual bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& name) = 0;
+  virtual bool Attach(
+    vtkROS2NodeNode* rosNode, const std::string& type, const std::string& name) = 0;
   /// Releases the wire endpoints (the ROS node is being destroyed or the node leaves the
   /// scene); the node keeps its type and name.
   virtual void Detach() = 0;
 #endif
 
-  /// Destroy hook: the wire endpoints live in the participant (vtkROS2SceneNode::OnROS2NodeDestroyed).
-  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override { this->Detach(); }
+  /// Destroy hook: the wire endpoints live in the participant
+  /// (vtkROS2SceneNode::OnROS2NodeDestroyed).
+  void OnROS2NodeDestroyed(vtkROS2NodeNode*) override
+  {
+    this->Detach();
+  }
   /// Index key among the ROS node's children of the same kind: the (resolved) name.
-  std::string GetROS2NodeChildKey() const override { return this->GetEndpointName(); }
+  std::string GetROS2NodeChildKey() const override
+  {
+    return this->GetEndpointName();
+  }
 
 protected:
   /// `kind` names the XML attributes (`<kind>Type`, `<kind>Name`) and PrintSelf's labels;
@@ -54,11 +62,15 @@ protected:
   virtual bool IsEndpointAttached() const = 0;
   /// For Attach, once the wire endpoints exist: records the type's ROS name, the name as given
   /// and as resolved, and references `rosNode`.
-  void EndpointAttached(vtkROS2NodeNode* rosNode, const char* type, const std::string& name, const std::string& resolved);
+  void EndpointAttached(vtkROS2NodeNode* rosNode, const char* type, const std::string& name,
+    const std::string& resolved);
 
   /// The resolved name while attached, else the name as given; the type's ROS name.
   const char* GetEndpointName() const;
-  const char* GetEndpointType() const { return this->EndpointType.c_str(); }
+  const char* GetEndpointType() const
+  {
+    return this->EndpointType.c_str();
+  }
 
   ///@{
   /// The endpoint's timeout in seconds (default 5; clients: waiting for a server and its

@@ -25,8 +25,7 @@
 #include <utility>
 #include <vector>
 
-namespace
-{
+namespace {
 const char* const DefaultNodeName = "slicer"; // as SlicerROS2
 using Clock = std::chrono::steady_clock;
 } // namespace
@@ -38,7 +37,8 @@ public:
   vtkNew<vtkROS2Scene> Scene;
   int EpollFd = -1;
   std::vector<int> Watched; // descriptors registered in EpollFd
-  std::vector<std::pair<int, std::vector<uint8_t>>> WatchedKeys; // (fd, participant GUID) of Watched
+  std::vector<std::pair<int, std::vector<uint8_t>>>
+    WatchedKeys; // (fd, participant GUID) of Watched
 
   vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
   vtkNew<vtkCallbackCommand> TimerCallback;
@@ -94,11 +94,13 @@ vtkROS2Logic::vtkROS2Logic()
   // Warnings and errors of the scene's nodes go to /rosout too (and still to the console).
   vtkROS2OutputWindow::Install();
   this->Internals->SceneCallback->SetClientData(this->Internals.get());
-  this->Internals->SceneCallback->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
-    static_cast<vtkInternals*>(clientData)->RosNodesStale = true;
-  });
+  this->Internals->SceneCallback->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void*) {
+      static_cast<vtkInternals*>(clientData)->RosNodesStale = true;
+    });
   this->Internals->Scene->AddObserver(vtkROS2Scene::NodeAddedEvent, this->Internals->SceneCallback);
-  this->Internals->Scene->AddObserver(vtkROS2Scene::NodeRemovedEvent, this->Internals->SceneCallback);
+  this->Internals->Scene->AddObserver(
+    vtkROS2Scene::NodeRemovedEvent, this->Internals->SceneCallback);
   this->Internals->TimerCallback->SetClientData(this);
   this->Internals->TimerCallback->SetCallback(
     [](vtkObject*, unsigned long, void* clientData, void* callData) {
@@ -133,8 +135,9 @@ vtkROS2RobotNode* vtkROS2Logic::AddRobot(const char* robotName, const char* para
   const char* parameterName, const char* fixedFrame, const char* tfPrefix)
 {
   vtkROS2NodeNode* node = this->GetDefaultROS2Node();
-  return node ? node->CreateAndAddRobotNode(robotName, parameterNodeName, parameterName, fixedFrame, tfPrefix)
-              : nullptr;
+  return node
+    ? node->CreateAndAddRobotNode(robotName, parameterNodeName, parameterName, fixedFrame, tfPrefix)
+    : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -188,8 +191,9 @@ int vtkROS2Logic::Spin()
 //------------------------------------------------------------------------------
 double vtkROS2Logic::GetMeanSpinDuration() const
 {
-  return this->NumberOfSpins > 0 ? this->TotalSpinDuration / static_cast<double>(this->NumberOfSpins)
-                                 : 0.0;
+  return this->NumberOfSpins > 0
+    ? this->TotalSpinDuration / static_cast<double>(this->NumberOfSpins)
+    : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -197,7 +201,8 @@ void vtkROS2Logic::SetSpinRate(double hz)
 {
   if (!(hz > 0.0) || !std::isfinite(hz))
   {
-    vtkErrorMacro("SetSpinRate: the rate must be a positive number of spins per second, got " << hz);
+    vtkErrorMacro(
+      "SetSpinRate: the rate must be a positive number of spins per second, got " << hz);
     return;
   }
   if (hz == this->SpinRate)
@@ -219,7 +224,8 @@ int vtkROS2Logic::SpinFor(double seconds)
     std::chrono::duration<double>(1.0 / this->SpinRate));
   const auto start = Clock::now();
   const auto end = start +
-    std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(0.0, seconds)));
+    std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(std::max(0.0, seconds)));
   int handled = 0;
   auto next = start;
   do
@@ -244,7 +250,8 @@ bool vtkROS2Logic::AttachToInteractor(vtkRenderWindowInteractor* interactor)
     return false;
   }
   this->DetachFromInteractor();
-  const auto periodMs = static_cast<unsigned long>(std::max(1.0, std::round(1000.0 / this->SpinRate)));
+  const auto periodMs =
+    static_cast<unsigned long>(std::max(1.0, std::round(1000.0 / this->SpinRate)));
   this->Internals->Interactor = interactor;
   this->Internals->TimerObserverTag =
     interactor->AddObserver(vtkCommand::TimerEvent, this->Internals->TimerCallback);
@@ -331,8 +338,8 @@ int vtkROS2Logic::SpinOnWakeUp(double timeoutSeconds)
   {
     return 0;
   }
-  const int timeoutMs = timeoutSeconds < 0 ? -1
-                                           : static_cast<int>(std::ceil(timeoutSeconds * 1000.0));
+  const int timeoutMs =
+    timeoutSeconds < 0 ? -1 : static_cast<int>(std::ceil(timeoutSeconds * 1000.0));
   epoll_event events[8];
   int ready = -1;
   do

@@ -42,7 +42,8 @@ public:
   /// `parameterName` of `parameterNodeName` (CreateAndAddRobotNode), and its removal. The
   /// robot node, or nullptr / false with vtkErrorMacro as the ROS node's methods.
   vtkROS2RobotNode* AddRobot(const char* robotName, const char* parameterNodeName,
-    const char* parameterName = "robot_description", const char* fixedFrame = "", const char* tfPrefix = "");
+    const char* parameterName = "robot_description", const char* fixedFrame = "",
+    const char* tfPrefix = "");
   bool RemoveRobot(const char* robotName);
   ///@}
 

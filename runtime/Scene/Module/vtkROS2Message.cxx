@@ -28,7 +28,8 @@ void NoMessage(void*) {}
 
 bool IsIntegerType(const std::string& type)
 {
-  return type == "byte" || type == "char" || type.rfind("int", 0) == 0 || type.rfind("uint", 0) == 0;
+  return type == "byte" || type == "char" || type.rfind("int", 0) == 0 ||
+    type.rfind("uint", 0) == 0;
 }
 
 bool IsFloatType(const std::string& type)
@@ -191,7 +192,8 @@ std::string vtkROS2Message::GetFieldType(const char* path)
 bool vtkROS2Message::IsMessageField(const char* path)
 {
   ros2vtk::scene::FieldDescription description;
-  return this->Type && ros2vtk::scene::describe_field(*this->Type, SafePath(path), description, nullptr) &&
+  return this->Type &&
+    ros2vtk::scene::describe_field(*this->Type, SafePath(path), description, nullptr) &&
     description.is_message && !description.is_container;
 }
 
@@ -199,7 +201,8 @@ bool vtkROS2Message::IsMessageField(const char* path)
 bool vtkROS2Message::IsArrayField(const char* path)
 {
   ros2vtk::scene::FieldDescription description;
-  return this->Type && ros2vtk::scene::describe_field(*this->Type, SafePath(path), description, nullptr) &&
+  return this->Type &&
+    ros2vtk::scene::describe_field(*this->Type, SafePath(path), description, nullptr) &&
     description.is_container;
 }
 
@@ -212,7 +215,8 @@ std::string vtkROS2Message::GetField(const char* path)
   {
     return value;
   }
-  if (!ros2vtk::scene::get_field_as_text(*this->Type, this->Message.get(), SafePath(path), value, &error))
+  if (!ros2vtk::scene::get_field_as_text(
+        *this->Type, this->Message.get(), SafePath(path), value, &error))
   {
     this->Fail("GetField: " + error);
     return std::string();
@@ -229,7 +233,8 @@ bool vtkROS2Message::SetField(const char* path, const char* value)
   {
     return false;
   }
-  if (!ros2vtk::scene::set_field_from_text(*this->Type, this->Message.get(), SafePath(path), value ? value : "", &error))
+  if (!ros2vtk::scene::set_field_from_text(
+        *this->Type, this->Message.get(), SafePath(path), value ? value : "", &error))
   {
     return this->Fail("SetField: " + error);
   }
@@ -299,7 +304,8 @@ bool vtkROS2Message::SetFieldFromDouble(const char* path, double value)
   {
     return this->SetField(path, value != 0.0 ? "true" : "false");
   }
-  return this->Fail("SetFieldFromDouble: field '" + SafePath(path) + "' is " + type + ", not a number");
+  return this->Fail(
+    "SetFieldFromDouble: field '" + SafePath(path) + "' is " + type + ", not a number");
 }
 
 //------------------------------------------------------------------------------
@@ -358,7 +364,8 @@ int vtkROS2Message::GetFieldLength(const char* path)
   {
     return -1;
   }
-  if (!ros2vtk::scene::get_field_length(*this->Type, this->Message.get(), SafePath(path), length, &error))
+  if (!ros2vtk::scene::get_field_length(
+        *this->Type, this->Message.get(), SafePath(path), length, &error))
   {
     this->Fail("GetFieldLength: " + error);
     return -1;
@@ -379,7 +386,8 @@ bool vtkROS2Message::SetFieldLength(const char* path, int length)
   {
     return this->Fail("SetFieldLength: a length cannot be negative");
   }
-  if (!ros2vtk::scene::resize_field(*this->Type, this->Message.get(), SafePath(path), static_cast<size_t>(length), &error))
+  if (!ros2vtk::scene::resize_field(
+        *this->Type, this->Message.get(), SafePath(path), static_cast<size_t>(length), &error))
   {
     return this->Fail("SetFieldLength: " + error);
   }
@@ -453,7 +461,8 @@ bool vtkROS2Message::SetFieldFromArray(const char* path, vtkDataArray* values)
                 : work->SetFieldFromDouble(element.c_str(), values->GetTuple1(i));
     if (!ok)
     {
-      return this->Fail("SetFieldFromArray: element " + std::to_string(i) + ": " + work->GetLastError());
+      return this->Fail(
+        "SetFieldFromArray: element " + std::to_string(i) + ": " + work->GetLastError());
     }
   }
   this->DeepCopy(work);
@@ -500,9 +509,11 @@ bool vtkROS2Message::SetFieldFromStringArray(const char* path, vtkStringArray* v
   }
   for (vtkIdType i = 0; i < count; ++i)
   {
-    if (!work->SetField((SafePath(path) + "[" + std::to_string(i) + "]").c_str(), values->GetValue(i).c_str()))
+    if (!work->SetField(
+          (SafePath(path) + "[" + std::to_string(i) + "]").c_str(), values->GetValue(i).c_str()))
     {
-      return this->Fail("SetFieldFromStringArray: element " + std::to_string(i) + ": " + work->GetLastError());
+      return this->Fail(
+        "SetFieldFromStringArray: element " + std::to_string(i) + ": " + work->GetLastError());
     }
   }
   this->DeepCopy(work);
@@ -522,7 +533,8 @@ bool vtkROS2Message::GetMessage(const char* path, vtkROS2Message* message)
   }
   const ros2vtk::wire::MessageTypeSupport* type = nullptr;
   std::string error;
-  void* nested = ros2vtk::scene::locate_message(*this->Type, this->Message.get(), SafePath(path), type, &error);
+  void* nested =
+    ros2vtk::scene::locate_message(*this->Type, this->Message.get(), SafePath(path), type, &error);
   if (!nested)
   {
     return this->Fail("GetMessage: " + error);
@@ -544,15 +556,16 @@ bool vtkROS2Message::SetMessage(const char* path, vtkROS2Message* message)
   }
   const ros2vtk::wire::MessageTypeSupport* type = nullptr;
   std::string error;
-  void* nested = ros2vtk::scene::locate_message(*this->Type, this->Message.get(), SafePath(path), type, &error);
+  void* nested =
+    ros2vtk::scene::locate_message(*this->Type, this->Message.get(), SafePath(path), type, &error);
   if (!nested)
   {
     return this->Fail("SetMessage: " + error);
   }
   if (type != message->Type)
   {
-    return this->Fail("SetMessage: field '" + SafePath(path) + "' is a " + type->ros_type + ", not a " +
-      message->Type->ros_type);
+    return this->Fail("SetMessage: field '" + SafePath(path) + "' is a " + type->ros_type +
+      ", not a " + message->Type->ros_type);
   }
   type->copy(message->Message.get(), nested);
   this->Modified();
@@ -583,7 +596,8 @@ bool vtkROS2Message::SetYAML(const char* yaml)
   std::string error;
   if (!ros2vtk::wire::from_yaml(*this->Type, yaml ? yaml : "", parsed.get(), &error))
   {
-    return this->Fail("SetYAML: invalid YAML for " + std::string(this->Type->ros_type) + ": " + error);
+    return this->Fail(
+      "SetYAML: invalid YAML for " + std::string(this->Type->ros_type) + ": " + error);
   }
   this->Message = std::move(parsed);
   this->Modified();

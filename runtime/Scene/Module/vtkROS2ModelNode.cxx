@@ -189,7 +189,8 @@ bool vtkROS2ModelNode::ReadXML(vtkXMLDataElement* element)
 void vtkROS2ModelNode::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Color: " << this->Color[0] << " " << this->Color[1] << " " << this->Color[2] << "\n";
+  os << indent << "Color: " << this->Color[0] << " " << this->Color[1] << " " << this->Color[2]
+     << "\n";
   os << indent << "Opacity: " << this->Opacity << "\n";
   os << indent << "Visibility: " << this->Visibility << "\n";
   os << indent << "ScalarVisibility: " << this->ScalarVisibility << "\n";

@@ -28,16 +28,16 @@
 #include <unordered_map>
 #include <vector>
 
-namespace
-{
+namespace {
 
 /// The order in which Spin calls its children's OnROS2NodeSpin (docs/architecture.md): tf first
 /// so that everything after it sees this spin's transforms, then incoming data, parameters,
 /// services, actions, and robots last (they read lookups and parameters). Children under any other
 /// role (a kind added outside the runtime, connectors) follow, roles sorted by name.
 const char* const SpinOrder[] = { vtkROS2NodeNode::Tf2LookupRole, vtkROS2NodeNode::SubscriberRole,
-  vtkROS2NodeNode::ParameterRole, vtkROS2NodeNode::ServiceClientRole, vtkROS2NodeNode::ServiceServerRole,
-  vtkROS2NodeNode::ActionClientRole, vtkROS2NodeNode::ActionServerRole, vtkROS2NodeNode::RobotRole };
+  vtkROS2NodeNode::ParameterRole, vtkROS2NodeNode::ServiceClientRole,
+  vtkROS2NodeNode::ServiceServerRole, vtkROS2NodeNode::ActionClientRole,
+  vtkROS2NodeNode::ActionServerRole, vtkROS2NodeNode::RobotRole };
 
 std::string IndexKey(const char* role, const std::string& key)
 {
@@ -54,8 +54,8 @@ class vtkROS2NodeNode::vtkInternals
 {
 public:
   std::unique_ptr<ros2vtk::wire::Participant> Participant;
-  std::string NodeName;      // as given to Create, kept for scene files after Destroy
-  std::string NodeNamespace; // as given to Create
+  std::string NodeName;         // as given to Create, kept for scene files after Destroy
+  std::string NodeNamespace;    // as given to Create
   bool CreateOnRestore = false; // read from a scene file: Create in OnSceneRestored
   bool Spinning = false;        // Spin ran since Create (SlicerROS2's GetSpinning)
   // The node's clock outlives the participant (GetNodeTime after Destroy still answers); the
@@ -152,13 +152,13 @@ bool vtkROS2NodeNode::Create(const char* nodeName, const char* nodeNamespace)
     return false;
   }
   std::string error;
-  auto participant = ros2vtk::wire::Participant::create(nodeName ? nodeName : "",
-    nodeNamespace ? nodeNamespace : "", ros2vtk::wire::ParticipantOptions::from_environment(),
-    &error);
+  auto participant =
+    ros2vtk::wire::Participant::create(nodeName ? nodeName : "", nodeNamespace ? nodeNamespace : "",
+      ros2vtk::wire::ParticipantOptions::from_environment(), &error);
   if (!participant)
   {
-    vtkErrorMacro("Create: cannot create ROS node '" << (nodeName ? nodeName : "(null)")
-                                                     << "': " << error);
+    vtkErrorMacro(
+      "Create: cannot create ROS node '" << (nodeName ? nodeName : "(null)") << "': " << error);
     return false;
   }
   this->Internals->Participant = std::move(participant);
@@ -277,8 +277,7 @@ vtkROS2SceneNode* vtkROS2NodeNode::FindChildByName(const char* role, const char*
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
+namespace {
 std::string JoinClassNames(ros2vtk::scene::NodeDirection direction)
 {
   std::string joined;
@@ -382,16 +381,18 @@ void vtkROS2NodeNode::UpdateLinkState()
   {
     if (vtkROS2SceneNode* subscriber = this->GetNthNodeReference(SubscriberRole, i))
     {
-      topics += (topics.empty() ? " (nothing can arrive on " : ", ") + subscriber->GetROS2NodeChildKey();
+      topics +=
+        (topics.empty() ? " (nothing can arrive on " : ", ") + subscriber->GetROS2NodeChildKey();
     }
   }
   if (!topics.empty())
   {
     topics += ")";
   }
-  vtkWarningMacro("ROS node " << this->Internals->Participant->fully_qualified_name() << " has seen no other ROS 2 "
-                  << "participant for " << static_cast<int>(alone) << " s" << topics << ": "
-                  << this->GetNoPeersAdvice());
+  vtkWarningMacro("ROS node " << this->Internals->Participant->fully_qualified_name()
+                              << " has seen no other ROS 2 "
+                              << "participant for " << static_cast<int>(alone) << " s" << topics
+                              << ": " << this->GetNoPeersAdvice());
 }
 
 //------------------------------------------------------------------------------
@@ -519,7 +520,8 @@ vtkROS2SceneNode* vtkROS2NodeNode::FindChild(const char* role, const std::string
         ++internals.ChildVisits;
         if (vtkROS2SceneNode* child = this->GetNthNodeReference(indexedRole.c_str(), i))
         {
-          internals.ChildIndex.emplace(IndexKey(indexedRole.c_str(), child->GetROS2NodeChildKey()), child);
+          internals.ChildIndex.emplace(
+            IndexKey(indexedRole.c_str(), child->GetROS2NodeChildKey()), child);
         }
       }
     }
@@ -593,8 +595,8 @@ bool vtkROS2NodeNode::ReadXML(vtkXMLDataElement* element)
   element->GetScalarAttribute("created", created);
   if (created && this->Internals->NodeName.empty())
   {
-    vtkErrorMacro("ReadXML: created ROS node '" << element->GetAttribute("id")
-                                                << "' has no ros2NodeName");
+    vtkErrorMacro(
+      "ReadXML: created ROS node '" << element->GetAttribute("id") << "' has no ros2NodeName");
     return false;
   }
   this->Internals->CreateOnRestore = created != 0;
@@ -659,7 +661,8 @@ int vtkROS2NodeNode::SpinTf2Listener()
   internals.Tf2RejectionsReported = rejected;
   if (due > 0)
   {
-    vtkWarningMacro("tf2: rejected " << due << " transform(s): " << internals.Tf2Listener->last_rejection());
+    vtkWarningMacro(
+      "tf2: rejected " << due << " transform(s): " << internals.Tf2Listener->last_rejection());
   }
   return handled;
 }
@@ -700,10 +703,12 @@ ros2vtk::tf2_ros::TransformBroadcaster* vtkROS2NodeNode::GetTf2Broadcaster(bool 
   if (!broadcaster)
   {
     std::string error;
-    broadcaster = ros2vtk::tf2_ros::TransformBroadcaster::create(*this->Internals->Participant, isStatic, &error);
+    broadcaster = ros2vtk::tf2_ros::TransformBroadcaster::create(
+      *this->Internals->Participant, isStatic, &error);
     if (!broadcaster)
     {
-      vtkErrorMacro("tf2: cannot publish on " << (isStatic ? "/tf_static" : "/tf") << ": " << error);
+      vtkErrorMacro(
+        "tf2: cannot publish on " << (isStatic ? "/tf_static" : "/tf") << ": " << error);
     }
   }
   return broadcaster.get();
@@ -715,9 +720,9 @@ ros2vtk::wire::ParameterServer* vtkROS2NodeNode::GetParameterServer() const
   return this->Internals->Parameters.get();
 }
 
-
 //------------------------------------------------------------------------------
-vtkROS2SceneNode* vtkROS2NodeNode::FindChildByFrames(const char* role, const char* parentFrame, const char* childFrame)
+vtkROS2SceneNode* vtkROS2NodeNode::FindChildByFrames(
+  const char* role, const char* parentFrame, const char* childFrame)
 {
   if (!parentFrame || !childFrame)
   {
@@ -745,8 +750,8 @@ vtkROS2SceneNode* vtkROS2NodeNode::FindChildByID(const char* role, const char* n
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2NodeNode::AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name,
-  const std::function<bool()>& attach)
+bool vtkROS2NodeNode::AdoptChild(
+  const char* role, vtkROS2SceneNode* child, const char* name, const std::function<bool()>& attach)
 {
   child->SetName(name);
   this->Scene->AddNode(child);
@@ -761,8 +766,8 @@ bool vtkROS2NodeNode::AdoptChild(const char* role, vtkROS2SceneNode* child, cons
 
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::AdoptKeyedChild(const char* what, const char* role, vtkROS2SceneNode* child,
-  const char* type, const char* key, const char* argument, const char* duplicate, const char* namePrefix,
-  const std::function<bool()>& attach)
+  const char* type, const char* key, const char* argument, const char* duplicate,
+  const char* namePrefix, const std::function<bool()>& attach)
 {
   if (!this->CheckReadyFor(what))
   {
@@ -782,7 +787,8 @@ bool vtkROS2NodeNode::AdoptKeyedChild(const char* what, const char* role, vtkROS
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveKeyedChild(const char* what, const char* role, const char* key, const char* missing)
+bool vtkROS2NodeNode::RemoveKeyedChild(
+  const char* what, const char* role, const char* key, const char* missing)
 {
   vtkROS2SceneNode* child = this->FindChildByName(role, key);
   if (!child)
@@ -800,7 +806,8 @@ bool vtkROS2NodeNode::CheckReadyFor(const char* what)
   {
     if (!this->GetLeftSceneBecause().empty())
     {
-      vtkErrorMacro(<< what << ": this ROS node is in no scene any more: " << this->GetLeftSceneBecause());
+      vtkErrorMacro(<< what
+                    << ": this ROS node is in no scene any more: " << this->GetLeftSceneBecause());
     }
     else
     {
@@ -817,11 +824,10 @@ bool vtkROS2NodeNode::CheckReadyFor(const char* what)
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-template <typename Fill>
-bool SetOwnParameter(ros2vtk::wire::ParameterServer* server, const char* name, uint8_t type, Fill fill,
-                     std::string* error)
+namespace {
+template<typename Fill>
+bool SetOwnParameter(ros2vtk::wire::ParameterServer* server, const char* name, uint8_t type,
+  Fill fill, std::string* error)
 {
   if (!server)
   {
@@ -852,23 +858,36 @@ bool SetOwnParameter(ros2vtk::wire::ParameterServer* server, const char* name, u
 }
 } // namespace
 
-#define ROS2VTK_SET_OWN_PARAMETER(TYPE_ID, FIELD)                                                    \
-  std::string error;                                                                                \
-  if (!SetOwnParameter(this->Internals->Parameters.get(), name, TYPE_ID,                            \
-        [&](ros2vtk::rcl_interfaces::msg::ParameterValue& v) { v.FIELD = value; }, &error))         \
-  {                                                                                                 \
+#define ROS2VTK_SET_OWN_PARAMETER(TYPE_ID, FIELD)                                                  \
+  std::string error;                                                                               \
+  if (!SetOwnParameter(                                                                            \
+        this->Internals->Parameters.get(), name, TYPE_ID,                                          \
+        [&](ros2vtk::rcl_interfaces::msg::ParameterValue& v) { v.FIELD = value; }, &error))        \
+  {                                                                                                \
     vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);                       \
-    return false;                                                                                   \
-  }                                                                                                 \
+    return false;                                                                                  \
+  }                                                                                                \
   return true;
 
-bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_BOOL, bool_value) }
-bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_INTEGER, integer_value) }
-bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value) { ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_DOUBLE, double_value) }
+bool vtkROS2NodeNode::SetParameterAsBool(const char* name, bool value)
+{
+  ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_BOOL, bool_value)
+}
+bool vtkROS2NodeNode::SetParameterAsInteger(const char* name, vtkTypeInt64 value)
+{
+  ROS2VTK_SET_OWN_PARAMETER(
+    ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_INTEGER, integer_value)
+}
+bool vtkROS2NodeNode::SetParameterAsDouble(const char* name, double value)
+{
+  ROS2VTK_SET_OWN_PARAMETER(
+    ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_DOUBLE, double_value)
+}
 bool vtkROS2NodeNode::SetParameterAsString(const char* name, const char* text)
 {
   const std::string value = text ? text : "";
-  ROS2VTK_SET_OWN_PARAMETER(ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_STRING, string_value)
+  ROS2VTK_SET_OWN_PARAMETER(
+    ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_STRING, string_value)
 }
 #undef ROS2VTK_SET_OWN_PARAMETER
 
@@ -894,8 +913,10 @@ vtkTypeInt64 vtkROS2NodeNode::GetParameterValueSizeLimit()
 //------------------------------------------------------------------------------
 std::string vtkROS2NodeNode::PrintOwnParameter(const char* name)
 {
-  const auto* value = this->Internals->Parameters && name ? this->Internals->Parameters->store().get(name) : nullptr;
-  return std::string(name ? name : "") + " (" + ros2vtk::wire::parameter_type_name(value ? value->type : 0) +
+  const auto* value =
+    this->Internals->Parameters && name ? this->Internals->Parameters->store().get(name) : nullptr;
+  return std::string(name ? name : "") + " (" +
+    ros2vtk::wire::parameter_type_name(value ? value->type : 0) +
     "): " + (value ? ros2vtk::wire::parameter_value_to_string(*value) : std::string("not set"));
 }
 
@@ -1015,7 +1036,8 @@ void vtkROS2NodeNode::StartTimeSource()
     ros2vtk::wire::TimeSource::create(*internals.Participant, store, internals.Clock, &error);
   if (!internals.TimeSource)
   {
-    vtkWarningMacro("Create: ROS node '" << internals.NodeName << "' has no use_sim_time: " << error);
+    vtkWarningMacro(
+      "Create: ROS node '" << internals.NodeName << "' has no use_sim_time: " << error);
   }
   internals.Parameters->set_clock(&internals.Clock);
   // A switch made here comes before this participant's first tf data: nothing to report. A
@@ -1043,8 +1065,8 @@ void vtkROS2NodeNode::ClearTf2BufferOnClockJump()
   if (internals.Tf2Buffer)
   {
     internals.Tf2Buffer->clear();
-    vtkWarningMacro("tf2: the ROS clock of node " << internals.NodeName
-                                                  << " changed source or jumped back in time: tf buffer cleared");
+    vtkWarningMacro("tf2: the ROS clock of node "
+      << internals.NodeName << " changed source or jumped back in time: tf buffer cleared");
   }
 }
 
@@ -1060,7 +1082,8 @@ bool vtkROS2NodeNode::SetUseSimTime(bool useSimTime)
   }
   if (!internals.TimeSource)
   {
-    vtkErrorMacro("SetUseSimTime: ROS node '" << internals.NodeName << "' has no use_sim_time parameter");
+    vtkErrorMacro(
+      "SetUseSimTime: ROS node '" << internals.NodeName << "' has no use_sim_time parameter");
     return false;
   }
   // Through the parameter store, so the switch is the same as one made by another node through
@@ -1125,7 +1148,8 @@ void vtkROS2NodeNode::StartTypeDescriptionService()
   {
     return;
   }
-  internals.TypeDescriptions = ros2vtk::wire::TypeDescriptionService::create(*internals.Participant, &error);
+  internals.TypeDescriptions =
+    ros2vtk::wire::TypeDescriptionService::create(*internals.Participant, &error);
   if (!internals.TypeDescriptions)
   {
     vtkWarningMacro("Create: ROS node '" << internals.NodeName
@@ -1139,8 +1163,8 @@ bool vtkROS2NodeNode::SetStartTypeDescriptionService(bool start)
   if (this->Internals->Participant)
   {
     vtkErrorMacro("SetStartTypeDescriptionService: parameter "
-                  << ros2vtk::wire::TypeDescriptionService::kEnableParameter
-                  << " is read-only once ROS node '" << this->Internals->NodeName << "' is created");
+      << ros2vtk::wire::TypeDescriptionService::kEnableParameter << " is read-only once ROS node '"
+      << this->Internals->NodeName << "' is created");
     return false;
   }
   this->Internals->StartTypeDescriptionServiceOnCreate = start;

@@ -39,18 +39,14 @@ class vtkROS2ServiceServerNode;
 class vtkROS2Tf2BroadcasterNode;
 class vtkROS2Tf2LookupNode;
 class vtkROS2TopicNode;
-namespace ros2vtk
-{
-namespace tf2
-{
+namespace ros2vtk {
+namespace tf2 {
 class BufferCore;
 }
-namespace tf2_ros
-{
+namespace tf2_ros {
 class TransformBroadcaster;
 }
-namespace wire
-{
+namespace wire {
 class ParameterServer;
 }
 }
@@ -116,8 +112,14 @@ public:
   std::string GetRegisteredROS2PublisherNodes() const;
   std::string GetRegisteredROS2SubscriberNodes() const;
   /// SlicerROS2's spelling of the two above.
-  std::string RegisteredROS2PublisherNodes() const { return this->GetRegisteredROS2PublisherNodes(); }
-  std::string RegisteredROS2SubscriberNodes() const { return this->GetRegisteredROS2SubscriberNodes(); }
+  std::string RegisteredROS2PublisherNodes() const
+  {
+    return this->GetRegisteredROS2PublisherNodes();
+  }
+  std::string RegisteredROS2SubscriberNodes() const
+  {
+    return this->GetRegisteredROS2SubscriberNodes();
+  }
 
   /// Processes what DDS queued for this node's subscribers, on the calling thread (each
   /// subscriber with new messages fires one ModifiedEvent). Returns the number of messages.
@@ -136,14 +138,17 @@ public:
   /// node publishes matrices as transforms (dynamic, or static with SetStatic). Frame pairs are
   /// unique per ROS node. Remove* return false (vtkErrorMacro) when there is no such node.
   vtkROS2Tf2LookupNode* CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame);
-  vtkROS2Tf2LookupNode* GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame);
+  vtkROS2Tf2LookupNode* GetTf2LookupNodeByParentChild(
+    const char* parentFrame, const char* childFrame);
   /// By scene node ID (SlicerROS2 scripts keep IDs); nullptr unless it is this node's lookup.
   vtkROS2Tf2LookupNode* GetTf2LookupNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2LookupNode(const char* parentFrame, const char* childFrame);
   /// By scene node ID (SlicerROS2's one-argument form).
   bool RemoveAndDeleteTf2LookupNode(const char* nodeID);
-  vtkROS2Tf2BroadcasterNode* CreateAndAddTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
-  vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByParentChild(const char* parentFrame, const char* childFrame);
+  vtkROS2Tf2BroadcasterNode* CreateAndAddTf2BroadcasterNode(
+    const char* parentFrame, const char* childFrame);
+  vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByParentChild(
+    const char* parentFrame, const char* childFrame);
   /// By scene node ID; nullptr unless it is this node's broadcaster.
   vtkROS2Tf2BroadcasterNode* GetTf2BroadcasterNodeByID(const char* nodeID);
   bool RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame);
@@ -178,7 +183,10 @@ public:
   std::string GetRegisteredServiceTypes() const;
   /// SlicerROS2's name for the same list (its service clients are one class per type; ours is
   /// one class for every type, so the list names the types).
-  std::string RegisteredROS2ServiceClientNodes() const { return this->GetRegisteredServiceTypes(); }
+  std::string RegisteredROS2ServiceClientNodes() const
+  {
+    return this->GetRegisteredServiceTypes();
+  }
   ///@}
 
   ///@{
@@ -200,13 +208,15 @@ public:
   ///@{
   /// Robots (SlicerROS2's robot node). The description is the `parameterName` parameter of the
   /// remote `parameterNodeName` (a robot_state_publisher), a std_msgs/String topic (transient
-  /// local, like RViz 2's RobotModel) or a file. Links are looked up from `fixedFrame` (empty: the root
-  /// link) with `tfPrefix` prepended to link names. The robot appears on the spin that brings its
-  /// description. Names are unique per ROS node; nullptr / false (vtkErrorMacro) otherwise.
+  /// local, like RViz 2's RobotModel) or a file. Links are looked up from `fixedFrame` (empty: the
+  /// root link) with `tfPrefix` prepended to link names. The robot appears on the spin that brings
+  /// its description. Names are unique per ROS node; nullptr / false (vtkErrorMacro) otherwise.
   vtkROS2RobotNode* CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
-    const char* parameterName = "robot_description", const char* fixedFrame = "", const char* tfPrefix = "");
-  vtkROS2RobotNode* CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic = "/robot_description",
-    const char* fixedFrame = "", const char* tfPrefix = "");
+    const char* parameterName = "robot_description", const char* fixedFrame = "",
+    const char* tfPrefix = "");
+  vtkROS2RobotNode* CreateAndAddRobotNodeFromTopic(const char* robotName,
+    const char* topic = "/robot_description", const char* fixedFrame = "",
+    const char* tfPrefix = "");
   /// RViz 2's third source: a URDF file on this machine (re-read with vtkROS2RobotNode::Reload).
   /// `package://` URIs of the package holding the file resolve without any set-up.
   vtkROS2RobotNode* CreateAndAddRobotNodeFromFile(const char* robotName, const char* urdfFile,
@@ -367,25 +377,27 @@ private:
   /// A child by a name as given or as resolved against this node's namespace (topics,
   /// services), or by its frame pair.
   vtkROS2SceneNode* FindChildByName(const char* role, const char* name);
-  vtkROS2SceneNode* FindChildByFrames(const char* role, const char* parentFrame, const char* childFrame);
+  vtkROS2SceneNode* FindChildByFrames(
+    const char* role, const char* parentFrame, const char* childFrame);
   /// The scene node `nodeID` when this node references it under `role`.
   vtkROS2SceneNode* FindChildByID(const char* role, const char* nodeID);
   /// Names `child`, adds it to the scene and runs `attach`; on success references it under
   /// `role`, on failure removes it from the scene again.
-  bool AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name, const std::function<bool()>& attach);
+  bool AdoptChild(const char* role, vtkROS2SceneNode* child, const char* name,
+    const std::function<bool()>& attach);
   /// The create and remove paths of the kinds keyed by one ROS name (service and action clients
   /// and servers), for their SlicerROS2 methods: `what` names the method in errors, `argument`
   /// the key ("service"), `duplicate` / `missing` start the refusals ("this node serves ",
   /// "no server of "). Create checks readiness and arguments, refuses a second child of the same
   /// name, then adopts `child` named `namePrefix` + key.
-  bool AdoptKeyedChild(const char* what, const char* role, vtkROS2SceneNode* child, const char* type,
-    const char* key, const char* argument, const char* duplicate, const char* namePrefix,
-    const std::function<bool()>& attach);
+  bool AdoptKeyedChild(const char* what, const char* role, vtkROS2SceneNode* child,
+    const char* type, const char* key, const char* argument, const char* duplicate,
+    const char* namePrefix, const std::function<bool()>& attach);
   bool RemoveKeyedChild(const char* what, const char* role, const char* key, const char* missing);
   /// CreateAndAddPublisherNode / SubscriberNode: the class mapped to `type`, or `newGeneric`'s
   /// node (a new reference) for a registered type without a mapping rule.
-  vtkROS2SceneNode* CreateAndAddTopicNode(
-    bool publisher, const char* type, const char* topic, vtkROS2TopicNode* (*newGeneric)(const char* rosType));
+  vtkROS2SceneNode* CreateAndAddTopicNode(bool publisher, const char* type, const char* topic,
+    vtkROS2TopicNode* (*newGeneric)(const char* rosType));
   /// "name" -> "/name" (monitored nodes are named absolutely).
   static std::string AbsoluteNodeName(const char* name);
   /// Adds a robot node and attaches it to its description source with `attach`; removes it again

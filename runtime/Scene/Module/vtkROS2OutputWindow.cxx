@@ -11,8 +11,7 @@
 
 vtkStandardNewMacro(vtkROS2OutputWindow);
 
-namespace
-{
+namespace {
 // Publishing could itself report a problem through VTK; that report must not publish again.
 thread_local bool Publishing = false;
 }
@@ -35,8 +34,8 @@ void vtkROS2OutputWindow::Install()
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2OutputWindow::ParseVTKMessage(const char* text, std::string& file, int& line,
-  std::string& function, std::string& message)
+void vtkROS2OutputWindow::ParseVTKMessage(
+  const char* text, std::string& file, int& line, std::string& function, std::string& message)
 {
   file.clear();
   function.clear();
@@ -137,5 +136,6 @@ void vtkROS2OutputWindow::DisplayText(const char* text)
 void vtkROS2OutputWindow::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Previous: " << (this->Previous ? this->Previous->GetClassName() : "(none)") << "\n";
+  os << indent << "Previous: " << (this->Previous ? this->Previous->GetClassName() : "(none)")
+     << "\n";
 }

@@ -34,8 +34,8 @@ public:
 #ifndef __VTK_WRAP__
   /// Splits VTK's "Warning: In FILE, line N\nClass (0x…): message" into its parts (empty /
   /// 0 where the text has no such part). Public for tests.
-  static void ParseVTKMessage(const char* text, std::string& file, int& line, std::string& function,
-    std::string& message);
+  static void ParseVTKMessage(
+    const char* text, std::string& file, int& line, std::string& function, std::string& message);
 #endif
 
 protected:

@@ -21,8 +21,7 @@
 
 vtkStandardNewMacro(vtkROS2ParameterNode);
 
-namespace
-{
+namespace {
 namespace rcl = ::ros2vtk::rcl_interfaces::msg;
 }
 
@@ -64,7 +63,8 @@ bool vtkROS2ParameterNode::Attach(vtkROS2NodeNode* rosNode, const std::string& r
     return false;
   }
   std::string error;
-  auto client = ros2vtk::wire::ParameterClient::create(*rosNode->GetParticipant(), remoteNode, &error);
+  auto client =
+    ros2vtk::wire::ParameterClient::create(*rosNode->GetParticipant(), remoteNode, &error);
   if (!client)
   {
     vtkErrorMacro("parameter node for " << remoteNode << ": " << error);
@@ -84,7 +84,8 @@ bool vtkROS2ParameterNode::Attach(vtkROS2NodeNode* rosNode, const std::string& r
 void vtkROS2ParameterNode::OnSceneRestored()
 {
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  if (rosNode && rosNode->GetParticipant() && !this->Internals->Client && !this->Internals->RemoteNode.empty())
+  if (rosNode && rosNode->GetParticipant() && !this->Internals->Client &&
+    !this->Internals->RemoteNode.empty())
   {
     this->Attach(rosNode, this->Internals->RemoteNode);
   }
@@ -168,9 +169,9 @@ std::string vtkROS2ParameterNode::GetParameterNames() const
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-const rcl::ParameterValue* Find(const std::unique_ptr<ros2vtk::wire::ParameterClient>& client, const char* name)
+namespace {
+const rcl::ParameterValue* Find(
+  const std::unique_ptr<ros2vtk::wire::ParameterClient>& client, const char* name)
 {
   return client && name ? client->value(name) : nullptr;
 }
@@ -179,7 +180,7 @@ using ParameterType = ros2vtk::rcl_interfaces::msg::ParameterType;
 
 /// Copies a parameter's array into a VTK array (the typed-array getters), element by element
 /// through `convert`.
-template <typename ArrayType, typename Values, typename Convert>
+template<typename ArrayType, typename Values, typename Convert>
 bool FillArray(ArrayType* array, const Values& values, Convert convert)
 {
   if (!array)
@@ -193,17 +194,20 @@ bool FillArray(ArrayType* array, const Values& values, Convert convert)
   }
   return true;
 }
-const auto Same = [](const auto& value) { return value; };
+const auto Same = [](const auto& value) {
+  return value;
+};
 } // namespace
 
-#define ROS2VTK_PARAMETER_VALUE(name, expected, fallback)                                           \
-  const rcl::ParameterValue* value = Find(this->Internals->Client, name);                        \
-  if (!value || value->type != (expected))                                                        \
-  {                                                                                               \
-    vtkErrorMacro("parameter '" << (name ? name : "") << "' of " << this->Internals->RemoteNode   \
-                                << " is " << (value ? ros2vtk::wire::parameter_type_name(value->type) : "not set") \
-                                << ", not " << ros2vtk::wire::parameter_type_name(expected));     \
-    return fallback;                                                                              \
+#define ROS2VTK_PARAMETER_VALUE(name, expected, fallback)                                          \
+  const rcl::ParameterValue* value = Find(this->Internals->Client, name);                          \
+  if (!value || value->type != (expected))                                                         \
+  {                                                                                                \
+    vtkErrorMacro(                                                                                 \
+      "parameter '" << (name ? name : "") << "' of " << this->Internals->RemoteNode << " is "      \
+                    << (value ? ros2vtk::wire::parameter_type_name(value->type) : "not set")       \
+                    << ", not " << ros2vtk::wire::parameter_type_name(expected));                  \
+    return fallback;                                                                               \
   }
 
 //------------------------------------------------------------------------------
@@ -252,7 +256,8 @@ std::string vtkROS2ParameterNode::GetParameterAsString(const char* name) const
   return value->string_value;
 }
 
-bool vtkROS2ParameterNode::GetParameterAsByteArray(const char* name, vtkUnsignedCharArray* values) const
+bool vtkROS2ParameterNode::GetParameterAsByteArray(
+  const char* name, vtkUnsignedCharArray* values) const
 {
   ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_BYTE_ARRAY, false)
   return FillArray(values, value->byte_array_value, Same);
@@ -264,19 +269,22 @@ bool vtkROS2ParameterNode::GetParameterAsVectorOfBools(const char* name, vtkIntA
   return FillArray(values, value->bool_array_value, [](bool item) { return item ? 1 : 0; });
 }
 
-bool vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(const char* name, vtkTypeInt64Array* values) const
+bool vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(
+  const char* name, vtkTypeInt64Array* values) const
 {
   ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_INTEGER_ARRAY, false)
   return FillArray(values, value->integer_array_value, Same);
 }
 
-bool vtkROS2ParameterNode::GetParameterAsVectorOfDoubles(const char* name, vtkDoubleArray* values) const
+bool vtkROS2ParameterNode::GetParameterAsVectorOfDoubles(
+  const char* name, vtkDoubleArray* values) const
 {
   ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_DOUBLE_ARRAY, false)
   return FillArray(values, value->double_array_value, Same);
 }
 
-bool vtkROS2ParameterNode::GetParameterAsVectorOfStrings(const char* name, vtkStringArray* values) const
+bool vtkROS2ParameterNode::GetParameterAsVectorOfStrings(
+  const char* name, vtkStringArray* values) const
 {
   ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_STRING_ARRAY, false)
   return FillArray(values, value->string_array_value, Same);
@@ -288,10 +296,12 @@ std::vector<int> vtkROS2ParameterNode::GetParameterAsVectorOfBools(const char* n
   return std::vector<int>(value->bool_array_value.begin(), value->bool_array_value.end());
 }
 
-std::vector<vtkTypeInt64> vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(const char* name) const
+std::vector<vtkTypeInt64> vtkROS2ParameterNode::GetParameterAsVectorOfIntegers(
+  const char* name) const
 {
   ROS2VTK_PARAMETER_VALUE(name, ParameterType::PARAMETER_INTEGER_ARRAY, std::vector<vtkTypeInt64>())
-  return std::vector<vtkTypeInt64>(value->integer_array_value.begin(), value->integer_array_value.end());
+  return std::vector<vtkTypeInt64>(
+    value->integer_array_value.begin(), value->integer_array_value.end());
 }
 
 std::vector<double> vtkROS2ParameterNode::GetParameterAsVectorOfDoubles(const char* name) const
@@ -314,7 +324,8 @@ std::string vtkROS2ParameterNode::PrintParameter(const char* name) const
   const rcl::ParameterValue* value = Find(this->Internals->Client, name);
   std::ostringstream text;
   text << (name ? name : "") << " (" << ros2vtk::wire::parameter_type_name(value ? value->type : 0)
-       << "): " << (value ? ros2vtk::wire::parameter_value_to_string(*value) : std::string("not set"));
+       << "): "
+       << (value ? ros2vtk::wire::parameter_value_to_string(*value) : std::string("not set"));
   return text.str();
 }
 
@@ -369,7 +380,8 @@ void vtkROS2ParameterNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
 vtkROS2ParameterNode* vtkROS2NodeNode::CreateAndAddParameterNode(const char* monitoredNodeName)
 {
@@ -403,7 +415,8 @@ vtkROS2ParameterNode* vtkROS2NodeNode::CreateAndAddParameterNode(const char* mon
 //------------------------------------------------------------------------------
 vtkROS2ParameterNode* vtkROS2NodeNode::GetParameterNodeByNode(const char* monitoredNodeName)
 {
-  return vtkROS2ParameterNode::SafeDownCast(this->FindChild(ParameterRole, AbsoluteNodeName(monitoredNodeName)));
+  return vtkROS2ParameterNode::SafeDownCast(
+    this->FindChild(ParameterRole, AbsoluteNodeName(monitoredNodeName)));
 }
 
 //------------------------------------------------------------------------------
@@ -412,7 +425,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteParameterNode(const char* monitoredNodeName
   vtkROS2ParameterNode* node = this->GetParameterNodeByNode(monitoredNodeName);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteParameterNode: " << AbsoluteNodeName(monitoredNodeName) << " is not monitored");
+    vtkErrorMacro("RemoveAndDeleteParameterNode: " << AbsoluteNodeName(monitoredNodeName)
+                                                   << " is not monitored");
     return false;
   }
   return this->RemoveChild(ParameterRole, node);
@@ -424,8 +438,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteParameterNodeByNodeID(const char* nodeID)
   vtkROS2SceneNode* node = this->FindChildByID(ParameterRole, nodeID);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteParameterNodeByNodeID: " << (nodeID ? nodeID : "(null)")
-                                                          << " is not a parameter node of this node");
+    vtkErrorMacro("RemoveAndDeleteParameterNodeByNodeID: "
+      << (nodeID ? nodeID : "(null)") << " is not a parameter node of this node");
     return false;
   }
   return this->RemoveChild(ParameterRole, node);

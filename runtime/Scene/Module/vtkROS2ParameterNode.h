@@ -87,14 +87,19 @@ public:
   int ProcessParameterUpdates();
 #endif
 
-
   /// Destroy hook: the parameter client's endpoints live in the ROS node's participant, so they
   /// go with it (otherwise they would be released after the participant, at scene teardown).
   void OnROS2NodeDestroyed(vtkROS2NodeNode*) override;
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): applies parameter updates.
-  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessParameterUpdates(); }
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override
+  {
+    return this->ProcessParameterUpdates();
+  }
   /// Index key among the ROS node's parameter nodes.
-  std::string GetROS2NodeChildKey() const override { return this->GetMonitoredNodeName(); }
+  std::string GetROS2NodeChildKey() const override
+  {
+    return this->GetMonitoredNodeName();
+  }
 
 protected:
   vtkROS2ParameterNode();

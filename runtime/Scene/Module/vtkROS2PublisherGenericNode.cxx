@@ -14,8 +14,7 @@
 
 vtkStandardNewMacro(vtkROS2PublisherGenericNode);
 
-namespace
-{
+namespace {
 /// What CreateAndAddPublisherNode makes for a type without a mapping rule.
 vtkROS2TopicNode* NewGeneric(const char* rosType)
 {
@@ -72,7 +71,8 @@ bool vtkROS2PublisherGenericNode::PublishYAML(const char* yaml)
   std::string error;
   if (!ros2vtk::wire::from_yaml(type, yaml ? yaml : "", message.get(), &error))
   {
-    this->RecordFailedPublish(("invalid YAML for " + std::string(type.ros_type) + ": " + error).c_str());
+    this->RecordFailedPublish(
+      ("invalid YAML for " + std::string(type.ros_type) + ": " + error).c_str());
     return false;
   }
   return this->PublishMessage(message.get());
@@ -97,9 +97,12 @@ void vtkROS2PublisherGenericNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2PublisherNode* vtkROS2NodeNode::CreateAndAddPublisherNode(const char* type, const char* topic)
+vtkROS2PublisherNode* vtkROS2NodeNode::CreateAndAddPublisherNode(
+  const char* type, const char* topic)
 {
-  return vtkROS2PublisherNode::SafeDownCast(this->CreateAndAddTopicNode(true, type, topic, &NewGeneric));
+  return vtkROS2PublisherNode::SafeDownCast(
+    this->CreateAndAddTopicNode(true, type, topic, &NewGeneric));
 }

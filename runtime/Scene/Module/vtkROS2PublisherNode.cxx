@@ -74,7 +74,8 @@ bool vtkROS2PublisherNode::PublishMessage(const void* rosMessage)
   }
   if (!this->Internals->Publisher->publish(rosMessage))
   {
-    this->LastPublishError = "Publish: DDS refused the sample on '" + std::string(this->GetTopic()) + "'";
+    this->LastPublishError =
+      "Publish: DDS refused the sample on '" + std::string(this->GetTopic()) + "'";
     vtkErrorMacro(<< this->LastPublishError);
     return false;
   }
@@ -94,7 +95,8 @@ bool vtkROS2PublisherNode::PublishMessageObject(vtkROS2Message* message)
   if (!this->HasMessageTypeSupport() || message->GetTypeSupport() != &this->GetMessageTypeSupport())
   {
     const std::string reason = std::string("PublishMessageObject: a ") + message->GetROSType() +
-      " cannot go on a " + (this->HasMessageTypeSupport() ? this->GetMessageTypeSupport().ros_type : "(type not set)") +
+      " cannot go on a " +
+      (this->HasMessageTypeSupport() ? this->GetMessageTypeSupport().ros_type : "(type not set)") +
       " publisher";
     this->RecordFailedPublish(reason.c_str());
     return false;
@@ -163,9 +165,8 @@ int vtkROS2PublisherNode::PublishObject(vtkObject* object)
   {
     return this->PublishMessageObject(message) ? 1 : 0;
   }
-  const std::string reason = std::string("PublishObject: ") + this->GetClassName() +
-    " publishes " + this->GetSlicerType() + ", not " +
-    (object ? object->GetClassName() : "a null object");
+  const std::string reason = std::string("PublishObject: ") + this->GetClassName() + " publishes " +
+    this->GetSlicerType() + ", not " + (object ? object->GetClassName() : "a null object");
   this->RecordFailedPublish(reason.c_str());
   return 0;
 }
@@ -173,9 +174,9 @@ int vtkROS2PublisherNode::PublishObject(vtkObject* object)
 //------------------------------------------------------------------------------
 int vtkROS2PublisherNode::PublishValue(const vtkVariant& value)
 {
-  const std::string reason = std::string("PublishValue: ") + this->GetClassName() +
-    " publishes " + this->GetSlicerType() + ", not a " +
-    (value.IsValid() ? value.GetTypeAsString() : "invalid") + " value";
+  const std::string reason = std::string("PublishValue: ") + this->GetClassName() + " publishes " +
+    this->GetSlicerType() + ", not a " + (value.IsValid() ? value.GetTypeAsString() : "invalid") +
+    " value";
   this->RecordFailedPublish(reason.c_str());
   return 0;
 }
@@ -190,7 +191,8 @@ void vtkROS2PublisherNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
 vtkROS2PublisherNode* vtkROS2NodeNode::GetPublisherNodeByTopic(const char* topic)
 {
@@ -209,8 +211,8 @@ bool vtkROS2NodeNode::RemoveAndDeletePublisherNode(const char* topic)
   vtkROS2PublisherNode* node = this->GetPublisherNodeByTopic(topic);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeletePublisherNode: no publisher on '" << (topic ? topic : "(null)")
-                                                                    << "'");
+    vtkErrorMacro(
+      "RemoveAndDeletePublisherNode: no publisher on '" << (topic ? topic : "(null)") << "'");
     return false;
   }
   node->RemoveFromROS2Node();

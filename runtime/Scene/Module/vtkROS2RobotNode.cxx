@@ -30,8 +30,7 @@
 #include <sstream>
 #include <vector>
 
-namespace
-{
+namespace {
 const char* const DescriptionRole = "robotDescription";
 const char* const BaseRole = "robotBase";
 const char* const LinkRole = "robotLink";
@@ -83,7 +82,7 @@ public:
   std::string LoadedDescription; // the URDF text of the current robot
   std::string LoadedBaseFolder;
   std::string LastFailedDescription; // refused once: not parsed again on every spin
-  bool HasFailedDescription = false;  // LastFailedDescription is meaningful ("" can fail too)
+  bool HasFailedDescription = false; // LastFailedDescription is meaningful ("" can fail too)
 
   /// Where the description comes from, for messages ("topic '/robot_description'").
   std::string SourceText() const
@@ -158,9 +157,10 @@ vtkROS2RobotNode::vtkROS2RobotNode()
   : Internals(new vtkInternals)
 {
   this->Internals->SourceObserver->SetClientData(this->Internals.get());
-  this->Internals->SourceObserver->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
-    static_cast<vtkInternals*>(clientData)->SourceChanged = true;
-  });
+  this->Internals->SourceObserver->SetCallback(
+    [](vtkObject*, unsigned long, void* clientData, void*) {
+      static_cast<vtkInternals*>(clientData)->SourceChanged = true;
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -421,7 +421,8 @@ vtkROS2ModelNode* vtkROS2RobotNode::GetNthModelNode(int n)
 
 int vtkROS2RobotNode::GetNumberOfPlaceholders() const
 {
-  return this->Internals->Loaded ? static_cast<int>(this->Internals->Visuals.placeholder_count()) : 0;
+  return this->Internals->Loaded ? static_cast<int>(this->Internals->Visuals.placeholder_count())
+                                 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -430,9 +431,11 @@ bool vtkROS2RobotNode::SetJointStatesTopic(const char* topic)
   vtkInternals& internals = *this->Internals;
   const std::string value = topic ? topic : "";
   std::string error;
-  if (!internals.JointStates.SetJointStatesTopic(this->GetROS2Node(), value, internals.RobotName, &error))
+  if (!internals.JointStates.SetJointStatesTopic(
+        this->GetROS2Node(), value, internals.RobotName, &error))
   {
-    vtkErrorMacro("robot '" << internals.RobotName << "': SetJointStatesTopic('" << value << "'): " << error);
+    vtkErrorMacro(
+      "robot '" << internals.RobotName << "': SetJointStatesTopic('" << value << "'): " << error);
     return false;
   }
   internals.JointStatesTopic = internals.JointStates.GetJointStatesTopic();
@@ -499,7 +502,8 @@ std::string vtkROS2RobotNode::GetLinkPoseStatus(const char* link) const
 std::string vtkROS2RobotNode::GetLinkPoseSummary() const
 {
   using Status = ros2vtk::scene::LinkPoseStatus;
-  const char* const order[] = { Status::Tf, Status::FixedFrame, Status::JointPositions, Status::ZeroConfiguration };
+  const char* const order[] = { Status::Tf, Status::FixedFrame, Status::JointPositions,
+    Status::ZeroConfiguration };
   std::map<std::string, int> counts;
   int links = 0;
   for (const vtkInternals::LinkNode& entry : this->Internals->Links)
@@ -564,10 +568,11 @@ int vtkROS2RobotNode::UpdateLinkPoses()
   {
     // Asked before the ROS node could subscribe (a restored scene): subscribe now.
     std::string error;
-    if (!internals.JointStates.SetJointStatesTopic(rosNode, internals.JointStatesTopic, internals.RobotName, &error))
+    if (!internals.JointStates.SetJointStatesTopic(
+          rosNode, internals.JointStatesTopic, internals.RobotName, &error))
     {
-      vtkErrorMacro("robot '" << internals.RobotName << "': joint states topic '" << internals.JointStatesTopic
-                              << "': " << error);
+      vtkErrorMacro("robot '" << internals.RobotName << "': joint states topic '"
+                              << internals.JointStatesTopic << "': " << error);
       internals.JointStatesTopic.clear(); // said once
     }
   }
@@ -587,8 +592,8 @@ int vtkROS2RobotNode::UpdateLinkPoses()
       links.emplace_back(entry.Link, entry.Node);
     }
   }
-  const bool changed =
-    internals.JointStates.Update(rosNode, links, internals.EffectiveFixedFrame(), internals.TfPrefix);
+  const bool changed = internals.JointStates.Update(
+    rosNode, links, internals.EffectiveFixedFrame(), internals.TfPrefix);
   for (const std::string& warning : internals.JointStates.TakeWarnings())
   {
     vtkWarningMacro("robot '" << internals.RobotName << "': " << warning);
@@ -603,8 +608,8 @@ vtkROS2NodeNode* vtkROS2RobotNode::GetROS2Node() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2RobotNode::AttachToParameter(vtkROS2NodeNode* rosNode, const std::string& remoteNode,
-                                         const std::string& parameterName)
+bool vtkROS2RobotNode::AttachToParameter(
+  vtkROS2NodeNode* rosNode, const std::string& remoteNode, const std::string& parameterName)
 {
   vtkInternals& internals = *this->Internals;
   vtkROS2ParameterNode* parameters = rosNode->GetParameterNodeByNode(remoteNode.c_str());
@@ -643,7 +648,8 @@ bool vtkROS2RobotNode::AttachToTopic(vtkROS2NodeNode* rosNode, const std::string
   else if (std::string(subscriber->GetROSType()) != "std_msgs/msg/String")
   {
     vtkErrorMacro("CreateAndAddRobotNode: " << topic << " is subscribed already with type "
-                                            << subscriber->GetROSType() << ", not std_msgs/msg/String");
+                                            << subscriber->GetROSType()
+                                            << ", not std_msgs/msg/String");
     return false;
   }
   internals.Source = "topic";
@@ -657,7 +663,8 @@ void vtkROS2RobotNode::FollowSource(vtkROS2NodeNode* rosNode, vtkROS2SceneNode* 
 {
   vtkInternals& internals = *this->Internals;
   internals.SourceNode = source;
-  internals.SourceObserverTag = source->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
+  internals.SourceObserverTag =
+    source->AddObserver(vtkCommand::ModifiedEvent, internals.SourceObserver);
   this->SetNodeReferenceID(ROS2NodeReferenceRole, rosNode->GetID());
   this->SetNodeReferenceID(DescriptionRole, source->GetID());
 }
@@ -749,7 +756,8 @@ int vtkROS2RobotNode::CheckForNewDescription()
     if (type != "string")
     {
       // Say what arrived (issue 11.8) instead of waiting for a string forever; once per value.
-      const std::string what = "the " + internals.SourceText() + " is a " + type + ", not a URDF string";
+      const std::string what =
+        "the " + internals.SourceText() + " is a " + type + ", not a URDF string";
       if (internals.LastError != what)
       {
         internals.LastError = what;
@@ -780,8 +788,9 @@ int vtkROS2RobotNode::CheckForNewDescription()
     // forever); a robot already shown stays.
     internals.LastFailedDescription = description;
     internals.HasFailedDescription = true;
-    internals.LastError = "the robot description from the " + internals.SourceText() + " is empty (" +
-      std::to_string(description.size()) + " bytes" + (description.empty() ? "" : ", all white space") + ")";
+    internals.LastError = "the robot description from the " + internals.SourceText() +
+      " is empty (" + std::to_string(description.size()) + " bytes" +
+      (description.empty() ? "" : ", all white space") + ")";
     internals.State = "failed: " + internals.LastError;
     vtkErrorMacro("robot '" << internals.RobotName << "': " << internals.LastError);
     this->Modified();
@@ -989,7 +998,8 @@ void vtkROS2RobotNode::RemoveLinkNode(vtkROS2TransformNode* node)
   this->RemoveNodeReferenceID(LinkRole, node->GetID());
   vtkROS2NodeNode* rosNode = this->GetROS2Node();
   auto* lookup = vtkROS2Tf2LookupNode::SafeDownCast(node);
-  if (lookup && rosNode && rosNode->GetTf2LookupNodeByParentChild(lookup->GetParentID(), lookup->GetChildID()) == lookup)
+  if (lookup && rosNode &&
+    rosNode->GetTf2LookupNodeByParentChild(lookup->GetParentID(), lookup->GetChildID()) == lookup)
   {
     rosNode->RemoveAndDeleteTf2LookupNode(lookup->GetParentID(), lookup->GetChildID());
   }
@@ -1115,7 +1125,8 @@ bool vtkROS2RobotNode::ReadXML(vtkXMLDataElement* element)
   internals.TfPrefix = text("tfPrefix");
   internals.MeshBaseFolder = text("meshBaseFolder");
   internals.XacroArguments = text("xacroArguments");
-  internals.JointStatesTopic = text("jointStatesTopic"); // subscribed on the first spin after the load
+  internals.JointStatesTopic =
+    text("jointStatesTopic"); // subscribed on the first spin after the load
   int publishTf = 0;
   element->GetScalarAttribute("publishTf", publishTf);
   internals.PublishTf = publishTf != 0;
@@ -1127,7 +1138,8 @@ bool vtkROS2RobotNode::ReadXML(vtkXMLDataElement* element)
     (internals.Source == "file" && !internals.DescriptionFile.empty());
   if (internals.RobotName.empty() || !known)
   {
-    vtkErrorMacro("ReadXML: robot node '" << text("id") << "' needs a robotName and a descriptionSource "
+    vtkErrorMacro("ReadXML: robot node '" << text("id")
+                                          << "' needs a robotName and a descriptionSource "
                                           << "(parameter, topic, or file with a descriptionFile)");
     return false;
   }
@@ -1167,7 +1179,8 @@ void vtkROS2RobotNode::OnSceneRestored()
   const bool fromFile = internals.Source == "file";
   if (!rosNode || !rosNode->IsCreated() || (!source && !fromFile))
   {
-    vtkErrorMacro("robot '" << internals.RobotName << "': restored without its ROS node or description source; "
+    vtkErrorMacro("robot '" << internals.RobotName
+                            << "': restored without its ROS node or description source; "
                             << "it will not load");
     return;
   }
@@ -1190,7 +1203,8 @@ void vtkROS2RobotNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DescriptionSource: " << internals.Source << "\n";
   if (internals.Source == "parameter")
   {
-    os << indent << "Parameter: " << internals.ParameterNodeName << " " << internals.ParameterName << "\n";
+    os << indent << "Parameter: " << internals.ParameterNodeName << " " << internals.ParameterName
+       << "\n";
   }
   else if (internals.Source == "topic")
   {
@@ -1205,15 +1219,18 @@ void vtkROS2RobotNode::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "State: " << internals.State << "\n";
   os << indent << "JointStatesTopic: " << internals.JointStatesTopic << "\n";
   os << indent << "PublishTf: " << (internals.PublishTf ? "on" : "off") << "\n";
-  os << indent << "Links: " << internals.Links.size() << ", models: " << internals.Models.size() << "\n";
+  os << indent << "Links: " << internals.Links.size() << ", models: " << internals.Models.size()
+     << "\n";
 }
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* robotName, const char* fixedFrame,
-  const char* tfPrefix, const std::function<bool(vtkROS2RobotNode*)>& attach)
+vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* robotName,
+  const char* fixedFrame, const char* tfPrefix,
+  const std::function<bool(vtkROS2RobotNode*)>& attach)
 {
   if (!this->CheckReadyFor(what))
   {
@@ -1244,11 +1261,13 @@ vtkROS2RobotNode* vtkROS2NodeNode::AddRobotNode(const char* what, const char* ro
 }
 
 //------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName, const char* parameterNodeName,
-  const char* parameterName, const char* fixedFrame, const char* tfPrefix)
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName,
+  const char* parameterNodeName, const char* parameterName, const char* fixedFrame,
+  const char* tfPrefix)
 {
   const std::string remote = AbsoluteNodeName(parameterNodeName);
-  const std::string parameter = parameterName && *parameterName ? parameterName : "robot_description";
+  const std::string parameter =
+    parameterName && *parameterName ? parameterName : "robot_description";
   if (remote.empty())
   {
     vtkErrorMacro("CreateAndAddRobotNode: the node serving the description is required "
@@ -1260,8 +1279,8 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNode(const char* robotName, 
 }
 
 //------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* robotName, const char* topic,
-  const char* fixedFrame, const char* tfPrefix)
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(
+  const char* robotName, const char* topic, const char* fixedFrame, const char* tfPrefix)
 {
   const std::string name = topic && *topic ? topic : "/robot_description";
   return this->AddRobotNode("CreateAndAddRobotNodeFromTopic", robotName, fixedFrame, tfPrefix,
@@ -1269,8 +1288,8 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromTopic(const char* ro
 }
 
 //------------------------------------------------------------------------------
-vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* robotName, const char* urdfFile,
-  const char* fixedFrame, const char* tfPrefix)
+vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(
+  const char* robotName, const char* urdfFile, const char* fixedFrame, const char* tfPrefix)
 {
   if (!urdfFile || !*urdfFile)
   {
@@ -1284,7 +1303,8 @@ vtkROS2RobotNode* vtkROS2NodeNode::CreateAndAddRobotNodeFromFile(const char* rob
 //------------------------------------------------------------------------------
 vtkROS2RobotNode* vtkROS2NodeNode::GetRobotNodeByName(const char* robotName)
 {
-  return robotName ? vtkROS2RobotNode::SafeDownCast(this->FindChild(RobotRole, robotName)) : nullptr;
+  return robotName ? vtkROS2RobotNode::SafeDownCast(this->FindChild(RobotRole, robotName))
+                   : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -1293,7 +1313,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteRobotNode(const char* robotName)
   vtkROS2RobotNode* robot = this->GetRobotNodeByName(robotName);
   if (!robot)
   {
-    vtkErrorMacro("RemoveAndDeleteRobotNode: no robot '" << (robotName ? robotName : "(null)") << "'");
+    vtkErrorMacro(
+      "RemoveAndDeleteRobotNode: no robot '" << (robotName ? robotName : "(null)") << "'");
     return false;
   }
   return this->RemoveChild(RobotRole, robot);

@@ -1,9 +1,10 @@
 // ros2vtk — a robot in the scene, built from its URDF robot_description (SlicerROS2's
 // vtkMRMLROS2RobotNode, RViz 2's RobotModel display).
 //
-//   robot = rosNode->CreateAndAddRobotNode("PSM1", "/PSM1/robot_state_publisher", "robot_description");
-//   robot = rosNode->CreateAndAddRobotNodeFromTopic("arm", "/robot_description"); // RViz 2's way
-//   robot = rosNode->CreateAndAddRobotNodeFromFile("arm", "/path/to/arm.urdf");   // and RViz 2's other
+//   robot = rosNode->CreateAndAddRobotNode("PSM1", "/PSM1/robot_state_publisher",
+//   "robot_description"); robot = rosNode->CreateAndAddRobotNodeFromTopic("arm",
+//   "/robot_description"); // RViz 2's way robot = rosNode->CreateAndAddRobotNodeFromFile("arm",
+//   "/path/to/arm.urdf");   // and RViz 2's other
 //
 // The description comes from a parameter of a robot_state_publisher (through a parameter node),
 // from its transient-local robot_description topic (through a subscriber node) or from a file
@@ -55,7 +56,8 @@ public:
   const char* GetRobotName() const;
   /// "parameter" (SlicerROS2's way), "topic" or "file" (RViz 2's ways).
   const char* GetDescriptionSource() const;
-  /// The parameter source: remote node and parameter ("/robot_state_publisher", "robot_description").
+  /// The parameter source: remote node and parameter ("/robot_state_publisher",
+  /// "robot_description").
   const char* GetParameterNodeName() const;
   const char* GetParameterName() const;
   /// The topic source ("/PSM1/robot_description").
@@ -183,7 +185,8 @@ public:
 
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: takes the description from `parameterName` of `remoteNode`.
-  bool AttachToParameter(vtkROS2NodeNode* rosNode, const std::string& remoteNode, const std::string& parameterName);
+  bool AttachToParameter(
+    vtkROS2NodeNode* rosNode, const std::string& remoteNode, const std::string& parameterName);
   /// Used by vtkROS2NodeNode: takes the description from a std_msgs/String `topic`.
   bool AttachToTopic(vtkROS2NodeNode* rosNode, const std::string& topic);
   /// Used by vtkROS2NodeNode: takes the description from a URDF file.
@@ -197,12 +200,14 @@ public:
   bool ReadXML(vtkXMLDataElement* element) override;
   void OnSceneRestored() override;
 
-
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): loads a new description, then places the
   /// links tf does not place from the joint positions.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override;
   /// Index key among the ROS node's robots.
-  std::string GetROS2NodeChildKey() const override { return this->GetRobotName(); }
+  std::string GetROS2NodeChildKey() const override
+  {
+    return this->GetRobotName();
+  }
 
 protected:
   vtkROS2RobotNode();

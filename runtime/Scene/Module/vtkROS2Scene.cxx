@@ -18,8 +18,7 @@
 #include <unordered_set>
 #include <vector>
 
-namespace
-{
+namespace {
 // Root element and format version of scene files.
 const char* const SceneTag = "ROS2Scene";
 const int SceneFormatVersion = 1;
@@ -30,9 +29,10 @@ class vtkROS2Scene::vtkInternals
 {
 public:
   std::vector<vtkSmartPointer<vtkROS2SceneNode>> Nodes; // in the order they were added
-  std::map<std::string, vtkROS2SceneNode*, std::less<>> ByID; // less<>: find(const char*) copies nothing
+  std::map<std::string, vtkROS2SceneNode*, std::less<>>
+    ByID;                                      // less<>: find(const char*) copies nothing
   std::map<std::string, int> NextIndexByClass; // for `<ClassName><n>` IDs
-  std::string RemovalReason; // while ClearBecause runs: why the nodes leave
+  std::string RemovalReason;                   // while ClearBecause runs: why the nodes leave
   // referenced ID -> nodes of this scene that gained a reference to it (a superset: a node that
   // dropped the reference since is visited for nothing, never missed).
   std::unordered_map<std::string, std::unordered_set<vtkROS2SceneNode*>> Referrers;
@@ -391,7 +391,8 @@ bool vtkROS2Scene::ReadFromXMLFile(const char* fileName)
 bool vtkROS2Scene::ReadFromXMLString(const char* xml)
 {
   std::string error = "no text";
-  vtkSmartPointer<vtkXMLDataElement> root = xml ? ros2vtk::scene::ReadSceneXml(xml, &error) : nullptr;
+  vtkSmartPointer<vtkXMLDataElement> root =
+    xml ? ros2vtk::scene::ReadSceneXml(xml, &error) : nullptr;
   if (!root)
   {
     vtkErrorMacro("ReadFromXMLString: " << error);
@@ -405,15 +406,15 @@ bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
 {
   if (!root || !root->GetName() || std::string(root->GetName()) != SceneTag)
   {
-    vtkErrorMacro("ReadFromXML: root element is <" << (root && root->GetName() ? root->GetName() : "")
-                                                    << ">, expected <" << SceneTag << ">");
+    vtkErrorMacro("ReadFromXML: root element is <"
+      << (root && root->GetName() ? root->GetName() : "") << ">, expected <" << SceneTag << ">");
     return false;
   }
   int version = 0;
   if (!root->GetScalarAttribute("version", version) || version != SceneFormatVersion)
   {
-    vtkErrorMacro("ReadFromXML: unsupported scene format version (expected " << SceneFormatVersion
-                                                                               << ")");
+    vtkErrorMacro(
+      "ReadFromXML: unsupported scene format version (expected " << SceneFormatVersion << ")");
     return false;
   }
   // Atomic (issue 11.6): every node is created and read first; the current scene is replaced
@@ -446,7 +447,8 @@ bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
     }
     if (!node->ReadXML(element))
     {
-      vtkErrorMacro("ReadFromXML: invalid properties for node '" << id << "'; the scene was not changed");
+      vtkErrorMacro(
+        "ReadFromXML: invalid properties for node '" << id << "'; the scene was not changed");
       return false;
     }
     incoming.emplace_back(node, id);

@@ -55,7 +55,8 @@ public:
   int GetNumberOfNodes() const;
   vtkROS2SceneNode* GetNthNode(int n) const;
   vtkROS2SceneNode* GetNodeByID(const char* id) const;
-  /// Changes whenever a node is added or removed: lets nodes cache what their references resolve to.
+  /// Changes whenever a node is added or removed: lets nodes cache what their references resolve
+  /// to.
   unsigned long GetNodesVersion() const;
   /// First node (in the order they were added) with this Name; nullptr when none.
   vtkROS2SceneNode* GetFirstNodeByName(const char* name) const;

@@ -32,8 +32,7 @@ public:
   mutable ResolvedReference Resolved;
 };
 
-namespace
-{
+namespace {
 std::string JoinKeys(const std::map<std::string, std::string>& values)
 {
   std::string joined;
@@ -248,8 +247,9 @@ vtkROS2SceneNode* vtkROS2SceneNode::GetNthNodeReference(const char* role, int n)
   }
   auto& cached = this->Internals->Resolved;
   const unsigned long nodesVersion = this->Scene->GetNodesVersion();
-  if (n == 0 && role && cached.Role == role && cached.ReferencesVersion == this->ReferencesVersion &&
-      cached.Scene == this->Scene && cached.NodesVersion == nodesVersion)
+  if (n == 0 && role && cached.Role == role &&
+    cached.ReferencesVersion == this->ReferencesVersion && cached.Scene == this->Scene &&
+    cached.NodesVersion == nodesVersion)
   {
     return cached.Node;
   }
@@ -285,7 +285,8 @@ void vtkROS2SceneNode::GetNodeReferenceRoleList(std::vector<std::string>& roles)
 }
 
 //------------------------------------------------------------------------------
-void vtkROS2SceneNode::SetSceneAndID(vtkROS2Scene* scene, const char* id, const std::string& leftBecause)
+void vtkROS2SceneNode::SetSceneAndID(
+  vtkROS2Scene* scene, const char* id, const std::string& leftBecause)
 {
   if (!scene && this->Scene)
   {
@@ -361,7 +362,8 @@ void vtkROS2SceneNode::WriteXML(vtkXMLDataElement* element)
   {
     for (const auto& id : reference.second)
     {
-      const vtkROS2SceneNode* referenced = this->Scene ? this->Scene->GetNodeByID(id.c_str()) : nullptr;
+      const vtkROS2SceneNode* referenced =
+        this->Scene ? this->Scene->GetNodeByID(id.c_str()) : nullptr;
       if (referenced && !referenced->GetSaveWithScene())
       {
         continue; // not in the file: the reference would dangle when restored
@@ -398,8 +400,8 @@ bool vtkROS2SceneNode::ReadXML(vtkXMLDataElement* element)
       const char* value = child->GetAttribute("value");
       if (!key || !*key || !value)
       {
-        vtkErrorMacro("ReadXML: <Attribute> of node '" << this->Internals->ID
-                                                       << "' needs 'name' and 'value'");
+        vtkErrorMacro(
+          "ReadXML: <Attribute> of node '" << this->Internals->ID << "' needs 'name' and 'value'");
         return false;
       }
       this->Internals->Attributes[key] = value;
@@ -410,8 +412,8 @@ bool vtkROS2SceneNode::ReadXML(vtkXMLDataElement* element)
       const char* id = child->GetAttribute("id");
       if (!role || !*role || !id || !*id)
       {
-        vtkErrorMacro("ReadXML: <Reference> of node '" << this->Internals->ID
-                                                       << "' needs 'role' and 'id'");
+        vtkErrorMacro(
+          "ReadXML: <Reference> of node '" << this->Internals->ID << "' needs 'role' and 'id'");
         return false;
       }
       // One role, two spellings in files of earlier versions.

@@ -52,10 +52,16 @@ public:
   int GetNumberOfNodeReferences(const char* role) const;
   /// nullptr when there is no n-th reference of the role.
   const char* GetNthNodeReferenceID(const char* role, int n) const;
-  const char* GetNodeReferenceID(const char* role) const { return this->GetNthNodeReferenceID(role, 0); }
+  const char* GetNodeReferenceID(const char* role) const
+  {
+    return this->GetNthNodeReferenceID(role, 0);
+  }
   /// Resolves the reference through the scene; nullptr when not in a scene or not found.
   vtkROS2SceneNode* GetNthNodeReference(const char* role, int n) const;
-  vtkROS2SceneNode* GetNodeReference(const char* role) const { return this->GetNthNodeReference(role, 0); }
+  vtkROS2SceneNode* GetNodeReference(const char* role) const
+  {
+    return this->GetNthNodeReference(role, 0);
+  }
   /// Space-separated roles that hold at least one reference, sorted.
   const char* GetNodeReferenceRoles();
 
@@ -116,16 +122,23 @@ public:
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2Scene only (IDs and scene membership are the scene's to assign). When the
   /// node leaves, `leftBecause` says why if it was not a plain removal (kept for error messages).
-  void SetSceneAndID(vtkROS2Scene* scene, const char* id, const std::string& leftBecause = std::string());
+  void SetSceneAndID(
+    vtkROS2Scene* scene, const char* id, const std::string& leftBecause = std::string());
   /// Why this node left its scene when that was not a plain removal ("" otherwise), e.g. the
   /// logic that owned the scene was deleted: errors about a missing scene quote it.
-  const std::string& GetLeftSceneBecause() const { return this->LeftSceneBecause; }
+  const std::string& GetLeftSceneBecause() const
+  {
+    return this->LeftSceneBecause;
+  }
   /// Used by vtkROS2Scene when a referenced node is removed: drops every reference to it.
   void ForgetReferencesTo(const char* referencedNodeID);
   /// Grows by one on every change of this node's references (or of a referenced child's key,
   /// see ROS2NodeChildKeyChanged): indexes built over the references compare it to know they
   /// are current.
-  unsigned long GetReferencesVersion() const { return this->ReferencesVersion; }
+  unsigned long GetReferencesVersion() const
+  {
+    return this->ReferencesVersion;
+  }
   /// The roles that hold at least one reference, sorted (GetNodeReferenceRoles as a list).
   void GetNodeReferenceRoleList(std::vector<std::string>& roles) const;
 #endif
@@ -151,7 +164,8 @@ private:
   vtkROS2SceneNode(const vtkROS2SceneNode&) = delete;
   void operator=(const vtkROS2SceneNode&) = delete;
 #ifndef __VTK_WRAP__
-  /// Tells the scene (if any) that this node refers to `referencedNodeID` (vtkROS2Scene::NoteReferrer).
+  /// Tells the scene (if any) that this node refers to `referencedNodeID`
+  /// (vtkROS2Scene::NoteReferrer).
   void NoteReferenceInScene(const std::string& referencedNodeID);
 #endif
 

@@ -29,8 +29,7 @@
 
 vtkStandardNewMacro(vtkROS2ServiceClientNode);
 
-namespace
-{
+namespace {
 using Clock = std::chrono::steady_clock;
 using ros2vtk::wire::MessagePtr;
 using ros2vtk::wire::MessageTypeSupport;
@@ -96,7 +95,8 @@ vtkROS2ServiceClientNode::vtkROS2ServiceClientNode()
 vtkROS2ServiceClientNode::~vtkROS2ServiceClientNode() = default;
 
 //------------------------------------------------------------------------------
-bool vtkROS2ServiceClientNode::Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service)
+bool vtkROS2ServiceClientNode::Attach(
+  vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service)
 {
   vtkInternals& internals = *this->Internals;
   if (!rosNode || !rosNode->GetParticipant())
@@ -158,9 +158,11 @@ bool vtkROS2ServiceClientNode::SetRequestYAML(const char* yaml)
     return false;
   }
   std::string error;
-  if (!ros2vtk::wire::from_yaml(*internals.Type->request(), yaml ? yaml : "", internals.Request.get(), &error))
+  if (!ros2vtk::wire::from_yaml(
+        *internals.Type->request(), yaml ? yaml : "", internals.Request.get(), &error))
   {
-    vtkErrorMacro("SetRequestYAML: invalid " << internals.Type->request()->ros_type << ": " << error);
+    vtkErrorMacro(
+      "SetRequestYAML: invalid " << internals.Type->request()->ros_type << ": " << error);
     return false;
   }
   return true;
@@ -170,7 +172,9 @@ bool vtkROS2ServiceClientNode::SetRequestYAML(const char* yaml)
 std::string vtkROS2ServiceClientNode::GetRequestYAML() const
 {
   const vtkInternals& internals = *this->Internals;
-  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->request(), internals.Request.get()) : "";
+  return internals.Type
+    ? ros2vtk::wire::to_yaml(*internals.Type->request(), internals.Request.get())
+    : "";
 }
 
 //------------------------------------------------------------------------------
@@ -183,7 +187,8 @@ bool vtkROS2ServiceClientNode::SetRequestField(const char* path, const char* val
     return false;
   }
   std::string error;
-  if (!ros2vtk::scene::set_field_from_text(*internals.Type->request(), internals.Request.get(), path, value, &error))
+  if (!ros2vtk::scene::set_field_from_text(
+        *internals.Type->request(), internals.Request.get(), path, value, &error))
   {
     vtkErrorMacro("SetRequestField: " << error);
     return false;
@@ -198,8 +203,8 @@ bool vtkROS2ServiceClientNode::SetRequestObject(vtkROS2Message* request)
   if (!internals.Type || !request || request->GetTypeSupport() != internals.Type->request())
   {
     vtkErrorMacro("SetRequestObject: needs a message object of type "
-      << (internals.Type ? internals.Type->request()->ros_type : "(no service type yet)") << ", got "
-      << (request && request->GetTypeSupport() ? request->GetROSType() : "(none)"));
+      << (internals.Type ? internals.Type->request()->ros_type : "(no service type yet)")
+      << ", got " << (request && request->GetTypeSupport() ? request->GetROSType() : "(none)"));
     return false;
   }
   internals.Type->request()->copy(request->GetRawMessage(), internals.Request.get());
@@ -241,8 +246,9 @@ vtkTypeInt64 vtkROS2ServiceClientNode::SendAsyncRequest()
   pending.Id = internals.NextId++;
   pending.Request = CopyMessage(*internals.Type->request(), internals.Request.get());
   pending.TimeoutSeconds = this->EndpointTimeout;
-  pending.Deadline =
-    Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
+  pending.Deadline = Clock::now() +
+    std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(this->EndpointTimeout));
   // Written at once when a server is there; otherwise on the spin that sees one.
   if (internals.Client->is_server_available())
   {
@@ -331,8 +337,10 @@ int vtkROS2ServiceClientNode::ProcessResponses()
   std::vector<vtkTypeInt64> answered;
   for (auto& response : responses)
   {
-    auto found = std::find_if(internals.Pendings.begin(), internals.Pendings.end(),
-      [&](const vtkInternals::Pending& p) { return p.Sequence >= 0 && p.Sequence == response.sequence_number; });
+    auto found = std::find_if(
+      internals.Pendings.begin(), internals.Pendings.end(), [&](const vtkInternals::Pending& p) {
+        return p.Sequence >= 0 && p.Sequence == response.sequence_number;
+      });
     if (found == internals.Pendings.end())
     {
       continue; // answer to a request that already timed out, or a second server's duplicate
@@ -354,7 +362,8 @@ int vtkROS2ServiceClientNode::ProcessResponses()
       it->Sequence = internals.Client->send_request(it->Request.get());
       if (it->Sequence < 0)
       {
-        failed.emplace_back(it->Id, "Fast DDS refused to write the request to " + internals.Client->service_name());
+        failed.emplace_back(
+          it->Id, "Fast DDS refused to write the request to " + internals.Client->service_name());
         it = internals.Pendings.erase(it);
         continue;
       }
@@ -362,11 +371,11 @@ int vtkROS2ServiceClientNode::ProcessResponses()
     if (now >= it->Deadline)
     {
       failed.emplace_back(it->Id,
-        it->Sequence < 0
-          ? "timed out: no server for " + internals.Client->service_name() + " (" + std::string(this->GetServiceType()) +
-              ") appeared within " + FormatSeconds(it->TimeoutSeconds)
-          : "timed out: " + internals.Client->service_name() + " sent no response within " +
-              FormatSeconds(it->TimeoutSeconds));
+        it->Sequence < 0 ? "timed out: no server for " + internals.Client->service_name() + " (" +
+            std::string(this->GetServiceType()) + ") appeared within " +
+            FormatSeconds(it->TimeoutSeconds)
+                         : "timed out: " + internals.Client->service_name() +
+            " sent no response within " + FormatSeconds(it->TimeoutSeconds));
       it = internals.Pendings.erase(it);
       continue;
     }
@@ -441,7 +450,8 @@ std::string vtkROS2ServiceClientNode::Call(const char* requestYAML, double timeo
     const int count = scene ? scene->GetNumberOfNodesByClass("vtkROS2NodeNode") : 0;
     for (int i = 0; i < count; ++i)
     {
-      if (auto* node = vtkROS2NodeNode::SafeDownCast(scene->GetNthNodeByClass(i, "vtkROS2NodeNode")))
+      if (auto* node =
+            vtkROS2NodeNode::SafeDownCast(scene->GetNthNodeByClass(i, "vtkROS2NodeNode")))
       {
         node->Spin();
       }
@@ -471,12 +481,18 @@ const char* vtkROS2ServiceClientNode::GetStatusAsString() const
 {
   switch (this->Internals->Status)
   {
-    case WaitingForServer: return "waiting for server";
-    case WaitingForResponse: return "waiting for response";
-    case Succeeded: return "succeeded";
-    case TimedOut: return "timed out";
-    case Failed: return "failed";
-    default: return "idle";
+    case WaitingForServer:
+      return "waiting for server";
+    case WaitingForResponse:
+      return "waiting for response";
+    case Succeeded:
+      return "succeeded";
+    case TimedOut:
+      return "timed out";
+    case Failed:
+      return "failed";
+    default:
+      return "idle";
   }
 }
 
@@ -490,7 +506,9 @@ const char* vtkROS2ServiceClientNode::GetLastError() const
 std::string vtkROS2ServiceClientNode::GetLastResponseYAML() const
 {
   const vtkInternals& internals = *this->Internals;
-  return internals.Type ? ros2vtk::wire::to_yaml(*internals.Type->response(), internals.LastResponse.get()) : "";
+  return internals.Type
+    ? ros2vtk::wire::to_yaml(*internals.Type->response(), internals.LastResponse.get())
+    : "";
 }
 
 //------------------------------------------------------------------------------
@@ -500,9 +518,11 @@ std::string vtkROS2ServiceClientNode::GetResponseField(const char* path) const
   std::string value;
   std::string error;
   if (!internals.Type || !path ||
-    !ros2vtk::scene::get_field_as_text(*internals.Type->response(), internals.LastResponse.get(), path, value, &error))
+    !ros2vtk::scene::get_field_as_text(
+      *internals.Type->response(), internals.LastResponse.get(), path, value, &error))
   {
-    vtkErrorMacro("GetResponseField: " << (internals.Type ? error : "the client has no service type yet"));
+    vtkErrorMacro(
+      "GetResponseField: " << (internals.Type ? error : "the client has no service type yet"));
     return "";
   }
   return value;
@@ -555,13 +575,16 @@ void vtkROS2ServiceClientNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2ServiceClientNode* vtkROS2NodeNode::CreateAndAddServiceClientNode(const char* type, const char* service)
+vtkROS2ServiceClientNode* vtkROS2NodeNode::CreateAndAddServiceClientNode(
+  const char* type, const char* service)
 {
   vtkNew<vtkROS2ServiceClientNode> node;
-  const bool attached = this->AdoptKeyedChild("CreateAndAddServiceClientNode", ServiceClientRole, node, type, service, "service",
-    "this node has a client of ", "ros2:client:", [&] { return node->Attach(this, type, service); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddServiceClientNode", ServiceClientRole,
+    node, type, service, "service", "this node has a client of ",
+    "ros2:client:", [&] { return node->Attach(this, type, service); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -574,5 +597,6 @@ vtkROS2ServiceClientNode* vtkROS2NodeNode::GetServiceClientNodeByService(const c
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteServiceClientNode(const char* service)
 {
-  return this->RemoveKeyedChild("RemoveAndDeleteServiceClientNode", ServiceClientRole, service, "no client of ");
+  return this->RemoveKeyedChild(
+    "RemoveAndDeleteServiceClientNode", ServiceClientRole, service, "no client of ");
 }

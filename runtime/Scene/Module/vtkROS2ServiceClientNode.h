@@ -17,7 +17,7 @@
 #include "ros2vtkSceneModule.h" // for export macro
 #include "vtkROS2EndpointNode.h"
 
-#include "vtkCommand.h"         // for vtkCommand::UserEvent
+#include "vtkCommand.h"       // for vtkCommand::UserEvent
 #include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
 #include <memory> // for std::unique_ptr (pimpl)
@@ -83,7 +83,8 @@ public:
   vtkTypeInt64 SendAsyncRequestYAML(const char* yaml);
 
   /// For scripts: sends `requestYAML` and spins every ROS node of the scene (everything on
-  /// them keeps working, a server of this process answers too) until the response or `timeoutSeconds` (<= 0: GetTimeout()). Returns the response YAML, or
+  /// them keeps working, a server of this process answers too) until the response or
+  /// `timeoutSeconds` (<= 0: GetTimeout()). Returns the response YAML, or
   /// "" with GetLastError saying why (timeout, no server, invalid YAML).
   std::string Call(const char* requestYAML, double timeoutSeconds = -1.0);
 
@@ -122,11 +123,11 @@ public:
   vtkTypeInt64 GetNumberOfRequestsSent() const;
   ///@}
 
-
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: chooses the type ("pkg/srv/T" or "pkg/T"), creates the wire
   /// client on `rosNode` and registers the per-spin work. False with vtkErrorMacro otherwise.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service) override;
+  bool Attach(
+    vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service) override;
   /// Releases the wire client (the ROS node is being destroyed); the node stays in the scene.
   void Detach() override;
   /// Per Spin: takes responses, sends requests whose server appeared, fails expired ones.
@@ -134,7 +135,10 @@ public:
 #endif
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes responses.
-  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessResponses(); }
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override
+  {
+    return this->ProcessResponses();
+  }
 
 protected:
   vtkROS2ServiceClientNode();

@@ -26,8 +26,7 @@
 
 vtkStandardNewMacro(vtkROS2ServiceServerNode);
 
-namespace
-{
+namespace {
 using Clock = std::chrono::steady_clock;
 using ros2vtk::wire::MessagePtr;
 }
@@ -58,11 +57,15 @@ public:
 
   Pending* Current()
   {
-    return this->InEvent ? this->InEvent : this->Pendings.empty() ? nullptr : &this->Pendings.front();
+    return this->InEvent       ? this->InEvent
+      : this->Pendings.empty() ? nullptr
+                               : &this->Pendings.front();
   }
   const Pending* Current() const
   {
-    return this->InEvent ? this->InEvent : this->Pendings.empty() ? nullptr : &this->Pendings.front();
+    return this->InEvent       ? this->InEvent
+      : this->Pendings.empty() ? nullptr
+                               : &this->Pendings.front();
   }
 };
 
@@ -76,7 +79,8 @@ vtkROS2ServiceServerNode::vtkROS2ServiceServerNode()
 vtkROS2ServiceServerNode::~vtkROS2ServiceServerNode() = default;
 
 //------------------------------------------------------------------------------
-bool vtkROS2ServiceServerNode::Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service)
+bool vtkROS2ServiceServerNode::Attach(
+  vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service)
 {
   vtkInternals& internals = *this->Internals;
   if (!rosNode || !rosNode->GetParticipant())
@@ -138,7 +142,8 @@ std::string vtkROS2ServiceServerNode::GetRequestField(const char* path) const
   std::string value;
   std::string error = "no request is being handled";
   if (!current || !path ||
-    !ros2vtk::scene::get_field_as_text(*this->Internals->Type->request(), current->Request.get(), path, value, &error))
+    !ros2vtk::scene::get_field_as_text(
+      *this->Internals->Type->request(), current->Request.get(), path, value, &error))
   {
     vtkErrorMacro("GetRequestField: " << error);
     return "";
@@ -152,7 +157,8 @@ bool vtkROS2ServiceServerNode::GetRequestObject(vtkROS2Message* request) const
   const vtkInternals::Pending* current = this->Internals->Current();
   if (!current || !request)
   {
-    vtkErrorMacro("GetRequestObject: " << (current ? "null message object" : "no request is being handled"));
+    vtkErrorMacro(
+      "GetRequestObject: " << (current ? "null message object" : "no request is being handled"));
     return false;
   }
   request->CopyFromRaw(*this->Internals->Type->request(), current->Request.get());
@@ -163,12 +169,14 @@ bool vtkROS2ServiceServerNode::GetRequestObject(vtkROS2Message* request) const
 bool vtkROS2ServiceServerNode::SetResponseObject(vtkROS2Message* response)
 {
   vtkInternals::Pending* current = this->Internals->Current();
-  const ros2vtk::wire::MessageTypeSupport* type = this->Internals->Type ? this->Internals->Type->response() : nullptr;
+  const ros2vtk::wire::MessageTypeSupport* type =
+    this->Internals->Type ? this->Internals->Type->response() : nullptr;
   if (!current || !response || response->GetTypeSupport() != type)
   {
-    vtkErrorMacro("SetResponseObject: "
-      << (!current ? std::string("no request is being handled")
-                   : std::string("needs a message object of type ") + (type ? type->ros_type : "?") + ", got " +
+    vtkErrorMacro(
+      "SetResponseObject: " << (!current ? std::string("no request is being handled")
+                                         : std::string("needs a message object of type ") +
+            (type ? type->ros_type : "?") + ", got " +
             (response && response->GetTypeSupport() ? response->GetROSType() : "(none)")));
     return false;
   }
@@ -187,9 +195,11 @@ bool vtkROS2ServiceServerNode::SetResponseYAML(const char* yaml)
     return false;
   }
   std::string error;
-  if (!ros2vtk::wire::from_yaml(*this->Internals->Type->response(), yaml ? yaml : "", current->Response.get(), &error))
+  if (!ros2vtk::wire::from_yaml(
+        *this->Internals->Type->response(), yaml ? yaml : "", current->Response.get(), &error))
   {
-    vtkErrorMacro("SetResponseYAML: invalid " << this->Internals->Type->response()->ros_type << ": " << error);
+    vtkErrorMacro(
+      "SetResponseYAML: invalid " << this->Internals->Type->response()->ros_type << ": " << error);
     return false;
   }
   current->Answered = true;
@@ -202,7 +212,8 @@ bool vtkROS2ServiceServerNode::SetResponseField(const char* path, const char* va
   vtkInternals::Pending* current = this->Internals->Current();
   std::string error = "no request is being handled";
   if (!current || !path || !value ||
-    !ros2vtk::scene::set_field_from_text(*this->Internals->Type->response(), current->Response.get(), path, value, &error))
+    !ros2vtk::scene::set_field_from_text(
+      *this->Internals->Type->response(), current->Response.get(), path, value, &error))
   {
     vtkErrorMacro("SetResponseField: " << error);
     return false;
@@ -229,7 +240,8 @@ bool vtkROS2ServiceServerNode::SendResponse()
   internals.Pendings.pop_front();
   if (!internals.Server->send_response(pending.Id, pending.Response.get()))
   {
-    vtkWarningMacro("SendResponse " << this->GetServiceName() << ": the client's reply reader is gone");
+    vtkWarningMacro(
+      "SendResponse " << this->GetServiceName() << ": the client's reply reader is gone");
     return false;
   }
   ++internals.Responses;
@@ -255,8 +267,10 @@ int vtkROS2ServiceServerNode::ProcessRequests()
   const uint64_t rejected = internals.Server->rejected_count();
   if (rejected > internals.RejectedSeen)
   {
-    vtkErrorMacro("service " << this->GetServiceName() << ": " << (rejected - internals.RejectedSeen)
-                             << " malformed request(s) rejected (" << internals.Server->last_rejection() << ")");
+    vtkErrorMacro("service " << this->GetServiceName() << ": "
+                             << (rejected - internals.RejectedSeen)
+                             << " malformed request(s) rejected ("
+                             << internals.Server->last_rejection() << ")");
     internals.RejectedSeen = rejected;
     this->Modified();
     ++handled;
@@ -289,13 +303,15 @@ int vtkROS2ServiceServerNode::ProcessRequests()
       }
       else
       {
-        vtkWarningMacro("service " << this->GetServiceName() << ": the client's reply reader is gone");
+        vtkWarningMacro(
+          "service " << this->GetServiceName() << ": the client's reply reader is gone");
       }
       internals.Pendings.pop_back();
     }
   }
   // Requests left unanswered past the timeout.
-  const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(this->EndpointTimeout));
+  const auto timeout = std::chrono::duration_cast<Clock::duration>(
+    std::chrono::duration<double>(this->EndpointTimeout));
   const Clock::time_point now = Clock::now();
   while (!internals.Pendings.empty() && now - internals.Pendings.front().Received >= timeout)
   {
@@ -357,7 +373,9 @@ vtkTypeInt64 vtkROS2ServiceServerNode::GetNumberOfUnansweredRequests() const
 
 vtkTypeInt64 vtkROS2ServiceServerNode::GetNumberOfRejectedRequests() const
 {
-  return this->Internals->Server ? static_cast<vtkTypeInt64>(this->Internals->Server->rejected_count()) : 0;
+  return this->Internals->Server
+    ? static_cast<vtkTypeInt64>(this->Internals->Server->rejected_count())
+    : 0;
 }
 
 std::string vtkROS2ServiceServerNode::GetLastRejection() const
@@ -369,7 +387,8 @@ std::string vtkROS2ServiceServerNode::GetLastRejection() const
 void vtkROS2ServiceServerNode::WriteXML(vtkXMLDataElement* element)
 {
   this->Superclass::WriteXML(element);
-  element->SetIntAttribute("answerUnansweredWithDefault", this->Internals->AnswerWithDefault ? 1 : 0);
+  element->SetIntAttribute(
+    "answerUnansweredWithDefault", this->Internals->AnswerWithDefault ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -398,13 +417,16 @@ void vtkROS2ServiceServerNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2ServiceServerNode* vtkROS2NodeNode::CreateAndAddServiceServerNode(const char* type, const char* service)
+vtkROS2ServiceServerNode* vtkROS2NodeNode::CreateAndAddServiceServerNode(
+  const char* type, const char* service)
 {
   vtkNew<vtkROS2ServiceServerNode> node;
-  const bool attached = this->AdoptKeyedChild("CreateAndAddServiceServerNode", ServiceServerRole, node, type, service, "service",
-    "this node serves ", "ros2:server:", [&] { return node->Attach(this, type, service); });
+  const bool attached = this->AdoptKeyedChild("CreateAndAddServiceServerNode", ServiceServerRole,
+    node, type, service, "service", "this node serves ",
+    "ros2:server:", [&] { return node->Attach(this, type, service); });
   return attached ? node.GetPointer() : nullptr; // the scene holds it
 }
 
@@ -417,5 +439,6 @@ vtkROS2ServiceServerNode* vtkROS2NodeNode::GetServiceServerNodeByService(const c
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::RemoveAndDeleteServiceServerNode(const char* service)
 {
-  return this->RemoveKeyedChild("RemoveAndDeleteServiceServerNode", ServiceServerRole, service, "no server of ");
+  return this->RemoveKeyedChild(
+    "RemoveAndDeleteServiceServerNode", ServiceServerRole, service, "no server of ");
 }

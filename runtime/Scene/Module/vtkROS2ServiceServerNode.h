@@ -66,7 +66,10 @@ public:
   bool SendResponseYAML(const char* yaml);
 
   /// Seconds a request may stay unanswered (default 5).
-  void SetResponseTimeout(double seconds) { this->SetEndpointTimeout("SetResponseTimeout", seconds); }
+  void SetResponseTimeout(double seconds)
+  {
+    this->SetEndpointTimeout("SetResponseTimeout", seconds);
+  }
   double GetResponseTimeout() const { return this->EndpointTimeout; }
   /// What happens to a request unanswered at the timeout: the default response (true, a
   /// warning is logged) or no response at all (false, an error is logged).
@@ -82,21 +85,24 @@ public:
   vtkTypeInt64 GetNumberOfRejectedRequests() const;
   std::string GetLastRejection() const;
 
-
   /// Saves and reads answerUnansweredWithDefault (the rest: vtkROS2EndpointNode).
   void WriteXML(vtkXMLDataElement* element) override;
   bool ReadXML(vtkXMLDataElement* element) override;
 
 #ifndef __VTK_WRAP__
   /// Used by vtkROS2NodeNode: see vtkROS2ServiceClientNode::Attach.
-  bool Attach(vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service) override;
+  bool Attach(
+    vtkROS2NodeNode* rosNode, const std::string& type, const std::string& service) override;
   void Detach() override;
   /// Per Spin: takes requests, fires the events, sends responses, expires unanswered requests.
   int ProcessRequests();
 #endif
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): answers requests.
-  int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessRequests(); }
+  int OnROS2NodeSpin(vtkROS2NodeNode*) override
+  {
+    return this->ProcessRequests();
+  }
 
 protected:
   vtkROS2ServiceServerNode();

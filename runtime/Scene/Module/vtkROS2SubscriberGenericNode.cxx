@@ -11,11 +11,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkXMLDataElement.h"
 
-
 vtkStandardNewMacro(vtkROS2SubscriberGenericNode);
 
-namespace
-{
+namespace {
 /// What CreateAndAddSubscriberNode makes for a type without a mapping rule.
 vtkROS2TopicNode* NewGeneric(const char* rosType)
 {
@@ -72,8 +70,8 @@ bool vtkROS2SubscriberGenericNode::SetROSTypeResolvedAtRuntime(const char* rosTy
   std::string name = rosType ? rosType : "";
   if (!ros2vtk::scene::runtime_type_name(name))
   {
-    vtkErrorMacro("SetROSTypeResolvedAtRuntime: '" << (rosType ? rosType : "(null)")
-                                                   << "' is not a message type name (pkg/msg/Type)");
+    vtkErrorMacro("SetROSTypeResolvedAtRuntime: '"
+      << (rosType ? rosType : "(null)") << "' is not a message type name (pkg/msg/Type)");
     return false;
   }
   if (this->IsAddedToROS2Node())
@@ -112,7 +110,8 @@ bool vtkROS2SubscriberGenericNode::CreateEndpoint(ros2vtk::wire::Participant& pa
     return this->Superclass::CreateEndpoint(participant, topic, qos, error);
   }
   // No subscription yet: the resolver watches the graph, the spin subscribes once it knows.
-  this->Resolver.reset(new ros2vtk::wire::RuntimeTypeResolver(participant, topic, this->RuntimeTypeName));
+  this->Resolver.reset(
+    new ros2vtk::wire::RuntimeTypeResolver(participant, topic, this->RuntimeTypeName));
   this->TypeStatus = this->Resolver->status();
   return true;
 }
@@ -124,7 +123,8 @@ void vtkROS2SubscriberGenericNode::DestroyEndpoint()
   this->Superclass::DestroyEndpoint();
   if (!this->Type && !this->RuntimeTypeName.empty())
   {
-    this->TypeStatus = "waiting to be added to a ROS node to learn " + this->RuntimeTypeName + " from a publisher";
+    this->TypeStatus =
+      "waiting to be added to a ROS node to learn " + this->RuntimeTypeName + " from a publisher";
   }
 }
 
@@ -151,7 +151,8 @@ int vtkROS2SubscriberGenericNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
       this->Type = this->Resolver->type();
       this->Resolver.reset();
       std::string error;
-      if (!participant || !this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error))
+      if (!participant ||
+        !this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error))
       {
         this->TypeStatus = "learnt " + this->RuntimeTypeName + " but cannot subscribe: " + error;
         vtkErrorMacro(<< this->TypeStatus);
@@ -183,9 +184,12 @@ void vtkROS2SubscriberGenericNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2SubscriberNode* vtkROS2NodeNode::CreateAndAddSubscriberNode(const char* type, const char* topic)
+vtkROS2SubscriberNode* vtkROS2NodeNode::CreateAndAddSubscriberNode(
+  const char* type, const char* topic)
 {
-  return vtkROS2SubscriberNode::SafeDownCast(this->CreateAndAddTopicNode(false, type, topic, &NewGeneric));
+  return vtkROS2SubscriberNode::SafeDownCast(
+    this->CreateAndAddTopicNode(false, type, topic, &NewGeneric));
 }

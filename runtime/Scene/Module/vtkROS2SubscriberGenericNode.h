@@ -10,10 +10,8 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-namespace ros2vtk
-{
-namespace wire
-{
+namespace ros2vtk {
+namespace wire {
 class RuntimeTypeResolver;
 }
 }
@@ -59,7 +57,10 @@ protected:
   ~vtkROS2SubscriberGenericNode() override;
 
   const ros2vtk::wire::MessageTypeSupport& GetMessageTypeSupport() const override;
-  bool HasMessageTypeSupport() const override { return this->Type != nullptr || !this->RuntimeTypeName.empty(); }
+  bool HasMessageTypeSupport() const override
+  {
+    return this->Type != nullptr || !this->RuntimeTypeName.empty();
+  }
   bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
     const ros2vtk::wire::QoS& qos, std::string* error) override;
   void DestroyEndpoint() override;

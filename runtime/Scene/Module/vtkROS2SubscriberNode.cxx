@@ -17,8 +17,7 @@
 #include <chrono>
 #include <vector>
 
-namespace
-{
+namespace {
 // At most one warning about malformed samples per subscriber in this interval.
 constexpr std::chrono::seconds RejectionReportInterval(5);
 } // namespace
@@ -170,8 +169,9 @@ double vtkROS2SubscriberNode::GetSecondsSinceLastMessage() const
   {
     return -1.0;
   }
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                       this->Internals->LastMessageArrival).count();
+  return std::chrono::duration<double>(
+    std::chrono::steady_clock::now() - this->Internals->LastMessageArrival)
+    .count();
 }
 
 //------------------------------------------------------------------------------
@@ -210,11 +210,12 @@ void vtkROS2SubscriberNode::ReportIncompatibleQoS()
   internals.IncompatibleSeen = incompatible;
   this->NumberOfIncompatibleQoSPublishers += static_cast<vtkTypeInt64>(fresh);
   internals.LastIncompatibleQoSPolicy = internals.Subscription->last_incompatible_qos_policy();
-  vtkWarningMacro("topic '" << this->GetTopic() << "': " << fresh
-                            << " publisher(s) offering incompatible QoS; no messages will arrive from "
-                               "them. Last incompatible policy: "
-                            << internals.LastIncompatibleQoSPolicy << " (this subscriber requests "
-                            << this->GetQoSDescription() << ")");
+  vtkWarningMacro(
+    "topic '" << this->GetTopic() << "': " << fresh
+              << " publisher(s) offering incompatible QoS; no messages will arrive from "
+                 "them. Last incompatible policy: "
+              << internals.LastIncompatibleQoSPolicy << " (this subscriber requests "
+              << this->GetQoSDescription() << ")");
 }
 
 //------------------------------------------------------------------------------
@@ -262,9 +263,10 @@ void vtkROS2SubscriberNode::WarnIfNeverSpun(const char* call) const
   this->WarnedNeverSpun = true;
   // vtkWarningMacro fires WarningEvent on `this`, which is not const.
   auto* self = const_cast<vtkROS2SubscriberNode*>(this);
-  vtkWarningWithObjectMacro(self, << call << " on " << this->GetTopic() << ": ROS node "
-    << node->GetROS2NodeName() << " has never spun, so nothing is received; call logic.Spin() "
-    << "in your loop, or logic.SpinFor(seconds) / logic.AttachToInteractor(interactor)");
+  vtkWarningWithObjectMacro(
+    self, << call << " on " << this->GetTopic() << ": ROS node " << node->GetROS2NodeName()
+          << " has never spun, so nothing is received; call logic.Spin() "
+          << "in your loop, or logic.SpinFor(seconds) / logic.AttachToInteractor(interactor)");
 }
 
 //------------------------------------------------------------------------------
@@ -280,7 +282,8 @@ std::string vtkROS2SubscriberNode::GetLastMessageYAML() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2SubscriberNode::GetLastMessageStringField(const char* fieldName, std::string& value) const
+bool vtkROS2SubscriberNode::GetLastMessageStringField(
+  const char* fieldName, std::string& value) const
 {
   const void* message = this->GetLastRawMessage();
   if (!message || !fieldName)
@@ -295,7 +298,8 @@ bool vtkROS2SubscriberNode::GetLastMessageStringField(const char* fieldName, std
       field.container == ros2vtk::wire::Container::None && std::string(field.name) == fieldName)
     {
       // Generated structs hold `string` fields as std::string at the recorded offset.
-      value = *reinterpret_cast<const std::string*>(static_cast<const char*>(message) + field.offset);
+      value =
+        *reinterpret_cast<const std::string*>(static_cast<const char*>(message) + field.offset);
       return true;
     }
   }
@@ -337,7 +341,8 @@ void vtkROS2SubscriberNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
 vtkROS2SubscriberNode* vtkROS2NodeNode::GetSubscriberNodeByTopic(const char* topic)
 {
@@ -356,8 +361,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteSubscriberNode(const char* topic)
   vtkROS2SubscriberNode* node = this->GetSubscriberNodeByTopic(topic);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteSubscriberNode: no subscriber on '" << (topic ? topic : "(null)")
-                                                                      << "'");
+    vtkErrorMacro(
+      "RemoveAndDeleteSubscriberNode: no subscriber on '" << (topic ? topic : "(null)") << "'");
     return false;
   }
   node->RemoveFromROS2Node();

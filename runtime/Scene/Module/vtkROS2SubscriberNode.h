@@ -36,7 +36,10 @@ public:
   /// Publishers found on the topic whose QoS cannot match this subscriber (they send nothing
   /// here; each is reported once, as rclpy's "requesting incompatible QoS"), and the policy that
   /// kept the latest apart ("RELIABILITY", "DURABILITY", ...; empty when none).
-  vtkTypeInt64 GetNumberOfIncompatibleQoSPublishers() const { return this->NumberOfIncompatibleQoSPublishers; }
+  vtkTypeInt64 GetNumberOfIncompatibleQoSPublishers() const
+  {
+    return this->NumberOfIncompatibleQoSPublishers;
+  }
   const char* GetLastIncompatibleQoSPolicy() const;
 
   /// The newest message as YAML, as `ros2 topic echo` prints it; empty before the first one.
@@ -66,7 +69,6 @@ public:
   /// Takes the queued messages; returns how many were new. Called by vtkROS2NodeNode::Spin on
   /// the spinning thread; fires ModifiedEvent (call data int*: the count) when there were any.
   int ProcessIncomingMessages();
-
 
   /// Spin hook (vtkROS2SceneNode::OnROS2NodeSpin): takes the queued messages.
   int OnROS2NodeSpin(vtkROS2NodeNode*) override { return this->ProcessIncomingMessages(); }

@@ -100,7 +100,8 @@ bool vtkROS2Tf2BroadcasterNode::Broadcast(vtkMatrix4x4* matrix)
   // The ROS node's clock: simulated time when its use_sim_time is on (tf2_ros stamps with the
   // node clock too), so lookups by peers in the same time base succeed.
   transform.stamp = rosNode->GetNodeTimeNanoseconds();
-  transform.transform.translation = Eigen::Vector3d(pose.translation[0], pose.translation[1], pose.translation[2]);
+  transform.transform.translation =
+    Eigen::Vector3d(pose.translation[0], pose.translation[1], pose.translation[2]);
   transform.transform.rotation =
     Eigen::Quaterniond(pose.rotation[3], pose.rotation[0], pose.rotation[1], pose.rotation[2]);
   if (!broadcaster->send(transform, &error))
@@ -176,10 +177,11 @@ void vtkROS2Tf2BroadcasterNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const char* parentFrame,
-                                                                           const char* childFrame)
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(
+  const char* parentFrame, const char* childFrame)
 {
   if (!this->CheckReadyFor("CreateAndAddTf2BroadcasterNode"))
   {
@@ -192,7 +194,8 @@ vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const
   }
   if (this->FindChildByFrames(Tf2BroadcasterRole, parentFrame, childFrame))
   {
-    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: " << parentFrame << " <- " << childFrame << " exists already");
+    vtkErrorMacro("CreateAndAddTf2BroadcasterNode: " << parentFrame << " <- " << childFrame
+                                                     << " exists already");
     return nullptr;
   }
   vtkNew<vtkROS2Tf2BroadcasterNode> node;
@@ -205,20 +208,23 @@ vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::CreateAndAddTf2BroadcasterNode(const
 }
 
 //------------------------------------------------------------------------------
-vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByParentChild(const char* parentFrame,
-                                                                               const char* childFrame)
+vtkROS2Tf2BroadcasterNode* vtkROS2NodeNode::GetTf2BroadcasterNodeByParentChild(
+  const char* parentFrame, const char* childFrame)
 {
-  return vtkROS2Tf2BroadcasterNode::SafeDownCast(this->FindChildByFrames(Tf2BroadcasterRole, parentFrame, childFrame));
+  return vtkROS2Tf2BroadcasterNode::SafeDownCast(
+    this->FindChildByFrames(Tf2BroadcasterRole, parentFrame, childFrame));
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* parentFrame, const char* childFrame)
+bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(
+  const char* parentFrame, const char* childFrame)
 {
-  vtkROS2Tf2BroadcasterNode* node = this->GetTf2BroadcasterNodeByParentChild(parentFrame, childFrame);
+  vtkROS2Tf2BroadcasterNode* node =
+    this->GetTf2BroadcasterNodeByParentChild(parentFrame, childFrame);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: no broadcaster " << (parentFrame ? parentFrame : "")
-                                                                       << " <- " << (childFrame ? childFrame : ""));
+    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: no broadcaster "
+      << (parentFrame ? parentFrame : "") << " <- " << (childFrame ? childFrame : ""));
     return false;
   }
   return this->RemoveChild(Tf2BroadcasterRole, node);
@@ -236,7 +242,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2BroadcasterNode(const char* nodeID)
   vtkROS2SceneNode* node = this->FindChildByID(Tf2BroadcasterRole, nodeID);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: " << (nodeID ? nodeID : "(null)") << " is not a tf2 broadcaster of this node");
+    vtkErrorMacro("RemoveAndDeleteTf2BroadcasterNode: "
+      << (nodeID ? nodeID : "(null)") << " is not a tf2 broadcaster of this node");
     return false;
   }
   return this->RemoveChild(Tf2BroadcasterRole, node);

@@ -25,7 +25,10 @@ public:
   const char* GetParentID() const { return this->ParentFrame.c_str(); }
   void SetChildID(const char* frame);
   const char* GetChildID() const { return this->ChildFrame.c_str(); }
-  bool IsParentAndChildSet() const { return !this->ParentFrame.empty() && !this->ChildFrame.empty(); }
+  bool IsParentAndChildSet() const
+  {
+    return !this->ParentFrame.empty() && !this->ChildFrame.empty();
+  }
 
   /// Static transforms go to /tf_static (latched for late joiners), e.g. a registration.
   vtkSetMacro(Static, bool);
@@ -51,7 +54,10 @@ public:
   bool ReadXML(vtkXMLDataElement* element) override;
 
   /// Index key among the ROS node's broadcasters: "parent<newline>child".
-  std::string GetROS2NodeChildKey() const override { return this->ParentFrame + '\n' + this->ChildFrame; }
+  std::string GetROS2NodeChildKey() const override
+  {
+    return this->ParentFrame + '\n' + this->ChildFrame;
+  }
 
 protected:
   vtkROS2Tf2BroadcasterNode();

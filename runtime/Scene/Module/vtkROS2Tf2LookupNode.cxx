@@ -167,9 +167,11 @@ void vtkROS2Tf2LookupNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* parentFrame, const char* childFrame)
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(
+  const char* parentFrame, const char* childFrame)
 {
   if (!this->CheckReadyFor("CreateAndAddTf2LookupNode") || !this->GetTf2Buffer())
   {
@@ -182,7 +184,8 @@ vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* par
   }
   if (this->FindChildByFrames(Tf2LookupRole, parentFrame, childFrame))
   {
-    vtkErrorMacro("CreateAndAddTf2LookupNode: " << parentFrame << " <- " << childFrame << " exists already");
+    vtkErrorMacro(
+      "CreateAndAddTf2LookupNode: " << parentFrame << " <- " << childFrame << " exists already");
     return nullptr;
   }
   vtkNew<vtkROS2Tf2LookupNode> node;
@@ -197,9 +200,11 @@ vtkROS2Tf2LookupNode* vtkROS2NodeNode::CreateAndAddTf2LookupNode(const char* par
 }
 
 //------------------------------------------------------------------------------
-vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByParentChild(const char* parentFrame, const char* childFrame)
+vtkROS2Tf2LookupNode* vtkROS2NodeNode::GetTf2LookupNodeByParentChild(
+  const char* parentFrame, const char* childFrame)
 {
-  return vtkROS2Tf2LookupNode::SafeDownCast(this->FindChildByFrames(Tf2LookupRole, parentFrame, childFrame));
+  return vtkROS2Tf2LookupNode::SafeDownCast(
+    this->FindChildByFrames(Tf2LookupRole, parentFrame, childFrame));
 }
 
 //------------------------------------------------------------------------------
@@ -208,8 +213,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* parentFrame, cons
   vtkROS2Tf2LookupNode* node = this->GetTf2LookupNodeByParentChild(parentFrame, childFrame);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: no lookup " << (parentFrame ? parentFrame : "") << " <- "
-                                                             << (childFrame ? childFrame : ""));
+    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: no lookup "
+      << (parentFrame ? parentFrame : "") << " <- " << (childFrame ? childFrame : ""));
     return false;
   }
   return this->RemoveChild(Tf2LookupRole, node);
@@ -227,7 +232,8 @@ bool vtkROS2NodeNode::RemoveAndDeleteTf2LookupNode(const char* nodeID)
   vtkROS2SceneNode* node = this->FindChildByID(Tf2LookupRole, nodeID);
   if (!node)
   {
-    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: " << (nodeID ? nodeID : "(null)") << " is not a tf2 lookup of this node");
+    vtkErrorMacro("RemoveAndDeleteTf2LookupNode: " << (nodeID ? nodeID : "(null)")
+                                                   << " is not a tf2 lookup of this node");
     return false;
   }
   return this->RemoveChild(Tf2LookupRole, node);

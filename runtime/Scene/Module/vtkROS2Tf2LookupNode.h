@@ -34,7 +34,10 @@ public:
   const char* GetParentID() const { return this->ParentFrame.c_str(); }
   void SetChildID(const char* frame);
   const char* GetChildID() const { return this->ChildFrame.c_str(); }
-  bool IsParentAndChildSet() const { return !this->ParentFrame.empty() && !this->ChildFrame.empty(); }
+  bool IsParentAndChildSet() const
+  {
+    return !this->ParentFrame.empty() && !this->ChildFrame.empty();
+  }
 
   /// Metres on the wire -> millimetres in the matrix (default on).
   vtkSetMacro(ScaleLengths, bool);
@@ -73,7 +76,10 @@ public:
 #endif
 
   /// Index key among the ROS node's lookups: "parent<newline>child".
-  std::string GetROS2NodeChildKey() const override { return this->ParentFrame + '\n' + this->ChildFrame; }
+  std::string GetROS2NodeChildKey() const override
+  {
+    return this->ParentFrame + '\n' + this->ChildFrame;
+  }
   /// Spin hook: the latest transform from the ROS node's tf2 buffer.
   int OnROS2NodeSpin(vtkROS2NodeNode* rosNode) override;
 

@@ -35,7 +35,7 @@ bool vtkROS2TopicNode::AddToROS2Node(const char* nodeID, const char* topic)
   if (this->IsAddedToROS2Node())
   {
     vtkErrorMacro("AddToROS2Node: already added on topic '" << this->Internals->Topic
-                                                             << "'; call RemoveFromROS2Node first");
+                                                            << "'; call RemoveFromROS2Node first");
     return false;
   }
   if (!this->Scene)
@@ -183,8 +183,7 @@ bool vtkROS2TopicNode::SetQoSProfile(const char* profile)
   if (!profile || !ros2vtk::wire::QoS::from_name(profile, qos))
   {
     vtkErrorMacro("SetQoSProfile: unknown profile '"
-      << (profile ? profile : "(null)")
-      << "'; known: " << ros2vtk::wire::QoS::profile_names());
+      << (profile ? profile : "(null)") << "'; known: " << ros2vtk::wire::QoS::profile_names());
     return false;
   }
   return this->SetQoS(qos);
@@ -283,8 +282,8 @@ bool vtkROS2TopicNode::SetQoSReliability(int reliability)
       qos.reliability = Reliability::BestEffort;
       break;
     default:
-      vtkErrorMacro("SetQoSReliability: unknown value " << reliability
-        << "; use ReliabilitySystemDefault (0), Reliable (1) or BestEffort (2)");
+      vtkErrorMacro("SetQoSReliability: unknown value "
+        << reliability << "; use ReliabilitySystemDefault (0), Reliable (1) or BestEffort (2)");
       return false;
   }
   return this->SetQoS(qos);
@@ -294,7 +293,8 @@ bool vtkROS2TopicNode::SetQoSReliability(int reliability)
 int vtkROS2TopicNode::GetQoSReliability() const
 {
   return this->Internals->QoS.reliability == ros2vtk::wire::QoS::Reliability::BestEffort
-    ? BestEffort : Reliable;
+    ? BestEffort
+    : Reliable;
 }
 
 //------------------------------------------------------------------------------
@@ -314,8 +314,8 @@ bool vtkROS2TopicNode::SetQoSDurability(int durability)
       qos.durability = Durability::Volatile;
       break;
     default:
-      vtkErrorMacro("SetQoSDurability: unknown value " << durability
-        << "; use DurabilitySystemDefault (0), TransientLocal (1) or Volatile (2)");
+      vtkErrorMacro("SetQoSDurability: unknown value "
+        << durability << "; use DurabilitySystemDefault (0), TransientLocal (1) or Volatile (2)");
       return false;
   }
   return this->SetQoS(qos);
@@ -325,7 +325,8 @@ bool vtkROS2TopicNode::SetQoSDurability(int durability)
 int vtkROS2TopicNode::GetQoSDurability() const
 {
   return this->Internals->QoS.durability == ros2vtk::wire::QoS::Durability::TransientLocal
-    ? TransientLocal : Volatile;
+    ? TransientLocal
+    : Volatile;
 }
 
 //------------------------------------------------------------------------------
@@ -421,10 +422,11 @@ void vtkROS2TopicNode::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // vtkROS2NodeNode's SlicerROS2 methods for this kind (CreateAndAdd…, Get…, RemoveAndDelete…)
-// live with the kind, so that the ROS node's own file includes no child kind (docs/architecture.md).
+// live with the kind, so that the ROS node's own file includes no child kind
+// (docs/architecture.md).
 //------------------------------------------------------------------------------
-vtkROS2SceneNode* vtkROS2NodeNode::CreateAndAddTopicNode(
-  bool publisher, const char* type, const char* topic, vtkROS2TopicNode* (*newGeneric)(const char* rosType))
+vtkROS2SceneNode* vtkROS2NodeNode::CreateAndAddTopicNode(bool publisher, const char* type,
+  const char* topic, vtkROS2TopicNode* (*newGeneric)(const char* rosType))
 {
   using ros2vtk::scene::NodeDirection;
   const char* what = publisher ? "CreateAndAddPublisherNode" : "CreateAndAddSubscriberNode";

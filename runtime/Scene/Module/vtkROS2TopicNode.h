@@ -86,8 +86,8 @@ public:
   bool SetQoSDurability(int durability);
   int GetQoSDurability() const;
 
-  /// Units policy (msg_specs/mappings/README.md): ROS lengths are metres, VTK lengths millimetres; when on (the
-  /// default) subclasses scale lengths x1000 into VTK and /1000 out of it.
+  /// Units policy (msg_specs/mappings/README.md): ROS lengths are metres, VTK lengths millimetres;
+  /// when on (the default) subclasses scale lengths x1000 into VTK and /1000 out of it.
   vtkSetMacro(ScaleLengths, bool);
   vtkGetMacro(ScaleLengths, bool);
   vtkBooleanMacro(ScaleLengths, bool);
@@ -104,7 +104,10 @@ public:
 #endif
 
   /// Index key among the ROS node's publishers / subscribers (the resolved topic).
-  std::string GetROS2NodeChildKey() const override { return this->GetTopic(); }
+  std::string GetROS2NodeChildKey() const override
+  {
+    return this->GetTopic();
+  }
 
 protected:
   vtkROS2TopicNode();
@@ -114,7 +117,10 @@ protected:
   /// HasMessageTypeSupport() is true.
   virtual const ros2vtk::wire::MessageTypeSupport& GetMessageTypeSupport() const = 0;
   /// False while the type is unknown (generic nodes before SetROSType).
-  virtual bool HasMessageTypeSupport() const { return true; }
+  virtual bool HasMessageTypeSupport() const
+  {
+    return true;
+  }
 
   /// Direction-specific DDS endpoint: create on `participant` (false and `error` on failure),
   /// destroy (idempotent).

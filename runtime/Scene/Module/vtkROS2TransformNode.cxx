@@ -114,8 +114,8 @@ void vtkROS2TransformNode::GetMatrixTransformToWorld(vtkMatrix4x4* matrixToWorld
   {
     if (!visited.insert(parent).second)
     {
-      vtkWarningMacro("transform hierarchy of " << this->GetID() << " has a cycle; cut at "
-                                                << parent->GetID());
+      vtkWarningMacro(
+        "transform hierarchy of " << this->GetID() << " has a cycle; cut at " << parent->GetID());
       break;
     }
     vtkMatrix4x4::Multiply4x4(parent->GetMatrixTransformToParent(), matrixToWorld, matrixToWorld);

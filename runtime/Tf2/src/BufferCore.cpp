@@ -22,8 +22,11 @@ FrameId validate_frame_id(const FrameTable& frames, const char* function_name, c
 {
   // The "<function> argument <name>" wording is built only on failure: lookups run for every
   // link at every spin.
-  auto where = [function_name, argument] { return std::string(function_name) + " argument " + argument; };
-  if (frame.empty() || frame[0] == '/') {
+  auto where = [function_name, argument] {
+    return std::string(function_name) + " argument " + argument;
+  };
+  if (frame.empty() || frame[0] == '/')
+  {
     result.error = Tf2Error::InvalidArgument;
     result.message = "Invalid argument \"" + frame + "\" passed to " + where() +
       (frame.empty() ? " - in tf2 frame_ids cannot be empty"
@@ -31,7 +34,8 @@ FrameId validate_frame_id(const FrameTable& frames, const char* function_name, c
     return kNoFrame;
   }
   const FrameId id = frames.ids.find(frame);
-  if (id == kNoFrame) {
+  if (id == kNoFrame)
+  {
     result.error = Tf2Error::Lookup;
     result.message = "\"" + frame + "\" passed to " + where() + " does not exist.";
   }
@@ -52,8 +56,10 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
   bool is_static, std::string* error)
 {
   const CheckedTransform checked = check_transform_input(transform, authority);
-  if (!checked.ok) {
-    if (error) {
+  if (!checked.ok)
+  {
+    if (error)
+    {
       *error = checked.message;
     }
     return false;
@@ -63,17 +69,23 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
   const FrameId child = frames_->intern(checked.child);
   const FrameId parent = frames_->intern(checked.parent);
   auto& cache = frames_->caches[child];
-  if (!cache || cache->is_static() != is_static) {
+  if (!cache || cache->is_static() != is_static)
+  {
     // First data, or data with the other static flag: tf2 starts the frame over with a cache of
     // the matching kind.
-    if (is_static) {
+    if (is_static)
+    {
       cache = std::make_unique<StaticCache>();
-    } else {
+    }
+    else
+    {
       cache = std::make_unique<TimeCache>(cache_time_);
     }
   }
-  if (!cache->insert(TransformRecord{ transform.stamp, checked.transform, parent, child })) {
-    if (error) {
+  if (!cache->insert(TransformRecord{ transform.stamp, checked.transform, parent, child }))
+  {
+    if (error)
+    {
       *error = "TF_OLD_DATA ignoring data from the past for frame " + checked.child + " at time " +
         display_time(transform.stamp) + " according to authority " + authority +
         "\nPossible reasons are listed at http://wiki.ros.org/tf/Errors%20explained";
@@ -81,7 +93,8 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
     return false;
   }
   std::string& stored_authority = frames_->authorities[child];
-  if (stored_authority != authority) {
+  if (stored_authority != authority)
+  {
     stored_authority = authority; // usually the same one: no copy per transform
   }
   return true;
@@ -106,23 +119,29 @@ void BufferCore::lookup_locked(const std::string& target_frame, const std::strin
   result.source_frame = source_frame;
   result.stamp = 0;
   result.transform = Transform();
-  if (target_frame == source_frame) {
+  if (target_frame == source_frame)
+  {
     // tf2 answers this before validating, so it works even for frames never seen.
     result.ok = true;
     result.stamp = time;
-    if (time == kLatestTime) {
+    if (time == kLatestTime)
+    {
       const TimeCacheInterface* cache = frames_->cache(frames_->ids.find(target_frame));
       result.stamp = cache ? cache->newest_stamp() : kLatestTime;
     }
     return;
   }
 
-  const FrameId target = validate_frame_id(*frames_, function_name, "target_frame", target_frame, result);
-  if (target == kNoFrame) {
+  const FrameId target =
+    validate_frame_id(*frames_, function_name, "target_frame", target_frame, result);
+  if (target == kNoFrame)
+  {
     return;
   }
-  const FrameId source = validate_frame_id(*frames_, function_name, "source_frame", source_frame, result);
-  if (source == kNoFrame) {
+  const FrameId source =
+    validate_frame_id(*frames_, function_name, "source_frame", source_frame, result);
+  if (source == kNoFrame)
+  {
     return;
   }
 
@@ -131,13 +150,14 @@ void BufferCore::lookup_locked(const std::string& target_frame, const std::strin
   result.message = std::move(walk.message);
   result.ok = walk.error == Tf2Error::NoError;
   result.stamp = walk.time;
-  if (result.ok) {
+  if (result.ok)
+  {
     result.transform = walk.transform;
   }
 }
 
-LookupResult BufferCore::lookup_transform(const std::string& target_frame,
-  const std::string& source_frame, TimePoint time) const
+LookupResult BufferCore::lookup_transform(
+  const std::string& target_frame, const std::string& source_frame, TimePoint time) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   return lookup_locked(target_frame, source_frame, time, "lookupTransform");
@@ -163,21 +183,25 @@ LookupResult BufferCore::lookup_transform(const std::string& target_frame, TimeP
     { "source_frame", &source_frame },
     { "fixed_frame", &fixed_frame },
   };
-  for (const auto& [argument, frame] : arguments) {
-    if (validate_frame_id(*frames_, "lookupTransform", argument, *frame, result) == kNoFrame) {
+  for (const auto& [argument, frame] : arguments)
+  {
+    if (validate_frame_id(*frames_, "lookupTransform", argument, *frame, result) == kNoFrame)
+    {
       return result;
     }
   }
 
   LookupResult fixed_from_source =
     lookup_locked(fixed_frame, source_frame, source_time, "lookupTransform");
-  if (!fixed_from_source.ok) {
+  if (!fixed_from_source.ok)
+  {
     fixed_from_source.target_frame = target_frame;
     return fixed_from_source;
   }
   LookupResult target_from_fixed =
     lookup_locked(target_frame, fixed_frame, target_time, "lookupTransform");
-  if (!target_from_fixed.ok) {
+  if (!target_from_fixed.ok)
+  {
     target_from_fixed.source_frame = source_frame;
     return target_from_fixed;
   }
@@ -192,7 +216,8 @@ bool BufferCore::can_transform(const std::string& target_frame, const std::strin
 {
   std::lock_guard<std::mutex> lock(mutex_);
   const LookupResult result = lookup_locked(target_frame, source_frame, time, "canTransform");
-  if (!result.ok && error) {
+  if (!result.ok && error)
+  {
     *error = result.message;
   }
   return result.ok;
@@ -204,7 +229,8 @@ bool BufferCore::can_transform(const std::string& target_frame, TimePoint target
 {
   const LookupResult result =
     lookup_transform(target_frame, target_time, source_frame, source_time, fixed_frame);
-  if (!result.ok && error) {
+  if (!result.ok && error)
+  {
     *error = result.message;
   }
   return result.ok;
@@ -216,16 +242,18 @@ bool BufferCore::frame_exists(const std::string& frame) const
   return frames_->ids.find(frame) != kNoFrame;
 }
 
-bool BufferCore::get_frame_parent(const std::string& frame, TimePoint time,
-  std::string& parent) const
+bool BufferCore::get_frame_parent(
+  const std::string& frame, TimePoint time, std::string& parent) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   const TimeCacheInterface* cache = frames_->cache(frames_->ids.find(frame));
-  if (!cache) {
+  if (!cache)
+  {
     return false;
   }
   const FrameId parent_id = cache->parent_at(time);
-  if (parent_id == kNoFrame) {
+  if (parent_id == kNoFrame)
+  {
     return false;
   }
   parent = frames_->ids.name(parent_id);
@@ -236,7 +264,8 @@ std::vector<std::string> BufferCore::all_frame_names() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<std::string> names;
-  for (FrameId id = 1; id < frames_->ids.size(); ++id) {
+  for (FrameId id = 1; id < frames_->ids.size(); ++id)
+  {
     names.push_back(frames_->ids.name(id));
   }
   return names;
@@ -257,8 +286,10 @@ std::string BufferCore::all_frames_as_yaml(TimePoint current_time) const
 void BufferCore::clear()
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (auto& cache : frames_->caches) {
-    if (cache) {
+  for (auto& cache : frames_->caches)
+  {
+    if (cache)
+    {
       cache->clear();
     }
   }

@@ -11,7 +11,8 @@ FrameIds::FrameIds()
 FrameId FrameIds::intern(const std::string& name)
 {
   auto found = ids_.find(name);
-  if (found != ids_.end()) {
+  if (found != ids_.end())
+  {
     return found->second;
   }
   const auto id = static_cast<FrameId>(names_.size());

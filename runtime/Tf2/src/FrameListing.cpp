@@ -20,9 +20,11 @@ FrameId newest_parent(const TimeCacheInterface& cache)
 std::string frames_as_string(const FrameTable& frames)
 {
   std::ostringstream out;
-  for (FrameId id = 1; id < frames.ids.size(); ++id) {
+  for (FrameId id = 1; id < frames.ids.size(); ++id)
+  {
     const TimeCacheInterface* cache = frames.cache(id);
-    if (!cache) {
+    if (!cache)
+    {
       continue;
     }
     out << "Frame " << frames.ids.name(id) << " exists with parent "
@@ -37,10 +39,12 @@ std::string frames_as_yaml(const FrameTable& frames, TimePoint current_time)
   out.setf(std::ios::fixed, std::ios::floatfield);
   out.precision(3);
   bool any = false;
-  for (FrameId id = 1; id < frames.ids.size(); ++id) {
+  for (FrameId id = 1; id < frames.ids.size(); ++id)
+  {
     const TimeCacheInterface* cache = frames.cache(id);
     TransformRecord newest;
-    if (!cache || !cache->sample(kLatestTime, newest)) {
+    if (!cache || !cache->sample(kLatestTime, newest))
+    {
       continue;
     }
     any = true;
@@ -57,7 +61,8 @@ std::string frames_as_yaml(const FrameTable& frames, TimePoint current_time)
         << "  rate: " << rate << "\n"
         << "  most_recent_transform: " << display_time(cache->newest_stamp()) << "\n"
         << "  oldest_transform: " << display_time(cache->oldest_stamp()) << "\n";
-    if (current_time != kLatestTime) {
+    if (current_time != kLatestTime)
+    {
       out << "  transform_delay: "
           << time_to_seconds(current_time) - time_to_seconds(cache->newest_stamp()) << "\n";
     }

@@ -30,7 +30,8 @@ struct FrameTable
   FrameId intern(const std::string& name)
   {
     const FrameId id = ids.intern(name);
-    if (caches.size() < ids.size()) {
+    if (caches.size() < ids.size())
+    {
       caches.resize(ids.size());
       authorities.resize(ids.size());
     }

@@ -12,8 +12,10 @@ bool StaticCache::insert(const TransformRecord& record)
 
 bool StaticCache::sample(TimePoint time, TransformRecord& out, SampleError* error) const
 {
-  if (!has_value_) {
-    if (error) {
+  if (!has_value_)
+  {
+    if (error)
+    {
       error->code = Tf2Error::NoDataForExtrapolation;
       error->message = "Lookup would require extrapolation at time " + display_time(time) +
         ", but no static transform is in the buffer";

@@ -17,7 +17,8 @@ std::uint64_t span(TimePoint newer, TimePoint older)
 
 void fail(SampleError* error, Tf2Error code, std::string message)
 {
-  if (error) {
+  if (error)
+  {
     error->code = code;
     error->message = std::move(message);
   }
@@ -33,10 +34,12 @@ TimeCache::TimeCache(Duration cache_time)
 bool TimeCache::insert(const TransformRecord& record)
 {
   if (!records_.empty() && record.stamp < records_.back().stamp &&
-    span(records_.back().stamp, record.stamp) > static_cast<std::uint64_t>(cache_time_)) {
+    span(records_.back().stamp, record.stamp) > static_cast<std::uint64_t>(cache_time_))
+  {
     return false; // older than (newest - cache_time)
   }
-  if (records_.empty() || record.stamp > records_.back().stamp) {
+  if (records_.empty() || record.stamp > records_.back().stamp)
+  {
     records_.push_back(record); // the usual case: newer than everything held
     prune();
     return true;
@@ -44,12 +47,15 @@ bool TimeCache::insert(const TransformRecord& record)
   // After every sample with a stamp <= the new one: equal stamps stay in arrival order.
   auto position = std::upper_bound(records_.begin(), records_.end(), record.stamp,
     [](TimePoint stamp, const TransformRecord& stored) { return stamp < stored.stamp; });
-  for (auto same = position; same != records_.begin();) {
+  for (auto same = position; same != records_.begin();)
+  {
     --same;
-    if (same->stamp != record.stamp) {
+    if (same->stamp != record.stamp)
+    {
       break;
     }
-    if (*same == record) {
+    if (*same == record)
+    {
       return true; // received twice (e.g. a relayed /tf): keep one copy
     }
   }
@@ -64,27 +70,32 @@ void TimeCache::prune()
   // insert; pruning after keeps the window exactly cache_time long.
   const TimePoint newest = records_.back().stamp;
   while (!records_.empty() &&
-    span(newest, records_.front().stamp) > static_cast<std::uint64_t>(cache_time_)) {
+    span(newest, records_.front().stamp) > static_cast<std::uint64_t>(cache_time_))
+  {
     records_.pop_front();
   }
 }
 
-int TimeCache::find_closest(TimePoint time, std::size_t& older, std::size_t& newer,
-  SampleError* error) const
+int TimeCache::find_closest(
+  TimePoint time, std::size_t& older, std::size_t& newer, SampleError* error) const
 {
-  if (records_.empty()) {
+  if (records_.empty())
+  {
     fail(error, Tf2Error::NoDataForExtrapolation,
       "Lookup would require extrapolation at time " + display_time(time) +
         ", but no data is in the buffer");
     return 0;
   }
   const std::size_t last = records_.size() - 1;
-  if (time == kLatestTime) {
+  if (time == kLatestTime)
+  {
     older = last;
     return 1;
   }
-  if (records_.size() == 1) {
-    if (records_.front().stamp == time) {
+  if (records_.size() == 1)
+  {
+    if (records_.front().stamp == time)
+    {
       older = 0;
       return 1;
     }
@@ -95,21 +106,25 @@ int TimeCache::find_closest(TimePoint time, std::size_t& older, std::size_t& new
   }
   const TimePoint newest = records_.back().stamp;
   const TimePoint oldest = records_.front().stamp;
-  if (time == newest) {
+  if (time == newest)
+  {
     older = last;
     return 1;
   }
-  if (time == oldest) {
+  if (time == oldest)
+  {
     older = 0;
     return 1;
   }
-  if (time > newest) {
+  if (time > newest)
+  {
     fail(error, Tf2Error::ForwardExtrapolation,
       "Lookup would require extrapolation into the future.  Requested time " + display_time(time) +
         " but the latest data is at time " + display_time(newest));
     return 0;
   }
-  if (time < oldest) {
+  if (time < oldest)
+  {
     fail(error, Tf2Error::BackwardExtrapolation,
       "Lookup would require extrapolation into the past.  Requested time " + display_time(time) +
         " but the earliest data is at time " + display_time(oldest));
@@ -128,16 +143,21 @@ bool TimeCache::sample(TimePoint time, TransformRecord& out, SampleError* error)
   std::size_t older = 0;
   std::size_t newer = 0;
   const int found = find_closest(time, older, newer, error);
-  if (found == 0) {
+  if (found == 0)
+  {
     return false;
   }
   const TransformRecord& a = records_[older];
   out = a;
-  if (found == 2 && a.parent == records_[newer].parent) {
+  if (found == 2 && a.parent == records_[newer].parent)
+  {
     const TransformRecord& b = records_[newer];
-    if (b.stamp == a.stamp) {
+    if (b.stamp == a.stamp)
+    {
       out = b;
-    } else {
+    }
+    else
+    {
       const double ratio =
         static_cast<double>(span(time, a.stamp)) / static_cast<double>(span(b.stamp, a.stamp));
       out.transform = interpolate(a.transform, b.transform, ratio);
@@ -153,7 +173,8 @@ FrameId TimeCache::parent_at(TimePoint time) const
 {
   std::size_t older = 0;
   std::size_t newer = 0;
-  if (find_closest(time, older, newer, nullptr) == 0) {
+  if (find_closest(time, older, newer, nullptr) == 0)
+  {
     return kNoFrame;
   }
   return records_[older].parent;
@@ -161,7 +182,8 @@ FrameId TimeCache::parent_at(TimePoint time) const
 
 std::pair<TimePoint, FrameId> TimeCache::latest_time_and_parent() const
 {
-  if (records_.empty()) {
+  if (records_.empty())
+  {
     return { 0, kNoFrame };
   }
   return { records_.back().stamp, records_.back().parent };

@@ -17,10 +17,10 @@ constexpr double kQuaternionNormTolerance = 10e-3;
 struct CheckedTransform
 {
   bool ok = false;
-  std::string message;  ///< one "TF_<ID>: ..." line per problem when not ok
-  std::string parent;   ///< frame_id without one leading '/'
-  std::string child;    ///< child_frame_id without one leading '/'
-  Transform transform;  ///< with the quaternion normalised
+  std::string message; ///< one "TF_<ID>: ..." line per problem when not ok
+  std::string parent;  ///< frame_id without one leading '/'
+  std::string child;   ///< child_frame_id without one leading '/'
+  Transform transform; ///< with the quaternion normalised
 };
 
 CheckedTransform check_transform_input(const TransformStamped& input, const std::string& authority);

@@ -35,7 +35,8 @@ constexpr std::size_t kMaxGraphDepth = 1000;
 /// is longer than tf2 allows.
 bool visit(FramePath& path, FrameId frame)
 {
-  if (path.size() > kMaxGraphDepth || std::find(path.begin(), path.end(), frame) != path.end()) {
+  if (path.size() > kMaxGraphDepth || std::find(path.begin(), path.end(), frame) != path.end())
+  {
     return false;
   }
   path.push_back(frame);
@@ -44,7 +45,8 @@ bool visit(FramePath& path, FrameId frame)
 
 void take_min(TimePoint& common, TimePoint stamp)
 {
-  if (stamp != kLatestTime) { // static frames report 0 and do not constrain the time
+  if (stamp != kLatestTime)
+  { // static frames report 0 and do not constrain the time
     common = std::min(common, stamp);
   }
 }
@@ -85,7 +87,8 @@ std::string TreeWalker::direction(FrameId source, FrameId target) const
 WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
 {
   WalkResult result;
-  if (source == target) {
+  if (source == target)
+  {
     const TimeCacheInterface* cache = frames_.cache(source);
     result.time = cache ? cache->newest_stamp() : kLatestTime;
     return result;
@@ -97,22 +100,27 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   source_path.clear();
   seen.assign(1, source);
   TimePoint common = kNoTimeYet;
-  for (FrameId frame = source;;) {
+  for (FrameId frame = source;;)
+  {
     const TimeCacheInterface* cache = frames_.cache(frame);
-    if (!cache) {
+    if (!cache)
+    {
       break; // a root: known only as somebody's parent
     }
     const auto [stamp, parent] = cache->latest_time_and_parent();
-    if (parent == kNoFrame) {
+    if (parent == kNoFrame)
+    {
       break; // no data (cleared); a path from the target may still reach us
     }
     take_min(common, stamp);
     source_path.push_back({ stamp, parent });
-    if (parent == target) {
+    if (parent == target)
+    {
       result.time = finish(common);
       return result;
     }
-    if (!visit(seen, parent)) {
+    if (!visit(seen, parent))
+    {
       return loop_error();
     }
     frame = parent;
@@ -123,39 +131,48 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   FrameId common_parent = kNoFrame;
   thread_local FramePath seen_from_target;
   seen_from_target.assign(1, target);
-  for (FrameId frame = target;;) {
+  for (FrameId frame = target;;)
+  {
     const TimeCacheInterface* cache = frames_.cache(frame);
-    if (!cache) {
+    if (!cache)
+    {
       break;
     }
     const auto [stamp, parent] = cache->latest_time_and_parent();
-    if (parent == kNoFrame) {
+    if (parent == kNoFrame)
+    {
       break;
     }
     take_min(common, stamp);
-    if (parent == source) {
+    if (parent == source)
+    {
       result.time = finish(common);
       return result;
     }
     auto on_path = std::find_if(source_path.begin(), source_path.end(),
       [parent = parent](const NewestLink& link) { return link.parent == parent; });
-    if (on_path != source_path.end()) {
+    if (on_path != source_path.end())
+    {
       common_parent = parent;
       break;
     }
-    if (!visit(seen_from_target, parent)) {
+    if (!visit(seen_from_target, parent))
+    {
       return loop_error();
     }
     frame = parent;
   }
 
-  if (common_parent == kNoFrame) {
+  if (common_parent == kNoFrame)
+  {
     return connectivity_error(target, source);
   }
   // The source's links up to (and including) the one into the common parent.
-  for (const NewestLink& link : source_path) {
+  for (const NewestLink& link : source_path)
+  {
     take_min(common, link.stamp);
-    if (link.parent == common_parent) {
+    if (link.parent == common_parent)
+    {
       break;
     }
   }
@@ -167,12 +184,15 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
 {
   WalkResult result;
   result.time = time;
-  if (source == target) {
+  if (source == target)
+  {
     return result;
   }
-  if (time == kLatestTime) {
+  if (time == kLatestTime)
+  {
     result = latest_common_time(target, source);
-    if (result.error != Tf2Error::NoError) {
+    if (result.error != Tf2Error::NoError)
+    {
       return result;
     }
   }
@@ -183,16 +203,20 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
   source_to.assign(1, Transform::identity());
   path.assign(1, source);
   SampleError source_stop; // why the source walk ended early, if it did
-  for (FrameId frame = source; frame != target;) {
+  for (FrameId frame = source; frame != target;)
+  {
     const TimeCacheInterface* cache = frames_.cache(frame);
-    if (!cache) {
+    if (!cache)
+    {
       break;
     }
     TransformRecord link;
-    if (!cache->sample(result.time, link, &source_stop)) {
+    if (!cache->sample(result.time, link, &source_stop))
+    {
       break; // the target may still reach this frame from below
     }
-    if (!visit(path, link.parent)) {
+    if (!visit(path, link.parent))
+    {
       return loop_error();
     }
     source_to.push_back(link.transform * source_to.back());
@@ -203,31 +227,38 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
   Transform target_to = Transform::identity();
   thread_local FramePath seen_from_target;
   seen_from_target.assign(1, target);
-  for (FrameId frame = target;;) {
+  for (FrameId frame = target;;)
+  {
     auto met = std::find(path.begin(), path.end(), frame);
-    if (met != path.end()) {
-      result.transform = target_to.inverse() * source_to[static_cast<std::size_t>(met - path.begin())];
+    if (met != path.end())
+    {
+      result.transform =
+        target_to.inverse() * source_to[static_cast<std::size_t>(met - path.begin())];
       return result;
     }
     const TimeCacheInterface* cache = frames_.cache(frame);
-    if (!cache) {
+    if (!cache)
+    {
       break;
     }
     TransformRecord link;
     SampleError target_stop;
-    if (!cache->sample(result.time, link, &target_stop)) {
+    if (!cache->sample(result.time, link, &target_stop))
+    {
       result.error = target_stop.code;
       result.message = target_stop.message + direction(source, target);
       return result;
     }
-    if (!visit(seen_from_target, link.parent)) {
+    if (!visit(seen_from_target, link.parent))
+    {
       return loop_error();
     }
     target_to = link.transform * target_to;
     frame = link.parent;
   }
 
-  if (source_stop.code != Tf2Error::NoError) {
+  if (source_stop.code != Tf2Error::NoError)
+  {
     result.error = source_stop.code;
     result.message = source_stop.message + direction(source, target);
     return result;

@@ -15,8 +15,8 @@ struct WalkResult
 {
   Tf2Error error = Tf2Error::NoError;
   std::string message;
-  TimePoint time = 0;   ///< the time used (resolved from kLatestTime when asked for it)
-  Transform transform;  ///< maps source into target when error == NoError
+  TimePoint time = 0;  ///< the time used (resolved from kLatestTime when asked for it)
+  Transform transform; ///< maps source into target when error == NoError
 };
 
 class TreeWalker

@@ -14,20 +14,21 @@ namespace tf2_ros {
 tf2::TimePoint now()
 {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(
-           std::chrono::system_clock::now().time_since_epoch())
+    std::chrono::system_clock::now().time_since_epoch())
     .count();
 }
 
-std::unique_ptr<TransformBroadcaster> TransformBroadcaster::create(wire::Participant& participant, bool is_static,
-                                                                   std::string* error)
+std::unique_ptr<TransformBroadcaster> TransformBroadcaster::create(
+  wire::Participant& participant, bool is_static, std::string* error)
 {
   std::unique_ptr<TransformBroadcaster> broadcaster(new TransformBroadcaster());
   broadcaster->is_static_ = is_static;
-  const wire::QoS qos = is_static ? wire::QoS::transient_local(1)
-                                  : wire::QoS{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
-                                               wire::QoS::Durability::Volatile };
-  broadcaster->publisher_ = participant.create_publisher(tf2_msgs::msg::TFMessage::type_support(),
-                                                         is_static ? "/tf_static" : "/tf", qos, error);
+  const wire::QoS qos = is_static
+    ? wire::QoS::transient_local(1)
+    : wire::QoS{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
+        wire::QoS::Durability::Volatile };
+  broadcaster->publisher_ = participant.create_publisher(
+    tf2_msgs::msg::TFMessage::type_support(), is_static ? "/tf_static" : "/tf", qos, error);
   if (!broadcaster->publisher_)
     return nullptr;
   return broadcaster;
@@ -50,8 +51,9 @@ bool valid(const tf2::TransformStamped& t, std::string* error)
     return fail("parent and child frame are both '" + t.frame_id + "'");
   const auto& p = t.transform.translation;
   const auto& q = t.transform.rotation;
-  if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()) || !std::isfinite(q.x()) ||
-      !std::isfinite(q.y()) || !std::isfinite(q.z()) || !std::isfinite(q.w()))
+  if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()) ||
+    !std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()) ||
+    !std::isfinite(q.w()))
     return fail("transform " + t.frame_id + " -> " + t.child_frame_id + " has non-finite values");
   return true;
 }
@@ -73,7 +75,8 @@ void fill(const tf2::TransformStamped& t, geometry_msgs::msg::TransformStamped& 
 
 } // namespace
 
-bool TransformBroadcaster::send(const std::vector<tf2::TransformStamped>& transforms, std::string* error)
+bool TransformBroadcaster::send(
+  const std::vector<tf2::TransformStamped>& transforms, std::string* error)
 {
   for (const auto& t : transforms)
   {

@@ -10,15 +10,15 @@
 namespace ros2vtk {
 namespace tf2_ros {
 
-std::unique_ptr<TransformListener> TransformListener::create(wire::Participant& participant, tf2::BufferCore& buffer,
-                                                             std::string* error)
+std::unique_ptr<TransformListener> TransformListener::create(
+  wire::Participant& participant, tf2::BufferCore& buffer, std::string* error)
 {
   std::unique_ptr<TransformListener> listener(new TransformListener(participant, buffer));
   const wire::MessageTypeSupport& type = tf2_msgs::msg::TFMessage::type_support();
   wire::QoS dynamic_qos{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
-                         wire::QoS::Durability::Volatile };
+    wire::QoS::Durability::Volatile };
   wire::QoS static_qos{ wire::QoS::History::KeepLast, 100, wire::QoS::Reliability::Reliable,
-                        wire::QoS::Durability::TransientLocal };
+    wire::QoS::Durability::TransientLocal };
   listener->dynamic_ = participant.create_subscription(type, "/tf", dynamic_qos, error);
   listener->static_ = participant.create_subscription(type, "/tf_static", static_qos, error);
   if (!listener->dynamic_ || !listener->static_)
@@ -64,11 +64,11 @@ size_t TransformListener::drain(wire::Subscription& subscription, bool is_static
       transform.frame_id = t.header.frame_id;
       transform.child_frame_id = t.child_frame_id;
       transform.stamp = tf2::time_from_sec_nanosec(t.header.stamp.sec, t.header.stamp.nanosec);
-      transform.transform.translation = Eigen::Vector3d(t.transform.translation.x, t.transform.translation.y,
-                                                        t.transform.translation.z);
+      transform.transform.translation = Eigen::Vector3d(
+        t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
       // Eigen's constructor order is (w, x, y, z).
-      transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w, t.transform.rotation.x,
-                                                        t.transform.rotation.y, t.transform.rotation.z);
+      transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w,
+        t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z);
       if (buffer_.set_transform(transform, authority, is_static, &reason))
       {
         ++inserted;

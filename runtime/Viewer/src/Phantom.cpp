@@ -29,8 +29,8 @@ vtkSmartPointer<vtkImageData> make_phantom(const PhantomOptions& options, Phanto
   // Beads on the top surface of the block, around the tissue (registration landmarks).
   const double top = layout.block_max[2];
   for (const auto& xy : { std::array<double, 2>{ 0.2, 0.2 }, std::array<double, 2>{ 0.8, 0.2 },
-                          std::array<double, 2>{ 0.8, 0.8 }, std::array<double, 2>{ 0.2, 0.8 },
-                          std::array<double, 2>{ 0.5, 0.15 }, std::array<double, 2>{ 0.35, 0.85 } })
+         std::array<double, 2>{ 0.8, 0.8 }, std::array<double, 2>{ 0.2, 0.8 },
+         std::array<double, 2>{ 0.5, 0.15 }, std::array<double, 2>{ 0.35, 0.85 } })
   {
     layout.fiducials.push_back({ xy[0] * ex, xy[1] * ey, top });
   }

@@ -10,8 +10,8 @@ namespace wire {
 namespace rtps = eprosima::fastrtps::rtps;
 namespace fdrtps = eprosima::fastdds::rtps;
 
-bool ReceptionGate::hold(fdrtps::TransportReceiverInterface* receiver, const rtps::octet* data, uint32_t size,
-                         const rtps::Locator_t& local, const rtps::Locator_t& remote)
+bool ReceptionGate::hold(fdrtps::TransportReceiverInterface* receiver, const rtps::octet* data,
+  uint32_t size, const rtps::Locator_t& local, const rtps::Locator_t& remote)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   if (open_)
@@ -20,7 +20,8 @@ bool ReceptionGate::hold(fdrtps::TransportReceiverInterface* receiver, const rtp
   }
   if (held_bytes_ + size <= kMaxHeldBytes)
   {
-    held_.push_back(Datagram{ receiver, std::vector<rtps::octet>(data, data + size), local, remote });
+    held_.push_back(
+      Datagram{ receiver, std::vector<rtps::octet>(data, data + size), local, remote });
     held_bytes_ += size;
   }
   return true; // over the bound: dropped, as Fast DDS would have
@@ -33,8 +34,8 @@ size_t ReceptionGate::open()
   open_ = true;
   for (const Datagram& datagram : held_)
   {
-    datagram.receiver->OnDataReceived(datagram.data.data(), static_cast<uint32_t>(datagram.data.size()),
-                                      datagram.local, datagram.remote);
+    datagram.receiver->OnDataReceived(datagram.data.data(),
+      static_cast<uint32_t>(datagram.data.size()), datagram.local, datagram.remote);
   }
   const size_t count = held_.size();
   held_.clear();
@@ -49,7 +50,8 @@ size_t ReceptionGate::held() const
   return held_.size();
 }
 
-GatedTransportDescriptor::GatedTransportDescriptor(std::shared_ptr<fdrtps::TransportDescriptorInterface> low)
+GatedTransportDescriptor::GatedTransportDescriptor(
+  std::shared_ptr<fdrtps::TransportDescriptorInterface> low)
   : ChainingTransportDescriptor(std::move(low))
 {
 }
@@ -66,21 +68,23 @@ GatedTransport::GatedTransport(const GatedTransportDescriptor& descriptor)
 }
 
 bool GatedTransport::send(rtps::SenderResource* low_sender_resource, const rtps::octet* send_buffer,
-                          uint32_t send_buffer_size, rtps::LocatorsIterator* destination_locators_begin,
-                          rtps::LocatorsIterator* destination_locators_end,
-                          const std::chrono::steady_clock::time_point& timeout)
+  uint32_t send_buffer_size, rtps::LocatorsIterator* destination_locators_begin,
+  rtps::LocatorsIterator* destination_locators_end,
+  const std::chrono::steady_clock::time_point& timeout)
 {
-  return low_sender_resource->send(send_buffer, send_buffer_size, destination_locators_begin,
-                                   destination_locators_end, timeout);
+  return low_sender_resource->send(
+    send_buffer, send_buffer_size, destination_locators_begin, destination_locators_end, timeout);
 }
 
-void GatedTransport::receive(fdrtps::TransportReceiverInterface* next_receiver, const rtps::octet* receive_buffer,
-                             uint32_t receive_buffer_size, const rtps::Locator_t& local_locator,
-                             const rtps::Locator_t& remote_locator)
+void GatedTransport::receive(fdrtps::TransportReceiverInterface* next_receiver,
+  const rtps::octet* receive_buffer, uint32_t receive_buffer_size,
+  const rtps::Locator_t& local_locator, const rtps::Locator_t& remote_locator)
 {
-  if (!descriptor_.gate->hold(next_receiver, receive_buffer, receive_buffer_size, local_locator, remote_locator))
+  if (!descriptor_.gate->hold(
+        next_receiver, receive_buffer, receive_buffer_size, local_locator, remote_locator))
   {
-    next_receiver->OnDataReceived(receive_buffer, receive_buffer_size, local_locator, remote_locator);
+    next_receiver->OnDataReceived(
+      receive_buffer, receive_buffer_size, local_locator, remote_locator);
   }
 }
 

@@ -34,9 +34,10 @@ class ReceptionGate
 {
 public:
   /// Keeps a copy of the datagram while the gate is closed (true), else false: pass it on.
-  bool hold(eprosima::fastdds::rtps::TransportReceiverInterface* receiver, const eprosima::fastrtps::rtps::octet* data,
-            uint32_t size, const eprosima::fastrtps::rtps::Locator_t& local,
-            const eprosima::fastrtps::rtps::Locator_t& remote);
+  bool hold(eprosima::fastdds::rtps::TransportReceiverInterface* receiver,
+    const eprosima::fastrtps::rtps::octet* data, uint32_t size,
+    const eprosima::fastrtps::rtps::Locator_t& local,
+    const eprosima::fastrtps::rtps::Locator_t& remote);
   /// Hands the held datagrams on, in arrival order, and lets later ones pass. Returns how many.
   size_t open();
   size_t held() const;
@@ -59,7 +60,8 @@ private:
 
 struct GatedTransportDescriptor : public eprosima::fastdds::rtps::ChainingTransportDescriptor
 {
-  explicit GatedTransportDescriptor(std::shared_ptr<eprosima::fastdds::rtps::TransportDescriptorInterface> low);
+  explicit GatedTransportDescriptor(
+    std::shared_ptr<eprosima::fastdds::rtps::TransportDescriptorInterface> low);
 
   eprosima::fastdds::rtps::TransportInterface* create_transport() const override;
 
@@ -73,15 +75,15 @@ public:
   explicit GatedTransport(const GatedTransportDescriptor& descriptor);
 
   bool send(eprosima::fastrtps::rtps::SenderResource* low_sender_resource,
-            const eprosima::fastrtps::rtps::octet* send_buffer, uint32_t send_buffer_size,
-            eprosima::fastrtps::rtps::LocatorsIterator* destination_locators_begin,
-            eprosima::fastrtps::rtps::LocatorsIterator* destination_locators_end,
-            const std::chrono::steady_clock::time_point& timeout) override;
+    const eprosima::fastrtps::rtps::octet* send_buffer, uint32_t send_buffer_size,
+    eprosima::fastrtps::rtps::LocatorsIterator* destination_locators_begin,
+    eprosima::fastrtps::rtps::LocatorsIterator* destination_locators_end,
+    const std::chrono::steady_clock::time_point& timeout) override;
 
   void receive(eprosima::fastdds::rtps::TransportReceiverInterface* next_receiver,
-               const eprosima::fastrtps::rtps::octet* receive_buffer, uint32_t receive_buffer_size,
-               const eprosima::fastrtps::rtps::Locator_t& local_locator,
-               const eprosima::fastrtps::rtps::Locator_t& remote_locator) override;
+    const eprosima::fastrtps::rtps::octet* receive_buffer, uint32_t receive_buffer_size,
+    const eprosima::fastrtps::rtps::Locator_t& local_locator,
+    const eprosima::fastrtps::rtps::Locator_t& remote_locator) override;
 
   eprosima::fastdds::rtps::TransportDescriptorInterface* get_configuration() override;
 

@@ -29,9 +29,8 @@ Gid to_gid(const eprosima::fastrtps::rtps::GUID_t& guid)
 }
 
 bool GraphCache::init(dds::DomainParticipant* participant, dds::Publisher* publisher,
-                      dds::Subscriber* subscriber, dds::Topic* topic,
-                      const std::string& node_namespace, const std::string& node_name,
-                      std::string* error)
+  dds::Subscriber* subscriber, dds::Topic* topic, const std::string& node_namespace,
+  const std::string& node_name, std::string* error)
 {
   info_type_ = &shipped_message_type("rmw_dds_common/msg/ParticipantEntitiesInfo");
   publisher_ = publisher;
@@ -45,7 +44,8 @@ bool GraphCache::init(dds::DomainParticipant* participant, dds::Publisher* publi
   QoS reader_profile = QoS::transient_local(1);
   reader_profile.history = QoS::History::KeepAll;
   dds::DataReaderQos reader_qos = make_reader_qos(reader_profile, "");
-  reader_qos.reliable_reader_qos().times.initialAcknackDelay = eprosima::fastrtps::Duration_t(0, 5000000);
+  reader_qos.reliable_reader_qos().times.initialAcknackDelay =
+    eprosima::fastrtps::Duration_t(0, 5000000);
   reader_ = subscriber->create_datareader(topic, reader_qos, this);
   if (!writer_ || !reader_)
   {
@@ -75,8 +75,8 @@ void GraphCache::shutdown()
   }
 }
 
-void GraphCache::add_local_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
-                                    const std::string& dds_type)
+void GraphCache::add_local_endpoint(
+  const Gid& gid, bool is_writer, const std::string& dds_topic, const std::string& dds_type)
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -99,7 +99,7 @@ void GraphCache::remove_local_endpoint(const Gid& gid)
 }
 
 void GraphCache::add_remote_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
-                                     const std::string& dds_type, const std::string& type_hash)
+  const std::string& dds_type, const std::string& type_hash)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   remote_endpoints_[gid] = Endpoint{ is_writer, dds_topic, dds_type, type_hash };
@@ -233,7 +233,8 @@ std::vector<TopicInfo> GraphCache::topic_names_and_types() const
   std::vector<TopicInfo> result;
   for (const auto& topic : topics)
   {
-    result.push_back(TopicInfo{ topic.first, std::vector<std::string>(topic.second.begin(), topic.second.end()) });
+    result.push_back(
+      TopicInfo{ topic.first, std::vector<std::string>(topic.second.begin(), topic.second.end()) });
   }
   return result;
 }

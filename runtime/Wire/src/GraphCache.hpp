@@ -48,19 +48,19 @@ public:
   /// Creates the ros_discovery_info writer (keep last 1, reliable, transient local) and reader
   /// (keep all, reliable, transient local) as rmw does (WIRE_NOTES §3.2).
   bool init(eprosima::fastdds::dds::DomainParticipant* participant,
-            eprosima::fastdds::dds::Publisher* publisher,
-            eprosima::fastdds::dds::Subscriber* subscriber, eprosima::fastdds::dds::Topic* topic,
-            const std::string& node_namespace, const std::string& node_name, std::string* error);
+    eprosima::fastdds::dds::Publisher* publisher, eprosima::fastdds::dds::Subscriber* subscriber,
+    eprosima::fastdds::dds::Topic* topic, const std::string& node_namespace,
+    const std::string& node_name, std::string* error);
   /// Deletes the graph endpoints (before the participant's entities are deleted).
   void shutdown();
 
-  void add_local_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
-                          const std::string& dds_type);
+  void add_local_endpoint(
+    const Gid& gid, bool is_writer, const std::string& dds_topic, const std::string& dds_type);
   void remove_local_endpoint(const Gid& gid);
 
   /// `type_hash`: the RIHS01 hash of the endpoint's USER_DATA (`typehash=...;`), "" when none.
   void add_remote_endpoint(const Gid& gid, bool is_writer, const std::string& dds_topic,
-                           const std::string& dds_type, const std::string& type_hash = std::string());
+    const std::string& dds_type, const std::string& type_hash = std::string());
   void remove_remote_endpoint(const Gid& gid);
   void remove_remote_participant(const Gid& participant_gid);
 
@@ -115,7 +115,8 @@ private:
   std::string node_namespace_;
   std::string node_name_;
 
-  std::mutex publish_mutex_; ///< serializes publish() and guards writer_; never taken by DDS threads
+  std::mutex
+    publish_mutex_; ///< serializes publish() and guards writer_; never taken by DDS threads
   mutable std::mutex mutex_; ///< the maps below; never held while calling into DDS
   std::map<Gid, Endpoint> local_endpoints_;
   std::map<Gid, Endpoint> remote_endpoints_;

@@ -33,7 +33,7 @@ bool is_address_of_this_host(const rtps::Locator_t& locator)
   for (const auto& address : addresses)
   {
     if ((address.type == rtps::IPFinder::IP4 || address.type == rtps::IPFinder::IP4_LOCAL) &&
-        rtps::IPLocator::compareAddress(address.locator, locator))
+      rtps::IPLocator::compareAddress(address.locator, locator))
     {
       return true;
     }
@@ -58,8 +58,8 @@ LoopbackTransport::LoopbackTransport(const LoopbackTransportDescriptor& descript
 {
 }
 
-bool LoopbackTransport::transform_remote_locator(const rtps::Locator_t& remote_locator,
-                                                 rtps::Locator_t& result_locator) const
+bool LoopbackTransport::transform_remote_locator(
+  const rtps::Locator_t& remote_locator, rtps::Locator_t& result_locator) const
 {
   if (remote_locator.kind != LOCATOR_KIND_UDPv4 || rtps::IPLocator::isMulticast(remote_locator))
   {

@@ -37,7 +37,7 @@ public:
   explicit LoopbackTransport(const LoopbackTransportDescriptor& descriptor);
 
   bool transform_remote_locator(const eprosima::fastrtps::rtps::Locator_t& remote_locator,
-                                eprosima::fastrtps::rtps::Locator_t& result_locator) const override;
+    eprosima::fastrtps::rtps::Locator_t& result_locator) const override;
 
   eprosima::fastdds::rtps::TransportDescriptorInterface* get_configuration() override;
 

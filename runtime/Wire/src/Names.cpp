@@ -27,8 +27,8 @@ bool is_token_char(char c)
 
 // A fully qualified name: starts with '/', tokens of [A-Za-z0-9_] not starting with a digit,
 // no empty token, no trailing '/' (except the root namespace "/" when allowed).
-bool validate_fully_qualified(const std::string& name, bool allow_root, const char* what,
-                              size_t max_length, std::string* error)
+bool validate_fully_qualified(
+  const std::string& name, bool allow_root, const char* what, size_t max_length, std::string* error)
 {
   if (name.empty() || name[0] != '/')
   {
@@ -53,23 +53,24 @@ bool validate_fully_qualified(const std::string& name, bool allow_root, const ch
       }
       if (std::isdigit(static_cast<unsigned char>(name[token_start])))
       {
-        return set_error(error, std::string(what) + " '" + name +
-                                  "' has a token starting with a digit");
+        return set_error(
+          error, std::string(what) + " '" + name + "' has a token starting with a digit");
       }
       token_start = i + 1;
       continue;
     }
     if (!is_token_char(name[i]))
     {
-      return set_error(error, std::string(what) + " '" + name + "' contains '" +
-                                std::string(1, name[i]) +
-                                "' (allowed: letters, digits, '_' and '/')");
+      return set_error(error,
+        std::string(what) + " '" + name + "' contains '" + std::string(1, name[i]) +
+          "' (allowed: letters, digits, '_' and '/')");
     }
   }
   if (name.size() > max_length)
   {
-    return set_error(error, std::string(what) + " '" + name + "' is longer than " +
-                              std::to_string(max_length) + " characters");
+    return set_error(error,
+      std::string(what) + " '" + name + "' is longer than " + std::to_string(max_length) +
+        " characters");
   }
   return true;
 }
@@ -90,8 +91,9 @@ bool validate_node_name(const std::string& name, std::string* error)
   {
     if (!is_token_char(c))
     {
-      return set_error(error, "node name '" + name + "' contains '" + std::string(1, c) +
-                                "' (allowed: letters, digits and '_')");
+      return set_error(error,
+        "node name '" + name + "' contains '" + std::string(1, c) +
+          "' (allowed: letters, digits and '_')");
     }
   }
   if (name.size() > 255)
@@ -174,13 +176,13 @@ bool validate_topic_name(const std::string& name, std::string* error)
     }
     else if (in_substitution)
     {
-      return fail("has '" + std::string(1, c) +
-                  "' inside a substitution (allowed: letters, digits and '_')");
+      return fail(
+        "has '" + std::string(1, c) + "' inside a substitution (allowed: letters, digits and '_')");
     }
     else
     {
       return fail("contains '" + std::string(1, c) +
-                  "' (allowed: letters, digits, '_', '/', '~', '{' and '}')");
+        "' (allowed: letters, digits, '_', '/', '~', '{' and '}')");
     }
   }
   if (in_substitution)
@@ -206,8 +208,8 @@ bool validate_topic_name(const std::string& name, std::string* error)
   return true;
 }
 
-bool expand_topic_name(const std::string& name, const std::string& node_name,
-                       const std::string& ns, std::string& expanded, std::string* error)
+bool expand_topic_name(const std::string& name, const std::string& node_name, const std::string& ns,
+  std::string& expanded, std::string* error)
 {
   if (!validate_topic_name(name, error))
   {
@@ -241,8 +243,9 @@ bool expand_topic_name(const std::string& name, const std::string& node_name,
     }
     else
     {
-      return set_error(error, "topic name '" + name + "': unknown substitution {" + key +
-                                "} (known: {node}, {ns}, {namespace})");
+      return set_error(error,
+        "topic name '" + name + "': unknown substitution {" + key +
+          "} (known: {node}, {ns}, {namespace})");
     }
     i = close + 1;
   }
@@ -254,8 +257,8 @@ bool expand_topic_name(const std::string& name, const std::string& node_name,
   {
     if (error && result != name)
     {
-      *error += " (expanded from '" + name + "' by node '" + node_name + "' in namespace '" + ns +
-                "')";
+      *error +=
+        " (expanded from '" + name + "' by node '" + node_name + "' in namespace '" + ns + "')";
     }
     return false;
   }

@@ -13,7 +13,7 @@ namespace {
 std::string lower_case(std::string text)
 {
   std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -58,8 +58,8 @@ void NodeTypeCache::Registration::release()
   }
 }
 
-NodeTypeCache::Registration NodeTypeCache::add(const char* type_hash,
-                                               const TypeDescriptionTable* description)
+NodeTypeCache::Registration NodeTypeCache::add(
+  const char* type_hash, const TypeDescriptionTable* description)
 {
   if (!type_hash || !*type_hash || !description)
   {

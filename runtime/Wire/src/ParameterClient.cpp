@@ -26,7 +26,7 @@ public:
   std::unique_ptr<Subscription> events;
   State state = State::WaitingForNode;
   std::set<std::string> watched;
-  std::set<std::string> to_fetch;         ///< names to ask for in the next request
+  std::set<std::string> to_fetch; ///< names to ask for in the next request
   struct Request
   {
     std::vector<std::string> names;
@@ -50,7 +50,8 @@ public:
   }
 
   /// Sends a get_parameters request; false when DDS refused it (asked again later).
-  bool ask(const std::vector<std::string>& names, std::chrono::milliseconds patience = kFirstPatience)
+  bool ask(
+    const std::vector<std::string>& names, std::chrono::milliseconds patience = kFirstPatience)
   {
     rcl::srv::GetParameters_Request request;
     request.names = names;
@@ -83,18 +84,20 @@ public:
   }
 };
 
-std::unique_ptr<ParameterClient> ParameterClient::create(Participant& participant, const std::string& remote_node,
-                                                         std::string* error)
+std::unique_ptr<ParameterClient> ParameterClient::create(
+  Participant& participant, const std::string& remote_node, std::string* error)
 {
   auto impl = std::make_unique<Impl>();
-  impl->remote_node = remote_node.empty() || remote_node[0] == '/' ? remote_node : "/" + remote_node;
-  impl->get_client = participant.create_service_client(shipped_service_type("rcl_interfaces/srv/GetParameters"),
-                                                       impl->remote_node + "/get_parameters", QoS::services(),
-                                                       error);
+  impl->remote_node =
+    remote_node.empty() || remote_node[0] == '/' ? remote_node : "/" + remote_node;
+  impl->get_client =
+    participant.create_service_client(shipped_service_type("rcl_interfaces/srv/GetParameters"),
+      impl->remote_node + "/get_parameters", QoS::services(), error);
   if (!impl->get_client)
     return nullptr;
-  impl->events = participant.create_subscription(shipped_message_type("rcl_interfaces/msg/ParameterEvent"),
-                                                 "/parameter_events", QoS::parameters(), error);
+  impl->events =
+    participant.create_subscription(shipped_message_type("rcl_interfaces/msg/ParameterEvent"),
+      "/parameter_events", QoS::parameters(), error);
   if (!impl->events)
     return nullptr;
   return std::unique_ptr<ParameterClient>(new ParameterClient(std::move(impl)));
@@ -193,7 +196,8 @@ std::set<std::string> ParameterClient::process()
       if (!d.ask(names, patience))
         d.to_fetch.insert(names.begin(), names.end()); // DDS refused: asked with the next ones
     }
-    if (!d.to_fetch.empty() && d.ask(std::vector<std::string>(d.to_fetch.begin(), d.to_fetch.end())))
+    if (!d.to_fetch.empty() &&
+      d.ask(std::vector<std::string>(d.to_fetch.begin(), d.to_fetch.end())))
       d.to_fetch.clear();
   }
 
@@ -204,7 +208,8 @@ std::set<std::string> ParameterClient::process()
     auto it = d.in_flight.find(response.sequence_number);
     if (it == d.in_flight.end())
       continue;
-    const auto* values = static_cast<const rcl::srv::GetParameters_Response*>(response.response.get());
+    const auto* values =
+      static_cast<const rcl::srv::GetParameters_Response*>(response.response.get());
     const std::vector<std::string> names = it->second.names;
     d.in_flight.erase(it);
     for (auto other = d.in_flight.begin(); other != d.in_flight.end();) // asked again: answered now

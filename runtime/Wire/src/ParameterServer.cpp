@@ -41,15 +41,13 @@ public:
 
 namespace {
 
-template <typename Request, typename Response>
+template<typename Request, typename Response>
 bool add_service(ParameterServer::Impl& impl, Participant& participant, const char* service,
-                 const char* ros_type, std::function<void(const Request&, Response&)> answer,
-                 std::string* error)
+  const char* ros_type, std::function<void(const Request&, Response&)> answer, std::string* error)
 {
   ParameterServer::Impl::Endpoint endpoint;
-  endpoint.server = participant.create_service_server(shipped_service_type(ros_type),
-                                                      "~/" + std::string(service),
-                                                      QoS::parameters(), error);
+  endpoint.server = participant.create_service_server(
+    shipped_service_type(ros_type), "~/" + std::string(service), QoS::parameters(), error);
   if (!endpoint.server)
     return false;
   endpoint.answer = [answer](const void* request, void* response) {
@@ -61,23 +59,29 @@ bool add_service(ParameterServer::Impl& impl, Participant& participant, const ch
 
 } // namespace
 
-std::unique_ptr<ParameterServer> ParameterServer::create(Participant& participant, std::string* error)
+std::unique_ptr<ParameterServer> ParameterServer::create(
+  Participant& participant, std::string* error)
 {
   auto impl = std::make_unique<Impl>();
   impl->node_name = participant.fully_qualified_name();
   ParameterStore& store = impl->store;
-  const bool ok =
-    add_service<srv::GetParameters_Request, srv::GetParameters_Response>(
-      *impl, participant, "get_parameters", "rcl_interfaces/srv/GetParameters",
-      [&store](const auto& request, auto& response) { response.values = store.get_parameters(request.names); },
-      error) &&
+  const bool ok = add_service<srv::GetParameters_Request, srv::GetParameters_Response>(
+                    *impl, participant, "get_parameters", "rcl_interfaces/srv/GetParameters",
+                    [&store](const auto& request, auto& response) {
+                      response.values = store.get_parameters(request.names);
+                    },
+                    error) &&
     add_service<srv::GetParameterTypes_Request, srv::GetParameterTypes_Response>(
       *impl, participant, "get_parameter_types", "rcl_interfaces/srv/GetParameterTypes",
-      [&store](const auto& request, auto& response) { response.types = store.get_parameter_types(request.names); },
+      [&store](const auto& request, auto& response) {
+        response.types = store.get_parameter_types(request.names);
+      },
       error) &&
     add_service<srv::SetParameters_Request, srv::SetParameters_Response>(
       *impl, participant, "set_parameters", "rcl_interfaces/srv/SetParameters",
-      [&store](const auto& request, auto& response) { response.results = store.set_parameters(request.parameters); },
+      [&store](const auto& request, auto& response) {
+        response.results = store.set_parameters(request.parameters);
+      },
       error) &&
     add_service<srv::SetParametersAtomically_Request, srv::SetParametersAtomically_Response>(
       *impl, participant, "set_parameters_atomically", "rcl_interfaces/srv/SetParametersAtomically",
@@ -87,7 +91,9 @@ std::unique_ptr<ParameterServer> ParameterServer::create(Participant& participan
       error) &&
     add_service<srv::DescribeParameters_Request, srv::DescribeParameters_Response>(
       *impl, participant, "describe_parameters", "rcl_interfaces/srv/DescribeParameters",
-      [&store](const auto& request, auto& response) { response.descriptors = store.describe_parameters(request.names); },
+      [&store](const auto& request, auto& response) {
+        response.descriptors = store.describe_parameters(request.names);
+      },
       error) &&
     add_service<srv::ListParameters_Request, srv::ListParameters_Response>(
       *impl, participant, "list_parameters", "rcl_interfaces/srv/ListParameters",
@@ -97,8 +103,9 @@ std::unique_ptr<ParameterServer> ParameterServer::create(Participant& participan
       error);
   if (!ok)
     return nullptr;
-  impl->events = participant.create_publisher(shipped_message_type("rcl_interfaces/msg/ParameterEvent"),
-                                              "/parameter_events", QoS::parameters(), error);
+  impl->events =
+    participant.create_publisher(shipped_message_type("rcl_interfaces/msg/ParameterEvent"),
+      "/parameter_events", QoS::parameters(), error);
   if (!impl->events)
     return nullptr;
   return std::unique_ptr<ParameterServer>(new ParameterServer(std::move(impl)));
@@ -148,9 +155,10 @@ size_t ParameterServer::process()
     return answered; // the usual spin: no clock read
   }
   // rclpy stamps parameter events with the node's clock (simulated time when it is on).
-  const int64_t nanoseconds = impl_->clock
-    ? impl_->clock->now()
-    : std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const int64_t nanoseconds = impl_->clock ? impl_->clock->now()
+                                           : std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                               std::chrono::system_clock::now().time_since_epoch())
+                                               .count();
   for (auto& event : events)
   {
     event.stamp.sec = static_cast<int32_t>(nanoseconds / 1000000000);

@@ -28,7 +28,7 @@ constexpr uint8_t kIntegerArray = ParameterType::PARAMETER_INTEGER_ARRAY;
 constexpr uint8_t kDoubleArray = ParameterType::PARAMETER_DOUBLE_ARRAY;
 constexpr uint8_t kStringArray = ParameterType::PARAMETER_STRING_ARRAY;
 
-template <typename T, typename Format>
+template<typename T, typename Format>
 std::string join(const std::vector<T>& values, Format format)
 {
   std::ostringstream out;
@@ -60,16 +60,26 @@ std::string parameter_type_name(uint8_t type)
 {
   switch (type)
   {
-    case kBool: return "bool";
-    case kInteger: return "integer";
-    case kDouble: return "double";
-    case kString: return "string";
-    case kByteArray: return "byte_array";
-    case kBoolArray: return "bool_array";
-    case kIntegerArray: return "integer_array";
-    case kDoubleArray: return "double_array";
-    case kStringArray: return "string_array";
-    default: return "not set";
+    case kBool:
+      return "bool";
+    case kInteger:
+      return "integer";
+    case kDouble:
+      return "double";
+    case kString:
+      return "string";
+    case kByteArray:
+      return "byte_array";
+    case kBoolArray:
+      return "bool_array";
+    case kIntegerArray:
+      return "integer_array";
+    case kDoubleArray:
+      return "double_array";
+    case kStringArray:
+      return "string_array";
+    default:
+      return "not set";
   }
 }
 
@@ -77,25 +87,34 @@ std::string parameter_value_to_string(const rcl::ParameterValue& value)
 {
   switch (value.type)
   {
-    case kBool: return value.bool_value ? "true" : "false";
-    case kInteger: return std::to_string(value.integer_value);
-    case kDouble: return format_double(value.double_value);
-    case kString: return value.string_value;
-    case kByteArray: return join(value.byte_array_value, [](uint8_t b) { return std::to_string(b); });
+    case kBool:
+      return value.bool_value ? "true" : "false";
+    case kInteger:
+      return std::to_string(value.integer_value);
+    case kDouble:
+      return format_double(value.double_value);
+    case kString:
+      return value.string_value;
+    case kByteArray:
+      return join(value.byte_array_value, [](uint8_t b) { return std::to_string(b); });
     case kBoolArray:
     {
       std::vector<int> bools(value.bool_array_value.begin(), value.bool_array_value.end());
       return join(bools, [](int b) { return std::string(b ? "true" : "false"); });
     }
-    case kIntegerArray: return join(value.integer_array_value, [](int64_t v) { return std::to_string(v); });
-    case kDoubleArray: return join(value.double_array_value, format_double);
-    case kStringArray: return join(value.string_array_value, [](const std::string& s) { return "'" + s + "'"; });
-    default: return "not set";
+    case kIntegerArray:
+      return join(value.integer_array_value, [](int64_t v) { return std::to_string(v); });
+    case kDoubleArray:
+      return join(value.double_array_value, format_double);
+    case kStringArray:
+      return join(value.string_array_value, [](const std::string& s) { return "'" + s + "'"; });
+    default:
+      return "not set";
   }
 }
 
 bool ParameterStore::declare(const std::string& name, const rcl::ParameterValue& value,
-                             const rcl::ParameterDescriptor& descriptor, std::string* error)
+  const rcl::ParameterDescriptor& descriptor, std::string* error)
 {
   if (name.empty())
   {
@@ -122,7 +141,8 @@ bool ParameterStore::declare(const std::string& name, const rcl::ParameterValue&
   return true;
 }
 
-bool ParameterStore::declare(const std::string& name, const rcl::ParameterValue& value, std::string* error)
+bool ParameterStore::declare(
+  const std::string& name, const rcl::ParameterValue& value, std::string* error)
 {
   return declare(name, value, rcl::ParameterDescriptor(), error);
 }
@@ -163,7 +183,8 @@ const rcl::ParameterValue* ParameterStore::get(const std::string& name) const
   return it == parameters_.end() ? nullptr : &it->second.value;
 }
 
-std::vector<rcl::ParameterValue> ParameterStore::get_parameters(const std::vector<std::string>& names) const
+std::vector<rcl::ParameterValue> ParameterStore::get_parameters(
+  const std::vector<std::string>& names) const
 {
   std::vector<rcl::ParameterValue> values;
   for (const auto& name : names)
@@ -176,7 +197,8 @@ std::vector<rcl::ParameterValue> ParameterStore::get_parameters(const std::vecto
   return values;
 }
 
-std::vector<uint8_t> ParameterStore::get_parameter_types(const std::vector<std::string>& names) const
+std::vector<uint8_t> ParameterStore::get_parameter_types(
+  const std::vector<std::string>& names) const
 {
   std::vector<uint8_t> types;
   for (const auto& name : names)
@@ -239,15 +261,16 @@ std::string ParameterStore::check(const rcl::Parameter& parameter) const
   if (!descriptor.dynamic_typing && current != kNotSet && parameter.value.type != current)
   {
     return "Wrong parameter type, parameter {" + parameter.name + "} is of type {" +
-      parameter_type_name(current) + "}, setting it to {" + parameter_type_name(parameter.value.type) +
-      "} is not allowed.";
+      parameter_type_name(current) + "}, setting it to {" +
+      parameter_type_name(parameter.value.type) + "} is not allowed.";
   }
   if (parameter.value.type == kInteger && !descriptor.integer_range.empty())
   {
     const auto& range = descriptor.integer_range.front();
     const int64_t v = parameter.value.integer_value;
     if (v < range.from_value || v > range.to_value ||
-        (range.step != 0 && v != range.to_value && (v - range.from_value) % static_cast<int64_t>(range.step) != 0))
+      (range.step != 0 && v != range.to_value &&
+        (v - range.from_value) % static_cast<int64_t>(range.step) != 0))
     {
       return "Parameter {" + parameter.name + "} doesn't comply with integer range.";
     }
@@ -278,8 +301,8 @@ size_t ParameterStore::add_post_set_callback(PostSetCallback callback)
 void ParameterStore::remove_post_set_callback(size_t id)
 {
   post_set_callbacks_.erase(std::remove_if(post_set_callbacks_.begin(), post_set_callbacks_.end(),
-                                           [id](const auto& entry) { return entry.first == id; }),
-                            post_set_callbacks_.end());
+                              [id](const auto& entry) { return entry.first == id; }),
+    post_set_callbacks_.end());
 }
 
 void ParameterStore::notify_post_set(const std::vector<rcl::Parameter>& changed)
@@ -292,7 +315,8 @@ void ParameterStore::notify_post_set(const std::vector<rcl::Parameter>& changed)
     entry.second(changed);
 }
 
-std::vector<rcl::SetParametersResult> ParameterStore::set_parameters(const std::vector<rcl::Parameter>& parameters)
+std::vector<rcl::SetParametersResult> ParameterStore::set_parameters(
+  const std::vector<rcl::Parameter>& parameters)
 {
   std::vector<rcl::SetParametersResult> results;
   for (const auto& parameter : parameters)
@@ -314,7 +338,8 @@ std::vector<rcl::SetParametersResult> ParameterStore::set_parameters(const std::
   return results;
 }
 
-rcl::SetParametersResult ParameterStore::set_parameters_atomically(const std::vector<rcl::Parameter>& parameters)
+rcl::SetParametersResult ParameterStore::set_parameters_atomically(
+  const std::vector<rcl::Parameter>& parameters)
 {
   rcl::SetParametersResult result;
   for (const auto& parameter : parameters)
@@ -346,7 +371,8 @@ rcl::SetParametersResult ParameterStore::set_parameters_atomically(const std::ve
   return result;
 }
 
-std::vector<rcl::ParameterDescriptor> ParameterStore::describe_parameters(const std::vector<std::string>& names) const
+std::vector<rcl::ParameterDescriptor> ParameterStore::describe_parameters(
+  const std::vector<std::string>& names) const
 {
   std::vector<rcl::ParameterDescriptor> descriptors;
   for (const auto& name : names)
@@ -359,8 +385,8 @@ std::vector<rcl::ParameterDescriptor> ParameterStore::describe_parameters(const 
   return descriptors;
 }
 
-rcl::ListParametersResult ParameterStore::list_parameters(const std::vector<std::string>& prefixes,
-                                                          uint64_t depth) const
+rcl::ListParametersResult ParameterStore::list_parameters(
+  const std::vector<std::string>& prefixes, uint64_t depth) const
 {
   rcl::ListParametersResult result;
   std::set<std::string> found_prefixes;

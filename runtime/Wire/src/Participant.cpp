@@ -63,7 +63,8 @@ constexpr uint32_t kPortBase = 7400;
 constexpr uint32_t kDomainGain = 250;
 constexpr uint32_t kMetatrafficUnicastOffset = 10;
 constexpr uint32_t kParticipantGain = 2;
-constexpr int32_t kMaxParticipantId = 119; // (DG - offset) / PG - 1: ids above reach the next domain
+constexpr int32_t kMaxParticipantId =
+  119; // (DG - offset) / PG - 1: ids above reach the next domain
 // LOCALHOST discovery sends to the ports of these participant ids (as rmw_fastrtps does); so do
 // static peers.
 constexpr uint32_t kLocalhostPeers = 32;
@@ -160,14 +161,14 @@ std::vector<rtps::octet> user_data_of(const std::string& text, bool with_nul)
 }
 
 void apply_common_endpoint_qos(const QoS& qos, dds::HistoryQosPolicy& history,
-                               dds::ReliabilityQosPolicy& reliability,
-                               dds::DurabilityQosPolicy& durability)
+  dds::ReliabilityQosPolicy& reliability, dds::DurabilityQosPolicy& durability)
 {
-  history.kind = qos.history == QoS::History::KeepAll ? dds::KEEP_ALL_HISTORY_QOS
-                                                      : dds::KEEP_LAST_HISTORY_QOS;
+  history.kind =
+    qos.history == QoS::History::KeepAll ? dds::KEEP_ALL_HISTORY_QOS : dds::KEEP_LAST_HISTORY_QOS;
   history.depth = static_cast<int32_t>(qos.depth == 0 ? 1 : qos.depth);
-  reliability.kind = qos.reliability == QoS::Reliability::Reliable ? dds::RELIABLE_RELIABILITY_QOS
-                                                                   : dds::BEST_EFFORT_RELIABILITY_QOS;
+  reliability.kind = qos.reliability == QoS::Reliability::Reliable
+    ? dds::RELIABLE_RELIABILITY_QOS
+    : dds::BEST_EFFORT_RELIABILITY_QOS;
   durability.kind = qos.durability == QoS::Durability::TransientLocal
     ? dds::TRANSIENT_LOCAL_DURABILITY_QOS
     : dds::VOLATILE_DURABILITY_QOS;
@@ -178,12 +179,11 @@ void apply_common_endpoint_qos(const QoS& qos, dds::HistoryQosPolicy& history,
 dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash)
 {
   dds::DataWriterQos writer_qos = dds::DATAWRITER_QOS_DEFAULT;
-  apply_common_endpoint_qos(qos, writer_qos.history(), writer_qos.reliability(),
-                            writer_qos.durability());
+  apply_common_endpoint_qos(
+    qos, writer_qos.history(), writer_qos.reliability(), writer_qos.durability());
   writer_qos.publish_mode().kind = dds::SYNCHRONOUS_PUBLISH_MODE;
   writer_qos.data_sharing().off();
-  writer_qos.endpoint().history_memory_policy =
-    rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  writer_qos.endpoint().history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
   writer_qos.representation().m_value.clear();
   writer_qos.representation().m_value.push_back(dds::XCDR_DATA_REPRESENTATION);
   if (!type_hash.empty())
@@ -197,26 +197,34 @@ std::string qos_policy_name(uint32_t policy_id)
 {
   switch (policy_id)
   {
-    case dds::DURABILITY_QOS_POLICY_ID: return "DURABILITY";
-    case dds::DEADLINE_QOS_POLICY_ID: return "DEADLINE";
-    case dds::LIVELINESS_QOS_POLICY_ID: return "LIVELINESS";
-    case dds::RELIABILITY_QOS_POLICY_ID: return "RELIABILITY";
-    case dds::OWNERSHIP_QOS_POLICY_ID: return "OWNERSHIP";
-    case dds::DESTINATIONORDER_QOS_POLICY_ID: return "DESTINATION_ORDER";
-    case dds::DATAREPRESENTATION_QOS_POLICY_ID: return "DATA_REPRESENTATION";
-    case dds::TYPECONSISTENCYENFORCEMENT_QOS_POLICY_ID: return "TYPE_CONSISTENCY";
-    default: return "policy " + std::to_string(policy_id);
+    case dds::DURABILITY_QOS_POLICY_ID:
+      return "DURABILITY";
+    case dds::DEADLINE_QOS_POLICY_ID:
+      return "DEADLINE";
+    case dds::LIVELINESS_QOS_POLICY_ID:
+      return "LIVELINESS";
+    case dds::RELIABILITY_QOS_POLICY_ID:
+      return "RELIABILITY";
+    case dds::OWNERSHIP_QOS_POLICY_ID:
+      return "OWNERSHIP";
+    case dds::DESTINATIONORDER_QOS_POLICY_ID:
+      return "DESTINATION_ORDER";
+    case dds::DATAREPRESENTATION_QOS_POLICY_ID:
+      return "DATA_REPRESENTATION";
+    case dds::TYPECONSISTENCYENFORCEMENT_QOS_POLICY_ID:
+      return "TYPE_CONSISTENCY";
+    default:
+      return "policy " + std::to_string(policy_id);
   }
 }
 
 dds::DataReaderQos make_reader_qos(const QoS& qos, const std::string& type_hash)
 {
   dds::DataReaderQos reader_qos = dds::DATAREADER_QOS_DEFAULT;
-  apply_common_endpoint_qos(qos, reader_qos.history(), reader_qos.reliability(),
-                            reader_qos.durability());
+  apply_common_endpoint_qos(
+    qos, reader_qos.history(), reader_qos.reliability(), reader_qos.durability());
   reader_qos.data_sharing().off();
-  reader_qos.endpoint().history_memory_policy =
-    rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
+  reader_qos.endpoint().history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
   reader_qos.type_consistency().representation.m_value.clear();
   reader_qos.type_consistency().representation.m_value.push_back(dds::XCDR_DATA_REPRESENTATION);
   if (!type_hash.empty())
@@ -263,7 +271,9 @@ ParticipantOptions ParticipantOptions::from_environment()
     }
     else
     {
-      std::fprintf(stderr, "[ros2vtk] ROS2VTK_SOCKET_BUFFER_BYTES='%s' is not a byte count <= 1 GiB; ignored\n", bytes);
+      std::fprintf(stderr,
+        "[ros2vtk] ROS2VTK_SOCKET_BUFFER_BYTES='%s' is not a byte count <= 1 GiB; ignored\n",
+        bytes);
     }
   }
   if (const char* peers = std::getenv("ROS_STATIC_PEERS"))
@@ -342,8 +352,8 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
         rtps::Locator_t peer;
         peer.kind = LOCATOR_KIND_UDPv4;
         eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, 127, 0, 0, 1);
-        peer.port = metatraffic_unicast_port(static_cast<uint32_t>(options.domain_id),
-                                             static_cast<int32_t>(participant_id));
+        peer.port = metatraffic_unicast_port(
+          static_cast<uint32_t>(options.domain_id), static_cast<int32_t>(participant_id));
         qos.wire_protocol().builtin.initialPeersList.push_back(peer);
       }
     }
@@ -355,7 +365,8 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     const std::string address = ipv4_of(host);
     if (address.empty())
     {
-      std::fprintf(stderr, "[ros2vtk] ROS_STATIC_PEERS: cannot resolve '%s'; ignored\n", host.c_str());
+      std::fprintf(
+        stderr, "[ros2vtk] ROS_STATIC_PEERS: cannot resolve '%s'; ignored\n", host.c_str());
       continue;
     }
     for (uint32_t participant_id = 0; participant_id < kLocalhostPeers; ++participant_id)
@@ -363,8 +374,8 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
       rtps::Locator_t peer;
       peer.kind = LOCATOR_KIND_UDPv4;
       eprosima::fastrtps::rtps::IPLocator::setIPv4(peer, address);
-      peer.port = metatraffic_unicast_port(static_cast<uint32_t>(options.domain_id),
-                                           static_cast<int32_t>(participant_id));
+      peer.port = metatraffic_unicast_port(
+        static_cast<uint32_t>(options.domain_id), static_cast<int32_t>(participant_id));
       qos.wire_protocol().builtin.initialPeersList.push_back(peer);
     }
   }
@@ -382,9 +393,10 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   {
     // Fast DDS 3 (and 2.13+) read "TCPv4:[host]:port" here; 2.9's parser has no TCP, and a TCP
     // discovery server would need TCP transports configured in code (docs/networking.md).
-    return set_error(error, "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
-                              "': TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
-                              "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT");
+    return set_error(error,
+      "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
+        "': TCP discovery servers are not supported with Fast DDS 2.9; run the server on "
+        "UDP (fastdds discovery -i 0 -l HOST -p PORT) and list it as HOST:PORT");
   }
   if (!options.discovery_servers.empty())
   {
@@ -395,20 +407,23 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     {
       auto& discovery = qos.wire_protocol().builtin.discovery_config;
       discovery.discoveryProtocol = rtps::DiscoveryProtocol_t::SUPER_CLIENT;
-      if (!eprosima::fastdds::rtps::load_environment_server_info(options.discovery_servers,
-            discovery.m_DiscoveryServers))
+      if (!eprosima::fastdds::rtps::load_environment_server_info(
+            options.discovery_servers, discovery.m_DiscoveryServers))
       {
-        return set_error(error, "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
-                                  "' is not a list of host:port (';'-separated, position = server id)");
+        return set_error(error,
+          "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
+            "' is not a list of host:port (';'-separated, position = server id)");
       }
     }
     else
     {
       std::list<eprosima::fastdds::rtps::RemoteServerAttributes> servers;
-      if (!eprosima::fastdds::rtps::load_environment_server_info(options.discovery_servers, servers))
+      if (!eprosima::fastdds::rtps::load_environment_server_info(
+            options.discovery_servers, servers))
       {
-        return set_error(error, "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
-                                  "' is not a list of host:port (';'-separated, position = server id)");
+        return set_error(error,
+          "ROS_DISCOVERY_SERVER '" + options.discovery_servers +
+            "' is not a list of host:port (';'-separated, position = server id)");
       }
     }
   }
@@ -431,7 +446,8 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     transport = std::make_shared<GatedTransportDescriptor>(udp);
   }
   qos.transport().user_transports.push_back(transport);
-  qos.wire_protocol().participant_id = lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
+  qos.wire_protocol().participant_id =
+    lowest_free_participant_id(static_cast<uint32_t>(options.domain_id), loopback_only);
 
   use_no_intraprocess_delivery();
   const dds::StatusMask mask = dds::StatusMask::none();
@@ -439,8 +455,8 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
     options.domain_id, qos, this, mask);
   if (!participant)
   {
-    return set_error(error, "Fast DDS could not create a participant on domain " +
-                              std::to_string(options.domain_id));
+    return set_error(error,
+      "Fast DDS could not create a participant on domain " + std::to_string(options.domain_id));
   }
   transport->gate->open(); // enabled: its receivers are registered (GatedTransport.hpp)
   publisher = participant->create_publisher(dds::PUBLISHER_QOS_DEFAULT);
@@ -459,8 +475,8 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
   return graph.init(participant, publisher, subscriber, graph_topic, ns, name, error);
 }
 
-dds::Topic* Participant::Impl::acquire_topic(const std::string& dds_name,
-                                             const MessageTypeSupport& type, std::string* error)
+dds::Topic* Participant::Impl::acquire_topic(
+  const std::string& dds_name, const MessageTypeSupport& type, std::string* error)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   auto existing = topics_.find(dds_name);
@@ -468,9 +484,10 @@ dds::Topic* Participant::Impl::acquire_topic(const std::string& dds_name,
   {
     if (existing->second.topic->get_type_name() != type.dds_type_name)
     {
-      set_error(error, "topic '" + dds_name + "' already has type " +
-                         dds_type_to_ros(existing->second.topic->get_type_name()) + " in this node, not " +
-                         type.ros_type);
+      set_error(error,
+        "topic '" + dds_name + "' already has type " +
+          dds_type_to_ros(existing->second.topic->get_type_name()) + " in this node, not " +
+          type.ros_type);
       return nullptr;
     }
     ++existing->second.references;
@@ -486,7 +503,8 @@ dds::Topic* Participant::Impl::acquire_topic(const std::string& dds_name,
     }
     types_.emplace(type.dds_type_name, support);
   }
-  dds::Topic* topic = participant->create_topic(dds_name, type.dds_type_name, dds::TOPIC_QOS_DEFAULT);
+  dds::Topic* topic =
+    participant->create_topic(dds_name, type.dds_type_name, dds::TOPIC_QOS_DEFAULT);
   if (!topic)
   {
     set_error(error, "could not create DDS topic '" + dds_name + "'");
@@ -508,7 +526,7 @@ void Participant::Impl::release_topic(dds::Topic* topic)
 }
 
 void Participant::Impl::add_local_endpoint(const rtps::GUID_t& guid, bool is_writer,
-                                           const std::string& dds_topic, const std::string& dds_type)
+  const std::string& dds_topic, const std::string& dds_type)
 {
   graph.add_local_endpoint(to_gid(guid), is_writer, dds_topic, dds_type);
 }
@@ -518,8 +536,8 @@ void Participant::Impl::remove_local_endpoint(const rtps::GUID_t& guid)
   graph.remove_local_endpoint(to_gid(guid));
 }
 
-void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
-                                                 rtps::ParticipantDiscoveryInfo&& info)
+void Participant::Impl::on_participant_discovery(
+  dds::DomainParticipant*, rtps::ParticipantDiscoveryInfo&& info)
 {
   const Gid gid = to_gid(info.info.m_guid);
   if (info.status == rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT)
@@ -528,12 +546,12 @@ void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
     remote_participants.insert(gid);
   }
   if (info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
-      info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+    info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
   {
     {
       std::lock_guard<std::mutex> lock(peers_mutex);
       if (remote_participants.erase(gid) > 0 &&
-          info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+        info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
       {
         ++dropped_participants;
       }
@@ -541,8 +559,8 @@ void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
     graph.remove_remote_participant(gid);
   }
   if (info.status == rtps::ParticipantDiscoveryInfo::DISCOVERED_PARTICIPANT ||
-      info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
-      info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
+    info.status == rtps::ParticipantDiscoveryInfo::REMOVED_PARTICIPANT ||
+    info.status == rtps::ParticipantDiscoveryInfo::DROPPED_PARTICIPANT)
   {
     // A peer found or lost: the spinner's next Spin reports the new link state (the node fires
     // its LinkStateChangedEvent there, on the spinning thread, never here on a DDS thread).
@@ -550,13 +568,13 @@ void Participant::Impl::on_participant_discovery(dds::DomainParticipant*,
   }
 }
 
-void Participant::Impl::on_subscriber_discovery(dds::DomainParticipant*,
-                                                rtps::ReaderDiscoveryInfo&& info)
+void Participant::Impl::on_subscriber_discovery(
+  dds::DomainParticipant*, rtps::ReaderDiscoveryInfo&& info)
 {
   if (info.status == rtps::ReaderDiscoveryInfo::DISCOVERED_READER)
   {
     graph.add_remote_endpoint(to_gid(info.info.guid()), false, info.info.topicName().to_string(),
-                              info.info.typeName().to_string());
+      info.info.typeName().to_string());
   }
   else if (info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER)
   {
@@ -564,13 +582,13 @@ void Participant::Impl::on_subscriber_discovery(dds::DomainParticipant*,
   }
 }
 
-void Participant::Impl::on_publisher_discovery(dds::DomainParticipant*,
-                                               rtps::WriterDiscoveryInfo&& info)
+void Participant::Impl::on_publisher_discovery(
+  dds::DomainParticipant*, rtps::WriterDiscoveryInfo&& info)
 {
   if (info.status == rtps::WriterDiscoveryInfo::DISCOVERED_WRITER)
   {
     graph.add_remote_endpoint(to_gid(info.info.guid()), true, info.info.topicName().to_string(),
-                              info.info.typeName().to_string(), type_hash_of(info.info.m_qos.m_userData));
+      info.info.typeName().to_string(), type_hash_of(info.info.m_qos.m_userData));
   }
   else if (info.status == rtps::WriterDiscoveryInfo::REMOVED_WRITER)
   {
@@ -580,9 +598,7 @@ void Participant::Impl::on_publisher_discovery(dds::DomainParticipant*,
 
 //------------------------------------------------------------------------------
 std::unique_ptr<Participant> Participant::create(const std::string& node_name,
-                                                 const std::string& node_namespace,
-                                                 const ParticipantOptions& options,
-                                                 std::string* error)
+  const std::string& node_namespace, const ParticipantOptions& options, std::string* error)
 {
   std::string ns;
   if (!validate_node_name(node_name, error) || !normalize_namespace(node_namespace, ns, error))
@@ -599,7 +615,8 @@ std::unique_ptr<Participant> Participant::create(const std::string& node_name,
   participant->rosout_ = Rosout::create(*participant, &rosout_error);
   if (!participant->rosout_)
   {
-    std::fprintf(stderr, "[ros2vtk] node '%s' has no /rosout: %s\n", node_name.c_str(), rosout_error.c_str());
+    std::fprintf(
+      stderr, "[ros2vtk] node '%s' has no /rosout: %s\n", node_name.c_str(), rosout_error.c_str());
   }
   return participant;
 }
@@ -631,15 +648,14 @@ std::string Participant::fully_qualified_name() const
   return fully_qualified_node_name(impl_->ns, impl_->name);
 }
 
-bool Participant::resolve_name(const std::string& name, std::string& resolved,
-                               std::string* error) const
+bool Participant::resolve_name(
+  const std::string& name, std::string& resolved, std::string* error) const
 {
   return expand_topic_name(name, impl_->name, impl_->ns, resolved, error);
 }
 
-std::unique_ptr<Publisher> Participant::create_publisher(const MessageTypeSupport& type,
-                                                         const std::string& topic,
-                                                         const QoS& qos, std::string* error)
+std::unique_ptr<Publisher> Participant::create_publisher(
+  const MessageTypeSupport& type, const std::string& topic, const QoS& qos, std::string* error)
 {
   std::string resolved;
   if (!resolve_name(topic, resolved, error))
@@ -655,9 +671,8 @@ std::unique_ptr<Publisher> Participant::create_publisher(const MessageTypeSuppor
   return std::unique_ptr<Publisher>(new Publisher(std::move(impl)));
 }
 
-std::unique_ptr<Subscription> Participant::create_subscription(const MessageTypeSupport& type,
-                                                               const std::string& topic,
-                                                               const QoS& qos, std::string* error)
+std::unique_ptr<Subscription> Participant::create_subscription(
+  const MessageTypeSupport& type, const std::string& topic, const QoS& qos, std::string* error)
 {
   std::string resolved;
   if (!resolve_name(topic, resolved, error))
@@ -701,27 +716,33 @@ std::vector<TopicInfo> Participant::topic_names_and_types() const
 size_t Participant::count_publishers(const std::string& topic) const
 {
   std::string resolved;
-  return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), true) : 0;
+  return resolve_name(topic, resolved, nullptr)
+    ? impl_->graph.count_endpoints(topic_to_dds(resolved), true)
+    : 0;
 }
 
 std::vector<PublisherInfo> Participant::publishers_info(const std::string& topic) const
 {
   std::string resolved;
-  return resolve_name(topic, resolved, nullptr) ? impl_->graph.remote_publishers(topic_to_dds(resolved))
-                                                : std::vector<PublisherInfo>();
+  return resolve_name(topic, resolved, nullptr)
+    ? impl_->graph.remote_publishers(topic_to_dds(resolved))
+    : std::vector<PublisherInfo>();
 }
 
 size_t Participant::count_subscribers(const std::string& topic) const
 {
   std::string resolved;
-  return resolve_name(topic, resolved, nullptr) ? impl_->graph.count_endpoints(topic_to_dds(resolved), false) : 0;
+  return resolve_name(topic, resolved, nullptr)
+    ? impl_->graph.count_endpoints(topic_to_dds(resolved), false)
+    : 0;
 }
 
 std::vector<std::string> Participant::publisher_node_names(const std::string& topic) const
 {
   std::string resolved;
-  return resolve_name(topic, resolved, nullptr) ? impl_->graph.publisher_nodes(topic_to_dds(resolved))
-                                                : std::vector<std::string>();
+  return resolve_name(topic, resolved, nullptr)
+    ? impl_->graph.publisher_nodes(topic_to_dds(resolved))
+    : std::vector<std::string>();
 }
 
 std::string Participant::node_of_writer(const std::array<uint8_t, 16>& gid) const

@@ -41,22 +41,22 @@ public:
 
   /// Topics are shared by the writers and readers of one participant (Fast DDS refuses two
   /// Topic objects with the same name), so they are reference counted here.
-  eprosima::fastdds::dds::Topic* acquire_topic(const std::string& dds_name,
-                                               const MessageTypeSupport& type, std::string* error);
+  eprosima::fastdds::dds::Topic* acquire_topic(
+    const std::string& dds_name, const MessageTypeSupport& type, std::string* error);
   void release_topic(eprosima::fastdds::dds::Topic* topic);
 
   /// Local endpoints, announced on ros_discovery_info.
   void add_local_endpoint(const eprosima::fastrtps::rtps::GUID_t& guid, bool is_writer,
-                          const std::string& dds_topic, const std::string& dds_type);
+    const std::string& dds_topic, const std::string& dds_type);
   void remove_local_endpoint(const eprosima::fastrtps::rtps::GUID_t& guid);
 
   // DomainParticipantListener: remote participants and endpoints, for the graph.
   void on_participant_discovery(eprosima::fastdds::dds::DomainParticipant* participant,
-                                eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override;
+    eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override;
   void on_subscriber_discovery(eprosima::fastdds::dds::DomainParticipant* participant,
-                               eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override;
+    eprosima::fastrtps::rtps::ReaderDiscoveryInfo&& info) override;
   void on_publisher_discovery(eprosima::fastdds::dds::DomainParticipant* participant,
-                              eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override;
+    eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override;
 
   std::string name;
   std::string ns;

@@ -11,9 +11,7 @@ namespace wire {
 namespace dds = eprosima::fastdds::dds;
 
 std::unique_ptr<Publisher::Impl> Publisher::Impl::create(Participant::Impl& owner,
-                                                         const MessageTypeSupport& type,
-                                                         const std::string& topic, const QoS& qos,
-                                                         std::string* error)
+  const MessageTypeSupport& type, const std::string& topic, const QoS& qos, std::string* error)
 {
   auto impl = std::make_unique<Impl>(owner, type, topic, qos);
   impl->dds_topic = owner.acquire_topic(topic_to_dds(topic), type, error);
@@ -21,8 +19,8 @@ std::unique_ptr<Publisher::Impl> Publisher::Impl::create(Participant::Impl& owne
   {
     return nullptr;
   }
-  impl->writer = owner.publisher->create_datawriter(impl->dds_topic,
-                                                    make_writer_qos(qos, type.type_hash));
+  impl->writer =
+    owner.publisher->create_datawriter(impl->dds_topic, make_writer_qos(qos, type.type_hash));
   if (!impl->writer)
   {
     if (error)
@@ -35,8 +33,8 @@ std::unique_ptr<Publisher::Impl> Publisher::Impl::create(Participant::Impl& owne
   return impl;
 }
 
-Publisher::Impl::Impl(Participant::Impl& owner_, const MessageTypeSupport& type_, std::string topic_,
-                      QoS qos_)
+Publisher::Impl::Impl(
+  Participant::Impl& owner_, const MessageTypeSupport& type_, std::string topic_, QoS qos_)
   : owner(owner_)
   , type(type_)
   , topic(std::move(topic_))
@@ -79,7 +77,8 @@ bool Publisher::publish_serialized(const uint8_t* data, size_t size)
 {
   // Validate and go through the struct so the writer keeps one data type.
   void* message = impl_->type.create();
-  const bool ok = deserialize_message(impl_->type, data, size, message, nullptr) && publish(message);
+  const bool ok =
+    deserialize_message(impl_->type, data, size, message, nullptr) && publish(message);
   impl_->type.destroy(message);
   return ok;
 }

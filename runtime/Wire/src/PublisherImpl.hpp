@@ -17,7 +17,7 @@ class Publisher::Impl
 {
 public:
   static std::unique_ptr<Impl> create(Participant::Impl& owner, const MessageTypeSupport& type,
-                                      const std::string& topic, const QoS& qos, std::string* error);
+    const std::string& topic, const QoS& qos, std::string* error);
   Impl(Participant::Impl& owner, const MessageTypeSupport& type, std::string topic, QoS qos);
   ~Impl();
 

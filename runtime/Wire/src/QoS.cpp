@@ -23,14 +23,15 @@ const NamedProfile kProfiles[] = {
   { "parameters", QoS::parameters() },
   { "parameter_events", QoS::parameters() },
   { "transient_local", QoS::transient_local() },
-  { "keep_all", QoS{ QoS::History::KeepAll, 1000, QoS::Reliability::Reliable, QoS::Durability::Volatile } },
+  { "keep_all",
+    QoS{ QoS::History::KeepAll, 1000, QoS::Reliability::Reliable, QoS::Durability::Volatile } },
   { "system_default", QoS::default_profile() },
   { "best_effort", QoS::sensor_data() },
   { "services", QoS::services() },
   { "latched", QoS::transient_local() },
 };
 
-template <typename Enum>
+template<typename Enum>
 struct NamedValue
 {
   const char* name;
@@ -44,7 +45,7 @@ const NamedValue<QoS::Durability> kDurability[] = { { "volatile", QoS::Durabilit
 const NamedValue<QoS::History> kHistory[] = { { "keep_last", QoS::History::KeepLast },
   { "keep_all", QoS::History::KeepAll } };
 
-template <typename Enum, size_t N>
+template<typename Enum, size_t N>
 const char* name_in(const NamedValue<Enum> (&table)[N], Enum value)
 {
   for (const auto& entry : table)
@@ -57,7 +58,7 @@ const char* name_in(const NamedValue<Enum> (&table)[N], Enum value)
   return "unknown";
 }
 
-template <typename Enum, size_t N>
+template<typename Enum, size_t N>
 bool parse_in(const NamedValue<Enum> (&table)[N], const char* name, Enum& value)
 {
   for (const auto& entry : table)
@@ -96,16 +97,35 @@ std::string QoS::profile_names()
   return text;
 }
 
-const char* QoS::name_of(Reliability value) { return name_in(kReliability, value); }
-const char* QoS::name_of(Durability value) { return name_in(kDurability, value); }
-const char* QoS::name_of(History value) { return name_in(kHistory, value); }
-bool QoS::parse(const char* name, Reliability& value) { return parse_in(kReliability, name, value); }
-bool QoS::parse(const char* name, Durability& value) { return parse_in(kDurability, name, value); }
-bool QoS::parse(const char* name, History& value) { return parse_in(kHistory, name, value); }
+const char* QoS::name_of(Reliability value)
+{
+  return name_in(kReliability, value);
+}
+const char* QoS::name_of(Durability value)
+{
+  return name_in(kDurability, value);
+}
+const char* QoS::name_of(History value)
+{
+  return name_in(kHistory, value);
+}
+bool QoS::parse(const char* name, Reliability& value)
+{
+  return parse_in(kReliability, name, value);
+}
+bool QoS::parse(const char* name, Durability& value)
+{
+  return parse_in(kDurability, name, value);
+}
+bool QoS::parse(const char* name, History& value)
+{
+  return parse_in(kHistory, name, value);
+}
 
 std::string QoS::to_string() const
 {
-  std::string text = std::string(name_of(reliability)) + ", " + name_of(durability) + ", " + name_of(history);
+  std::string text =
+    std::string(name_of(reliability)) + ", " + name_of(durability) + ", " + name_of(history);
   if (history == History::KeepLast)
   {
     text += "(" + std::to_string(depth) + ")";

@@ -11,7 +11,7 @@ namespace {
 int64_t system_nanoseconds()
 {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(
-           std::chrono::system_clock::now().time_since_epoch())
+    std::chrono::system_clock::now().time_since_epoch())
     .count();
 }
 } // namespace

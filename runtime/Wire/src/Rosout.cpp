@@ -37,14 +37,14 @@ constexpr size_t kMaxText = 4096;
 
 std::unique_ptr<Rosout> Rosout::create(Participant& participant, std::string* error)
 {
-  auto publisher = participant.create_publisher(rcl_interfaces::msg::Log::type_support(), "/rosout",
-                                                QoS::transient_local(1000), error);
+  auto publisher = participant.create_publisher(
+    rcl_interfaces::msg::Log::type_support(), "/rosout", QoS::transient_local(1000), error);
   if (!publisher)
   {
     return nullptr;
   }
-  std::unique_ptr<Rosout> rosout(new Rosout(std::move(publisher),
-    logger_name(participant.node_namespace(), participant.name())));
+  std::unique_ptr<Rosout> rosout(new Rosout(
+    std::move(publisher), logger_name(participant.node_namespace(), participant.name())));
   std::lock_guard<std::mutex> lock(registry_mutex());
   registry().push_back(rosout.get());
   return rosout;
@@ -79,7 +79,7 @@ uint64_t Rosout::published_count() const
 }
 
 bool Rosout::publish(LogSeverity severity, const std::string& text, const std::string& file,
-                     const std::string& function, uint32_t line)
+  const std::string& function, uint32_t line)
 {
   if (static_cast<uint8_t>(severity) < static_cast<uint8_t>(level_.load()))
   {
@@ -87,7 +87,8 @@ bool Rosout::publish(LogSeverity severity, const std::string& text, const std::s
   }
   rcl_interfaces::msg::Log message;
   const auto since_epoch = std::chrono::system_clock::now().time_since_epoch();
-  const auto nanoseconds = std::chrono::duration_cast<std::chrono::nanoseconds>(since_epoch).count();
+  const auto nanoseconds =
+    std::chrono::duration_cast<std::chrono::nanoseconds>(since_epoch).count();
   message.stamp.sec = static_cast<int32_t>(nanoseconds / 1000000000);
   message.stamp.nanosec = static_cast<uint32_t>(nanoseconds % 1000000000);
   message.level = static_cast<uint8_t>(severity);
@@ -105,7 +106,7 @@ bool Rosout::publish(LogSeverity severity, const std::string& text, const std::s
 }
 
 size_t Rosout::log(LogSeverity severity, const std::string& text, const std::string& file,
-                   const std::string& function, uint32_t line)
+  const std::string& function, uint32_t line)
 {
   std::lock_guard<std::mutex> lock(registry_mutex());
   size_t published = 0;

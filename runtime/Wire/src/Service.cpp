@@ -82,9 +82,8 @@ ServiceEndpoints::~ServiceEndpoints()
 }
 
 bool ServiceEndpoints::create(const MessageTypeSupport& write_type, const std::string& write_name,
-                              const MessageTypeSupport& read_type, const std::string& read_name,
-                              const QoS& qos, dds::DataReaderListener* reader_listener,
-                              std::string* error)
+  const MessageTypeSupport& read_type, const std::string& read_name, const QoS& qos,
+  dds::DataReaderListener* reader_listener, std::string* error)
 {
   write_topic = owner.acquire_topic(write_name, write_type, error);
   read_topic = owner.acquire_topic(read_name, read_type, error);
@@ -92,10 +91,10 @@ bool ServiceEndpoints::create(const MessageTypeSupport& write_type, const std::s
   {
     return false;
   }
-  writer = owner.publisher->create_datawriter(write_topic, make_writer_qos(qos, write_type.type_hash),
-                                              this, dds::StatusMask::publication_matched());
-  reader = owner.subscriber->create_datareader(read_topic, make_reader_qos(qos, read_type.type_hash),
-                                               reader_listener, dds::StatusMask::data_available());
+  writer = owner.publisher->create_datawriter(write_topic,
+    make_writer_qos(qos, write_type.type_hash), this, dds::StatusMask::publication_matched());
+  reader = owner.subscriber->create_datareader(read_topic,
+    make_reader_qos(qos, read_type.type_hash), reader_listener, dds::StatusMask::data_available());
   if (!writer || !reader)
   {
     if (error)
@@ -109,8 +108,8 @@ bool ServiceEndpoints::create(const MessageTypeSupport& write_type, const std::s
   return true;
 }
 
-void ServiceEndpoints::on_publication_matched(dds::DataWriter*,
-                                              const dds::PublicationMatchedStatus& info)
+void ServiceEndpoints::on_publication_matched(
+  dds::DataWriter*, const dds::PublicationMatchedStatus& info)
 {
   std::array<uint8_t, 16> reader_guid{};
   std::memcpy(reader_guid.data(), info.last_subscription_handle.value, 16);
@@ -132,8 +131,8 @@ uint64_t ServiceEndpoints::readers_matched_total()
   return readers_matched_total_;
 }
 
-bool ServiceEndpoints::wait_for_matched_reader(const std::array<uint8_t, 16>& reader_guid,
-                                               int timeout_ms)
+bool ServiceEndpoints::wait_for_matched_reader(
+  const std::array<uint8_t, 16>& reader_guid, int timeout_ms)
 {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
   while (true)
@@ -154,7 +153,8 @@ bool ServiceEndpoints::wait_for_matched_reader(const std::array<uint8_t, 16>& re
 }
 
 //------------------------------------------------------------------------------
-ServiceServer::Impl::Impl(Participant::Impl& owner, const ServiceTypeSupport& type_, std::string name_)
+ServiceServer::Impl::Impl(
+  Participant::Impl& owner, const ServiceTypeSupport& type_, std::string name_)
   : type(type_)
   , name(std::move(name_))
   , endpoints(owner)
@@ -187,9 +187,8 @@ void ServiceServer::Impl::on_data_available(dds::DataReader* data_reader)
     // Replies go to the client's reply reader when it told us (related identity), else to the
     // request writer (older clients).
     const rtps::GUID_t& related = info.related_sample_identity.writer_guid();
-    request.id.writer_guid = guid_bytes(related != rtps::GUID_t::unknown()
-                                          ? related
-                                          : info.sample_identity.writer_guid());
+    request.id.writer_guid =
+      guid_bytes(related != rtps::GUID_t::unknown() ? related : info.sample_identity.writer_guid());
     request.id.sequence_number = to_int64(info.sample_identity.sequence_number());
     request.request = MessagePtr(&request_type, sample.message);
     sample.message = nullptr;
@@ -273,7 +272,8 @@ std::string ServiceServer::last_rejection() const
 }
 
 //------------------------------------------------------------------------------
-ServiceClient::Impl::Impl(Participant::Impl& owner, const ServiceTypeSupport& type_, std::string name_)
+ServiceClient::Impl::Impl(
+  Participant::Impl& owner, const ServiceTypeSupport& type_, std::string name_)
   : type(type_)
   , name(std::move(name_))
   , endpoints(owner)
@@ -376,8 +376,7 @@ const ServiceTypeSupport& ServiceClient::type() const
 
 //------------------------------------------------------------------------------
 std::unique_ptr<ServiceServer> Participant::create_service_server(const ServiceTypeSupport& type,
-                                                                  const std::string& service_name,
-                                                                  const QoS& qos, std::string* error)
+  const std::string& service_name, const QoS& qos, std::string* error)
 {
   std::string resolved;
   if (!resolve_name(service_name, resolved, error))
@@ -386,7 +385,7 @@ std::unique_ptr<ServiceServer> Participant::create_service_server(const ServiceT
   }
   auto impl = std::make_unique<ServiceServer::Impl>(*impl_, type, resolved);
   if (!impl->endpoints.create(*type.response(), service_reply_to_dds(resolved), *type.request(),
-                              service_request_to_dds(resolved), qos, impl.get(), error))
+        service_request_to_dds(resolved), qos, impl.get(), error))
   {
     return nullptr;
   }
@@ -395,8 +394,7 @@ std::unique_ptr<ServiceServer> Participant::create_service_server(const ServiceT
 }
 
 std::unique_ptr<ServiceClient> Participant::create_service_client(const ServiceTypeSupport& type,
-                                                                  const std::string& service_name,
-                                                                  const QoS& qos, std::string* error)
+  const std::string& service_name, const QoS& qos, std::string* error)
 {
   std::string resolved;
   if (!resolve_name(service_name, resolved, error))
@@ -405,7 +403,7 @@ std::unique_ptr<ServiceClient> Participant::create_service_client(const ServiceT
   }
   auto impl = std::make_unique<ServiceClient::Impl>(*impl_, type, resolved);
   if (!impl->endpoints.create(*type.request(), service_request_to_dds(resolved), *type.response(),
-                              service_reply_to_dds(resolved), qos, impl.get(), error))
+        service_reply_to_dds(resolved), qos, impl.get(), error))
   {
     return nullptr;
   }

@@ -28,11 +28,11 @@ public:
   ~ServiceEndpoints() override;
 
   bool create(const MessageTypeSupport& write_type, const std::string& write_topic,
-              const MessageTypeSupport& read_type, const std::string& read_topic, const QoS& qos,
-              eprosima::fastdds::dds::DataReaderListener* reader_listener, std::string* error);
+    const MessageTypeSupport& read_type, const std::string& read_topic, const QoS& qos,
+    eprosima::fastdds::dds::DataReaderListener* reader_listener, std::string* error);
 
   void on_publication_matched(eprosima::fastdds::dds::DataWriter* writer,
-                              const eprosima::fastdds::dds::PublicationMatchedStatus& info) override;
+    const eprosima::fastdds::dds::PublicationMatchedStatus& info) override;
   /// Waits until the writer matched the reader with this GUID (bytes), up to `timeout_ms`.
   bool wait_for_matched_reader(const std::array<uint8_t, 16>& reader_guid, int timeout_ms);
   /// How many readers the writer has matched since it was created (never decreases).

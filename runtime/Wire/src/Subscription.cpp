@@ -60,9 +60,7 @@ MessagePtr& MessagePtr::operator=(MessagePtr&& other) noexcept
 
 //------------------------------------------------------------------------------
 std::unique_ptr<Subscription::Impl> Subscription::Impl::create(Participant::Impl& owner,
-                                                               const MessageTypeSupport& type,
-                                                               const std::string& topic,
-                                                               const QoS& qos, std::string* error)
+  const MessageTypeSupport& type, const std::string& topic, const QoS& qos, std::string* error)
 {
   auto impl = std::make_unique<Impl>(owner, type, topic, qos);
   impl->dds_topic = owner.acquire_topic(topic_to_dds(topic), type, error);
@@ -71,8 +69,8 @@ std::unique_ptr<Subscription::Impl> Subscription::Impl::create(Participant::Impl
     return nullptr;
   }
   impl->queue_limit = std::max<size_t>(qos.depth, 1000);
-  impl->reader = owner.subscriber->create_datareader(
-    impl->dds_topic, make_reader_qos(qos, type.type_hash), impl.get(),
+  impl->reader = owner.subscriber->create_datareader(impl->dds_topic,
+    make_reader_qos(qos, type.type_hash), impl.get(),
     dds::StatusMask::data_available() << dds::StatusMask::requested_incompatible_qos());
   if (!impl->reader)
   {
@@ -86,8 +84,8 @@ std::unique_ptr<Subscription::Impl> Subscription::Impl::create(Participant::Impl
   return impl;
 }
 
-Subscription::Impl::Impl(Participant::Impl& owner_, const MessageTypeSupport& type_,
-                         std::string topic_, QoS qos_)
+Subscription::Impl::Impl(
+  Participant::Impl& owner_, const MessageTypeSupport& type_, std::string topic_, QoS qos_)
   : owner(owner_)
   , type(type_)
   , topic(std::move(topic_))
@@ -134,7 +132,7 @@ void Subscription::Impl::on_data_available(dds::DataReader* data_reader)
     message.source_timestamp_ns = info.source_timestamp.to_ns();
     message.publisher_gid = to_gid(info.sample_identity.writer_guid());
     message.reception_timestamp_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                       std::chrono::system_clock::now().time_since_epoch())
+      std::chrono::system_clock::now().time_since_epoch())
                                        .count();
     ++received;
     {
@@ -184,8 +182,8 @@ size_t Subscription::pending() const
   return impl_->queue.size();
 }
 
-void Subscription::Impl::on_requested_incompatible_qos(dds::DataReader*,
-  const dds::RequestedIncompatibleQosStatus& status)
+void Subscription::Impl::on_requested_incompatible_qos(
+  dds::DataReader*, const dds::RequestedIncompatibleQosStatus& status)
 {
   {
     std::lock_guard<std::mutex> lock(mutex);

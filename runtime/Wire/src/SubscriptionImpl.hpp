@@ -20,7 +20,7 @@ class Subscription::Impl : public eprosima::fastdds::dds::DataReaderListener
 {
 public:
   static std::unique_ptr<Impl> create(Participant::Impl& owner, const MessageTypeSupport& type,
-                                      const std::string& topic, const QoS& qos, std::string* error);
+    const std::string& topic, const QoS& qos, std::string* error);
   Impl(Participant::Impl& owner, const MessageTypeSupport& type, std::string topic, QoS qos);
   ~Impl() override;
 

@@ -25,8 +25,8 @@ QoS clock_qos()
 }
 } // namespace
 
-std::unique_ptr<TimeSource> TimeSource::create(Participant& participant, ParameterStore& store, ROSClock& clock,
-                                               std::string* error)
+std::unique_ptr<TimeSource> TimeSource::create(
+  Participant& participant, ParameterStore& store, ROSClock& clock, std::string* error)
 {
   std::unique_ptr<TimeSource> source(new TimeSource(participant, store, clock));
   const rcl::ParameterValue* value = store.get(kUseSimTimeParameter);
@@ -42,8 +42,8 @@ std::unique_ptr<TimeSource> TimeSource::create(Participant& participant, Paramet
   if (value->type != kBool)
   {
     if (error)
-      *error = std::string(kUseSimTimeParameter) + " is declared with type " + parameter_type_name(value->type) +
-        ", not bool";
+      *error = std::string(kUseSimTimeParameter) + " is declared with type " +
+        parameter_type_name(value->type) + ", not bool";
     return nullptr;
   }
   if (!source->set_active(value->bool_value, error))
@@ -51,18 +51,19 @@ std::unique_ptr<TimeSource> TimeSource::create(Participant& participant, Paramet
   // The store refuses a set of another type (use_sim_time is not dynamically typed), so every
   // set that reaches here carries a bool.
   TimeSource* self = source.get();
-  source->callback_id_ = store.add_post_set_callback([self](const std::vector<rcl::Parameter>& changed) {
-    for (const auto& parameter : changed)
-    {
-      if (parameter.name == kUseSimTimeParameter && parameter.value.type == kBool)
+  source->callback_id_ =
+    store.add_post_set_callback([self](const std::vector<rcl::Parameter>& changed) {
+      for (const auto& parameter : changed)
       {
-        std::string reason;
-        self->last_error_.clear();
-        if (!self->set_active(parameter.value.bool_value, &reason))
-          self->last_error_ = reason;
+        if (parameter.name == kUseSimTimeParameter && parameter.value.type == kBool)
+        {
+          std::string reason;
+          self->last_error_.clear();
+          if (!self->set_active(parameter.value.bool_value, &reason))
+            self->last_error_ = reason;
+        }
       }
-    }
-  });
+    });
   return source;
 }
 
@@ -83,8 +84,8 @@ bool TimeSource::set_active(bool active, std::string* error)
 {
   if (active && !subscription_)
   {
-    subscription_ = participant_.create_subscription(rosgraph_msgs::msg::Clock::type_support(), kClockTopic,
-                                                     clock_qos(), error);
+    subscription_ = participant_.create_subscription(
+      rosgraph_msgs::msg::Clock::type_support(), kClockTopic, clock_qos(), error);
     if (!subscription_)
       return false;
   }
@@ -106,7 +107,7 @@ size_t TimeSource::process()
   {
     const auto* sample = static_cast<const rosgraph_msgs::msg::Clock*>(message.get());
     clock_.set_sim_time(static_cast<int64_t>(sample->clock.sec) * 1000000000 +
-                        static_cast<int64_t>(sample->clock.nanosec));
+      static_cast<int64_t>(sample->clock.nanosec));
   }
   return messages.size();
 }

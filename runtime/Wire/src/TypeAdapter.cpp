@@ -49,7 +49,8 @@ bool TypeAdapter::deserialize(SerializedPayload_t* payload, void* data)
     sample->message = type_.create();
   }
   std::string error;
-  sample->valid = deserialize_message(type_, payload->data, payload->length, sample->message, &error);
+  sample->valid =
+    deserialize_message(type_, payload->data, payload->length, sample->message, &error);
   sample->error = sample->valid ? std::string() : error;
   // Always report success so the sample reaches our listener, which counts and reports it.
   return true;
@@ -58,7 +59,9 @@ bool TypeAdapter::deserialize(SerializedPayload_t* payload, void* data)
 std::function<uint32_t()> TypeAdapter::getSerializedSizeProvider(void* data)
 {
   const MessageTypeSupport* type = &type_;
-  return [type, data]() { return static_cast<uint32_t>(type->serialized_size(data)); };
+  return [type, data]() {
+    return static_cast<uint32_t>(type->serialized_size(data));
+  };
 }
 
 void* TypeAdapter::createData()

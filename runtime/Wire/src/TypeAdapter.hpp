@@ -32,8 +32,8 @@ public:
   std::function<uint32_t()> getSerializedSizeProvider(void* data) override;
   void* createData() override;
   void deleteData(void* data) override;
-  bool getKey(void* data, eprosima::fastrtps::rtps::InstanceHandle_t* handle,
-              bool force_md5) override;
+  bool getKey(
+    void* data, eprosima::fastrtps::rtps::InstanceHandle_t* handle, bool force_md5) override;
 
   const MessageTypeSupport& type() const { return type_; }
 

@@ -26,7 +26,8 @@ bool same_hash(const std::string& a, const std::string& b)
     return false;
   for (size_t i = 0; i < a.size(); ++i)
   {
-    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
+    if (std::tolower(static_cast<unsigned char>(a[i])) !=
+      std::tolower(static_cast<unsigned char>(b[i])))
       return false;
   }
   return true;
@@ -41,8 +42,8 @@ std::string node_name_of(const PublisherInfo& info)
 
 } // namespace
 
-RuntimeTypeResolver::RuntimeTypeResolver(Participant& participant, std::string topic, std::string ros_type,
-                                         std::chrono::milliseconds service_wait)
+RuntimeTypeResolver::RuntimeTypeResolver(Participant& participant, std::string topic,
+  std::string ros_type, std::chrono::milliseconds service_wait)
   : participant_(participant)
   , topic_(std::move(topic))
   , ros_type_(std::move(ros_type))
@@ -76,8 +77,9 @@ bool RuntimeTypeResolver::pick_publisher()
     return true;
   }
   set_state(State::WaitingForPublisher,
-            unnamed ? "waiting for the node name of the publisher of " + ros_type_ + " on " + topic_
-                    : "waiting for a publisher of " + ros_type_ + " on " + topic_ + " to learn the type from");
+    unnamed
+      ? "waiting for the node name of the publisher of " + ros_type_ + " on " + topic_
+      : "waiting for a publisher of " + ros_type_ + " on " + topic_ + " to learn the type from");
   return false;
 }
 
@@ -95,8 +97,9 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     }
     if (type_hash_.empty())
     {
-      set_state(State::NoService, "the publisher " + node_ + " announces no type hash for " + ros_type_ +
-                                    " (ROS 2 before Jazzy): it cannot be asked for the type description");
+      set_state(State::NoService,
+        "the publisher " + node_ + " announces no type hash for " + ros_type_ +
+          " (ROS 2 before Jazzy): it cannot be asked for the type description");
       node_.clear(); // look again: another publisher may announce one
       return state_;
     }
@@ -110,16 +113,18 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     }
     std::string error;
     client_ = participant_.create_service_client(
-      shipped_service_type("type_description_interfaces/srv/GetTypeDescription"), node_ + "/get_type_description",
-      QoS::services(), &error);
+      shipped_service_type("type_description_interfaces/srv/GetTypeDescription"),
+      node_ + "/get_type_description", QoS::services(), &error);
     if (!client_)
     {
-      set_state(State::Failed, "cannot ask " + node_ + " for the type description of " + ros_type_ + ": " + error);
+      set_state(State::Failed,
+        "cannot ask " + node_ + " for the type description of " + ros_type_ + ": " + error);
       return state_;
     }
     sequence_ = -1;
     asked_since_ = std::chrono::steady_clock::now();
-    set_state(State::WaitingForDescription, "waiting for the type description of " + ros_type_ + " from " + node_);
+    set_state(State::WaitingForDescription,
+      "waiting for the type description of " + ros_type_ + " from " + node_);
   }
   // The publisher left before answering: start over with whoever publishes next.
   bool present = false;
@@ -143,14 +148,17 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
       request.type_hash = type_hash_;
       request.include_type_sources = false;
       sequence_ = client_->send_request(&request);
-      set_state(State::WaitingForDescription, "waiting for the type description of " + ros_type_ + " from " + node_);
+      set_state(State::WaitingForDescription,
+        "waiting for the type description of " + ros_type_ + " from " + node_);
     }
     else if (std::chrono::steady_clock::now() - asked_since_ > service_wait_)
     {
       set_state(State::NoService,
-                "the publisher " + node_ + " does not serve type descriptions (no " + node_ +
-                  "/get_type_description after " + std::to_string(service_wait_.count() / 1000.0).substr(0, 3) +
-                  " s; nodes before Jazzy, or started with start_type_description_service false, have none)");
+        "the publisher " + node_ + " does not serve type descriptions (no " + node_ +
+          "/get_type_description after " +
+          std::to_string(service_wait_.count() / 1000.0).substr(0, 3) +
+          " s; nodes before Jazzy, or started with start_type_description_service false, have "
+          "none)");
     }
     return state_;
   }
@@ -162,11 +170,13 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     {
       continue;
     }
-    const auto& response = *static_cast<const tdi::srv::GetTypeDescription_Response*>(reply.response.get());
+    const auto& response =
+      *static_cast<const tdi::srv::GetTypeDescription_Response*>(reply.response.get());
     if (!response.successful)
     {
-      set_state(State::Failed, "the publisher " + node_ + " did not give the type description of " + ros_type_ +
-                                 ": " + clip_for_message(response.failure_reason));
+      set_state(State::Failed,
+        "the publisher " + node_ + " did not give the type description of " + ros_type_ + ": " +
+          clip_for_message(response.failure_reason));
       client_.reset();
       return state_;
     }
@@ -176,12 +186,14 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     client_.reset();
     if (!built)
     {
-      set_state(State::Failed, "the type description of " + ros_type_ + " from " + node_ + " is unusable: " + error);
+      set_state(State::Failed,
+        "the type description of " + ros_type_ + " from " + node_ + " is unusable: " + error);
       return state_;
     }
     if (built->ros_type != ros_type_)
     {
-      set_state(State::Failed, node_ + " described " + built->ros_type + " when asked for " + ros_type_);
+      set_state(
+        State::Failed, node_ + " described " + built->ros_type + " when asked for " + ros_type_);
       return state_;
     }
     type_ = built;

@@ -37,7 +37,8 @@ bool is_type_hash(const std::string& text)
   return true;
 }
 
-void to_message(const IndividualTypeDescriptionTable& table, tdi::msg::IndividualTypeDescription& message)
+void to_message(
+  const IndividualTypeDescriptionTable& table, tdi::msg::IndividualTypeDescription& message)
 {
   message.type_name = table.type_name;
   message.fields.resize(table.field_count);
@@ -102,8 +103,8 @@ TypeDescriptionData from_message(const tdi::msg::TypeDescription& message)
 }
 
 void answer_type_description_request(const NodeTypeCache& types,
-                                     const tdi::srv::GetTypeDescription_Request& request,
-                                     tdi::srv::GetTypeDescription_Response& response)
+  const tdi::srv::GetTypeDescription_Request& request,
+  tdi::srv::GetTypeDescription_Response& response)
 {
   response = tdi::srv::GetTypeDescription_Response();
   response.successful = false;
@@ -124,7 +125,8 @@ void answer_type_description_request(const NodeTypeCache& types,
   response.successful = true;
 }
 
-bool TypeDescriptionService::enabled(ParameterStore& parameters, bool default_value, std::string* error)
+bool TypeDescriptionService::enabled(
+  ParameterStore& parameters, bool default_value, std::string* error)
 {
   namespace rcl = ::ros2vtk::rcl_interfaces::msg;
   if (!parameters.has(kEnableParameter))
@@ -154,12 +156,12 @@ bool TypeDescriptionService::enabled(ParameterStore& parameters, bool default_va
   return value->bool_value;
 }
 
-std::unique_ptr<TypeDescriptionService> TypeDescriptionService::create(Participant& participant,
-                                                                       std::string* error)
+std::unique_ptr<TypeDescriptionService> TypeDescriptionService::create(
+  Participant& participant, std::string* error)
 {
   auto server = participant.create_service_server(
-    shipped_service_type("type_description_interfaces/srv/GetTypeDescription"), "~/get_type_description",
-    QoS::services(), error);
+    shipped_service_type("type_description_interfaces/srv/GetTypeDescription"),
+    "~/get_type_description", QoS::services(), error);
   if (!server)
   {
     return nullptr;
@@ -168,8 +170,8 @@ std::unique_ptr<TypeDescriptionService> TypeDescriptionService::create(Participa
     new TypeDescriptionService(participant.type_cache(), std::move(server)));
 }
 
-TypeDescriptionService::TypeDescriptionService(const NodeTypeCache& types,
-                                               std::unique_ptr<ServiceServer> server)
+TypeDescriptionService::TypeDescriptionService(
+  const NodeTypeCache& types, std::unique_ptr<ServiceServer> server)
   : types_(types)
   , server_(std::move(server))
 {
@@ -184,8 +186,8 @@ size_t TypeDescriptionService::process()
   for (const auto& request : requests)
   {
     tdi::srv::GetTypeDescription_Response response;
-    answer_type_description_request(
-      types_, *static_cast<const tdi::srv::GetTypeDescription_Request*>(request.request.get()), response);
+    answer_type_description_request(types_,
+      *static_cast<const tdi::srv::GetTypeDescription_Request*>(request.request.get()), response);
     server_->send_response(request.id, &response);
     ++answered_;
   }

@@ -55,7 +55,8 @@ public:
     max_serialized_type_size = 16 * 1024 * 1024;
     is_compute_key_provided = false;
   }
-  bool serialize(const void* const data, frtps::SerializedPayload_t& payload, fdds::DataRepresentationId_t) override
+  bool serialize(const void* const data, frtps::SerializedPayload_t& payload,
+    fdds::DataRepresentationId_t) override
   {
     const Bytes& bytes = *static_cast<const Bytes*>(data);
     if (payload.max_size < bytes.size())
@@ -75,7 +76,10 @@ public:
   }
   void* create_data() override { return new Bytes(); }
   void delete_data(void* data) override { delete static_cast<Bytes*>(data); }
-  bool compute_key(frtps::SerializedPayload_t&, frtps::InstanceHandle_t&, bool) override { return false; }
+  bool compute_key(frtps::SerializedPayload_t&, frtps::InstanceHandle_t&, bool) override
+  {
+    return false;
+  }
   bool compute_key(const void* const, frtps::InstanceHandle_t&, bool) override { return false; }
 };
 
@@ -128,11 +132,12 @@ Endpoints open(const std::string& ros_topic)
     domain ? std::atoi(domain) : 0, qos);
   fdds::TypeSupport type(new OpaqueType("sensor_msgs::msg::dds_::Image_"));
   type.register_type(e.participant);
-  e.topic = e.participant->create_topic("rt" + ros_topic, type.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
+  e.topic =
+    e.participant->create_topic("rt" + ros_topic, type.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
   return e;
 }
 
-template <typename Qos>
+template<typename Qos>
 void ros_qos(Qos& qos)
 {
   qos.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
@@ -156,7 +161,8 @@ public:
       const double received = now_seconds();
       int32_t sec = 0;
       uint32_t nanosec = 0;
-      std::memcpy(&sec, bytes.data() + 4, 4); // after the 4-byte encapsulation header, little endian
+      std::memcpy(
+        &sec, bytes.data() + 4, 4); // after the 4-byte encapsulation header, little endian
       std::memcpy(&nanosec, bytes.data() + 8, 4);
       std::lock_guard<std::mutex> lock(mutex);
       latencies.push_back(1000.0 * (received - (sec + 1e-9 * nanosec)));
@@ -201,12 +207,28 @@ int run_sub(const std::string& topic, double seconds, double idle)
 Bytes image_cdr(uint32_t width, uint32_t height)
 {
   Bytes b = { 0x00, 0x01, 0x00, 0x00 };
-  auto align = [&](size_t n) { while ((b.size() - 4) % n) b.push_back(0); };
-  auto u32 = [&](uint32_t v) { align(4); const uint8_t* p = reinterpret_cast<const uint8_t*>(&v); b.insert(b.end(), p, p + 4); };
-  auto text = [&](const char* s) { u32(static_cast<uint32_t>(std::strlen(s) + 1)); b.insert(b.end(), s, s + std::strlen(s) + 1); };
-  u32(0); u32(0); text("camera"); u32(height); u32(width); text("rgb8");
+  auto align = [&](size_t n) {
+    while ((b.size() - 4) % n)
+      b.push_back(0);
+  };
+  auto u32 = [&](uint32_t v) {
+    align(4);
+    const uint8_t* p = reinterpret_cast<const uint8_t*>(&v);
+    b.insert(b.end(), p, p + 4);
+  };
+  auto text = [&](const char* s) {
+    u32(static_cast<uint32_t>(std::strlen(s) + 1));
+    b.insert(b.end(), s, s + std::strlen(s) + 1);
+  };
+  u32(0);
+  u32(0);
+  text("camera");
+  u32(height);
+  u32(width);
+  text("rgb8");
   b.push_back(0); // is_bigendian
-  u32(width * 3); u32(width * 3 * height);
+  u32(width * 3);
+  u32(width * 3 * height);
   b.resize(b.size() + static_cast<size_t>(width) * 3 * height, 0x5a);
   return b;
 }
@@ -219,7 +241,9 @@ int run_pub(const std::string& topic, double rate, double seconds, uint32_t widt
   ros_qos(qos);
   fdds::DataWriter* writer = publisher->create_datawriter(e.topic, qos);
   fdds::PublicationMatchedStatus matched;
-  for (int i = 0; i < 200 && (writer->get_publication_matched_status(matched), matched.current_count == 0); ++i)
+  for (int i = 0;
+       i < 200 && (writer->get_publication_matched_status(matched), matched.current_count == 0);
+       ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   std::this_thread::sleep_for(std::chrono::milliseconds(500)); // the reader's side of discovery
   Bytes image = image_cdr(width, height);
@@ -239,7 +263,8 @@ int run_pub(const std::string& topic, double rate, double seconds, uint32_t widt
     next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
     std::this_thread::sleep_until(next);
   }
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::this_thread::sleep_for(std::chrono::seconds(1)); // let the last ones arrive
   std::printf("{\"sent\": %zu, \"rate\": %.2f}\n", sent, sent / elapsed);
   e.participant->delete_contained_entities();
@@ -253,7 +278,9 @@ int main(int argc, char** argv)
 {
   if (argc < 3)
   {
-    std::fprintf(stderr, "usage: fastdds3_probe sub|pub TOPIC [--seconds S] [--idle I] [--rate HZ] [--width W --height H]\n");
+    std::fprintf(stderr,
+      "usage: fastdds3_probe sub|pub TOPIC [--seconds S] [--idle I] [--rate HZ] [--width W "
+      "--height H]\n");
     return 2;
   }
   const std::string mode = argv[1];
@@ -262,8 +289,8 @@ int main(int argc, char** argv)
     return run_sub(topic, arg(argc, argv, "--seconds", 30), arg(argc, argv, "--idle", 3));
   if (mode == "pub")
     return run_pub(topic, arg(argc, argv, "--rate", 30), arg(argc, argv, "--seconds", 5),
-                   static_cast<uint32_t>(arg(argc, argv, "--width", 640)),
-                   static_cast<uint32_t>(arg(argc, argv, "--height", 480)));
+      static_cast<uint32_t>(arg(argc, argv, "--width", 640)),
+      static_cast<uint32_t>(arg(argc, argv, "--height", 480)));
   std::fprintf(stderr, "unknown mode '%s'\n", mode.c_str());
   return 2;
 }

@@ -14,8 +14,7 @@
 #include <string>
 #include <thread>
 
-namespace ros2vtk_test
-{
+namespace ros2vtk_test {
 
 /// Install with vtkOutputWindow::SetInstance in SetUp, reset to nullptr in TearDown.
 class CapturingOutputWindow : public vtkOutputWindow

@@ -47,7 +47,8 @@ bool find_action_members(const wire::ActionTypeSupport& type, ActionMembers& at,
   if (type.cancel_goal() != &action_msgs::srv::CancelGoal::type_support() ||
     type.status() != &action_msgs::msg::GoalStatusArray::type_support())
   {
-    *error = std::string("the table of ") + type.ros_type + " does not use ros2vtk's action_msgs types";
+    *error =
+      std::string("the table of ") + type.ros_type + " does not use ros2vtk's action_msgs types";
     return false;
   }
   const MessageTypeSupport* uuid = &unique_identifier_msgs::msg::UUID::type_support();
@@ -55,19 +56,23 @@ bool find_action_members(const wire::ActionTypeSupport& type, ActionMembers& at,
   const wire::ServiceTypeSupport& sendGoal = *type.send_goal();
   const wire::ServiceTypeSupport& getResult = *type.get_result();
   const MessageTypeSupport& feedback = *type.feedback_message();
-  return offset_of(*sendGoal.request(), "goal_id", FieldType::Message, uuid, at.SendGoalId, error) &&
-    offset_of(*sendGoal.request(), "goal", FieldType::Message, type.goal(), at.SendGoalGoal, error) &&
+  return offset_of(
+           *sendGoal.request(), "goal_id", FieldType::Message, uuid, at.SendGoalId, error) &&
+    offset_of(
+      *sendGoal.request(), "goal", FieldType::Message, type.goal(), at.SendGoalGoal, error) &&
     offset_of(*sendGoal.response(), "accepted", FieldType::Bool, nullptr, at.Accepted, error) &&
     offset_of(*sendGoal.response(), "stamp", FieldType::Message, time, at.AcceptedStamp, error) &&
     offset_of(*getResult.request(), "goal_id", FieldType::Message, uuid, at.GetResultId, error) &&
     offset_of(*getResult.response(), "status", FieldType::Int8, nullptr, at.ResultStatus, error) &&
-    offset_of(*getResult.response(), "result", FieldType::Message, type.result(), at.ResultResult, error) &&
+    offset_of(
+      *getResult.response(), "result", FieldType::Message, type.result(), at.ResultResult, error) &&
     offset_of(feedback, "goal_id", FieldType::Message, uuid, at.FeedbackId, error) &&
-    offset_of(feedback, "feedback", FieldType::Message, type.feedback(), at.FeedbackFeedback, error);
+    offset_of(
+      feedback, "feedback", FieldType::Message, type.feedback(), at.FeedbackFeedback, error);
 }
 
-bool find_action_endpoints(const wire::Participant& participant, const std::string& type, const std::string& action,
-  ActionEndpoints& endpoints, std::string* error)
+bool find_action_endpoints(const wire::Participant& participant, const std::string& type,
+  const std::string& action, ActionEndpoints& endpoints, std::string* error)
 {
   ActionEndpoints found;
   found.Type = wire::find_action_type(type, error);

@@ -19,17 +19,18 @@ namespace scene {
 
 struct ActionMembers
 {
-  size_t SendGoalId = 0, SendGoalGoal = 0; // X_SendGoal_Request
-  size_t Accepted = 0, AcceptedStamp = 0;  // X_SendGoal_Response
-  size_t GetResultId = 0;                  // X_GetResult_Request
-  size_t ResultStatus = 0, ResultResult = 0; // X_GetResult_Response
+  size_t SendGoalId = 0, SendGoalGoal = 0;     // X_SendGoal_Request
+  size_t Accepted = 0, AcceptedStamp = 0;      // X_SendGoal_Response
+  size_t GetResultId = 0;                      // X_GetResult_Request
+  size_t ResultStatus = 0, ResultResult = 0;   // X_GetResult_Response
   size_t FeedbackId = 0, FeedbackFeedback = 0; // X_FeedbackMessage
 };
 
 /// Fills `members` from `type`'s tables; false with `error` when a table does not have the
 /// members of rosidl's action synthesis, or does not use the action_msgs,
 /// unique_identifier_msgs and builtin_interfaces types of ros2vtk::Messages.
-bool find_action_members(const wire::ActionTypeSupport& type, ActionMembers& members, std::string* error);
+bool find_action_members(
+  const wire::ActionTypeSupport& type, ActionMembers& members, std::string* error);
 
 /// What an action client and its server agree on before creating their endpoints: the action's
 /// generated tables, its resolved name, where the synthesized members sit, and rcl_action's
@@ -47,17 +48,17 @@ struct ActionEndpoints
 
 /// Finds the action type `type` ("pkg/action/X" or "pkg/X"), resolves `action` on
 /// `participant` and fills `endpoints`; false with `error`.
-bool find_action_endpoints(const wire::Participant& participant, const std::string& type, const std::string& action,
-  ActionEndpoints& endpoints, std::string* error);
+bool find_action_endpoints(const wire::Participant& participant, const std::string& type,
+  const std::string& action, ActionEndpoints& endpoints, std::string* error);
 
 /// The member at `offset` of a message struct.
-template <typename T>
+template<typename T>
 T& member(void* message, size_t offset)
 {
   return *reinterpret_cast<T*>(static_cast<char*>(message) + offset);
 }
 
-template <typename T>
+template<typename T>
 const T& member(const void* message, size_t offset)
 {
   return *reinterpret_cast<const T*>(static_cast<const char*>(message) + offset);

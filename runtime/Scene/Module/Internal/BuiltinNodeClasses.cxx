@@ -18,7 +18,7 @@ namespace ros2vtk {
 namespace scene {
 
 namespace {
-template <typename T>
+template<typename T>
 vtkROS2SceneNode* create_node()
 {
   return T::New();
@@ -39,13 +39,18 @@ void register_builtin_node_classes(NodeClassRegistry& registry)
     { "", "vtkROS2ParameterNode", "", NodeDirection::Other, &create_node<vtkROS2ParameterNode> },
     { "", "vtkROS2TransformNode", "", NodeDirection::Other, &create_node<vtkROS2TransformNode> },
     { "", "vtkROS2Tf2LookupNode", "", NodeDirection::Other, &create_node<vtkROS2Tf2LookupNode> },
-    { "", "vtkROS2Tf2BroadcasterNode", "", NodeDirection::Other, &create_node<vtkROS2Tf2BroadcasterNode> },
+    { "", "vtkROS2Tf2BroadcasterNode", "", NodeDirection::Other,
+      &create_node<vtkROS2Tf2BroadcasterNode> },
     { "", "vtkROS2ModelNode", "", NodeDirection::Other, &create_node<vtkROS2ModelNode> },
     { "", "vtkROS2RobotNode", "", NodeDirection::Other, &create_node<vtkROS2RobotNode> },
-    { "", "vtkROS2ServiceClientNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceClientNode> },
-    { "", "vtkROS2ServiceServerNode", "", NodeDirection::Other, &create_node<vtkROS2ServiceServerNode> },
-    { "", "vtkROS2ActionClientNode", "", NodeDirection::Other, &create_node<vtkROS2ActionClientNode> },
-    { "", "vtkROS2ActionServerNode", "", NodeDirection::Other, &create_node<vtkROS2ActionServerNode> },
+    { "", "vtkROS2ServiceClientNode", "", NodeDirection::Other,
+      &create_node<vtkROS2ServiceClientNode> },
+    { "", "vtkROS2ServiceServerNode", "", NodeDirection::Other,
+      &create_node<vtkROS2ServiceServerNode> },
+    { "", "vtkROS2ActionClientNode", "", NodeDirection::Other,
+      &create_node<vtkROS2ActionClientNode> },
+    { "", "vtkROS2ActionServerNode", "", NodeDirection::Other,
+      &create_node<vtkROS2ActionServerNode> },
   };
   for (const auto& info : builtins)
   {

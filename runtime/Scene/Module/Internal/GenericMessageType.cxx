@@ -56,14 +56,16 @@ bool runtime_type_name(std::string& ros_type)
   while (true)
   {
     const size_t slash = ros_type.find('/', start);
-    parts.push_back(ros_type.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
+    parts.push_back(
+      ros_type.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
     if (slash == std::string::npos)
     {
       break;
     }
     start = slash + 1;
   }
-  if (parts.size() < 2 || parts.size() > 3 || (parts.size() == 3 && parts[1] != "msg") || ros_type.size() > 256)
+  if (parts.size() < 2 || parts.size() > 3 || (parts.size() == 3 && parts[1] != "msg") ||
+    ros_type.size() > 256)
   {
     return false;
   }

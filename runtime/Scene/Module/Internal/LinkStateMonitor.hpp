@@ -54,7 +54,7 @@ public:
   double alone_report_due(Clock::time_point now) const
   {
     if (participants_ > 0 || now - alone_since_ < quiet_after_ ||
-        (reported_alone_ && now - last_report_ < repeat_every_))
+      (reported_alone_ && now - last_report_ < repeat_every_))
     {
       return -1.0;
     }

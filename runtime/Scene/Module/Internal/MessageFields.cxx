@@ -47,7 +47,8 @@ bool parse_segment(const std::string& segment, std::string& name, bool& indexed,
     return false;
   }
   const std::string digits = segment.substr(open + 1, segment.size() - open - 2);
-  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+  if (digits.empty() || digits.size() > 9 ||
+    digits.find_first_not_of("0123456789") != std::string::npos)
   {
     return false;
   }
@@ -57,8 +58,8 @@ bool parse_segment(const std::string& segment, std::string& name, bool& indexed,
 
 /// Walks `path` ("a.b[2].c"); `message` may be nullptr to walk the types only (no bounds
 /// checks then). False and `error` naming the path when it leads nowhere.
-bool locate(const MessageTypeSupport& type, void* message, const std::string& path, Location& location,
-  std::string* error)
+bool locate(const MessageTypeSupport& type, void* message, const std::string& path,
+  Location& location, std::string* error)
 {
   auto fail = [&](const std::string& text) {
     if (error)
@@ -80,7 +81,8 @@ bool locate(const MessageTypeSupport& type, void* message, const std::string& pa
   while (true)
   {
     const size_t dot = path.find('.', start);
-    const std::string segment = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const std::string segment =
+      path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     std::string name;
     bool indexed = false;
     size_t index = 0;
@@ -100,7 +102,8 @@ bool locate(const MessageTypeSupport& type, void* message, const std::string& pa
     if (!found)
     {
       std::ostringstream text;
-      text << current_type->ros_type << " has no field '" << name << "' (path '" << path << "'; fields:";
+      text << current_type->ros_type << " has no field '" << name << "' (path '" << path
+           << "'; fields:";
       for (uint32_t i = 0; i < current_type->field_count; ++i)
       {
         text << ' ' << current_type->fields[i].name;
@@ -113,7 +116,8 @@ bool locate(const MessageTypeSupport& type, void* message, const std::string& pa
     {
       if (found->container == Container::None)
       {
-        return fail("'" + name + "' in path '" + path + "' is not an array or sequence: it has no index");
+        return fail(
+          "'" + name + "' in path '" + path + "' is not an array or sequence: it has no index");
       }
       if (member && index >= found->size(member))
       {
@@ -137,7 +141,8 @@ bool locate(const MessageTypeSupport& type, void* message, const std::string& pa
     }
     if (found->container != Container::None && !indexed)
     {
-      return fail("'" + name + "' in path '" + path + "' is a sequence of messages: pick one, " + name + "[i]");
+      return fail("'" + name + "' in path '" + path + "' is a sequence of messages: pick one, " +
+        name + "[i]");
     }
     current = member ? (indexed ? found->element(member, index) : member) : nullptr;
     current_type = found->nested();
@@ -145,7 +150,7 @@ bool locate(const MessageTypeSupport& type, void* message, const std::string& pa
   }
 }
 
-template <typename Int>
+template<typename Int>
 bool parse_integer(const std::string& text, Int& out)
 {
   errno = 0;
@@ -153,7 +158,8 @@ bool parse_integer(const std::string& text, Int& out)
   if (std::numeric_limits<Int>::is_signed)
   {
     const long long value = std::strtoll(text.c_str(), &end, 0);
-    if (errno || end == text.c_str() || *end || value < static_cast<long long>(std::numeric_limits<Int>::min()) ||
+    if (errno || end == text.c_str() || *end ||
+      value < static_cast<long long>(std::numeric_limits<Int>::min()) ||
       value > static_cast<long long>(std::numeric_limits<Int>::max()))
     {
       return false;
@@ -166,7 +172,8 @@ bool parse_integer(const std::string& text, Int& out)
     return false;
   }
   const unsigned long long value = std::strtoull(text.c_str(), &end, 0);
-  if (errno || end == text.c_str() || *end || value > static_cast<unsigned long long>(std::numeric_limits<Int>::max()))
+  if (errno || end == text.c_str() || *end ||
+    value > static_cast<unsigned long long>(std::numeric_limits<Int>::max()))
   {
     return false;
   }
@@ -188,13 +195,13 @@ bool parse_double(const std::string& text, double& out)
   return true;
 }
 
-template <typename T>
+template<typename T>
 T& at(void* message, size_t offset)
 {
   return *reinterpret_cast<T*>(static_cast<char*>(message) + offset);
 }
 
-template <typename T>
+template<typename T>
 const T& at(const void* message, size_t offset)
 {
   return *reinterpret_cast<const T*>(static_cast<const char*>(message) + offset);
@@ -215,7 +222,8 @@ void* value_address(const Location& location)
   return location.field->element(location.member, location.index);
 }
 
-bool is_single_value(const Location& location, const std::string& path, const char* how, std::string* error)
+bool is_single_value(
+  const Location& location, const std::string& path, const char* how, std::string* error)
 {
   if (!location.field)
   {
@@ -229,7 +237,8 @@ bool is_single_value(const Location& location, const std::string& path, const ch
   {
     if (error)
     {
-      *error = "field '" + path + "' is an array or sequence: name one element, " + path + "[i], " + how;
+      *error =
+        "field '" + path + "' is an array or sequence: name one element, " + path + "[i], " + how;
     }
     return false;
   }
@@ -251,7 +260,8 @@ bool set_field_from_text(const MessageTypeSupport& type, void* message, const st
   const std::string& value, std::string* error)
 {
   Location location;
-  if (!locate(type, message, path, location, error) || !is_single_value(location, path, "to set it", error))
+  if (!locate(type, message, path, location, error) ||
+    !is_single_value(location, path, "to set it", error))
   {
     return false;
   }
@@ -288,14 +298,30 @@ bool set_field_from_text(const MessageTypeSupport& type, void* message, const st
     }
     case FieldType::Byte:
     case FieldType::Char:
-    case FieldType::UInt8: ok = parse_integer(value, at<uint8_t>(target, 0)); break;
-    case FieldType::Int8: ok = parse_integer(value, at<int8_t>(target, 0)); break;
-    case FieldType::Int16: ok = parse_integer(value, at<int16_t>(target, 0)); break;
-    case FieldType::UInt16: ok = parse_integer(value, at<uint16_t>(target, 0)); break;
-    case FieldType::Int32: ok = parse_integer(value, at<int32_t>(target, 0)); break;
-    case FieldType::UInt32: ok = parse_integer(value, at<uint32_t>(target, 0)); break;
-    case FieldType::Int64: ok = parse_integer(value, at<int64_t>(target, 0)); break;
-    case FieldType::UInt64: ok = parse_integer(value, at<uint64_t>(target, 0)); break;
+    case FieldType::UInt8:
+      ok = parse_integer(value, at<uint8_t>(target, 0));
+      break;
+    case FieldType::Int8:
+      ok = parse_integer(value, at<int8_t>(target, 0));
+      break;
+    case FieldType::Int16:
+      ok = parse_integer(value, at<int16_t>(target, 0));
+      break;
+    case FieldType::UInt16:
+      ok = parse_integer(value, at<uint16_t>(target, 0));
+      break;
+    case FieldType::Int32:
+      ok = parse_integer(value, at<int32_t>(target, 0));
+      break;
+    case FieldType::UInt32:
+      ok = parse_integer(value, at<uint32_t>(target, 0));
+      break;
+    case FieldType::Int64:
+      ok = parse_integer(value, at<int64_t>(target, 0));
+      break;
+    case FieldType::UInt64:
+      ok = parse_integer(value, at<uint64_t>(target, 0));
+      break;
     case FieldType::Float32:
     {
       double parsed = 0;
@@ -304,21 +330,27 @@ bool set_field_from_text(const MessageTypeSupport& type, void* message, const st
         at<float>(target, 0) = static_cast<float>(parsed);
       break;
     }
-    case FieldType::Float64: ok = parse_double(value, at<double>(target, 0)); break;
+    case FieldType::Float64:
+      ok = parse_double(value, at<double>(target, 0));
+      break;
     case FieldType::String:
       if (field->string_bound && value.size() > field->string_bound)
       {
         if (error)
-          *error = "field '" + path + "' holds at most " + std::to_string(field->string_bound) + " characters";
+          *error = "field '" + path + "' holds at most " + std::to_string(field->string_bound) +
+            " characters";
         return false;
       }
       at<std::string>(target, 0) = value;
       break;
-    default: ok = false; break;
+    default:
+      ok = false;
+      break;
   }
   if (!ok && error)
   {
-    *error = "'" + value + "' does not fit field '" + path + "' (" + ros2vtk::wire::field_type_name(field->type) + ")";
+    *error = "'" + value + "' does not fit field '" + path + "' (" +
+      ros2vtk::wire::field_type_name(field->type) + ")";
   }
   return ok;
 }
@@ -339,30 +371,58 @@ bool get_field_as_text(const MessageTypeSupport& type, const void* message, cons
   switch (field->type)
   {
     case FieldType::Bool:
-      value = (source ? at<bool>(source, 0) : field->get_bool(location.member, location.index)) ? "true" : "false";
+      value = (source ? at<bool>(source, 0) : field->get_bool(location.member, location.index))
+        ? "true"
+        : "false";
       break;
     case FieldType::Byte:
     case FieldType::Char:
-    case FieldType::UInt8: value = std::to_string(at<uint8_t>(source, 0)); break;
-    case FieldType::Int8: value = std::to_string(at<int8_t>(source, 0)); break;
-    case FieldType::Int16: value = std::to_string(at<int16_t>(source, 0)); break;
-    case FieldType::UInt16: value = std::to_string(at<uint16_t>(source, 0)); break;
-    case FieldType::Int32: value = std::to_string(at<int32_t>(source, 0)); break;
-    case FieldType::UInt32: value = std::to_string(at<uint32_t>(source, 0)); break;
-    case FieldType::Int64: value = std::to_string(at<int64_t>(source, 0)); break;
-    case FieldType::UInt64: value = std::to_string(at<uint64_t>(source, 0)); break;
-    case FieldType::Float32: value = wire::format_yaml_float(at<float>(source, 0)); break;
-    case FieldType::Float64: value = wire::format_yaml_float(at<double>(source, 0)); break;
-    case FieldType::String: value = at<std::string>(source, 0); break;
-    case FieldType::Message: value = wire::to_yaml(*field->nested(), source); break;
-    default: value.clear(); break;
+    case FieldType::UInt8:
+      value = std::to_string(at<uint8_t>(source, 0));
+      break;
+    case FieldType::Int8:
+      value = std::to_string(at<int8_t>(source, 0));
+      break;
+    case FieldType::Int16:
+      value = std::to_string(at<int16_t>(source, 0));
+      break;
+    case FieldType::UInt16:
+      value = std::to_string(at<uint16_t>(source, 0));
+      break;
+    case FieldType::Int32:
+      value = std::to_string(at<int32_t>(source, 0));
+      break;
+    case FieldType::UInt32:
+      value = std::to_string(at<uint32_t>(source, 0));
+      break;
+    case FieldType::Int64:
+      value = std::to_string(at<int64_t>(source, 0));
+      break;
+    case FieldType::UInt64:
+      value = std::to_string(at<uint64_t>(source, 0));
+      break;
+    case FieldType::Float32:
+      value = wire::format_yaml_float(at<float>(source, 0));
+      break;
+    case FieldType::Float64:
+      value = wire::format_yaml_float(at<double>(source, 0));
+      break;
+    case FieldType::String:
+      value = at<std::string>(source, 0);
+      break;
+    case FieldType::Message:
+      value = wire::to_yaml(*field->nested(), source);
+      break;
+    default:
+      value.clear();
+      break;
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool describe_field(const MessageTypeSupport& type, const std::string& path, FieldDescription& description,
-  std::string* error)
+bool describe_field(const MessageTypeSupport& type, const std::string& path,
+  FieldDescription& description, std::string* error)
 {
   Location location;
   if (!locate(type, nullptr, path, location, error))
@@ -381,7 +441,9 @@ bool describe_field(const MessageTypeSupport& type, const std::string& path, Fie
   description.name = field.name;
   description.is_message = field.type == FieldType::Message;
   description.nested = description.is_message ? field.nested() : nullptr;
-  description.element_type_name = description.is_message ? description.nested->ros_type : ros2vtk::wire::field_type_name(field.type);
+  description.element_type_name = description.is_message
+    ? description.nested->ros_type
+    : ros2vtk::wire::field_type_name(field.type);
   if (field.string_bound)
   {
     description.element_type_name += "<=" + std::to_string(field.string_bound);
@@ -393,17 +455,23 @@ bool describe_field(const MessageTypeSupport& type, const std::string& path, Fie
     description.is_fixed_size = field.container == Container::Array;
     switch (field.container)
     {
-      case Container::Array: description.type_name += "[" + std::to_string(field.array_size) + "]"; break;
-      case Container::BoundedSequence: description.type_name += "[<=" + std::to_string(field.array_size) + "]"; break;
-      default: description.type_name += "[]"; break;
+      case Container::Array:
+        description.type_name += "[" + std::to_string(field.array_size) + "]";
+        break;
+      case Container::BoundedSequence:
+        description.type_name += "[<=" + std::to_string(field.array_size) + "]";
+        break;
+      default:
+        description.type_name += "[]";
+        break;
     }
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool list_fields(const MessageTypeSupport& type, const std::string& path, std::vector<FieldDescription>& fields,
-  std::string* error)
+bool list_fields(const MessageTypeSupport& type, const std::string& path,
+  std::vector<FieldDescription>& fields, std::string* error)
 {
   FieldDescription owner;
   if (!describe_field(type, path, owner, error))
@@ -426,7 +494,8 @@ bool list_fields(const MessageTypeSupport& type, const std::string& path, std::v
       continue;
     }
     FieldDescription field;
-    const std::string child = path.empty() ? owner.nested->fields[i].name : path + "." + owner.nested->fields[i].name;
+    const std::string child =
+      path.empty() ? owner.nested->fields[i].name : path + "." + owner.nested->fields[i].name;
     if (!describe_field(type, child, field, error))
     {
       return false;
@@ -458,8 +527,8 @@ bool get_field_length(const MessageTypeSupport& type, const void* message, const
 }
 
 //------------------------------------------------------------------------------
-bool resize_field(const MessageTypeSupport& type, void* message, const std::string& path, size_t length,
-  std::string* error)
+bool resize_field(const MessageTypeSupport& type, void* message, const std::string& path,
+  size_t length, std::string* error)
 {
   Location location;
   if (!locate(type, message, path, location, error))
@@ -481,8 +550,8 @@ bool resize_field(const MessageTypeSupport& type, void* message, const std::stri
     if (error)
     {
       *error = "field '" + path + "' holds " +
-        (field->container == Container::Array ? "exactly " : "at most ") + std::to_string(field->array_size) +
-        " elements, not " + std::to_string(length);
+        (field->container == Container::Array ? "exactly " : "at most ") +
+        std::to_string(field->array_size) + " elements, not " + std::to_string(length);
     }
     return false;
   }
@@ -521,7 +590,8 @@ void* locate_message(const MessageTypeSupport& type, void* message, const std::s
     return nullptr;
   }
   found_type = location.field->nested();
-  return location.indexed ? location.field->element(location.member, location.index) : location.member;
+  return location.indexed ? location.field->element(location.member, location.index)
+                          : location.member;
 }
 
 } // namespace scene

@@ -25,7 +25,8 @@ namespace scene {
 namespace {
 const char* const JointStateType = "sensor_msgs/msg/JointState";
 const char* const OwnerAttribute = "ros2vtk.jointStatesOfRobot";
-const char* const LinkPoseAttribute = "ros2vtk.linkPose"; // a LinkPoseStatus word, read by the display
+const char* const LinkPoseAttribute =
+  "ros2vtk.linkPose"; // a LinkPoseStatus word, read by the display
 
 std::string JoinNames(const std::vector<std::string>& names)
 {
@@ -67,7 +68,8 @@ bool RobotJointStateDriver::Load(const std::string& urdfXml, std::string* error)
     const SetResult result = kinematics->set_position(pending.first, pending.second);
     if (result != SetResult::Applied && result != SetResult::Clamped)
     {
-      this->Warnings.push_back("SetJointPosition('" + pending.first + "') before the load: the robot has no such "
+      this->Warnings.push_back("SetJointPosition('" + pending.first +
+        "') before the load: the robot has no such "
         "joint taking a position; ignored");
     }
   }
@@ -97,7 +99,8 @@ std::vector<std::string> RobotJointStateDriver::GetJointNames() const
   return this->Kinematics ? this->Kinematics->joint_names() : std::vector<std::string>();
 }
 
-bool RobotJointStateDriver::SetJointPosition(const std::string& joint, double value, std::string* why)
+bool RobotJointStateDriver::SetJointPosition(
+  const std::string& joint, double value, std::string* why)
 {
   using SetResult = ros2vtk::robot::JointStateKinematics::SetResult;
   if (!this->Kinematics)
@@ -119,10 +122,12 @@ bool RobotJointStateDriver::SetJointPosition(const std::string& joint, double va
       this->LatestStamp = 0; // set by a script: stamped with the node clock
       return true;
     case SetResult::UnknownJoint:
-      *why = "no joint '" + joint + "' (joints: " + JoinNames(this->Kinematics->joint_names()) + ")";
+      *why =
+        "no joint '" + joint + "' (joints: " + JoinNames(this->Kinematics->joint_names()) + ")";
       return false;
     case SetResult::NotActuated:
-      *why = "joint '" + joint + "' takes no position (fixed, or a mimic joint that follows its leader)";
+      *why =
+        "joint '" + joint + "' takes no position (fixed, or a mimic joint that follows its leader)";
       return false;
     case SetResult::NotFinite:
       *why = "joint '" + joint + "': the position is not a finite number";
@@ -138,7 +143,8 @@ double RobotJointStateDriver::GetJointPosition(const std::string& joint) const
   {
     return pending->second;
   }
-  return this->Kinematics ? this->Kinematics->position(joint) : std::numeric_limits<double>::quiet_NaN();
+  return this->Kinematics ? this->Kinematics->position(joint)
+                          : std::numeric_limits<double>::quiet_NaN();
 }
 
 void RobotJointStateDriver::ResetJointPositions()
@@ -154,8 +160,8 @@ void RobotJointStateDriver::ResetJointPositions()
 }
 
 //------------------------------------------------------------------------------
-bool RobotJointStateDriver::SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic,
-                                                const std::string& owner, std::string* error)
+bool RobotJointStateDriver::SetJointStatesTopic(
+  vtkROS2NodeNode* rosNode, const std::string& topic, const std::string& owner, std::string* error)
 {
   this->Owner = owner;
   if (topic == this->Topic && (topic.empty() || this->Subscriber))
@@ -188,12 +194,14 @@ bool RobotJointStateDriver::SetJointStatesTopic(vtkROS2NodeNode* rosNode, const 
   }
   else if (std::string(subscriber->GetROSType()) != JointStateType)
   {
-    *error = "'" + topic + "' is subscribed already with type " + subscriber->GetROSType() + ", not " + JointStateType;
+    *error = "'" + topic + "' is subscribed already with type " + subscriber->GetROSType() +
+      ", not " + JointStateType;
     return false;
   }
   const char* tag = subscriber->GetAttribute(OwnerAttribute);
   this->Subscriber = subscriber;
-  this->OwnsSubscriber = owns || (tag && !owner.empty() && owner == tag); // ours, restored with the scene
+  this->OwnsSubscriber =
+    owns || (tag && !owner.empty() && owner == tag); // ours, restored with the scene
   this->MessagesSeen = subscriber->GetNumberOfMessages();
   this->Topic = subscriber->GetTopic();
   return true;
@@ -203,7 +211,7 @@ void RobotJointStateDriver::ReleaseJointStatesTopic(vtkROS2NodeNode* rosNode)
 {
   vtkROS2SubscriberNode* subscriber = this->Subscriber;
   if (subscriber && this->OwnsSubscriber && rosNode &&
-      rosNode->GetSubscriberNodeByTopic(subscriber->GetTopic()) == subscriber)
+    rosNode->GetSubscriberNodeByTopic(subscriber->GetTopic()) == subscriber)
   {
     rosNode->RemoveAndDeleteSubscriberNode(subscriber->GetTopic());
   }
@@ -257,7 +265,7 @@ void RobotJointStateDriver::ReadJointStates(vtkROS2NodeNode* rosNode)
     names->Reset();
     positions->Reset();
     if (!this->Message->GetFieldAsStringArray("name", names) ||
-        !this->Message->GetFieldAsArray("position", positions))
+      !this->Message->GetFieldAsArray("position", positions))
     {
       continue;
     }
@@ -271,7 +279,8 @@ void RobotJointStateDriver::ReadJointStates(vtkROS2NodeNode* rosNode)
     {
       positionList[static_cast<size_t>(n)] = positions->GetValue(n);
     }
-    const ros2vtk::robot::JointStateReport report = this->Kinematics->apply_joint_state(nameList, positionList);
+    const ros2vtk::robot::JointStateReport report =
+      this->Kinematics->apply_joint_state(nameList, positionList);
     if (!report.accepted)
     {
       ++this->JointStatesRefused;
@@ -290,7 +299,8 @@ void RobotJointStateDriver::ReadJointStates(vtkROS2NodeNode* rosNode)
       if (this->ReportedUnknownJoints.insert(unknown).second)
       {
         this->Warnings.push_back("joint states on '" + this->Topic + "' name '" + unknown +
-          "', which is no joint of this robot taking a position (unknown, fixed or mimic): ignored (said once)");
+          "', which is no joint of this robot taking a position (unknown, fixed or mimic): ignored "
+          "(said once)");
       }
     }
     if (!report.not_finite.empty() && firstNonFinite.empty())
@@ -314,8 +324,8 @@ void RobotJointStateDriver::ReadJointStates(vtkROS2NodeNode* rosNode)
 }
 
 //------------------------------------------------------------------------------
-void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string& fixedFrame,
-                                       const std::string& tfPrefix, bool* changed)
+void RobotJointStateDriver::PlaceLinks(
+  const LinkNodes& links, const std::string& fixedFrame, const std::string& tfPrefix, bool* changed)
 {
   if (this->PosesDirty || fixedFrame != this->PosesFixedFrame)
   {
@@ -337,7 +347,8 @@ void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string
       const Eigen::Isometry3d pose = fixedFromRoot * entry.second;
       std::vector<double>& m = this->LinkMatricesMillimetres[entry.first];
       m.resize(16);
-      ros2vtk::convert::isometry_to_elements(pose, ros2vtk::convert::kMillimetresPerMetre, m.data());
+      ros2vtk::convert::isometry_to_elements(
+        pose, ros2vtk::convert::kMillimetresPerMetre, m.data());
     }
     this->PosesFixedFrame = fixedFrame;
     this->PosesDirty = false;
@@ -360,7 +371,9 @@ void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string
     }
     vtkROS2Tf2LookupNode* lookup = last.Lookup;
     const bool tracked = lookup && std::strcmp(lookup->GetLookupStatus(), "ok") == 0;
-    const char* status = !lookup ? LinkPoseStatus::FixedFrame : tracked ? LinkPoseStatus::Tf : placed;
+    const char* status = !lookup ? LinkPoseStatus::FixedFrame
+      : tracked                  ? LinkPoseStatus::Tf
+                                 : placed;
     if (status != last.Status)
     {
       this->LinkStatus[entry.first] = status;
@@ -389,8 +402,10 @@ void RobotJointStateDriver::PlaceLinks(const LinkNodes& links, const std::string
 //------------------------------------------------------------------------------
 void RobotJointStateDriver::Broadcast(vtkROS2NodeNode* rosNode, const std::string& tfPrefix)
 {
-  const std::vector<ros2vtk::robot::LinkTransform> transforms = this->Kinematics->joint_transforms();
-  const std::int64_t stamp = this->LatestStamp != 0 ? this->LatestStamp : rosNode->GetNodeTimeNanoseconds();
+  const std::vector<ros2vtk::robot::LinkTransform> transforms =
+    this->Kinematics->joint_transforms();
+  const std::int64_t stamp =
+    this->LatestStamp != 0 ? this->LatestStamp : rosNode->GetNodeTimeNanoseconds();
   std::vector<ros2vtk::tf2::TransformStamped> moving;
   std::vector<ros2vtk::tf2::TransformStamped> fixed;
   for (const ros2vtk::robot::LinkTransform& link : transforms)
@@ -408,7 +423,8 @@ void RobotJointStateDriver::Broadcast(vtkROS2NodeNode* rosNode, const std::strin
     ros2vtk::tf2_ros::TransformBroadcaster* broadcaster = rosNode->GetTf2Broadcaster(true);
     if (!broadcaster || !broadcaster->send(fixed, &error))
     {
-      this->Warnings.push_back("could not broadcast the robot's fixed joints on /tf_static: " + error);
+      this->Warnings.push_back(
+        "could not broadcast the robot's fixed joints on /tf_static: " + error);
     }
   }
   this->StaticPublished = true;
@@ -424,8 +440,8 @@ void RobotJointStateDriver::Broadcast(vtkROS2NodeNode* rosNode, const std::strin
 }
 
 //------------------------------------------------------------------------------
-bool RobotJointStateDriver::Update(vtkROS2NodeNode* rosNode, const LinkNodes& links, const std::string& fixedFrame,
-                                   const std::string& tfPrefix)
+bool RobotJointStateDriver::Update(vtkROS2NodeNode* rosNode, const LinkNodes& links,
+  const std::string& fixedFrame, const std::string& tfPrefix)
 {
   if (!this->Kinematics)
   {

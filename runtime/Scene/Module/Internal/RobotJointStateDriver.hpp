@@ -74,12 +74,13 @@ public:
   /// Follows sensor_msgs/JointState on `topic` ("" stops). The subscriber is the ROS node's
   /// own (shared with a script's subscriber of the same topic, created when there is none and
   /// then tagged with `owner`, so that it is still known as ours after a scene is restored).
-  bool SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic, const std::string& owner,
-                           std::string* error);
+  bool SetJointStatesTopic(vtkROS2NodeNode* rosNode, const std::string& topic,
+    const std::string& owner, std::string* error);
   const std::string& GetJointStatesTopic() const { return this->Topic; }
   /// Drops the subscriber this driver created (the robot leaves the scene).
   void ReleaseJointStatesTopic(vtkROS2NodeNode* rosNode);
-  /// JointState messages applied (accepted, even partly) and refused so far; why the latest refusal.
+  /// JointState messages applied (accepted, even partly) and refused so far; why the latest
+  /// refusal.
   std::int64_t GetNumberOfJointStatesApplied() const { return this->JointStatesApplied; }
   std::int64_t GetNumberOfJointStatesRefused() const { return this->JointStatesRefused; }
   const std::string& GetLastJointStateError() const { return this->LastJointStateError; }
@@ -91,7 +92,7 @@ public:
   /// (relative to `fixedFrame` when it is one of the links, else with the root link at the fixed
   /// frame), broadcasts tf when asked. Returns whether anything changed.
   bool Update(vtkROS2NodeNode* rosNode, const LinkNodes& links, const std::string& fixedFrame,
-              const std::string& tfPrefix);
+    const std::string& tfPrefix);
 
   /// The latest status of a link's pose (LinkPoseStatus words); "" for an unknown link.
   std::string GetLinkPoseStatus(const std::string& link) const;
@@ -101,7 +102,8 @@ public:
 
 private:
   void ReadJointStates(vtkROS2NodeNode* rosNode);
-  void PlaceLinks(const LinkNodes& links, const std::string& fixedFrame, const std::string& tfPrefix, bool* changed);
+  void PlaceLinks(const LinkNodes& links, const std::string& fixedFrame,
+    const std::string& tfPrefix, bool* changed);
   void Broadcast(vtkROS2NodeNode* rosNode, const std::string& tfPrefix);
 
   std::unique_ptr<ros2vtk::robot::JointStateKinematics> Kinematics;
@@ -135,9 +137,10 @@ private:
   RateLimitedReport RefusedReport{ std::chrono::seconds(5) };
 
   bool PublishTf = false;
-  bool PublishDue = false;       // positions changed (or a joint state came) since the last broadcast
-  bool StaticPublished = false;  // fixed joints went to /tf_static for this load
-  std::int64_t LatestStamp = 0;  // header stamp of the latest joint state (ns), 0: use the node clock
+  bool PublishDue = false; // positions changed (or a joint state came) since the last broadcast
+  bool StaticPublished = false; // fixed joints went to /tf_static for this load
+  std::int64_t LatestStamp =
+    0; // header stamp of the latest joint state (ns), 0: use the node clock
 
   std::vector<std::string> Warnings;
 };

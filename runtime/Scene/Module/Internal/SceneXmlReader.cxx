@@ -44,7 +44,8 @@ bool CheckLimits(const tinyxml2::XMLElement* root, const SceneXmlLimits& limits,
     }
     if (depth > limits.max_depth)
     {
-      return Fail(error, "elements nested deeper than " + std::to_string(limits.max_depth) + " (line " +
+      return Fail(error,
+        "elements nested deeper than " + std::to_string(limits.max_depth) + " (line " +
           std::to_string(element->GetLineNum()) + ")");
     }
     std::size_t attributes = 0;
@@ -52,7 +53,8 @@ bool CheckLimits(const tinyxml2::XMLElement* root, const SceneXmlLimits& limits,
     {
       if (++attributes > limits.max_attributes_per_element)
       {
-        return Fail(error, "element <" + wire::clip_for_message(element->Name(), 80) + "> on line " +
+        return Fail(error,
+          "element <" + wire::clip_for_message(element->Name(), 80) + "> on line " +
             std::to_string(element->GetLineNum()) + " has more than " +
             std::to_string(limits.max_attributes_per_element) + " attributes");
       }
@@ -75,19 +77,21 @@ std::string Repaired(const char* text)
 
 } // namespace
 
-vtkSmartPointer<vtkXMLDataElement> ReadSceneXml(const std::string& text, std::string* error,
-  const SceneXmlLimits& limits)
+vtkSmartPointer<vtkXMLDataElement> ReadSceneXml(
+  const std::string& text, std::string* error, const SceneXmlLimits& limits)
 {
   if (text.size() > limits.max_bytes)
   {
-    Fail(error, "the document is " + std::to_string(text.size()) + " bytes, over the limit of " +
+    Fail(error,
+      "the document is " + std::to_string(text.size()) + " bytes, over the limit of " +
         std::to_string(limits.max_bytes));
     return nullptr;
   }
   tinyxml2::XMLDocument document(true, tinyxml2::PRESERVE_WHITESPACE);
   if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
   {
-    Fail(error, "not a well-formed XML document (" +
+    Fail(error,
+      "not a well-formed XML document (" +
         wire::clip_for_message(Repaired(document.ErrorStr()), 300) + ")");
     return nullptr;
   }
@@ -103,7 +107,8 @@ vtkSmartPointer<vtkXMLDataElement> ReadSceneXml(const std::string& text, std::st
   }
   // Within the limits: the VTK tree, breadth of one explicit stack instead of recursion.
   auto result = vtkSmartPointer<vtkXMLDataElement>::New();
-  std::vector<std::pair<const tinyxml2::XMLElement*, vtkXMLDataElement*>> pending{ { root, result } };
+  std::vector<std::pair<const tinyxml2::XMLElement*, vtkXMLDataElement*>> pending{ { root,
+    result } };
   while (!pending.empty())
   {
     const auto [source, target] = pending.back();
@@ -129,8 +134,8 @@ vtkSmartPointer<vtkXMLDataElement> ReadSceneXml(const std::string& text, std::st
   return result;
 }
 
-bool ReadSceneXmlFile(const char* path, std::string* text, std::string* error,
-  const SceneXmlLimits& limits)
+bool ReadSceneXmlFile(
+  const char* path, std::string* text, std::string* error, const SceneXmlLimits& limits)
 {
   std::error_code ec;
   const auto bytes = std::filesystem::file_size(path, ec);
@@ -140,8 +145,9 @@ bool ReadSceneXmlFile(const char* path, std::string* text, std::string* error,
   }
   if (bytes > limits.max_bytes)
   {
-    return Fail(error, std::string("'") + path + "' is " + std::to_string(bytes) +
-        " bytes, over the limit of " + std::to_string(limits.max_bytes));
+    return Fail(error,
+      std::string("'") + path + "' is " + std::to_string(bytes) + " bytes, over the limit of " +
+        std::to_string(limits.max_bytes));
   }
   std::ifstream file(path, std::ios::binary);
   std::ostringstream contents;

@@ -27,8 +27,8 @@ struct SceneXmlLimits
 };
 
 /// The element tree of `text`, or nullptr with `error` naming the first limit or syntax error.
-vtkSmartPointer<vtkXMLDataElement> ReadSceneXml(const std::string& text, std::string* error,
-  const SceneXmlLimits& limits = SceneXmlLimits());
+vtkSmartPointer<vtkXMLDataElement> ReadSceneXml(
+  const std::string& text, std::string* error, const SceneXmlLimits& limits = SceneXmlLimits());
 
 /// The contents of `path`, refused before reading when larger than limits.max_bytes.
 bool ReadSceneXmlFile(const char* path, std::string* text, std::string* error,

@@ -4,8 +4,7 @@
 // static initializers in a static library are not linked unless referenced.
 #include "ros2vtk/ros2vtkMessagesRegister.hpp" // ros2vtk_register_ros2vtkMessages_types()
 
-namespace
-{
+namespace {
 struct RegisterShippedMessageTypes
 {
   RegisterShippedMessageTypes() { ros2vtk_register_ros2vtkMessages_types(); }

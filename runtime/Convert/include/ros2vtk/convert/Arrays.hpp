@@ -39,8 +39,8 @@ struct NumberLimits
 
 /// VTK -> ROS: every value of the array (tuples x components, in memory order), finite and
 /// within `limits`. On failure `values` is untouched.
-bool array_to_numbers(vtkDataArray* array, const NumberLimits& limits, std::vector<double>* values,
-  std::string* error);
+bool array_to_numbers(
+  vtkDataArray* array, const NumberLimits& limits, std::vector<double>* values, std::string* error);
 
 } // namespace convert
 } // namespace ros2vtk

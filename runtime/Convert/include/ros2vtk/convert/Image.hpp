@@ -48,8 +48,8 @@ bool image_to_vtk(const ImageLayout& layout, const uint8_t* data, size_t data_si
   vtkImageData* image, std::string* error);
 
 /// Same, for the message's byte vector.
-bool image_to_vtk(const ImageLayout& layout, const std::vector<uint8_t>& data,
-  vtkImageData* image, std::string* error);
+bool image_to_vtk(const ImageLayout& layout, const std::vector<uint8_t>& data, vtkImageData* image,
+  std::string* error);
 
 /// VTK -> ROS. `encoding` empty: chosen from the scalar type and number of components
 /// (unsigned char 1/3/4 -> mono8/rgb8/rgba8, unsigned short 1/3/4 -> mono16/rgb16/rgba16,

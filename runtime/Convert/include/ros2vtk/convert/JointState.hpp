@@ -28,9 +28,9 @@ struct JointStateArrays
 /// ROS -> VTK. Every non-empty array must have the same length (that of the longest one); the
 /// message names the array that does not. The table's columns are replaced; on error the table
 /// is untouched.
-bool joint_state_to_table(const std::vector<std::string>& name,
-  const std::vector<double>& position, const std::vector<double>& velocity,
-  const std::vector<double>& effort, vtkTable* table, std::string* error);
+bool joint_state_to_table(const std::vector<std::string>& name, const std::vector<double>& position,
+  const std::vector<double>& velocity, const std::vector<double>& effort, vtkTable* table,
+  std::string* error);
 
 /// VTK -> ROS. Reads the four columns by name (a missing column gives an empty array; other
 /// columns are ignored). "name" must be a vtkStringArray, the others one-component numeric

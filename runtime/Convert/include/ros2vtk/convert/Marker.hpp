@@ -19,14 +19,14 @@ namespace convert {
 
 enum class MarkerShape
 {
-  Arrow,     ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z
-  Cube,      ///< side lengths scale.x, y, z
-  Sphere,    ///< diameters scale.x, y, z
-  Cylinder,  ///< along +z: diameters scale.x, y, height scale.z
-  LineStrip, ///< `points` (in the marker's frame) joined by one polyline
-  Points,    ///< `points` as vertices
-  LineList,  ///< `points` in pairs, each pair one line segment (an odd count is refused)
-  CubeList,  ///< a cube of side lengths scale.x, y, z centred on each of `points`
+  Arrow,      ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z
+  Cube,       ///< side lengths scale.x, y, z
+  Sphere,     ///< diameters scale.x, y, z
+  Cylinder,   ///< along +z: diameters scale.x, y, height scale.z
+  LineStrip,  ///< `points` (in the marker's frame) joined by one polyline
+  Points,     ///< `points` as vertices
+  LineList,   ///< `points` in pairs, each pair one line segment (an odd count is refused)
+  CubeList,   ///< a cube of side lengths scale.x, y, z centred on each of `points`
   SphereList, ///< a sphere of diameters scale.x, y, z centred on each of `points`
   Unsupported,
 };
@@ -45,14 +45,14 @@ struct Marker
 /// the shape. The poly data gets the surface (or line, or vertices) and an unsigned char RGBA
 /// point array "Color" (set as its scalars). Unsupported shapes, a zero or non-finite size of a
 /// solid shape, or a non-unit quaternion are refused; the output is then untouched.
-bool marker_to_poly_data(const Marker& marker, double length_scale, vtkPolyData* poly_data,
-  std::string* error);
+bool marker_to_poly_data(
+  const Marker& marker, double length_scale, vtkPolyData* poly_data, std::string* error);
 
 /// VTK -> ROS: a poly data with one line cell becomes a LineStrip of the points along it,
 /// anything else Points of all its points; identity pose, scale 1 VTK unit (1 mm when scaled)
 /// and the colour of the first tuple of its "Color" array (opaque white without one).
-bool poly_data_to_marker(vtkPolyData* poly_data, double length_scale, Marker* marker,
-  std::string* error);
+bool poly_data_to_marker(
+  vtkPolyData* poly_data, double length_scale, Marker* marker, std::string* error);
 
 /// The markers a display keeps, as RViz does for a MarkerArray topic: each marker under its
 /// (namespace, id), replaced by a later ADD of the same key, dropped by DELETE of that key, all

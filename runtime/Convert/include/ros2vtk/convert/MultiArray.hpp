@@ -65,10 +65,10 @@ bool multi_array_to_table(const MultiArrayLayout& layout, const std::vector<doub
 /// row-major order. Every column must be a one-component numeric vtkDataArray with the table's
 /// row count. For int64 data, floating-point columns must hold whole numbers in int64 range.
 /// Non-finite values are rejected for int64 and passed through for double.
-bool table_to_multi_array(vtkTable* table, MultiArrayLayout* layout, std::vector<int64_t>* data,
-  std::string* error);
-bool table_to_multi_array(vtkTable* table, MultiArrayLayout* layout, std::vector<double>* data,
-  std::string* error);
+bool table_to_multi_array(
+  vtkTable* table, MultiArrayLayout* layout, std::vector<int64_t>* data, std::string* error);
+bool table_to_multi_array(
+  vtkTable* table, MultiArrayLayout* layout, std::vector<double>* data, std::string* error);
 
 /// Int64MultiArray / Float64MultiArray -> 1-D array: with 0 or 1 dims a one-component array
 /// (named from dim[0].label when there is one); with 2 dims an array of dim[0].size tuples of
@@ -81,10 +81,10 @@ bool multi_array_to_array(const MultiArrayLayout& layout, const std::vector<doub
 /// Data array -> multi-array. One component: one dim {array name, n, n}; k > 1 components: two
 /// dims {name, n, n*k}, {"components", k, k}. Any numeric array type is accepted (int64 output
 /// applies the same whole-number rule as table_to_multi_array).
-bool array_to_multi_array(vtkDataArray* array, MultiArrayLayout* layout,
-  std::vector<int64_t>* data, std::string* error);
-bool array_to_multi_array(vtkDataArray* array, MultiArrayLayout* layout,
-  std::vector<double>* data, std::string* error);
+bool array_to_multi_array(
+  vtkDataArray* array, MultiArrayLayout* layout, std::vector<int64_t>* data, std::string* error);
+bool array_to_multi_array(
+  vtkDataArray* array, MultiArrayLayout* layout, std::vector<double>* data, std::string* error);
 
 } // namespace convert
 } // namespace ros2vtk

@@ -37,10 +37,10 @@ bool xyz_to_points(const std::vector<double>& xyz, double length_scale, NonFinit
   vtkPoints* points, std::string* error);
 
 /// vtkPoints -> flat triples in ROS units (any vtkPoints precision; float output rounds).
-bool points_to_xyz(vtkPoints* points, double length_scale, std::vector<float>* xyz,
-  std::string* error);
-bool points_to_xyz(vtkPoints* points, double length_scale, std::vector<double>* xyz,
-  std::string* error);
+bool points_to_xyz(
+  vtkPoints* points, double length_scale, std::vector<float>* xyz, std::string* error);
+bool points_to_xyz(
+  vtkPoints* points, double length_scale, std::vector<double>* xyz, std::string* error);
 
 } // namespace convert
 } // namespace ros2vtk

@@ -24,7 +24,7 @@ namespace convert {
 /// The numbers of a geometry_msgs Pose / Transform, in ROS units.
 struct RigidPose
 {
-  std::array<double, 3> translation{ { 0.0, 0.0, 0.0 } }; ///< metres
+  std::array<double, 3> translation{ { 0.0, 0.0, 0.0 } };   ///< metres
   std::array<double, 4> rotation{ { 0.0, 0.0, 0.0, 1.0 } }; ///< quaternion x, y, z, w
 };
 
@@ -40,24 +40,23 @@ constexpr double kBottomRowTolerance = 1e-9;
 
 /// ROS -> VTK. Rejects non-finite numbers and quaternions too far from unit length; normalises
 /// the others. Translation is multiplied by length_scale.
-bool pose_to_matrix(const RigidPose& pose, double length_scale, vtkMatrix4x4* matrix,
-  std::string* error);
+bool pose_to_matrix(
+  const RigidPose& pose, double length_scale, vtkMatrix4x4* matrix, std::string* error);
 
 /// VTK -> ROS. Rejects null or non-finite matrices, a bottom row other than 0 0 0 1 and
 /// rotations with scale/shear beyond kRotationOrthogonalityTolerance (or a reflection). The
 /// rotation part is re-orthonormalised (nearest rotation, by SVD) before it becomes a quaternion,
 /// which is returned with w >= 0 so the result is unique. Translation is divided by length_scale.
-bool matrix_to_pose(vtkMatrix4x4* matrix, double length_scale, RigidPose* pose,
-  std::string* error);
+bool matrix_to_pose(vtkMatrix4x4* matrix, double length_scale, RigidPose* pose, std::string* error);
 
 /// Same as pose_to_matrix, for a vtkTransform (its matrix is replaced; its input and
 /// concatenation are cleared by vtkTransform::SetMatrix).
-bool pose_to_transform(const RigidPose& pose, double length_scale, vtkTransform* transform,
-  std::string* error);
+bool pose_to_transform(
+  const RigidPose& pose, double length_scale, vtkTransform* transform, std::string* error);
 
 /// Same as matrix_to_pose, reading the transform's current matrix.
-bool transform_to_pose(vtkTransform* transform, double length_scale, RigidPose* pose,
-  std::string* error);
+bool transform_to_pose(
+  vtkTransform* transform, double length_scale, RigidPose* pose, std::string* error);
 
 /// PoseArray -> one new vtkTransform per pose, in order. The collection is emptied first; on
 /// error (message names the index of the bad pose) it is left as it was.

@@ -21,7 +21,7 @@ constexpr double kNoLengthScaling = 1.0;
 /// homogeneous matrix, translation multiplied by length_scale. A template so that this header
 /// needs no Eigen: `Isometry` is Eigen::Isometry3d (anything with linear()(i, j) and
 /// translation()(i)). Used wherever a tf result becomes a VTK matrix (lookup nodes, robot links).
-template <typename Isometry>
+template<typename Isometry>
 void isometry_to_elements(const Isometry& isometry, double length_scale, double elements[16])
 {
   for (int i = 0; i < 3; ++i)

@@ -17,8 +17,7 @@ namespace convert {
 
 /// ROS -> VTK: the array becomes `count` one-component values. NaN/inf are rejected (a wrench
 /// with NaN is a broken sensor reading, not data); the array is then left untouched.
-bool values_to_array(const double* values, size_t count, vtkDoubleArray* array,
-  std::string* error);
+bool values_to_array(const double* values, size_t count, vtkDoubleArray* array, std::string* error);
 
 /// VTK -> ROS: the array must hold exactly `count` numbers (tuples x components, read in memory
 /// order), all finite; any numeric array type is accepted. `values` must have room for `count`.

@@ -40,9 +40,9 @@ enum class ScalarType : int
 
 struct Image
 {
-  std::array<int, 3> size{ { 0, 0, 0 } };      ///< i, j, k
+  std::array<int, 3> size{ { 0, 0, 0 } };            ///< i, j, k
   std::array<float, 3> spacing{ { 1.f, 1.f, 1.f } }; ///< mm
-  Matrix ijk_to_world{};   ///< unit direction columns; translation = first voxel (corner)
+  Matrix ijk_to_world{}; ///< unit direction columns; translation = first voxel (corner)
   int components = 1;
   ScalarType scalar = ScalarType::UInt8;
   std::vector<std::uint8_t> data; ///< i fastest, native byte order
@@ -50,7 +50,7 @@ struct Image
 
 struct Mesh
 {
-  std::vector<float> points;              ///< x, y, z, … (mm)
+  std::vector<float> points; ///< x, y, z, … (mm)
   std::vector<std::vector<std::uint32_t>> polygons;
   std::vector<std::vector<std::uint32_t>> lines;
   std::vector<std::vector<std::uint32_t>> vertices;
@@ -68,13 +68,13 @@ std::size_t scalar_size(ScalarType type);
 // Encoders: a complete frame (header v1) ready for encode_frame (after adding metadata, if any).
 Frame encode_transform(const std::string& device, const Matrix& matrix, std::uint64_t timestamp);
 Frame encode_string(const std::string& device, const std::string& text, std::uint64_t timestamp);
-Frame encode_points(const std::string& device, const std::vector<PointItem>& points,
-  std::uint64_t timestamp);
+Frame encode_points(
+  const std::string& device, const std::vector<PointItem>& points, std::uint64_t timestamp);
 Frame encode_image(const std::string& device, const Image& image, std::uint64_t timestamp);
 Frame encode_polydata(const std::string& device, const Mesh& mesh, std::uint64_t timestamp);
 /// TDATA: every element as a 6D instrument (Slicer makes one linear transform per name).
-Frame encode_tracking_data(const std::string& device, const std::vector<TrackingItem>& items,
-  std::uint64_t timestamp);
+Frame encode_tracking_data(
+  const std::string& device, const std::vector<TrackingItem>& items, std::uint64_t timestamp);
 
 // Decoders: false with `error` when the content is not a valid body of the frame's type.
 bool decode_transform(const Frame& frame, Matrix& matrix, std::string& error);

@@ -25,9 +25,9 @@ class Endpoint
 public:
   struct Options
   {
-    bool client = false;             ///< false: listen on host:port; true: connect to it
-    std::string host = "127.0.0.1";  ///< server: address to bind; client: address to reach
-    int port = 18944;                ///< Slicer's default
+    bool client = false;            ///< false: listen on host:port; true: connect to it
+    std::string host = "127.0.0.1"; ///< server: address to bind; client: address to reach
+    int port = 18944;               ///< Slicer's default
     std::size_t max_body_size = 64u * 1024u * 1024u;
     std::size_t max_queued_messages = 256; ///< per peer, oldest dropped beyond
     std::size_t max_queued_bytes = 256u * 1024u * 1024u;

@@ -22,9 +22,9 @@ namespace igtl {
 struct Frame
 {
   std::uint16_t header_version = 1;
-  std::string type;   ///< "TRANSFORM", "IMAGE", … (≤ 12 bytes)
-  std::string device; ///< device name (≤ 20 bytes)
-  std::uint64_t timestamp = 0; ///< OpenIGTLink fixed point: seconds << 32 | fraction
+  std::string type;                  ///< "TRANSFORM", "IMAGE", … (≤ 12 bytes)
+  std::string device;                ///< device name (≤ 20 bytes)
+  std::uint64_t timestamp = 0;       ///< OpenIGTLink fixed point: seconds << 32 | fraction
   std::vector<std::uint8_t> content; ///< the type's body, without v2 extended header and metadata
   std::map<std::string, std::string> metadata; ///< v2 only
 };

@@ -50,11 +50,11 @@ public:
   size_t remaining() const { return ok() ? body_size_ - position_ : 0; }
 
   /// Arithmetic primitives (not bool).
-  template <typename T>
+  template<typename T>
   bool read(T& value)
   {
     static_assert(std::is_arithmetic<T>::value && !std::is_same<T, bool>::value,
-                  "read() takes arithmetic non-bool values");
+      "read() takes arithmetic non-bool values");
     if (!align(sizeof(T)) || !need(sizeof(T), "primitive"))
     {
       return false;
@@ -168,11 +168,11 @@ public:
   }
 
   /// A run of arithmetic primitives; the first one is aligned, nothing is read for n == 0.
-  template <typename T>
+  template<typename T>
   bool read_array(T* values, size_t count)
   {
     static_assert(std::is_arithmetic<T>::value && !std::is_same<T, bool>::value,
-                  "read_array() takes arithmetic non-bool values");
+      "read_array() takes arithmetic non-bool values");
     if (count == 0)
     {
       return ok();
@@ -213,7 +213,7 @@ private:
     return first == 0;
   }
 
-  template <typename T>
+  template<typename T>
   static T byte_swap(T value)
   {
     uint8_t bytes[sizeof(T)];

@@ -38,11 +38,11 @@ public:
   void reserve(size_t total_size) { buffer_.reserve(total_size); }
 
   /// Arithmetic primitives (not bool): aligned to their own size, written little-endian.
-  template <typename T>
+  template<typename T>
   void write(T value)
   {
     static_assert(std::is_arithmetic<T>::value && !std::is_same<T, bool>::value,
-                  "write() takes arithmetic non-bool values");
+      "write() takes arithmetic non-bool values");
     align(sizeof(T));
     append(&value, sizeof(T));
   }
@@ -77,11 +77,11 @@ public:
   void write_length(size_t count) { write(static_cast<uint32_t>(count)); }
 
   /// A run of arithmetic primitives; the first one is aligned, nothing is written for n == 0.
-  template <typename T>
+  template<typename T>
   void write_array(const T* values, size_t count)
   {
     static_assert(std::is_arithmetic<T>::value && !std::is_same<T, bool>::value,
-                  "write_array() takes arithmetic non-bool values");
+      "write_array() takes arithmetic non-bool values");
     if (count == 0)
     {
       return;

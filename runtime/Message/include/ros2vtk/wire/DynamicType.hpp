@@ -59,11 +59,11 @@ struct TypeDescriptionData
 /// What a description may ask for. Defaults fit every ROS 2 common interface many times over.
 struct DynamicTypeLimits
 {
-  size_t max_depth = 32;               ///< nesting levels below the top type
-  size_t max_fields = 1024;            ///< fields of one type
-  size_t max_types = 256;              ///< referenced types of one description
-  size_t max_name_length = 256;        ///< type and field names
-  uint64_t max_array_size = 1u << 20;  ///< N of a fixed array T[N]
+  size_t max_depth = 32;                    ///< nesting levels below the top type
+  size_t max_fields = 1024;                 ///< fields of one type
+  size_t max_types = 256;                   ///< referenced types of one description
+  size_t max_name_length = 256;             ///< type and field names
+  uint64_t max_array_size = 1u << 20;       ///< N of a fixed array T[N]
   uint64_t max_default_elements = 1u << 20; ///< elements a default message holds in total
   size_t max_default_value_length = 1u << 16;
 };
@@ -82,9 +82,7 @@ std::string type_description_hash(const TypeDescriptionData& description, std::s
 /// `typehash=`), a description whose hash differs is refused. nullptr and `error` (the reason,
 /// naming the type and field) for a malformed or too large description.
 const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& description,
-                                                     const std::string& expected_hash,
-                                                     std::string* error,
-                                                     const DynamicTypeLimits& limits = {});
+  const std::string& expected_hash, std::string* error, const DynamicTypeLimits& limits = {});
 
 /// True when `type` was built by build_dynamic_message_type.
 bool is_dynamic_message_type(const MessageTypeSupport* type);

@@ -11,20 +11,20 @@
 namespace ros2vtk {
 namespace wire {
 
-template <typename Container>
+template<typename Container>
 size_t container_size(const void* field)
 {
   return static_cast<const Container*>(field)->size();
 }
 
-template <typename Container>
+template<typename Container>
 void* container_element(void* field, size_t index)
 {
   return &(*static_cast<Container*>(field))[index];
 }
 
 /// std::vector (bounded or not): any size. Bounds are enforced by serialize/deserialize.
-template <typename Container>
+template<typename Container>
 bool vector_resize(void* field, size_t count)
 {
   static_cast<Container*>(field)->resize(count);
@@ -32,19 +32,19 @@ bool vector_resize(void* field, size_t count)
 }
 
 /// std::array: only its own size.
-template <typename Container>
+template<typename Container>
 bool array_resize(void*, size_t count)
 {
   return count == std::tuple_size<Container>::value;
 }
 
-template <typename Container>
+template<typename Container>
 bool container_get_bool(const void* field, size_t index)
 {
   return (*static_cast<const Container*>(field))[index];
 }
 
-template <typename Container>
+template<typename Container>
 void container_set_bool(void* field, size_t index, bool value)
 {
   (*static_cast<Container*>(field))[index] = value;

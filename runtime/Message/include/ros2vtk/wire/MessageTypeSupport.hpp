@@ -61,9 +61,9 @@ struct FieldInfo
   const char* name;
   FieldType type;
   Container container;
-  uint32_t array_size;   ///< N of T[N] or T[<=N]; 0 otherwise
-  uint32_t string_bound; ///< N of string<=N; 0 when unbounded
-  size_t offset;         ///< offsetof(struct, member)
+  uint32_t array_size;                   ///< N of T[N] or T[<=N]; 0 otherwise
+  uint32_t string_bound;                 ///< N of string<=N; 0 when unbounded
+  size_t offset;                         ///< offsetof(struct, member)
   const MessageTypeSupport* (*nested)(); ///< element type when type == Message, else nullptr
 
   // Container access, all nullptr when container == None. `field` points at the member.
@@ -157,7 +157,7 @@ struct ServiceTypeSupport
 /// runs the action protocol (docs/actions.md) without naming any per-action type.
 struct ActionTypeSupport
 {
-  const char* ros_type; ///< "test_msgs/action/Fibonacci"
+  const char* ros_type;                            ///< "test_msgs/action/Fibonacci"
   const MessageTypeSupport* (*goal)();             ///< X_Goal
   const MessageTypeSupport* (*result)();           ///< X_Result
   const MessageTypeSupport* (*feedback)();         ///< X_Feedback
@@ -186,7 +186,8 @@ const ServiceTypeSupport* find_service_type(const std::string& ros_type, std::st
 
 /// Accepts "pkg/action/X" and "pkg/X"; when unknown (nullptr), `error` (if given) says so and
 /// lists the registered action types.
-const ActionTypeSupport* find_action_type(const std::string& ros_type, std::string* error = nullptr);
+const ActionTypeSupport* find_action_type(
+  const std::string& ros_type, std::string* error = nullptr);
 
 /// Sorted ROS names of every registered message / service / action type.
 std::vector<std::string> registered_message_types();
@@ -194,12 +195,12 @@ std::vector<std::string> registered_service_types();
 std::vector<std::string> registered_action_types();
 
 /// Serializes into `buffer` (cleared first); the result is a complete payload.
-void serialize_message(const MessageTypeSupport& type, const void* message,
-                       std::vector<uint8_t>& buffer);
+void serialize_message(
+  const MessageTypeSupport& type, const void* message, std::vector<uint8_t>& buffer);
 
 /// Deserializes a complete payload; on failure returns false and sets `error`.
 bool deserialize_message(const MessageTypeSupport& type, const uint8_t* data, size_t size,
-                         void* message, std::string* error);
+  void* message, std::string* error);
 
 } // namespace wire
 } // namespace ros2vtk

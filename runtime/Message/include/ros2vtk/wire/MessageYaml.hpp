@@ -24,8 +24,8 @@ std::string to_yaml(const MessageTypeSupport& type, const void* message);
 /// default values. Unknown fields, values of the wrong kind, out-of-range numbers and arrays of
 /// the wrong length are errors naming the field path (`poses[2].position.x`). On failure
 /// `message` is left unchanged, false is returned and `error` (if given) says why.
-bool from_yaml(const MessageTypeSupport& type, const std::string& yaml, void* message,
-               std::string* error);
+bool from_yaml(
+  const MessageTypeSupport& type, const std::string& yaml, void* message, std::string* error);
 
 /// One double as PyYAML writes a Python float: repr() digits, lower case, `1.0e+16` not
 /// `1e+16`, `.nan`, `.inf`, `-.inf`. Exposed for the generic nodes and for tests.

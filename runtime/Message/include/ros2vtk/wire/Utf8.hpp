@@ -28,7 +28,9 @@ namespace detail {
 /// set to the length of its maximal invalid subpart (what one U+FFFD replaces, as in Python).
 inline size_t utf8_sequence(const std::string& text, size_t i, size_t* bad)
 {
-  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+  const auto byte = [&](size_t k) {
+    return static_cast<unsigned char>(text[k]);
+  };
   const unsigned char lead = byte(i);
   if (lead < 0x80)
     return 1;

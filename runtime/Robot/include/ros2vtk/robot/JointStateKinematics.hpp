@@ -21,22 +21,30 @@ namespace robot {
 /// What happened to the contents of one JointState message (apply_joint_state).
 struct JointStateReport
 {
-  bool accepted = false;  ///< false: the whole message was refused (see error)
-  std::string error;      ///< why it was refused ("" when accepted)
-  size_t applied = 0;     ///< positions taken (clamped ones included)
-  std::vector<std::string> unknown;  ///< names that are no actuated joint of this robot (ignored)
+  bool accepted = false;               ///< false: the whole message was refused (see error)
+  std::string error;                   ///< why it was refused ("" when accepted)
+  size_t applied = 0;                  ///< positions taken (clamped ones included)
+  std::vector<std::string> unknown;    ///< names that are no actuated joint of this robot (ignored)
   std::vector<std::string> not_finite; ///< joints whose position was NaN or infinite (ignored)
-  std::vector<std::string> clamped;  ///< joints whose position was out of limits (clamped)
+  std::vector<std::string> clamped;    ///< joints whose position was out of limits (clamped)
 };
 
 class JointStateKinematics
 {
 public:
   /// Why a position was not taken by set_position.
-  enum class SetResult { Applied, Clamped, UnknownJoint, NotActuated, NotFinite };
+  enum class SetResult
+  {
+    Applied,
+    Clamped,
+    UnknownJoint,
+    NotActuated,
+    NotFinite
+  };
 
   /// Parses the URDF (KinematicTree::from_urdf); nullptr and why when it does not parse.
-  static std::unique_ptr<JointStateKinematics> from_urdf(const std::string& urdf_xml, std::string* error);
+  static std::unique_ptr<JointStateKinematics> from_urdf(
+    const std::string& urdf_xml, std::string* error);
   explicit JointStateKinematics(std::unique_ptr<KinematicTree> tree);
 
   const KinematicTree& tree() const { return *tree_; }
@@ -60,7 +68,8 @@ public:
   /// The contents of a sensor_msgs/JointState, checked as robot_state_publisher does: name and
   /// position arrays of different lengths refuse the whole message; names that are no actuated
   /// joint and non-finite positions are ignored (and listed), the rest applied.
-  JointStateReport apply_joint_state(const std::vector<std::string>& names, const std::vector<double>& positions);
+  JointStateReport apply_joint_state(
+    const std::vector<std::string>& names, const std::vector<double>& positions);
 
   /// Pose of every link in the root link's frame, metres, for the current positions. Mimic
   /// joints follow their leader exactly (not clamped, as robot_state_publisher does).

@@ -17,7 +17,15 @@ namespace robot {
 /// One URDF joint, reduced to what kinematics needs.
 struct JointInfo
 {
-  enum class Type { Fixed, Revolute, Continuous, Prismatic, Floating, Planar };
+  enum class Type
+  {
+    Fixed,
+    Revolute,
+    Continuous,
+    Prismatic,
+    Floating,
+    Planar
+  };
   std::string name;
   Type type = Type::Fixed;
   std::string parent_link;
@@ -64,7 +72,8 @@ public:
   std::vector<LinkTransform> joint_transforms(const std::map<std::string, double>& positions) const;
 
   /// Pose of every link in the root link's frame.
-  std::map<std::string, Eigen::Isometry3d> link_poses(const std::map<std::string, double>& positions) const;
+  std::map<std::string, Eigen::Isometry3d> link_poses(
+    const std::map<std::string, double>& positions) const;
 
 private:
   std::string robot_name_;

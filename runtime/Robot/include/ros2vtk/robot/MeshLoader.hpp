@@ -1,8 +1,8 @@
 // ros2vtk — reads one mesh file into vtkPolyData: STL through VTK's reader; PLY (whole file
 // checked against its header first), OBJ (+ MTL colours), Collada (arrays and counts checked
-// first), glTF/GLB and every other format assimp knows through assimp (VTK 9.1's PLY reader crashes on malformed files and its OBJ readers get MTL colours
-// wrong, see MeshLoader.cpp). Plain C++ on VTK (not wrapped); the robot loader calls it once per
-// distinct mesh file.
+// first), glTF/GLB and every other format assimp knows through assimp (VTK 9.1's PLY reader crashes
+// on malformed files and its OBJ readers get MTL colours wrong, see MeshLoader.cpp). Plain C++ on
+// VTK (not wrapped); the robot loader calls it once per distinct mesh file.
 #ifndef ros2vtk_robot_MeshLoader_hpp
 #define ros2vtk_robot_MeshLoader_hpp
 
@@ -22,7 +22,7 @@ struct MeshData
   vtkSmartPointer<vtkPolyData> polydata; ///< triangles (and the reader's normals, if any)
   /// One colour for the whole mesh, from its file (a Collada/OBJ material, …), when it has one.
   bool has_color = false;
-  std::array<double, 4> color{{1.0, 1.0, 1.0, 1.0}}; ///< RGBA in [0, 1]
+  std::array<double, 4> color{ { 1.0, 1.0, 1.0, 1.0 } }; ///< RGBA in [0, 1]
   /// Several colours: per-point RGBA (unsigned char) in the point-data array named
   /// kVertexColorArray, also set as the active scalars.
   bool has_vertex_colors = false;

@@ -110,17 +110,17 @@ public:
   static std::string supported_forms();
 
 private:
-  std::string find_in_search_folder(const std::string& folder, const std::string& name,
-                                    PackageSearchReport* report) const;
+  std::string find_in_search_folder(
+    const std::string& folder, const std::string& name, PackageSearchReport* report) const;
   const PackageTree& crawled(const std::string& folder) const;
   std::vector<std::string> allowed_roots(const std::string& base_folder) const;
   ResolvedResource resolve_relative(const std::string& uri, const std::string& base_folder) const;
-  ResolvedResource resolve_without_package(const std::string& uri, const std::string& relative,
-                                           const std::string& base_folder) const;
+  ResolvedResource resolve_without_package(
+    const std::string& uri, const std::string& relative, const std::string& base_folder) const;
   /// The checks every candidate file goes through: exists, regular, inside the roots (and inside
   /// `package_folder` when given), not over the size limit.
-  ResolvedResource check_file(const std::filesystem::path& candidate, const std::string& base_folder,
-                              const std::string& package_folder) const;
+  ResolvedResource check_file(const std::filesystem::path& candidate,
+    const std::string& base_folder, const std::string& package_folder) const;
   std::string package_not_found(const std::string& name, const PackageSearchReport& report) const;
 
   std::vector<std::string> ament_prefixes_;

@@ -27,7 +27,14 @@ namespace robot {
 
 /// What a visual's geometry came from. Placeholder: the mesh could not be loaded (see the
 /// link's warnings) and a 1 cm cube stands in for it.
-enum class VisualKind { Mesh, Box, Cylinder, Sphere, Placeholder };
+enum class VisualKind
+{
+  Mesh,
+  Box,
+  Cylinder,
+  Sphere,
+  Placeholder
+};
 
 /// One <visual> of a link.
 struct LinkVisual
@@ -42,19 +49,19 @@ struct LinkVisual
 
   std::string mesh_uri;  ///< as written in the URDF (meshes and placeholders)
   std::string mesh_path; ///< the file it resolved to ("" when it did not)
-  std::array<double, 3> mesh_scale{{1.0, 1.0, 1.0}};
+  std::array<double, 3> mesh_scale{ { 1.0, 1.0, 1.0 } };
 
   /// The URDF material: its name (may be empty), and its rgba when it gives one (materials named
   /// at robot level are looked up).
   std::string material_name;
   bool has_material_color = false;
-  std::array<double, 4> material_color{{1.0, 1.0, 1.0, 1.0}};
+  std::array<double, 4> material_color{ { 1.0, 1.0, 1.0, 1.0 } };
   std::string material_texture; ///< <texture filename="…">, recorded, not loaded
 
   /// Colours from the mesh file itself (Collada/OBJ materials): one colour, or per-point colours
   /// in geometry's kVertexColorArray; and the texture files its materials name.
   bool has_mesh_color = false;
-  std::array<double, 4> mesh_color{{1.0, 1.0, 1.0, 1.0}};
+  std::array<double, 4> mesh_color{ { 1.0, 1.0, 1.0, 1.0 } };
   bool has_vertex_colors = false;
   std::vector<std::string> mesh_textures;
 
@@ -129,13 +136,13 @@ public:
   /// from urdfdom's own diagnostics) only when the URDF itself is broken; a mesh that does not
   /// load is a warning on its link and a placeholder.
   bool load_xml(const std::string& urdf_xml, const RobotLoadOptions& options, RobotVisuals* robot,
-                std::string* error);
+    std::string* error);
   /// The text of a URDF file, or of a xacro file expanded by xacro(); false (and why) when it is
   /// missing, unreadable, larger than the resolver's file size limit or does not expand.
   bool read_urdf_file(const std::string& urdf_path, std::string* text, std::string* error) const;
   /// Reads the URDF file, then load_xml() with relative paths taken from its folder.
   bool load_file(const std::string& urdf_path, RobotVisuals* robot, std::string* error,
-                 RobotLoadOptions options = RobotLoadOptions());
+    RobotLoadOptions options = RobotLoadOptions());
 
   /// Expands `.xacro` files for read_urdf_file() and load_file(): its command and arguments.
   XacroProcessor& xacro() { return xacro_; }
@@ -150,8 +157,8 @@ public:
   void clear_cache() { cache_->clear(); }
 
 private:
-  bool load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale, const std::string& base_folder,
-                        LinkVisual* visual, std::string* why);
+  bool load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale,
+    const std::string& base_folder, LinkVisual* visual, std::string* why);
 
   ResourceResolver resolver_;
   XacroProcessor xacro_;

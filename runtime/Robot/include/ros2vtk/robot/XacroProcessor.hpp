@@ -35,7 +35,8 @@ public:
 
   /// Expands `path`. False, and a message naming the file and the cause (no xacro installed and
   /// where it was looked for, xacro's own error text, a timeout, output over `max_bytes`).
-  bool expand(const std::string& path, size_t max_bytes, std::string* urdf, std::string* error) const;
+  bool expand(
+    const std::string& path, size_t max_bytes, std::string* urdf, std::string* error) const;
 
   /// The program expand() would run, or "" (and where it looked) when there is none.
   std::string find_command(std::string* searched) const;

@@ -45,8 +45,8 @@ public:
   /// identity without any check (even for unknown frames). Errors: InvalidArgument (empty or
   /// leading '/'), Lookup (unknown frame, loop), Connectivity (different trees), and the three
   /// specific extrapolation codes (see LookupResult::message for tf2's text).
-  LookupResult lookup_transform(const std::string& target_frame, const std::string& source_frame,
-    TimePoint time) const;
+  LookupResult lookup_transform(
+    const std::string& target_frame, const std::string& source_frame, TimePoint time) const;
   /// The same into `result`, for callers that look the same frames up at every spin: a reused
   /// result keeps its strings' storage, so the lookup allocates nothing for them.
   void lookup_transform(const std::string& target_frame, const std::string& source_frame,
@@ -56,8 +56,7 @@ public:
   /// `fixed_frame` that does not move between the two times. Stamp of the result: target_time
   /// (or the latest common time used for the target half).
   LookupResult lookup_transform(const std::string& target_frame, TimePoint target_time,
-    const std::string& source_frame, TimePoint source_time,
-    const std::string& fixed_frame) const;
+    const std::string& source_frame, TimePoint source_time, const std::string& fixed_frame) const;
 
   /// Whether lookup_transform would succeed; `error` receives its message when not.
   bool can_transform(const std::string& target_frame, const std::string& source_frame,

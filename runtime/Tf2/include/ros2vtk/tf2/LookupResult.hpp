@@ -16,11 +16,11 @@ struct LookupResult
 {
   bool ok = false;
   Tf2Error error = Tf2Error::NoError;
-  std::string message;          ///< tf2's wording; empty when ok
-  std::string target_frame;     ///< header.frame_id of the answer
-  std::string source_frame;     ///< child_frame_id of the answer
-  TimePoint stamp = 0;          ///< the time actually used (the latest common time for time 0)
-  Transform transform;          ///< maps points given in source_frame into target_frame
+  std::string message;      ///< tf2's wording; empty when ok
+  std::string target_frame; ///< header.frame_id of the answer
+  std::string source_frame; ///< child_frame_id of the answer
+  TimePoint stamp = 0;      ///< the time actually used (the latest common time for time 0)
+  Transform transform;      ///< maps points given in source_frame into target_frame
 
   Eigen::Isometry3d isometry() const { return transform.to_isometry(); }
   explicit operator bool() const { return ok; }

@@ -11,15 +11,15 @@ namespace tf2 {
 enum class Tf2Error : std::uint8_t
 {
   NoError = 0,
-  Lookup = 1,                  ///< unknown frame, or a loop in the tree
-  Connectivity = 2,            ///< both frames exist but in different trees
-  Extrapolation = 3,           ///< generic extrapolation (tf2's base class)
-  InvalidArgument = 4,         ///< empty frame id or one with a leading '/'
-  Timeout = 5,                 ///< reserved for waiting callers (tf2_ros::Buffer)
-  Transform = 6,               ///< reserved (tf2's base TransformException)
-  BackwardExtrapolation = 7,   ///< requested time older than the oldest sample
-  ForwardExtrapolation = 8,    ///< requested time newer than the newest sample
-  NoDataForExtrapolation = 9,  ///< a single sample (or none) that does not match the time
+  Lookup = 1,                 ///< unknown frame, or a loop in the tree
+  Connectivity = 2,           ///< both frames exist but in different trees
+  Extrapolation = 3,          ///< generic extrapolation (tf2's base class)
+  InvalidArgument = 4,        ///< empty frame id or one with a leading '/'
+  Timeout = 5,                ///< reserved for waiting callers (tf2_ros::Buffer)
+  Transform = 6,              ///< reserved (tf2's base TransformException)
+  BackwardExtrapolation = 7,  ///< requested time older than the oldest sample
+  ForwardExtrapolation = 8,   ///< requested time newer than the newest sample
+  NoDataForExtrapolation = 9, ///< a single sample (or none) that does not match the time
 };
 
 /// tf2's name for the code ("TF2_CONNECTIVITY_ERROR", ...).

@@ -45,7 +45,8 @@ public:
 private:
   /// Indices of the samples that answer `time`: one (exact or newest) or a bracketing pair
   /// (older, newer). Returns how many were found (0 on failure, with `error` filled).
-  int find_closest(TimePoint time, std::size_t& older, std::size_t& newer, SampleError* error) const;
+  int find_closest(
+    TimePoint time, std::size_t& older, std::size_t& newer, SampleError* error) const;
   void prune();
 
   Duration cache_time_;

@@ -41,10 +41,10 @@ public:
   /// stamp 0 so that they never constrain the latest common time.
   virtual std::pair<TimePoint, FrameId> latest_time_and_parent() const = 0;
 
-  virtual TimePoint newest_stamp() const = 0;   ///< 0 when empty or static
-  virtual TimePoint oldest_stamp() const = 0;   ///< 0 when empty or static
-  virtual std::size_t size() const = 0;         ///< samples held (1 for a static cache)
-  virtual void clear() = 0;                     ///< drops history (static values survive, as in tf2)
+  virtual TimePoint newest_stamp() const = 0; ///< 0 when empty or static
+  virtual TimePoint oldest_stamp() const = 0; ///< 0 when empty or static
+  virtual std::size_t size() const = 0;       ///< samples held (1 for a static cache)
+  virtual void clear() = 0;                   ///< drops history (static values survive, as in tf2)
   virtual bool is_static() const = 0;
 
 protected:

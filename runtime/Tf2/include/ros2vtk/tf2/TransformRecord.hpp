@@ -13,7 +13,7 @@ namespace tf2 {
 struct TransformRecord
 {
   TimePoint stamp = 0;
-  Transform transform;          ///< pose of `child` in `parent`
+  Transform transform; ///< pose of `child` in `parent`
   FrameId parent = kNoFrame;
   FrameId child = kNoFrame;
 

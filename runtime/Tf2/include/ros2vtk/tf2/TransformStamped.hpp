@@ -13,10 +13,10 @@ namespace tf2 {
 
 struct TransformStamped
 {
-  std::string frame_id;        ///< parent (header.frame_id)
-  std::string child_frame_id;  ///< the frame whose pose this is
-  TimePoint stamp = 0;         ///< header.stamp in nanoseconds
-  Transform transform;         ///< pose of child_frame_id in frame_id
+  std::string frame_id;       ///< parent (header.frame_id)
+  std::string child_frame_id; ///< the frame whose pose this is
+  TimePoint stamp = 0;        ///< header.stamp in nanoseconds
+  Transform transform;        ///< pose of child_frame_id in frame_id
 };
 
 } // namespace tf2

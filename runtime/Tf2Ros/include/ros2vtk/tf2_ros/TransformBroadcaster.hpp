@@ -22,8 +22,8 @@ class TransformBroadcaster
 {
 public:
   /// `is_static` picks /tf_static semantics.
-  static std::unique_ptr<TransformBroadcaster> create(wire::Participant& participant, bool is_static,
-                                                      std::string* error);
+  static std::unique_ptr<TransformBroadcaster> create(
+    wire::Participant& participant, bool is_static, std::string* error);
   ~TransformBroadcaster();
 
   /// False when a transform is invalid (empty or equal frame ids, non-finite values); nothing

@@ -25,8 +25,8 @@ public:
   /// The authority of transforms whose writer no node announcement lists (yet).
   static const std::string kUnknownAuthority; // "ros2vtk_tf_listener"
 
-  static std::unique_ptr<TransformListener> create(wire::Participant& participant, tf2::BufferCore& buffer,
-                                                   std::string* error);
+  static std::unique_ptr<TransformListener> create(
+    wire::Participant& participant, tf2::BufferCore& buffer, std::string* error);
   ~TransformListener();
 
   /// Inserts every queued transform into the buffer. Returns how many were inserted; rejected

@@ -18,8 +18,8 @@ namespace viewer {
 struct PhantomOptions
 {
   std::array<int, 3> dimensions{ 160, 128, 96 }; ///< voxels
-  double spacing = 1.0;                           ///< mm, isotropic
-  unsigned seed = 7;                              ///< noise is deterministic
+  double spacing = 1.0;                          ///< mm, isotropic
+  unsigned seed = 7;                             ///< noise is deterministic
 };
 
 /// What is where, in the image's own frame (mm), for examples and tests.

@@ -21,8 +21,8 @@ bool validate_topic_name(const std::string& name, std::string* error);
 /// `~` becomes the node's fully qualified name, `{node}`, `{ns}` and `{namespace}` are replaced,
 /// a name still relative goes under the namespace; the result must be a valid full topic name
 /// of at most 247 characters (docs/wire-notes.md §1.2).
-bool expand_topic_name(const std::string& name, const std::string& node_name,
-                       const std::string& ns, std::string& expanded, std::string* error);
+bool expand_topic_name(const std::string& name, const std::string& node_name, const std::string& ns,
+  std::string& expanded, std::string* error);
 
 /// "/chatter" -> "rt/chatter"; service request "rq/<name>Request", reply "rr/<name>Reply".
 std::string topic_to_dds(const std::string& ros_topic);

@@ -57,7 +57,7 @@ private:
     const TypeDescriptionTable* description = nullptr;
     size_t references = 0;
   };
-  mutable std::mutex mutex_; // endpoints come and go from any thread
+  mutable std::mutex mutex_;             // endpoints come and go from any thread
   std::map<std::string, Entry> entries_; // by lower-case hash
 };
 

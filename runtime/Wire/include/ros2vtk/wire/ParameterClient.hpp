@@ -28,8 +28,8 @@ public:
   };
 
   /// `remote_node` is the fully qualified node name ("/robot_state_publisher", "/PSM1/rsp").
-  static std::unique_ptr<ParameterClient> create(Participant& participant, const std::string& remote_node,
-                                                 std::string* error);
+  static std::unique_ptr<ParameterClient> create(
+    Participant& participant, const std::string& remote_node, std::string* error);
   ~ParameterClient();
   ParameterClient(const ParameterClient&) = delete;
   ParameterClient& operator=(const ParameterClient&) = delete;

@@ -40,7 +40,7 @@ public:
 
   /// Declares a parameter (rclcpp's declare_parameter). False (and `error`) when it exists.
   bool declare(const std::string& name, const rcl::ParameterValue& value,
-               const rcl::ParameterDescriptor& descriptor, std::string* error);
+    const rcl::ParameterDescriptor& descriptor, std::string* error);
   bool declare(const std::string& name, const rcl::ParameterValue& value, std::string* error);
   bool undeclare(const std::string& name, std::string* error);
   bool has(const std::string& name) const;
@@ -66,10 +66,13 @@ public:
   // The services' semantics (WIRE_NOTES §5.3). Empty results when any name is undeclared.
   std::vector<rcl::ParameterValue> get_parameters(const std::vector<std::string>& names) const;
   std::vector<uint8_t> get_parameter_types(const std::vector<std::string>& names) const;
-  std::vector<rcl::SetParametersResult> set_parameters(const std::vector<rcl::Parameter>& parameters);
+  std::vector<rcl::SetParametersResult> set_parameters(
+    const std::vector<rcl::Parameter>& parameters);
   rcl::SetParametersResult set_parameters_atomically(const std::vector<rcl::Parameter>& parameters);
-  std::vector<rcl::ParameterDescriptor> describe_parameters(const std::vector<std::string>& names) const;
-  rcl::ListParametersResult list_parameters(const std::vector<std::string>& prefixes, uint64_t depth) const;
+  std::vector<rcl::ParameterDescriptor> describe_parameters(
+    const std::vector<std::string>& names) const;
+  rcl::ListParametersResult list_parameters(
+    const std::vector<std::string>& prefixes, uint64_t depth) const;
   std::vector<std::string> names() const;
 
   /// Events since the last call (declarations, changes, undeclarations), for /parameter_events.

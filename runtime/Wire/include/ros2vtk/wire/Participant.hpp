@@ -26,7 +26,12 @@ class ServiceServer;
 class Subscription;
 
 /// Where discovery looks for peers (ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_LOCALHOST_ONLY).
-enum class DiscoveryRange : uint8_t { Subnet, Localhost, Off };
+enum class DiscoveryRange : uint8_t
+{
+  Subnet,
+  Localhost,
+  Off
+};
 
 struct ParticipantOptions
 {
@@ -57,7 +62,7 @@ struct ParticipantOptions
 /// A remote or local endpoint as the ROS graph reports it.
 struct TopicInfo
 {
-  std::string name; ///< ROS name, "/chatter"
+  std::string name;               ///< ROS name, "/chatter"
   std::vector<std::string> types; ///< ROS types, "std_msgs/msg/String"
 };
 
@@ -78,36 +83,30 @@ public:
   /// Returns nullptr and fills `error` when the name is not a valid ROS node name or DDS
   /// refuses to create the participant.
   static std::unique_ptr<Participant> create(const std::string& node_name,
-                                             const std::string& node_namespace,
-                                             const ParticipantOptions& options,
-                                             std::string* error);
+    const std::string& node_namespace, const ParticipantOptions& options, std::string* error);
   ~Participant();
   Participant(const Participant&) = delete;
   Participant& operator=(const Participant&) = delete;
 
   const std::string& name() const;
-  const std::string& node_namespace() const;      ///< "/" or "/robot1"
-  std::string fully_qualified_name() const;       ///< "/robot1/slicer"
+  const std::string& node_namespace() const; ///< "/" or "/robot1"
+  std::string fully_qualified_name() const;  ///< "/robot1/slicer"
 
   /// Expands a topic or service name as rcl does (absolute, relative, `~`).
   bool resolve_name(const std::string& name, std::string& resolved, std::string* error) const;
 
   /// nullptr (and `error`) on an invalid topic name or a DDS failure.
-  std::unique_ptr<Publisher> create_publisher(const MessageTypeSupport& type,
-                                              const std::string& topic, const QoS& qos,
-                                              std::string* error);
-  std::unique_ptr<Subscription> create_subscription(const MessageTypeSupport& type,
-                                                    const std::string& topic, const QoS& qos,
-                                                    std::string* error);
+  std::unique_ptr<Publisher> create_publisher(
+    const MessageTypeSupport& type, const std::string& topic, const QoS& qos, std::string* error);
+  std::unique_ptr<Subscription> create_subscription(
+    const MessageTypeSupport& type, const std::string& topic, const QoS& qos, std::string* error);
 
   /// Services: the server uses `qos` for its request reader and reply writer; the parameter
   /// services of rclcpp use QoS::parameters(), everything else QoS::services().
   std::unique_ptr<ServiceServer> create_service_server(const ServiceTypeSupport& type,
-                                                       const std::string& service_name,
-                                                       const QoS& qos, std::string* error);
+    const std::string& service_name, const QoS& qos, std::string* error);
   std::unique_ptr<ServiceClient> create_service_client(const ServiceTypeSupport& type,
-                                                       const std::string& service_name,
-                                                       const QoS& qos, std::string* error);
+    const std::string& service_name, const QoS& qos, std::string* error);
 
   /// The types this node's endpoints use, with their REP 2011 descriptions (what its
   /// ~/get_type_description serves, TypeDescriptionService).

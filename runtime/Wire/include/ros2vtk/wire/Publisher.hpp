@@ -25,7 +25,7 @@ public:
   /// Publishes an already serialized payload (encapsulation header included).
   bool publish_serialized(const uint8_t* data, size_t size);
 
-  const std::string& topic() const;         ///< resolved ROS name
+  const std::string& topic() const; ///< resolved ROS name
   const MessageTypeSupport& type() const;
   const QoS& qos() const;
   size_t matched_subscriptions() const;

@@ -11,9 +11,21 @@ namespace wire {
 /// The QoS policies ROS 2 exposes for topics and services (docs/wire-notes.md §2.1).
 struct QoS
 {
-  enum class History : uint8_t { KeepLast, KeepAll };
-  enum class Reliability : uint8_t { Reliable, BestEffort };
-  enum class Durability : uint8_t { Volatile, TransientLocal };
+  enum class History : uint8_t
+  {
+    KeepLast,
+    KeepAll
+  };
+  enum class Reliability : uint8_t
+  {
+    Reliable,
+    BestEffort
+  };
+  enum class Durability : uint8_t
+  {
+    Volatile,
+    TransientLocal
+  };
 
   History history = History::KeepLast;
   uint32_t depth = 10;
@@ -23,13 +35,23 @@ struct QoS
   /// rmw_qos_profile_default: keep last 10, reliable, volatile.
   static QoS default_profile() { return QoS{}; }
   /// rmw_qos_profile_sensor_data: keep last 5, best effort, volatile.
-  static QoS sensor_data() { return QoS{ History::KeepLast, 5, Reliability::BestEffort, Durability::Volatile }; }
-  /// Latched topics (/robot_description, /tf_static publisher side): keep last `depth`, reliable, transient local.
-  static QoS transient_local(uint32_t depth = 1) { return QoS{ History::KeepLast, depth, Reliability::Reliable, Durability::TransientLocal }; }
+  static QoS sensor_data()
+  {
+    return QoS{ History::KeepLast, 5, Reliability::BestEffort, Durability::Volatile };
+  }
+  /// Latched topics (/robot_description, /tf_static publisher side): keep last `depth`, reliable,
+  /// transient local.
+  static QoS transient_local(uint32_t depth = 1)
+  {
+    return QoS{ History::KeepLast, depth, Reliability::Reliable, Durability::TransientLocal };
+  }
   /// rmw_qos_profile_services_default.
   static QoS services() { return QoS{}; }
   /// rmw_qos_profile_parameters / parameter_events: keep last 1000, reliable, volatile.
-  static QoS parameters() { return QoS{ History::KeepLast, 1000, Reliability::Reliable, Durability::Volatile }; }
+  static QoS parameters()
+  {
+    return QoS{ History::KeepLast, 1000, Reliability::Reliable, Durability::Volatile };
+  }
 
   /// Profiles by their ROS names: "default" (alias "system_default"), "sensor_data" (alias
   /// "best_effort"), "services_default" (alias "services"), "parameters", "parameter_events",
@@ -52,7 +74,11 @@ struct QoS
   /// "reliable, volatile, keep_last(10)" — for logs and scene files.
   std::string to_string() const;
 
-  bool operator==(const QoS& o) const { return history == o.history && depth == o.depth && reliability == o.reliability && durability == o.durability; }
+  bool operator==(const QoS& o) const
+  {
+    return history == o.history && depth == o.depth && reliability == o.reliability &&
+      durability == o.durability;
+  }
 };
 
 } // namespace wire

@@ -45,12 +45,12 @@ public:
   /// Publishes one Log message stamped now, when `severity` >= level(). False when filtered out
   /// or DDS refused it.
   bool publish(LogSeverity severity, const std::string& text, const std::string& file = "",
-               const std::string& function = "", uint32_t line = 0);
+    const std::string& function = "", uint32_t line = 0);
   uint64_t published_count() const;
 
   /// Publishes on every live Rosout of this process; returns how many published it.
   static size_t log(LogSeverity severity, const std::string& text, const std::string& file = "",
-                    const std::string& function = "", uint32_t line = 0);
+    const std::string& function = "", uint32_t line = 0);
 
   /// rcl's logger name of a node: namespace and name joined by dots ("robot1.slicer").
   static std::string logger_name(const std::string& node_namespace, const std::string& node_name);

@@ -33,7 +33,7 @@ public:
   void* get() const { return message_; }
   const MessageTypeSupport* type() const { return type_; }
   explicit operator bool() const { return message_ != nullptr; }
-  int64_t source_timestamp_ns = 0;   ///< writer's time stamp of the sample
+  int64_t source_timestamp_ns = 0; ///< writer's time stamp of the sample
   int64_t reception_timestamp_ns = 0;
   /// The DDS GUID of the writer that sent it (the rmw gid; Participant::node_of_writer names
   /// its node).

@@ -33,8 +33,8 @@ public:
   /// is followed, and follows every later set of it. `participant`, `store` and `clock` must
   /// outlive the time source. nullptr (and `error`) when the parameter has another type or
   /// DDS refused the /clock subscription.
-  static std::unique_ptr<TimeSource> create(Participant& participant, ParameterStore& store, ROSClock& clock,
-                                            std::string* error);
+  static std::unique_ptr<TimeSource> create(
+    Participant& participant, ParameterStore& store, ROSClock& clock, std::string* error);
   ~TimeSource();
   TimeSource(const TimeSource&) = delete;
   TimeSource& operator=(const TimeSource&) = delete;

@@ -27,18 +27,18 @@ class RuntimeTypeResolver
 public:
   enum class State
   {
-    WaitingForPublisher,  ///< no publisher of the type on the topic yet
+    WaitingForPublisher,   ///< no publisher of the type on the topic yet
     WaitingForDescription, ///< asked (or about to ask) the publisher's node
-    NoService,            ///< the publisher's node has no ~/get_type_description (still watched)
-    Failed,               ///< the node refused, or the description was malformed (final)
-    Ready                 ///< type() is the built type
+    NoService,             ///< the publisher's node has no ~/get_type_description (still watched)
+    Failed,                ///< the node refused, or the description was malformed (final)
+    Ready                  ///< type() is the built type
   };
 
   /// `topic`: resolved ROS name; `ros_type`: "pkg/msg/Type". `service_wait`: how long a found
   /// publisher's node may take to show its type description service before status() says it
   /// has none (it is still used if it appears later).
   RuntimeTypeResolver(Participant& participant, std::string topic, std::string ros_type,
-                      std::chrono::milliseconds service_wait = std::chrono::milliseconds(3000));
+    std::chrono::milliseconds service_wait = std::chrono::milliseconds(3000));
   ~RuntimeTypeResolver();
   RuntimeTypeResolver(const RuntimeTypeResolver&) = delete;
   RuntimeTypeResolver& operator=(const RuntimeTypeResolver&) = delete;

@@ -21,17 +21,18 @@ class Participant;
 
 /// A generated description table as the message the service sends.
 void to_message(const TypeDescriptionTable& table,
-                ::ros2vtk::type_description_interfaces::msg::TypeDescription& message);
+  ::ros2vtk::type_description_interfaces::msg::TypeDescription& message);
 
 /// A received description in the plain form build_dynamic_message_type reads (DynamicType.hpp).
-TypeDescriptionData from_message(const ::ros2vtk::type_description_interfaces::msg::TypeDescription& message);
+TypeDescriptionData from_message(
+  const ::ros2vtk::type_description_interfaces::msg::TypeDescription& message);
 
-/// Fills `response` for `request` from `types`, as rcl_node_type_description_service_handle_request:
-/// the type is looked up by its hash alone; an unparsable hash answers "Failed to parse type
-/// hash", a hash no endpoint of the node uses "Type not currently in use by this node".
-/// type_sources stay empty: the generator keeps no .msg text (see docs/wire-interop.md).
-void answer_type_description_request(
-  const NodeTypeCache& types,
+/// Fills `response` for `request` from `types`, as
+/// rcl_node_type_description_service_handle_request: the type is looked up by its hash alone; an
+/// unparsable hash answers "Failed to parse type hash", a hash no endpoint of the node uses "Type
+/// not currently in use by this node". type_sources stay empty: the generator keeps no .msg text
+/// (see docs/wire-interop.md).
+void answer_type_description_request(const NodeTypeCache& types,
   const ::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Request& request,
   ::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Response& response);
 
@@ -49,7 +50,8 @@ public:
   static bool enabled(ParameterStore& parameters, bool default_value, std::string* error);
 
   /// Serves `participant`'s types. nullptr (and `error`) when DDS refused the endpoints.
-  static std::unique_ptr<TypeDescriptionService> create(Participant& participant, std::string* error);
+  static std::unique_ptr<TypeDescriptionService> create(
+    Participant& participant, std::string* error);
   ~TypeDescriptionService();
   TypeDescriptionService(const TypeDescriptionService&) = delete;
   TypeDescriptionService& operator=(const TypeDescriptionService&) = delete;
