@@ -5,7 +5,10 @@ code. Used by the loopback tests: the test binds the metatraffic port of one par
 from __future__ import annotations
 
 import ipaddress
+import socket
 import struct
+import time
+from typing import Callable, Optional
 
 SPDP_WRITER = b'\x00\x01\x00\xc2'
 DATA = 0x15
@@ -61,3 +64,24 @@ def locators(datagram: bytes) -> tuple[bytes, list[tuple[str, int, str, int]]]:
                         found.append((LOCATOR_PIDS[pid], kind, text, port))
         offset = end
     return prefix, found
+
+
+def announcements(sock: socket.socket, seconds: float,
+                  check_sender: Optional[Callable[[tuple], None]] = None) -> dict[bytes, list]:
+    """The locators each participant announced on a bound socket within `seconds`, by GUID
+    prefix, each locator once; `check_sender` sees every datagram's sender address first."""
+    found: dict[bytes, list] = {}
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        sock.settimeout(max(0.05, deadline - time.monotonic()))
+        try:
+            datagram, sender = sock.recvfrom(65536)
+        except socket.timeout:
+            break
+        if check_sender is not None:
+            check_sender(sender)
+        prefix, listed = locators(datagram)
+        if listed:
+            entries = found.setdefault(prefix, [])
+            entries.extend(entry for entry in listed if entry not in entries)
+    return found

@@ -10,11 +10,10 @@ import json
 import shutil
 import socket
 import subprocess
-import time
 
 import pytest
 
-from spdp_capture import locators
+from spdp_capture import announcements
 
 PORT_BASE, DOMAIN_GAIN, METATRAFFIC_UNICAST_OFFSET, PARTICIPANT_GAIN = 7400, 250, 10, 2
 
@@ -47,19 +46,10 @@ def assert_loopback_sockets(*processes: subprocess.Popen) -> None:
 
 
 def capture_announcements(sock: socket.socket, seconds: float) -> dict[bytes, list]:
-    found: dict[bytes, list] = {}
-    deadline = time.monotonic() + seconds
-    while time.monotonic() < deadline:
-        sock.settimeout(max(0.05, deadline - time.monotonic()))
-        try:
-            datagram, sender = sock.recvfrom(65536)
-        except socket.timeout:
-            break
+    def from_loopback(sender: tuple) -> None:
         assert sender[0] == '127.0.0.1', sender
-        prefix, listed = locators(datagram)
-        if listed:
-            found.setdefault(prefix, []).extend(listed)
-    return found
+
+    return announcements(sock, seconds, from_loopback)
 
 
 @pytest.mark.parametrize('mode', ['ROS_AUTOMATIC_DISCOVERY_RANGE', 'ROS_LOCALHOST_ONLY'])

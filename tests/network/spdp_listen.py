@@ -11,11 +11,10 @@ from __future__ import annotations
 import json
 import socket
 import sys
-import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / 'interop'))
-from spdp_capture import locators  # noqa: E402
+from spdp_capture import announcements  # noqa: E402
 
 GROUP = '239.255.0.1'
 
@@ -28,18 +27,8 @@ def main() -> int:
     sock.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP,
                     socket.inet_aton(GROUP) + socket.inet_aton(interface))
     print(json.dumps({'ready': True}), flush=True)
-    found: dict[str, list] = {}
-    deadline = time.monotonic() + seconds
-    while time.monotonic() < deadline:
-        sock.settimeout(max(0.05, deadline - time.monotonic()))
-        try:
-            datagram, _ = sock.recvfrom(65536)
-        except socket.timeout:
-            break
-        prefix, listed = locators(datagram)
-        if listed:
-            entries = found.setdefault(prefix.hex(), [])
-            entries.extend(entry for entry in map(list, listed) if entry not in entries)
+    found = {prefix.hex(): [list(entry) for entry in listed]
+             for prefix, listed in announcements(sock, seconds).items()}
     print(json.dumps(found), flush=True)
     return 0
 
