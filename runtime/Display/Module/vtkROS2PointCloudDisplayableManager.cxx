@@ -76,9 +76,21 @@ struct Labels
   vtkIdType size() const { return this->text ? this->text->GetNumberOfValues() : 0; }
 };
 
+/// A follower that keeps turning to the camera inside a vtkPropAssembly: the assembly pokes each
+/// part's matrix as it was when its paths were built (vtkPropAssembly::RenderOpaqueGeometry),
+/// which would freeze a plain vtkFollower in its first orientation.
+class LabelFollower : public vtkFollower
+{
+public:
+  static LabelFollower* New();
+  vtkTypeMacro(LabelFollower, vtkFollower);
+  void PokeMatrix(vtkMatrix4x4* vtkNotUsed(matrix)) override {}
+};
+vtkStandardNewMacro(LabelFollower);
+
 /// One label: its text as polygons (VTK's vector font), centred on the follower's origin,
 /// turned to the camera, capitals `height` high, in its colour, unlit.
-vtkSmartPointer<vtkFollower> MakeLabel(
+vtkSmartPointer<LabelFollower> MakeLabel(
   const std::string& text, double height, const unsigned char rgba[4], vtkCamera* camera)
 {
   vtkNew<vtkVectorText> glyphs;
@@ -93,7 +105,7 @@ vtkSmartPointer<vtkFollower> MakeLabel(
   centred->SetTransform(centre);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(centred->GetOutputPort());
-  auto label = vtkSmartPointer<vtkFollower>::New();
+  auto label = vtkSmartPointer<LabelFollower>::New();
   label->SetMapper(mapper);
   label->SetScale(height);
   label->SetCamera(camera);
