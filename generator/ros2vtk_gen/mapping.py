@@ -220,7 +220,8 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
     if extra:
         raise fail("fields", f"kind {kind_name} has no role(s) {', '.join(extra)} (its roles: "
                    f"{', '.join(known_roles) or 'none'})", BAD_FIELD)
-    missing = [name for name in known_roles if name not in fields]
+    missing = [name for name in known_roles
+               if name not in fields and name not in kind.optional_roles]
     if missing:
         raise fail("fields", f"kind {kind_name} needs role(s) {', '.join(missing)}", BAD_FIELD)
 
@@ -241,6 +242,8 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
 
     roles: Dict[str, Union[ResolvedField, Tuple[ResolvedField, ...]]] = {}
     for name, shape in kind.roles:
+        if name not in fields:
+            continue  # an optional role the rule leaves out
         if name in kind.list_roles:
             roles[name] = _resolve_components(fields[name], shape, message, table, fail)
         else:
@@ -254,6 +257,8 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
                        BAD_FIELD)
         element = table[sequence.field.type.ros_name()]
         for name, shape in kind.element_roles:
+            if name not in fields:
+                continue  # an optional role the rule leaves out
             element_roles[name] = resolve_role(name, shape, element,
                                                f"(inside each element of '{sequence.path}') ")
     if kind.check:

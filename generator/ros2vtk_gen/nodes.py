@@ -127,6 +127,7 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         # A stateful kind (marker_array) names the C++ class its subscriber folds messages into.
         "state_class": "",
         "state_header": "",
+        "state_expires": False,
     }
     if kind.view:
         view.update(kind.view(rule, table))

@@ -4,11 +4,16 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkFieldData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 
 using namespace ros2vtk::convert;
@@ -80,4 +85,120 @@ TEST(Marker, LineBackToALineStripInMetres)
   EXPECT_DOUBLE_EQ(marker.points[3], 0.1);
   EXPECT_DOUBLE_EQ(marker.scale[0], 0.001);
   EXPECT_EQ(marker.color[0], 1.0);
+}
+
+TEST(MarkerSet, AMarkerWithALifetimeExpiresThatLongAfterItWasAdded)
+{
+  MarkerSet kept;
+  Marker cube;
+  cube.shape = MarkerShape::Cube;
+  cube.scale[0] = cube.scale[1] = cube.scale[2] = 0.1;
+  Marker forever = cube;
+  cube.lifetime = 0.5;
+  std::string error;
+  kept.set_time(2'000'000'000); // the clock when these arrive: 2 s
+  ASSERT_TRUE(kept.add("a", 1, cube, &error)) << error;
+  ASSERT_TRUE(kept.add("a", 2, forever, &error)) << error;
+  EXPECT_FALSE(kept.expire(2'499'999'999)); // 0.5 s not yet over
+  EXPECT_EQ(kept.size(), 2u);
+  EXPECT_TRUE(kept.expire(2'500'000'000));
+  EXPECT_FALSE(kept.contains("a", 1));
+  EXPECT_TRUE(kept.contains("a", 2)); // lifetime 0: forever
+  EXPECT_FALSE(kept.expire(1'000'000'000'000));
+
+  // A re-added marker counts its lifetime from its new arrival; a clock that went backwards
+  // expires nothing early.
+  kept.set_time(3'000'000'000);
+  ASSERT_TRUE(kept.add("a", 1, cube, &error)) << error;
+  kept.set_time(3'400'000'000);
+  ASSERT_TRUE(kept.add("a", 1, cube, &error)) << error;
+  EXPECT_FALSE(kept.expire(3'500'000'000));
+  EXPECT_FALSE(kept.expire(1'000'000'000));
+  EXPECT_TRUE(kept.expire(3'900'000'000));
+  EXPECT_EQ(kept.size(), 1u);
+}
+
+TEST(MarkerSet, TextMarkersBecomeLabelsBesideTheShapes)
+{
+  MarkerSet kept;
+  Marker cube;
+  cube.shape = MarkerShape::Cube;
+  cube.scale[0] = cube.scale[1] = cube.scale[2] = 0.1;
+  Marker text;
+  text.shape = MarkerShape::Text;
+  text.text = "tool";
+  text.position[1] = 0.2;
+  text.scale[2] = 0.05;
+  text.color[0] = 0.0;
+  std::string error;
+  ASSERT_TRUE(kept.add("a", 1, cube, &error)) << error;
+  ASSERT_TRUE(kept.add("a", 2, text, &error)) << error;
+  vtkNew<vtkPolyData> out;
+  ASSERT_TRUE(kept.to_poly_data(1000.0, out, &error)) << error;
+  EXPECT_EQ(out->GetNumberOfPolys(), 6); // the cube alone: a label adds no geometry
+  auto* names =
+    vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(kLabelTextArray));
+  ASSERT_NE(names, nullptr);
+  ASSERT_EQ(names->GetNumberOfValues(), 1);
+  EXPECT_EQ(names->GetValue(0), "tool");
+  double at[3];
+  out->GetFieldData()->GetArray(kLabelPositionArray)->GetTuple(0, at);
+  EXPECT_DOUBLE_EQ(at[1], 200.0);
+  EXPECT_DOUBLE_EQ(out->GetFieldData()->GetArray(kLabelHeightArray)->GetTuple1(0), 50.0);
+  EXPECT_EQ(out->GetFieldData()->GetArray(kLabelColorArray)->GetComponent(0, 0), 0.0);
+  EXPECT_EQ(out->GetFieldData()->GetArray(kLabelColorArray)->GetComponent(0, 1), 255.0);
+
+  text.scale[2] = 0.0;
+  EXPECT_FALSE(kept.add("a", 2, text, &error));
+  EXPECT_NE(error.find("scale.z"), std::string::npos) << error;
+}
+
+TEST(MarkerSet, MeshResourceMarkersAreReadByTheProcessLoader)
+{
+  Marker mesh;
+  mesh.shape = MarkerShape::MeshResource;
+  mesh.mesh_resource = "package://p/m.stl";
+  mesh.color[2] = 0.0;
+  vtkNew<vtkPolyData> out;
+  std::string error;
+  set_mesh_resource_loader(nullptr);
+  EXPECT_FALSE(marker_to_poly_data(mesh, 1000.0, out, &error));
+  EXPECT_NE(error.find("no mesh loader"), std::string::npos) << error;
+
+  std::vector<std::string> asked;
+  set_mesh_resource_loader(
+    [&asked](const std::string& uri, vtkPolyData* polyData, std::string* why) {
+      asked.push_back(uri);
+      if (uri != "package://p/m.stl")
+      {
+        *why = "not there: " + uri;
+        return false;
+      }
+      vtkNew<vtkPoints> points;
+      points->InsertNextPoint(0, 0, 0);
+      points->InsertNextPoint(1, 0, 0);
+      points->InsertNextPoint(0, 1, 0);
+      vtkNew<vtkCellArray> triangle;
+      const vtkIdType ids[3] = { 0, 1, 2 };
+      triangle->InsertNextCell(3, ids);
+      polyData->SetPoints(points);
+      polyData->SetPolys(triangle);
+      return true;
+    });
+  mesh.scale[0] = 0.5; // metres: 500 mm along x
+  ASSERT_TRUE(marker_to_poly_data(mesh, 1000.0, out, &error)) << error;
+  double b[6];
+  out->GetBounds(b);
+  EXPECT_DOUBLE_EQ(b[1], 500.0);
+  EXPECT_DOUBLE_EQ(b[3], 1000.0);
+  auto* color = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Color"));
+  ASSERT_NE(color, nullptr);
+  EXPECT_EQ(color->GetValue(2), 0); // the marker's colour (the mesh has none of its own)
+
+  MarkerSet kept;
+  mesh.mesh_resource = "package://p/gone.stl";
+  EXPECT_FALSE(kept.add("m", 1, mesh, &error));
+  EXPECT_NE(error.find("not there: package://p/gone.stl"), std::string::npos) << error;
+  EXPECT_EQ(kept.size(), 0u);
+  set_mesh_resource_loader(nullptr);
 }

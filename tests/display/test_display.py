@@ -465,6 +465,135 @@ def test_marker_array_shows_filled_shapes_in_their_colours(ros2vtk, logic, vtk, 
         assert abs(cx - col) < 3 and abs(cy - row) < 3, (kind, cx, cy, col, row)
 
 
+
+def _wait_drawn(logic, dm, view, name, done, seconds=10.0):
+    """Spins, updates the display and renders until done(pixels) holds; the last pixels."""
+    import time
+    deadline = time.monotonic() + seconds
+    while True:
+        logic.Spin()
+        dm.Update()
+        rgb = view.pixels(name)
+        if done(rgb) or time.monotonic() > deadline:
+            return rgb
+        time.sleep(0.05)
+
+
+def test_marker_lifetime_removes_the_marker_after_it_on_the_node_clock(ros2vtk, logic, vtk, peers):
+    """RViz's `lifetime`: a red cube sent once with lifetime 1.5 s is drawn, then disappears with
+    no further message (spins alone expire it); a blue sphere with lifetime 0 stays. rclpy sends
+    the one MarkerArray."""
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('MarkerArray', '/display_lifetime')
+    red = marker('life', 1, 1, -0.05, (1.0, 0.0, 0.0, 1.0))
+    red['lifetime'] = {'sec': 1, 'nanosec': 500_000_000}
+    message = {'markers': [red, marker('life', 2, 2, 0.05, (0.0, 0.0, 1.0, 1.0))]}
+    peers('pub', '/display_lifetime', 'visualization_msgs/MarkerArray', json.dumps(message))
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    rgb = view.pixels('marker_lifetime_drawn')
+    assert mask(rgb, 'red').sum() > 600 and mask(rgb, 'blue').sum() > 600
+    rgb = _wait_drawn(logic, dm, view, 'marker_lifetime_gone', lambda p: mask(p, 'red').sum() == 0)
+    assert mask(rgb, 'red').sum() == 0, 'the cube outlived its lifetime'
+    assert mask(rgb, 'blue').sum() > 600, 'the marker with lifetime 0 must stay'
+    assert subscriber.GetNumberOfMessages() == 1  # gone by spinning alone
+
+
+def test_text_marker_is_drawn_at_its_pose_facing_the_camera(ros2vtk, logic, vtk, peers):
+    """TEXT_VIEW_FACING: yellow text 50 mm high centred at (0, 60 mm, 0), beside a red cube; seen
+    from above AND from the side it shows text pixels there (text lying in a plane of the marker
+    would be edge-on from one of the two)."""
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('MarkerArray', '/display_text')
+    text = marker('text', 1, 9, 0.0, (1.0, 1.0, 0.0, 1.0), size=0.05)
+    text['pose']['position']['y'] = 0.06
+    text['text'] = 'ROS'
+    message = {'markers': [text, marker('text', 2, 1, -0.08, (1.0, 0.0, 0.0, 1.0))]}
+    peers('pub', '/display_text', 'visualization_msgs/MarkerArray', json.dumps(message))
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    assert subscriber.GetLastConversionError() == ''
+    col, row = (int(round(v)) for v in view.display_point(0.0, 60.0, 0.0))
+    for name in ('marker_text_top', 'marker_text_side'):
+        if name == 'marker_text_side':
+            camera = view.renderer.GetActiveCamera()
+            camera.SetPosition(0.0, -1000.0, 0.0)
+            camera.SetFocalPoint(0.0, 0.0, 0.0)
+            camera.SetViewUp(0, 0, 1)
+            view.renderer.ResetCameraClippingRange()
+            dm.Update()
+            col, row = (int(round(v)) for v in view.display_point(0.0, 60.0, 0.0))
+        rgb = view.pixels(name)
+        found = mask(rgb, 'yellow')
+        assert found.sum() > 150, (name, found.sum())
+        cx, cy = centroid(found)
+        # Centred on its position; three capitals 50 mm high are about 50 px high here.
+        assert abs(cx - col) < 25 and abs(cy - row) < 15, (name, cx, cy, col, row)
+        rows = np.nonzero(found.any(axis=1))[0]
+        assert 35 <= rows.max() - rows.min() + 1 <= 65, (name, rows.min(), rows.max())
+        assert mask(rgb, 'red').sum() > 300, name
+
+
+def _cube_package(vtk, folder: Path) -> Path:
+    """<folder>/cubes (a ROS package) with meshes/cube.stl, a 1 m cube (scaled by the marker)."""
+    package = folder / 'cubes'
+    (package / 'meshes').mkdir(parents=True)
+    (package / 'package.xml').write_text('<package format="3"><name>cubes</name></package>')
+    source = vtk.vtkCubeSource()
+    triangles = vtk.vtkTriangleFilter()
+    triangles.SetInputConnection(source.GetOutputPort())
+    writer = vtk.vtkSTLWriter()
+    writer.SetFileName(str(package / 'meshes' / 'cube.stl'))
+    writer.SetInputConnection(triangles.GetOutputPort())
+    writer.Write()
+    return package
+
+
+def test_mesh_resource_marker_is_drawn_in_its_colour_and_a_bad_uri_is_refused(
+        ros2vtk, logic, vtk, peers, tmp_path, monkeypatch):
+    """MESH_RESOURCE: package://cubes/meshes/cube.stl (found through ROS_PACKAGE_PATH, as a robot's
+    meshes are) scaled to 40 mm, drawn in the marker's green; a URI leaving the package and a
+    missing file are refused with a reason naming them, while the other markers still draw."""
+    _cube_package(vtk, tmp_path)
+    monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path))
+    (tmp_path.parent / 'outside.stl').write_bytes((tmp_path / 'cubes' / 'meshes' / 'cube.stl').read_bytes())
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('MarkerArray', '/display_mesh')
+
+    def mesh(marker_id, x, uri):
+        m = marker('mesh', marker_id, 10, x, (0.0, 1.0, 0.0, 1.0))
+        m['mesh_resource'] = uri
+        return m
+
+    message = {'markers': [mesh(1, 0.0, 'package://cubes/meshes/cube.stl'),
+                           mesh(2, 0.08, 'package://cubes/../../outside.stl'),
+                           mesh(3, -0.08, 'package://cubes/meshes/missing.stl'),
+                           marker('mesh', 4, 1, 0.0, (1.0, 0.0, 0.0, 1.0))]}
+    message['markers'][3]['pose']['position']['y'] = 0.08
+    peers('pub', '/display_mesh', 'visualization_msgs/MarkerArray', json.dumps(message))
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    error = subscriber.GetLastConversionError()
+    assert 'outside.stl' in error, error  # the first refusal of the spin is reported
+    rgb = view.pixels('marker_mesh')
+    green = mask(rgb, 'green')
+    col, row = (int(round(v)) for v in view.display_point(0.0, 0.0, 0.0))
+    assert green[row - 2:row + 3, col - 2:col + 3].all()
+    assert 1200 < green.sum() < 2000, green.sum()  # one 40 x 40 mm cube at 1 px per mm
+    cx, cy = centroid(green)
+    assert abs(cx - col) < 3 and abs(cy - row) < 3, (cx, cy, col, row)
+    assert mask(rgb, 'red').sum() > 600  # the cube marker beside them still draws
+    polydata = dm.GetActorForNode(subscriber).GetMapper().GetInput()
+    indices = polydata.GetCellData().GetArray('MarkerIndex')
+    assert {int(indices.GetValue(i)) for i in range(indices.GetNumberOfTuples())} == {0, 1}
+
+
 # ------------------------------------------------------------------------------ slice views
 def test_slice_view_draws_the_intersection_of_a_model(ros2vtk, logic, vtk):
     volume = vtk.vtkImageData()

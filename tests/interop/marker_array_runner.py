@@ -2,9 +2,10 @@
 """Our side of tests/interop/test_scene_marker_array.py: a MarkerArray subscriber node (the
 VTK-wrapped API) on TOPIC; after each spin that brought messages it records what
 GetLastMessage() draws (markers kept, points, each marker's colour, bounds in mm). Prints
-{"ready": true}, then one JSON object with the snapshots once COUNT messages arrived (or S seconds).
+{"ready": true}, then one JSON object with the snapshots once COUNT messages arrived (or S seconds)
+and, with --linger L, what it draws after L more seconds of spins without messages ("after").
 
-    marker_array_runner.py TOPIC [--count N] [--seconds S]
+    marker_array_runner.py TOPIC [--count N] [--seconds S] [--linger L]
 """
 from __future__ import annotations
 
@@ -41,7 +42,19 @@ def snapshot(sub) -> dict:
             'marker_bounds': [bounds[k] for k in sorted(bounds)],
             'marker_lines': [lines.get(k, 0) for k in sorted(colors)],
             'lines': drawn.GetNumberOfLines(), 'bounds': list(drawn.GetBounds()),
-            'scalars': color.GetName() if color else None, 'error': sub.GetLastConversionError()}
+            'scalars': color.GetName() if color else None, 'error': sub.GetLastConversionError(),
+            'labels': labels(drawn)}
+
+
+def labels(drawn) -> list:
+    """The TEXT_VIEW_FACING labels of the drawn poly data: [text, x, y, z, height] (mm)."""
+    text = drawn.GetFieldData().GetAbstractArray('LabelText')
+    if text is None:
+        return []
+    position = drawn.GetFieldData().GetArray('LabelPosition')
+    height = drawn.GetFieldData().GetArray('LabelHeight')
+    return [[text.GetValue(i), *position.GetTuple3(i), height.GetTuple1(i)]
+            for i in range(text.GetNumberOfValues())]
 
 
 def main() -> int:
@@ -49,6 +62,7 @@ def main() -> int:
     parser.add_argument('topic')
     parser.add_argument('--count', type=int, default=3)
     parser.add_argument('--seconds', type=float, default=30.0)
+    parser.add_argument('--linger', type=float, default=0.0)
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
@@ -62,7 +76,12 @@ def main() -> int:
         if sub.GetNumberOfMessages() != seen:
             seen = sub.GetNumberOfMessages()
             snapshots.append(snapshot(sub))
-    print(json.dumps({'snapshots': snapshots}), flush=True)
+    # --linger: spin on without messages (lifetimes expire on spins alone), then draw again.
+    end = time.monotonic() + args.linger
+    while time.monotonic() < end:
+        logic.SpinOnWakeUp(0.05)
+    after = snapshot(sub) if args.linger > 0 else None
+    print(json.dumps({'snapshots': snapshots, 'after': after}), flush=True)
     return 0
 
 

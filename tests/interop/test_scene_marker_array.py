@@ -116,3 +116,41 @@ def test_rclpy_list_markers_line_list_cube_list_sphere_list(ros):
     # The line list's 4 points and one cube per point (vtkCubeSource: 24 points each) are all there
     # is besides the spheres.
     assert drawn['points'] > 4 + 2 * CUBE_POINTS
+
+
+def _marker(ns, marker_id, kind, x, rgba, **extra):
+    marker = {'header': {'frame_id': 'base'}, 'ns': ns, 'id': marker_id, 'type': kind, 'action': 0,
+              'pose': {'position': {'x': x, 'y': 0.0, 'z': 0.0}, 'orientation': {'w': 1.0}},
+              'scale': {'x': 0.1, 'y': 0.1, 'z': 0.1}, 'color': dict(zip('rgba', rgba))}
+    marker.update(extra)
+    return marker
+
+
+def test_rclpy_marker_lifetime_text_and_mesh_resource(ros):
+    """One MarkerArray from rclpy: a red cube with lifetime 1 s, a blue sphere with lifetime 0, a
+    TEXT_VIEW_FACING 'tool' 0.05 m high at x 0.3 m, and a MESH_RESOURCE naming a file outside
+    every allowed root. Drawn at once: cube and sphere, the label, and the mesh refused by name;
+    after 3 s of spins without messages the cube has expired and the rest is unchanged."""
+    topic = '/scene_in/marker_lifetime'
+    message = {'markers': [
+        _marker('l', 1, 1, 1.0, (1.0, 0.0, 0.0, 1.0), lifetime={'sec': 1, 'nanosec': 0}),
+        _marker('l', 2, 2, 2.0, (0.0, 0.0, 1.0, 1.0)),
+        _marker('l', 3, 9, 0.3, (1.0, 1.0, 1.0, 1.0), text='tool',
+                scale={'x': 0.0, 'y': 0.0, 'z': 0.05}),
+        _marker('l', 4, 10, 0.0, (0.0, 1.0, 0.0, 1.0), mesh_resource='file:///etc/ros2vtk_no_mesh.stl')]}
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
+                      '--seconds', '30', '--linger', '3'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    peer = ros.start([str(VENV_PYTHON), str(HERE / 'ros_peer.py'), 'pub', topic,
+                      'visualization_msgs/MarkerArray', json.dumps(message)])
+    code, out, err = ros.finish(ours, timeout=45)
+    ros.stop(peer)
+    assert code == 0, err
+    result = json.loads(out.splitlines()[-1])
+    first, after = result['snapshots'][0], result['after']
+    assert first['markers'] == 2 and first['colors'] == [RED, BLUE], first
+    assert first['labels'] == [['tool', 300.0, 0.0, 0.0, 50.0]], first
+    assert 'ros2vtk_no_mesh.stl' in first['error'], first
+    assert after['count'] == 1, after  # no message since: the spins alone expired the cube
+    assert after['markers'] == 1 and after['colors'] == [BLUE], after
+    assert after['labels'] == first['labels'], after

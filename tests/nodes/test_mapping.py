@@ -163,12 +163,42 @@ def test_marker_array_kind_reads_each_marker_and_names_its_state(table):
     assert rule.kind == "marker_array" and rule.roles["sequence"].path == "markers"
     assert {name: role.path for name, role in rule.element_roles.items()} == {
         "ns": "ns", "id": "id", "action": "action", "type": "type", "position": "pose.position",
-        "orientation": "pose.orientation", "scale": "scale", "color": "color", "points": "points"}
+        "orientation": "pose.orientation", "scale": "scale", "color": "color", "points": "points",
+        "lifetime": "lifetime", "text": "text", "mesh_resource": "mesh_resource",
+        "mesh_use_embedded_materials": "mesh_use_embedded_materials"}
     assert sorted(rule.scaled_roles) == ["points", "position", "scale"]
     view = rule_view(rule, table)
     assert view["state_class"] == "::ros2vtk::convert::MarkerSet"
     assert view["state_header"] == "ros2vtk/convert/Marker.hpp"
+    assert view["state_expires"] is True  # lifetimes: the subscriber expires markers each spin
     assert rule_view(rules["Marker"], table)["state_class"] == ""  # every other kind: stateless
+
+
+def test_marker_kinds_optional_roles_may_be_left_out_but_not_misnamed(tmp_path, table):
+    """lifetime, text, mesh_resource and mesh_use_embedded_materials are optional roles (a lab's
+    Marker-like type may lack them): a rule without them loads and its view has none; a wrong
+    field for one is refused like any role; an unknown role is still an error."""
+    from ros2vtk_gen.nodes import rule_view
+    rule = """\
+    [[mapping]]
+    short_name = "Kept"
+    ros_type = "visualization_msgs/msg/MarkerArray"
+    vtk_type = "vtkPolyData"
+    kind = "marker_array"
+    fields = { sequence = "markers", ns = "ns", id = "id", action = "action", type = "type", position = "pose.position", orientation = "pose.orientation", scale = "scale", color = "color", points = "points" }
+    """
+    loaded = load_rules([write(tmp_path, rule)], table)[0]
+    assert "lifetime" not in loaded.element_roles and "text" not in loaded.element_roles
+    view = rule_view(loaded, table)
+    assert "lifetime" not in view["element_roles"]
+    error = error_of(tmp_path, table, rule.replace('points = "points" }',
+                                                   'points = "points", lifetime = "ns" }')).message
+    assert "role lifetime" in error, error
+    error = error_of(tmp_path, table, rule.replace('points = "points" }',
+                                                   'points = "points", colour = "color" }')).message
+    assert "has no role(s) colour" in error, error
+    error = error_of(tmp_path, table, rule.replace('type = "type", ', '')).message
+    assert "needs role(s) type" in error, error
 
 
 def test_matrix3x3_sequence_array_and_polyline_kinds(tmp_path, table):

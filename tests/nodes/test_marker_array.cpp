@@ -140,9 +140,9 @@ TEST(MarkerArrayFromRclpy, OneMessageAloneAndBadMarkers)
     << error;
   EXPECT_EQ(nothing->GetNumberOfPoints(), 0); // a DELETE alone: nothing to draw
 
-  // A TEXT marker cannot be drawn: refused by name, the others of the message still kept.
+  // A TRIANGLE_LIST marker is not drawn: refused by name, the others of the message still kept.
   visualization_msgs::MarkerArray message = FromRclpy(4);
-  message.markers[1].type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+  message.markers[1].type = visualization_msgs::Marker::TRIANGLE_LIST;
   ros2vtk::convert::MarkerSet kept;
   EXPECT_FALSE(ros2vtk::nodes::ROS2ToVTK(message, kept, &error));
   EXPECT_NE(error.find("ns 'a', id 2"), std::string::npos) << error;

@@ -1097,6 +1097,8 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPol
     case ::ros2vtk::visualization_msgs::msg::Marker::CUBE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::CubeList; break;
     case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::SphereList; break;
     case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
+    case ::ros2vtk::visualization_msgs::msg::Marker::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
     default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
   }
   marker.position[0] = message.pose.position.x;
@@ -1120,6 +1122,9 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPol
     marker.points.push_back(point.y);
     marker.points.push_back(point.z);
   }
+  marker.text = message.text;
+  marker.mesh_resource = message.mesh_resource;
+  marker.mesh_use_embedded_materials = message.mesh_use_embedded_materials;
   return ::ros2vtk::convert::marker_to_poly_data(marker, lengthScale, object, error);
 }
 
@@ -1196,6 +1201,8 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, :
       case Element::CUBE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::CubeList; break;
       case Element::SPHERE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::SphereList; break;
       case Element::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
+      case Element::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
+      case Element::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
       default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
     }
     marker.position[0] = element.pose.position.x;
@@ -1219,6 +1226,10 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, :
       marker.points.push_back(point.y);
       marker.points.push_back(point.z);
     }
+    marker.text = element.text;
+    marker.mesh_resource = element.mesh_resource;
+    marker.mesh_use_embedded_materials = element.mesh_use_embedded_materials;
+    marker.lifetime = element.lifetime.sec + 1e-9 * element.lifetime.nanosec;
     std::string reason;
     if (!state.add(element.ns, element.id, marker, &reason))
     {

@@ -39,6 +39,7 @@ void vtkROS2SubscriberMarkerArrayNode::OnNewMessages()
 {
   this->LastMessageConverted = false;
   this->FoldError.clear();
+  this->State.set_time(this->SpinTimeNanoseconds); // what later lifetimes count from
   for (int i = 0; i < this->GetNumberOfNewMessages(); ++i)
   {
     const auto* raw = static_cast<const MessageType*>(this->GetNewRawMessage(i));
@@ -57,6 +58,17 @@ void vtkROS2SubscriberMarkerArrayNode::OnNewMessages()
   {
     this->WarnedFoldError = this->FoldError;
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberMarkerArrayNode::ExpireKeptState(vtkTypeInt64 nowNanoseconds)
+{
+  if (!this->State.expire(nowNanoseconds))
+  {
+    return false;
+  }
+  this->LastMessageConverted = false;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -67,6 +67,8 @@ protected:
   ::ros2vtk::convert::MarkerSet State; // every received message folded in (OnNewMessages)
   std::string FoldError;        // what the latest spin's messages could not apply
   std::string WarnedFoldError;  // the last reason warned about (once per reason)
+  /// Drops the kept items whose lifetime has passed (the state's expire()).
+  bool ExpireKeptState(vtkTypeInt64 nowNanoseconds) override;
 
 private:
   vtkROS2SubscriberMarkerArrayNode(const vtkROS2SubscriberMarkerArrayNode&) = delete;

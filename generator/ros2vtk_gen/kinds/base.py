@@ -77,8 +77,8 @@ Check = Callable[..., None]
 class Kind:
     """One conversion pattern. `element_roles` are read relative to the element of the
     `sequence` role (PoseArray's `position` inside each of `poses`); `list_roles` take a list of
-    paths (vector_array's components); `scalable` names the roles whose field may appear in
-    `lengths`; `takes_encoding` adds the image encoding parameter to VTKToROS2 and an `Encoding`
+    paths (vector_array's components); `optional_roles` may be left out of a rule; `scalable`
+    names the roles whose field may appear in `lengths`; `takes_encoding` adds the image encoding parameter to VTKToROS2 and an `Encoding`
     property to the publisher node."""
 
     name: str
@@ -86,6 +86,9 @@ class Kind:
     roles: Tuple[Tuple[str, Shape], ...] = ()
     element_roles: Tuple[Tuple[str, Shape], ...] = ()
     list_roles: Tuple[str, ...] = ()
+    # Roles a rule may leave out (a lab's Marker-like type may have no `lifetime`); the
+    # templates test `"role" in rule.roles` / `rule.element_roles` before reading one.
+    optional_roles: Tuple[str, ...] = ()
     scalable: Tuple[str, ...] = ()
     signature: str = OBJECT
     takes_encoding: bool = False

@@ -8,6 +8,9 @@
 #include <vtkAppendPolyData.h>
 #include <vtkArrowSource.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkIntArray.h>
 #include <vtkCellArray.h>
 #include <vtkCubeSource.h>
@@ -25,6 +28,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <cmath>
+#include <mutex>
 
 namespace ros2vtk {
 namespace convert {
@@ -89,6 +93,127 @@ void solid_shape(MarkerShape shape, double sx, double sy, double sz, vtkPolyData
   out->DeepCopy(stretch->GetOutput());
 }
 
+/// The RGBA bytes of a colour in 0..1.
+void color_bytes(const double color[4], unsigned char rgba[4])
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    const double v = std::min(1.0, std::max(0.0, color[c]));
+    rgba[c] = static_cast<unsigned char>(std::lround(v * 255.0));
+  }
+}
+
+/// The label arrays of `poly_data` (created empty when missing).
+struct LabelArrays
+{
+  vtkStringArray* text;
+  vtkDoubleArray* position;
+  vtkDoubleArray* height;
+  vtkUnsignedCharArray* color;
+};
+
+LabelArrays label_arrays(vtkPolyData* poly_data)
+{
+  vtkFieldData* field = poly_data->GetFieldData();
+  if (!vtkStringArray::SafeDownCast(field->GetAbstractArray(kLabelTextArray)))
+  {
+    vtkNew<vtkStringArray> text;
+    text->SetName(kLabelTextArray);
+    field->AddArray(text);
+    vtkNew<vtkDoubleArray> position;
+    position->SetName(kLabelPositionArray);
+    position->SetNumberOfComponents(3);
+    field->AddArray(position);
+    vtkNew<vtkDoubleArray> height;
+    height->SetName(kLabelHeightArray);
+    field->AddArray(height);
+    vtkNew<vtkUnsignedCharArray> color;
+    color->SetName(kLabelColorArray);
+    color->SetNumberOfComponents(4);
+    field->AddArray(color);
+  }
+  return { vtkStringArray::SafeDownCast(field->GetAbstractArray(kLabelTextArray)),
+    vtkDoubleArray::SafeDownCast(field->GetArray(kLabelPositionArray)),
+    vtkDoubleArray::SafeDownCast(field->GetArray(kLabelHeightArray)),
+    vtkUnsignedCharArray::SafeDownCast(field->GetArray(kLabelColorArray)) };
+}
+
+/// Appends every label of `from` to `to`.
+void copy_labels(vtkPolyData* from, vtkPolyData* to)
+{
+  auto* text =
+    vtkStringArray::SafeDownCast(from->GetFieldData()->GetAbstractArray(kLabelTextArray));
+  if (!text)
+  {
+    return;
+  }
+  const LabelArrays source = label_arrays(from);
+  const LabelArrays target = label_arrays(to);
+  for (vtkIdType i = 0; i < source.text->GetNumberOfValues(); ++i)
+  {
+    target.text->InsertNextValue(source.text->GetValue(i));
+    target.position->InsertNextTuple(source.position->GetTuple(i));
+    target.height->InsertNextValue(source.height->GetValue(i));
+    target.color->InsertNextTuple(source.color->GetTuple(i));
+  }
+}
+
+MeshResourceLoader& mesh_resource_loader()
+{
+  static MeshResourceLoader loader;
+  return loader;
+}
+
+std::mutex& mesh_resource_loader_mutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+/// The mesh of a MeshResource marker, scaled by scale (scene units) in the marker's frame;
+/// `embedded` tells whether it kept the file's own colours as its scalars.
+bool mesh_shape(const Marker& marker, double sx, double sy, double sz, vtkPolyData* out,
+  bool* embedded, std::string* error)
+{
+  MeshResourceLoader loader;
+  {
+    std::lock_guard<std::mutex> lock(mesh_resource_loader_mutex());
+    loader = mesh_resource_loader();
+  }
+  if (!loader)
+  {
+    *error = "mesh resource '" + marker.mesh_resource + "': no mesh loader in this process";
+    return false;
+  }
+  if (marker.mesh_resource.empty())
+  {
+    *error = "a mesh resource marker needs a mesh_resource URI";
+    return false;
+  }
+  vtkNew<vtkPolyData> mesh;
+  if (!loader(marker.mesh_resource, mesh, error))
+  {
+    return false;
+  }
+  vtkNew<vtkTransform> stretch;
+  stretch->Scale(sx, sy, sz);
+  vtkNew<vtkTransformPolyDataFilter> scale;
+  scale->SetInputData(mesh);
+  scale->SetTransform(stretch);
+  scale->Update();
+  out->DeepCopy(scale->GetOutput());
+  vtkDataArray* own = out->GetPointData()->GetScalars();
+  *embedded = marker.mesh_use_embedded_materials && own &&
+    own->GetDataType() == VTK_UNSIGNED_CHAR && own->GetNumberOfComponents() == 4;
+  return true;
+}
+
+}
+
+void set_mesh_resource_loader(MeshResourceLoader loader)
+{
+  std::lock_guard<std::mutex> lock(mesh_resource_loader_mutex());
+  mesh_resource_loader() = std::move(loader);
 }
 
 bool marker_to_poly_data(
@@ -115,9 +240,28 @@ bool marker_to_poly_data(
     return fail(error, where,
       "the orientation is not a unit quaternion (norm " + detail::number_text(norm) + ")");
   }
+  if (marker.shape == MarkerShape::Text)
+  {
+    if (!(marker.scale[2] > 0))
+    {
+      return fail(error, where, "a text marker needs a positive scale.z (its height)");
+    }
+    poly_data->Initialize();
+    const LabelArrays labels = label_arrays(poly_data);
+    labels.text->InsertNextValue(marker.text);
+    labels.position->InsertNextTuple3(marker.position[0] * length_scale,
+      marker.position[1] * length_scale, marker.position[2] * length_scale);
+    labels.height->InsertNextValue(marker.scale[2] * length_scale);
+    unsigned char rgba[4];
+    color_bytes(marker.color, rgba);
+    labels.color->InsertNextTypedTuple(rgba);
+    poly_data->Modified();
+    return true;
+  }
   const bool solid = marker.shape == MarkerShape::Arrow || marker.shape == MarkerShape::Cube ||
     marker.shape == MarkerShape::Sphere || marker.shape == MarkerShape::Cylinder ||
-    marker.shape == MarkerShape::CubeList || marker.shape == MarkerShape::SphereList;
+    marker.shape == MarkerShape::CubeList || marker.shape == MarkerShape::SphereList ||
+    marker.shape == MarkerShape::MeshResource;
   if (solid && (marker.scale[0] <= 0 || marker.scale[1] <= 0 || marker.scale[2] <= 0))
   {
     return fail(error, where, "a solid marker needs a positive scale on x, y and z");
@@ -125,9 +269,19 @@ bool marker_to_poly_data(
   const double sx = marker.scale[0] * length_scale, sy = marker.scale[1] * length_scale,
                sz = marker.scale[2] * length_scale;
 
-  vtkNew<vtkPolyData> shape; // in the marker's frame, scene units
+  vtkNew<vtkPolyData> shape;   // in the marker's frame, scene units
+  bool embeddedColors = false; // a mesh keeps its file's colours
   switch (marker.shape)
   {
+    case MarkerShape::MeshResource:
+    {
+      std::string reason;
+      if (!mesh_shape(marker, sx, sy, sz, shape, &embeddedColors, &reason))
+      {
+        return fail(error, where, reason);
+      }
+      break;
+    }
     case MarkerShape::Cube:
     case MarkerShape::Sphere:
     case MarkerShape::Cylinder:
@@ -212,7 +366,7 @@ bool marker_to_poly_data(
       return fail(error, where,
         "this marker type is not supported (supported: arrow, cube, "
         "sphere, cylinder, line strip, line list, cube list, sphere "
-        "list, points)");
+        "list, points, mesh resource)");
   }
 
   vtkNew<vtkTransform> pose;
@@ -230,17 +384,22 @@ bool marker_to_poly_data(
   place->SetTransform(pose);
   place->Update();
 
+  if (embeddedColors)
+  {
+    vtkSmartPointer<vtkDataArray> own = place->GetOutput()->GetPointData()->GetScalars();
+    own->SetName("Color");
+    poly_data->DeepCopy(place->GetOutput());
+    poly_data->GetPointData()->SetScalars(own);
+    poly_data->Modified();
+    return true;
+  }
   vtkNew<vtkUnsignedCharArray> color;
   color->SetName("Color");
   color->SetNumberOfComponents(4);
   const vtkIdType count = place->GetOutput()->GetNumberOfPoints();
   color->SetNumberOfTuples(count);
   unsigned char rgba[4];
-  for (int c = 0; c < 4; ++c)
-  {
-    const double v = std::min(1.0, std::max(0.0, marker.color[c]));
-    rgba[c] = static_cast<unsigned char>(std::lround(v * 255.0));
-  }
+  color_bytes(marker.color, rgba);
   for (vtkIdType i = 0; i < count; ++i)
   {
     color->SetTypedTuple(i, rgba);
@@ -311,8 +470,32 @@ bool MarkerSet::add(const std::string& ns, int id, const Marker& marker, std::st
     }
     return false;
   }
-  this->markers[key] = marker;
+  int64_t expires_at = 0;
+  if (marker.lifetime > 0 && std::isfinite(marker.lifetime))
+  {
+    // At least 1 ns later, so that a stamp of 0 (a clock not yet running) still expires.
+    expires_at = this->now + std::max<int64_t>(1, std::llround(marker.lifetime * 1e9));
+  }
+  this->markers[key] = Kept{ marker, expires_at };
   return true;
+}
+
+bool MarkerSet::expire(int64_t now_nanoseconds)
+{
+  bool dropped = false;
+  for (auto it = this->markers.begin(); it != this->markers.end();)
+  {
+    if (it->second.expires_at != 0 && now_nanoseconds >= it->second.expires_at)
+    {
+      it = this->markers.erase(it);
+      dropped = true;
+    }
+    else
+    {
+      ++it;
+    }
+  }
+  return dropped;
 }
 
 bool MarkerSet::remove(const std::string& ns, int id)
@@ -337,17 +520,24 @@ bool MarkerSet::to_poly_data(double length_scale, vtkPolyData* poly_data, std::s
     return true;
   }
   vtkNew<vtkAppendPolyData> append;
+  vtkNew<vtkPolyData> labels; // the Text markers' labels, in (ns, id) order
   int index = 0;
   for (const auto& entry : this->markers)
   {
     vtkNew<vtkPolyData> piece;
     std::string reason;
-    if (!marker_to_poly_data(entry.second, length_scale, piece, &reason))
+    if (!marker_to_poly_data(entry.second.marker, length_scale, piece, &reason))
     {
       // add() checked it at scale 1; only a scale overflowing to infinity gets here.
       return fail(error, where,
         "marker (ns '" + entry.first.first + "', id " + std::to_string(entry.first.second) +
           "): " + reason);
+    }
+    copy_labels(piece, labels);
+    if (piece->GetNumberOfPoints() == 0)
+    {
+      ++index;
+      continue; // a label, or a list of no points: nothing to append (it has no colour array)
     }
     // Only the arrays every piece has survive the append: keep the colour, drop the rest.
     vtkDataArray* color = piece->GetPointData()->GetArray("Color");
@@ -362,8 +552,17 @@ bool MarkerSet::to_poly_data(double length_scale, vtkPolyData* poly_data, std::s
     piece->GetCellData()->AddArray(markerIndex);
     append->AddInputData(piece);
   }
-  append->Update();
-  poly_data->ShallowCopy(append->GetOutput());
+  if (append->GetNumberOfInputConnections(0) > 0)
+  {
+    append->Update();
+    poly_data->ShallowCopy(append->GetOutput());
+  }
+  else
+  {
+    poly_data->Initialize();
+  }
+  poly_data->GetFieldData()->Initialize();
+  copy_labels(labels, poly_data);
   return true;
 }
 

@@ -13,6 +13,8 @@
 #include "vtkROS2TransformNode.h"
 
 #include "vtkActor.h"
+#include "vtkPropAssembly.h"
+#include "vtkPropCollection.h"
 #include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderer.h"
@@ -433,7 +435,15 @@ vtkROS2SceneNode* vtkROS2DisplayManager::GetNodeForProp(vtkProp* prop) const
 //------------------------------------------------------------------------------
 vtkActor* vtkROS2DisplayManager::GetActorForNode(vtkROS2SceneNode* node) const
 {
-  return vtkActor::SafeDownCast(this->GetPropForNode(node));
+  vtkProp* prop = this->GetPropForNode(node);
+  if (auto* assembly = vtkPropAssembly::SafeDownCast(prop))
+  {
+    // A node drawn by several props (shapes and their labels) has its actor first.
+    return assembly->GetParts()->GetNumberOfItems() > 0
+      ? vtkActor::SafeDownCast(assembly->GetParts()->GetItemAsObject(0))
+      : nullptr;
+  }
+  return vtkActor::SafeDownCast(prop);
 }
 
 //------------------------------------------------------------------------------

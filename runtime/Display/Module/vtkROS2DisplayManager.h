@@ -77,7 +77,8 @@ public:
   int GetNumberOfDisplayedNodes() const;
   /// The prop drawing `node` (vtkActor, vtkImageActor, vtkVolume or vtkPropAssembly), or nullptr.
   vtkProp* GetPropForNode(vtkROS2SceneNode* node) const;
-  /// The prop as a vtkActor (models, point clouds, pose arrays), or nullptr.
+  /// The prop as a vtkActor (models, point clouds, pose arrays; of an assembly, its first part: a
+  /// shape subscriber's actor before its labels), or nullptr.
   vtkActor* GetActorForNode(vtkROS2SceneNode* node) const;
   /// The node a picked prop draws (the prop or a part of it), or nullptr: click-to-select.
   vtkROS2SceneNode* GetNodeForProp(vtkProp* prop) const;

@@ -143,8 +143,18 @@ int vtkROS2SubscriberNode::ProcessIncomingMessages()
   std::vector<ros2vtk::wire::MessagePtr> taken;
   internals.Subscription->take(taken);
   internals.NumberOfNewMessages = static_cast<int>(taken.size());
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  this->SpinTimeNanoseconds = rosNode ? rosNode->GetNodeTimeNanoseconds() : 0;
+  const bool expired = this->ExpireKeptState(this->SpinTimeNanoseconds);
   if (taken.empty())
   {
+    if (expired)
+    {
+      int none = 0;
+      this->UpdateTargetNode();
+      this->MTime.Modified();
+      this->InvokeEvent(vtkCommand::ModifiedEvent, &none);
+    }
     return 0;
   }
   internals.Batch = std::move(taken);

@@ -100,6 +100,15 @@ protected:
   /// Subclasses invalidate their converted value here (convert lazily on Get).
   virtual void OnNewMessages() {}
 
+  /// Called on every spin, with or without messages, before OnNewMessages: a subclass that keeps
+  /// state across messages drops what has expired at `nowNanoseconds` (the ROS node's clock,
+  /// simulated time included) and returns true when that changed what it shows; the spin then
+  /// fires the ModifiedEvent (count 0 when it brought no message).
+  virtual bool ExpireKeptState(vtkTypeInt64 vtkNotUsed(nowNanoseconds)) { return false; }
+  /// The ROS node's clock at the latest spin (0 before the first): when OnNewMessages' messages
+  /// were taken.
+  vtkTypeInt64 SpinTimeNanoseconds = 0;
+
   bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
     const ros2vtk::wire::QoS& qos, std::string* error) override;
   void DestroyEndpoint() override;

@@ -7,6 +7,8 @@
 #ifndef ros2vtk_convert_Marker_hpp
 #define ros2vtk_convert_Marker_hpp
 
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -19,15 +21,19 @@ namespace convert {
 
 enum class MarkerShape
 {
-  Arrow,      ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z
-  Cube,       ///< side lengths scale.x, y, z
-  Sphere,     ///< diameters scale.x, y, z
-  Cylinder,   ///< along +z: diameters scale.x, y, height scale.z
-  LineStrip,  ///< `points` (in the marker's frame) joined by one polyline
-  Points,     ///< `points` as vertices
-  LineList,   ///< `points` in pairs, each pair one line segment (an odd count is refused)
-  CubeList,   ///< a cube of side lengths scale.x, y, z centred on each of `points`
-  SphereList, ///< a sphere of diameters scale.x, y, z centred on each of `points`
+  Arrow,        ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z
+  Cube,         ///< side lengths scale.x, y, z
+  Sphere,       ///< diameters scale.x, y, z
+  Cylinder,     ///< along +z: diameters scale.x, y, height scale.z
+  LineStrip,    ///< `points` (in the marker's frame) joined by one polyline
+  Points,       ///< `points` as vertices
+  LineList,     ///< `points` in pairs, each pair one line segment (an odd count is refused)
+  CubeList,     ///< a cube of side lengths scale.x, y, z centred on each of `points`
+  SphereList,   ///< a sphere of diameters scale.x, y, z centred on each of `points`
+  Text,         ///< `text` centred on the position, facing the viewer, capitals scale.z high:
+                ///< no geometry, a label (the Label* field arrays below) the display draws
+  MeshResource, ///< the mesh file at `mesh_resource` (read by the MeshResourceLoader), scaled
+                ///< by scale.x, y, z
   Unsupported,
 };
 
@@ -39,7 +45,31 @@ struct Marker
   double scale[3] = { 1, 1, 1 };
   double color[4] = { 1, 1, 1, 1 }; ///< r, g, b, a in 0..1
   std::vector<double> points;       ///< flat x0 y0 z0 x1 ..., in the marker's frame
+  /// Seconds a kept marker is shown after it was added (MarkerSet); 0 (or less) is forever.
+  double lifetime = 0;
+  std::string text;                         ///< Text: what is written
+  std::string mesh_resource;                ///< MeshResource: a URI (package://, file://)
+  bool mesh_use_embedded_materials = false; ///< MeshResource: the file's colours, if it has any
 };
+
+/// Reads the mesh a MeshResource marker names into `mesh` (triangles, in metres); when the file
+/// has its own colours, they are RGBA unsigned char point scalars of `mesh`. False and a reason
+/// (which URI, what was wrong) otherwise. Several threads may call it.
+using MeshResourceLoader =
+  std::function<bool(const std::string& uri, vtkPolyData* mesh, std::string* error)>;
+/// The process's loader of MeshResource markers. The Scene module installs one that resolves
+/// URIs as robot meshes are resolved (package:// through AMENT_PREFIX_PATH / ROS_PACKAGE_PATH,
+/// file:// only inside those roots). Without one, MeshResource markers are refused.
+void set_mesh_resource_loader(MeshResourceLoader loader);
+
+/// The labels of Text markers travel as field data of the drawn poly data, one tuple per label
+/// in these arrays: what is written (vtkStringArray), where (3 doubles, scene units, in the
+/// poly data's frame), its height (scene units) and its RGBA colour (4 unsigned chars). A
+/// display draws each facing the camera (runtime/Display's point-cloud and shape manager).
+constexpr const char* kLabelTextArray = "LabelText";
+constexpr const char* kLabelPositionArray = "LabelPosition";
+constexpr const char* kLabelHeightArray = "LabelHeight";
+constexpr const char* kLabelColorArray = "LabelColor";
 
 /// ROS -> VTK: positions, sizes and points are lengths (times length_scale); the pose places
 /// the shape. The poly data gets the surface (or line, or vertices) and an unsigned char RGBA
@@ -66,6 +96,12 @@ public:
   /// (unsupported type, zero size, non-unit quaternion...) is refused with a reason, and the
   /// key is then dropped (the sender replaced the old marker; RViz shows none either).
   bool add(const std::string& ns, int id, const Marker& marker, std::string* error);
+  /// The time (nanoseconds, any clock the caller keeps using) stamped on the markers added from
+  /// now on: a marker with a positive lifetime expires `lifetime` seconds after it.
+  void set_time(int64_t now_nanoseconds) { this->now = now_nanoseconds; }
+  /// Drops every marker whose lifetime has passed at `now_nanoseconds` (as RViz does on its
+  /// clock); true when one was dropped. A clock that went backwards expires nothing early.
+  bool expire(int64_t now_nanoseconds);
   /// Drops (ns, id); false when no such marker was kept (not an error for a display).
   bool remove(const std::string& ns, int id);
   /// Drops every marker (DELETEALL).
@@ -84,7 +120,13 @@ public:
   bool to_poly_data(double length_scale, vtkPolyData* poly_data, std::string* error) const;
 
 private:
-  std::map<std::pair<std::string, int>, Marker> markers;
+  struct Kept
+  {
+    Marker marker;
+    int64_t expires_at; ///< nanoseconds; 0 forever
+  };
+  std::map<std::pair<std::string, int>, Kept> markers;
+  int64_t now = 0;
 };
 
 } // namespace convert
