@@ -399,3 +399,83 @@ def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world
     assert 'Traceback' not in log and 'never retrieved' not in log, log[-3000:]
     assert 'JS Error' not in log, log[-3000:]
     assert orange_pixels(view_png(driver)) > 200  # the first tab still streams
+
+
+def write_sphere_volume(path: Path) -> None:
+    """A 48^3 MetaImage of 5 mm voxels around the robot's column (centre 0, 0, 250 mm): a bright
+    sphere (1000, radius 60 mm) in a dark block (0), written with numpy and VTK's writer."""
+    import numpy as np
+    import vtk
+    from vtk.util import numpy_support
+    n, spacing = 48, 5.0
+    z, y, x = (np.mgrid[:n, :n, :n] - (n - 1) / 2) * spacing
+    voxels = np.where(x * x + y * y + z * z <= 60.0 ** 2, 1000, 0).astype(np.int16)
+    image = vtk.vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetSpacing(spacing, spacing, spacing)
+    image.SetOrigin(-(n - 1) / 2 * spacing, -(n - 1) / 2 * spacing, 250.0 - (n - 1) / 2 * spacing)
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(voxels.ravel(), deep=True, array_type=vtk.VTK_SHORT))
+    writer = vtk.vtkMetaImageWriter()
+    writer.SetFileName(str(path))
+    writer.SetCompression(False)
+    writer.SetInputData(image)
+    writer.Write()
+
+
+def bright_disc(png: bytes) -> dict:
+    """The sphere's cut in a slice pane: white pixels (the sphere at the top of the automatic
+    window) around the pane's centre, dark corners (the block around it)."""
+    image = Image.open(io.BytesIO(png)).convert('RGB')
+    w, h = image.size
+    white = sum(1 for r, g, b in image.get_flattened_data() if min(r, g, b) > 200)
+    centre = image.getpixel((w // 2, h // 2))
+    corners = [image.getpixel((x, y)) for x in (3, w - 4) for y in (3, h - 4)]
+    return {'white_fraction': white / (w * h), 'centre': centre, 'dark_corners': all(max(c) < 60 for c in corners)}
+
+
+def wait_for_message(driver, text: str, seconds: float = 60.0) -> str:
+    """The footer's outcome line once it contains `text` (the last line seen on a timeout)."""
+    seen = []
+    try:
+        return wait_for(f'{text!r} in the outcome line', lambda: (lambda m: seen.append(m) or (text in m and m))(
+            driver.find_element(By.ID, 'message').text), seconds=seconds)
+    except AssertionError as error:
+        raise AssertionError(f'{error}; last outcome line: {seen[-1] if seen else None!r}') from None
+
+
+def test_10_open_a_volume_file_into_the_slice_panes(world):
+    """Volumes: a MetaImage written here is opened from the panel; the three slice panes appear
+    and each shows the sphere's cut as a bright disc in a dark block; the 3D view draws it. A
+    missing file and a file that is not a volume show their error in the panel."""
+    driver = world['driver']
+    assert not driver.find_elements(By.ID, 'slice_panes')  # no volume yet: no panes
+    bad = ARTIFACTS / 'not-a-volume.mha'
+    bad.write_text('this is not a MetaImage header\n')
+    type_into(driver, 'volume_file', str(ARTIFACTS / 'missing.nrrd'))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'Open volume failed: no such file')
+    type_into(driver, 'volume_file', str(bad))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'not a readable MetaImage file')
+    step_shot(driver, '10-volume-errors')
+    sphere = ARTIFACTS / 'sphere.mha'
+    write_sphere_volume(sphere)
+    type_into(driver, 'volume_file', str(sphere))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'Volume sphere opened: 48 x 48 x 48')
+    wait_for('the slice panes shown', lambda: driver.find_elements(By.ID, 'slice_panes'))
+    discs = {}
+
+    def discs_in_every_pane():
+        for orientation in ('axial', 'sagittal', 'coronal'):
+            png = driver.find_element(By.ID, f'slice_{orientation}').screenshot_as_png
+            (ARTIFACTS / f'10-slice-{orientation}.png').write_bytes(png)
+            discs[orientation] = bright_disc(png)
+        return all(d['white_fraction'] > 0.04 and min(d['centre']) > 200 and d['dark_corners'] for d in discs.values())
+    try:
+        wait_for('a bright disc in each slice pane', discs_in_every_pane, seconds=30)
+    finally:
+        step_shot(driver, '10-volume-opened')
+        print(f'slice panes: {discs}')
+    assert 'sphere (volume, 48x48x48)' in driver.find_element(By.ID, 'slice_source').text
+    assert orange_pixels(view_png(driver)) > 50  # the robot still in the (smaller) 3D view

@@ -21,7 +21,7 @@ import time
 
 import vtk
 
-from . import scene_state
+from . import scene_state, volumes
 from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make_render_window
 
 REFRESH_SECONDS = 0.5   # panels and status line
@@ -81,7 +81,7 @@ class VTKMessages:
 class App:
     """One app over one logic: state, controllers, layout, the spin task."""
 
-    def __init__(self, logic, server=None, title='ros2vtk', slices: bool = False):
+    def __init__(self, logic, server=None, title='ros2vtk', slices: bool | str = 'auto'):
         from trame.app import get_server
         self.logic = logic
         self.scene = logic.GetScene()
@@ -94,9 +94,11 @@ class App:
         self.display = make_display(logic, self.renderer)
         self.area = RenderWindowArea(self.window)
         self.view_handler = None
-        # 2D panes of the scene's first volume node (vtkROS2SliceView: needs the Display module).
+        # 2D panes of a volume (vtkROS2SliceView: needs the Display module): shown always
+        # (slices=True), never (False), or while there is a volume to show ('auto').
         import ros2vtk
         self.slices = SlicePanes(self.scene) if slices and hasattr(ros2vtk, 'vtkROS2SliceView') else None
+        self.slices_always = slices is True
         self.slice_widgets, self.slice_handlers = {}, {}
         self.framed = 0
         self.next_frame = self.next_refresh = self.next_slices = self.frame_again_at = 0.0
@@ -128,7 +130,9 @@ class App:
             'remote_param_type': 'double', 'remote_param_value': '20.0', 'remote_param_result': '',
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
-            'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4],
+            'volume_file': '', 'slice_sources': [], 'slice_source': '',
+            'slices_shown': self.slices is not None and self.slices_always,
+            'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4, 5],
             'types_publishers': _short_names(self.node.GetRegisteredROS2PublisherNodes(), 'vtkROS2Publisher'),
             'types_subscribers': _short_names(self.node.GetRegisteredROS2SubscriberNodes(), 'vtkROS2Subscriber'),
         })
@@ -165,12 +169,15 @@ class App:
         c.watch_parameters = self.watch_parameters
         c.set_own_parameter = self.set_own_parameter
         c.set_remote_parameter = self.set_remote_parameter
+        c.open_volume = self.open_volume
+        c.remove_volume = self.remove_volume
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
         c.on_error.add(self._browser_error)
         self.state.change('robot_selected', 'topic_selected')(lambda **_: self.refresh())
         self.state.change('topic_selected')(self._prefill_publish_yaml)
+        self.state.change('slice_source')(self._show_slice_source)
 
     def _browser_error(self, message):
         """A JavaScript error reported by the page: shown in the terminal as one line. Chromium's
@@ -391,6 +398,43 @@ class App:
                 self.state.errors = list(self.errors)
         self.parameter_sets = pending
 
+    def open_volume(self, form=None, path: str | None = None):
+        """Reads a volume file (NRRD, MetaImage, NIfTI) on the server into a vtkROS2VolumeNode:
+        drawn in the 3D view by the display layer, and shown in the slice panes."""
+        self._apply(form)
+        path = self.state.volume_file if path is None else path
+        try:
+            image, file_to_world = volumes.read_volume(path)
+        except ValueError as error:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
+            return self._report(False, '', 'Open volume failed')
+        name = volumes.volume_name(path.strip())
+        node = volumes.add_volume_node(self.scene, image, file_to_world, name)
+        self.display.Update()
+        frame_camera(self.renderer)  # the volume in view (beside what was there)
+        self.render()
+        dims, spacing = image.GetDimensions(), image.GetSpacing()
+        self.state.slice_source = node.GetID()
+        self._show_slice_source(node.GetID())
+        return self._report(True, f'Volume {name} opened: {dims[0]} x {dims[1]} x {dims[2]} voxels of '
+                                  f'{spacing[0]:g} x {spacing[1]:g} x {spacing[2]:g} mm', '')
+
+    def remove_volume(self):
+        """Removes the volume node the slice panes show (a subscriber stays: remove it in Topics)."""
+        node = self.scene.GetNodeByID(self.state.slice_source) if self.state.slice_source else None
+        if node is None or not node.IsA('vtkROS2VolumeNode'):
+            return self._report(False, '', 'Remove volume: choose a volume in the list')
+        name = node.GetName()
+        volumes.remove_volume_node(self.scene, node)
+        self.state.slice_source = ''
+        self._show_slice_source('')
+        return self._report(True, f'Volume {name} removed', '')
+
+    def _show_slice_source(self, slice_source='', **_):
+        if self.slices is not None:
+            self.slices.set_source(slice_source)
+            self.next_slices = 0.0  # at the next spin
+
     def save_scene(self, form=None):
         self._apply(form)
         path = self.state.scene_file
@@ -431,6 +475,12 @@ class App:
         if self.parameter_sets:
             self._take_parameter_answers()
         s.parameters = scene_state.parameter_rows(self.scene)
+        if self.slices is not None:
+            s.slice_sources = volumes.slice_sources(self.scene)
+            shown = self.slices_always or self.slices.volume is not None
+            if shown and self.view_handler is not None:
+                self._stream_slice_panes()
+            s.slices_shown = shown
         then, spins, received = self.last_status
         total = sum(t['count'] for t in s.topics if t['direction'] == 'subscriber')
         elapsed = max(now - then, 1e-6)
@@ -514,9 +564,8 @@ class App:
 
     def _on_ready(self, **_):
         self.view_handler = self.view_widget.create_view_handler(self.area, encoder='jpeg', target_fps=20)
-        for orientation, widget in self.slice_widgets.items():
-            self.slice_handlers[orientation] = widget.create_view_handler(
-                self.slices.areas[orientation], encoder='jpeg', target_fps=10)
+        if self.slices_always:
+            self._stream_slice_panes()
         loop = asyncio.get_event_loop()
 
         def quiet_closed_connections(loop, context):
@@ -527,6 +576,15 @@ class App:
         if wake_up >= 0:
             loop.add_reader(wake_up, self._on_wake_up)
         loop.create_task(self._spin_loop())
+
+    def _stream_slice_panes(self) -> None:
+        """Streams the slice panes (once, when first shown: hidden panes' streams stalled the app's
+        loop once a robot was drawn)."""
+        if self.slice_handlers:
+            return
+        for orientation, widget in self.slice_widgets.items():
+            self.slice_handlers[orientation] = widget.create_view_handler(
+                self.slices.areas[orientation], encoder='jpeg', target_fps=10)
 
     def release_windows(self):
         """Frees the render windows' X resources while their X server is still there (the app's
@@ -560,12 +618,13 @@ def _finish_pending_tasks() -> None:
 
 def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
           open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None,
-          slices: bool = False) -> None:
+          slices: bool | str = 'auto') -> None:
     """Serves the app on `logic` until interrupted, or for `duration` seconds (blocking). Binds
     the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
     network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks).
-    `slices`: axial, sagittal and coronal panes of the scene's first vtkROS2VolumeNode below the
-    3D view (app.slices.set_point(x, y, z) moves their planes)."""
+    `slices`: axial, sagittal and coronal panes of a volume below the 3D view (the one chosen in
+    the Volumes section, else the scene's first vtkROS2VolumeNode; app.slices.set_point(x, y, z)
+    moves their planes): True always, 'auto' (default) while there is a volume, False never."""
     from .view import ensure_x_display
     if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
         raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
