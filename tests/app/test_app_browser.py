@@ -130,6 +130,18 @@ def click(driver, element_id: str) -> None:
     button.click()
 
 
+def choose(driver, select_id: str, item: str) -> None:
+    """Picks `item` in a Vuetify select (opens its menu, clicks the item)."""
+    select = driver.find_element(By.ID, select_id)
+    driver.execute_script('arguments[0].scrollIntoView({block: "center"})', select)
+    select.click()
+    option = wait_for(f'{item} in the {select_id} menu', lambda: [o for o in driver.find_elements(
+        By.CSS_SELECTOR, '.v-overlay--active .v-list-item') if o.text.strip() == item])
+    option[0].click()
+    wait_for(f'{select_id} = {item}', lambda: not driver.find_elements(By.CSS_SELECTOR, '.v-overlay--active .v-list-item'))
+    time.sleep(0.3)
+
+
 def row_text(driver, row_id: str) -> str:
     rows = driver.find_elements(By.ID, row_id)
     return rows[0].text if rows else ''
@@ -309,6 +321,7 @@ def test_6_set_a_remote_rclpy_nodes_parameter_from_the_form(world):
     peer = world['start']([VENV_PYTHON, REPO / 'tests' / 'app' / 'param_peer.py', '--node', 'tuner'],
                           stdout=subprocess.PIPE)
     assert json.loads(peer.stdout.readline()) == {'ready': True}
+    world['tuner'] = peer  # test 11 sets its arrays
     type_into(driver, 'param_node', '/tuner')
     type_into(driver, 'param_names', 'gain')
     click(driver, 'param_watch')
@@ -479,3 +492,42 @@ def test_10_open_a_volume_file_into_the_slice_panes(world):
         print(f'slice panes: {discs}')
     assert 'sphere (volume, 48x48x48)' in driver.find_element(By.ID, 'slice_source').text
     assert orange_pixels(view_png(driver)) > 50  # the robot still in the (smaller) 3D view
+
+
+def test_11_set_array_parameters_from_the_form(world):
+    """Parameters: arrays typed as a YAML list. An rclpy node (its own process, started by test 6)
+    gets `ids` (integer[]) and `names` (string[]) through its set_parameters service and prints
+    the values it now holds; a wrong element type is refused in the panel before anything is
+    sent; our own node's double[] parameter is read back by an rclpy parameter client."""
+    driver = world['driver']
+    peer = world['tuner']
+    type_into(driver, 'remote_param_node', '/tuner')
+
+    def set_remote(name: str, kind: str, text: str) -> None:
+        type_into(driver, 'remote_param_name', name)
+        choose(driver, 'remote_param_type', kind)
+        type_into(driver, 'remote_param_value', text)
+        click(driver, 'remote_param_set')
+    set_remote('ids', 'integer[]', '[4, 5, 6]')
+    assert json.loads(peer.stdout.readline()) == {'ids': [4, 5, 6]}  # the rclpy node's own value
+    wait_for('the answer shown', lambda: 'ids = [4, 5, 6]: set' in driver.find_element(By.ID, 'remote_param_result').text)
+    set_remote('names', 'string[]', "[left, 'right arm']")
+    assert json.loads(peer.stdout.readline()) == {'names': ['left', 'right arm']}
+    wait_for('the answer shown', lambda: ": set" in driver.find_element(By.ID, 'remote_param_result').text
+             and 'names' in driver.find_element(By.ID, 'remote_param_result').text)
+    set_remote('ids', 'integer[]', '[7, eight]')
+    refused = wait_for_message(driver, "integer[]: element 1 ('eight') is not a whole number")
+    # Our own node: a double[] parameter, read back by rclpy.
+    type_into(driver, 'own_param_name', 'weights')
+    choose(driver, 'own_param_type', 'double[]')
+    type_into(driver, 'own_param_value', '[0.25, 1.5, 3]')
+    click(driver, 'own_param_set')
+    wait_for_message(driver, 'weights = [0.25, 1.5, 3]')
+    step_shot(driver, '11-array-parameters')
+    reader = subprocess.run([str(VENV_PYTHON), str(REPO / 'tests' / 'interop' / 'ros_peer.py'), '--node', 'param_reader',
+                             'params', '/slicer', '--get', 'weights'], env=world['env'], capture_output=True, text=True,
+                            timeout=60)
+    got = json.loads(reader.stdout.strip().splitlines()[-1])
+    assert got['get'] == {'weights': [0.25, 1.5, 3.0]}, got
+    assert peer.poll() is None
+    print(f'refused: {refused!r}; our weights read by rclpy: {got["get"]}')

@@ -205,9 +205,10 @@ def _parameters(v3, html, ctrl):
             html.Div('Parameters of our node', classes='text-subtitle-2 mt-2')
             with html.Div(classes='d-flex ga-2'):
                 v3.VTextField(label='name', v_model=('own_param_name',), density='compact', id='own_param_name')
-                v3.VSelect(label='type', v_model=('own_param_type',), items=(['bool', 'integer', 'double', 'string'],),
+                v3.VSelect(label='type', v_model=('own_param_type',), items=('parameter_types',), id='own_param_type',
                            density='compact')
-                v3.VTextField(label='value', v_model=('own_param_value',), density='compact', id='own_param_value')
+                v3.VTextField(label='value (arrays: a list, [1, 2, 3])', v_model=('own_param_value',), density='compact',
+                              id='own_param_value')
             v3.VBtn('Set', click=(ctrl.set_own_parameter, "[{own_param_name: own_param_name, own_param_type: own_param_type, own_param_value: own_param_value}]"), size='small', id='own_param_set')
             html.Div("Set a parameter of another node (its set_parameters service)", classes='text-subtitle-2 mt-2')
             with html.Div(classes='d-flex ga-2'):
@@ -215,9 +216,9 @@ def _parameters(v3, html, ctrl):
                 v3.VTextField(label='name', v_model=('remote_param_name',), density='compact', id='remote_param_name')
             with html.Div(classes='d-flex ga-2'):
                 v3.VSelect(label='type', v_model=('remote_param_type',),
-                           items=(['bool', 'integer', 'double', 'string'],), density='compact')
-                v3.VTextField(label='value', v_model=('remote_param_value',), density='compact',
-                              id='remote_param_value')
+                           items=('parameter_types',), density='compact', id='remote_param_type')
+                v3.VTextField(label='value (arrays: a list, [1, 2, 3])', v_model=('remote_param_value',),
+                              density='compact', id='remote_param_value')
             v3.VBtn('Set on node', click=(ctrl.set_remote_parameter, "[{remote_param_node: remote_param_node, remote_param_name: remote_param_name, remote_param_type: remote_param_type, remote_param_value: remote_param_value}]"), size='small', id='remote_param_set')
             html.Div('{{ remote_param_result }}', classes='text-caption', id='remote_param_result')
 

@@ -49,6 +49,85 @@ class _ClosedConnectionFilter(logging.Filter):
             and 'Cannot write to closing transport' not in text
 
 
+# rcl_interfaces/msg/ParameterType ids and ParameterValue fields of the form's types.
+PARAMETER_TYPES = {'bool': (1, 'bool_value'), 'integer': (2, 'integer_value'), 'double': (3, 'double_value'),
+                   'string': (4, 'string_value'), 'byte[]': (5, 'byte_array_value'),
+                   'bool[]': (6, 'bool_array_value'), 'integer[]': (7, 'integer_array_value'),
+                   'double[]': (8, 'double_array_value'), 'string[]': (9, 'string_array_value')}
+
+
+def parse_parameter_value(kind: str, text: str):
+    """The form's text as a value of `kind` (bool, integer, double, string or an array type such as
+    integer[]: a YAML/JSON list, '[1, 2, 3]'); ValueError naming the element that does not fit."""
+    if kind == 'bool':
+        return text.strip().lower() in ('1', 'true', 'yes', 'on')
+    if kind == 'integer':
+        return int(text)
+    if kind == 'double':
+        return float(text)
+    if kind == 'string':
+        return text
+    if kind not in PARAMETER_TYPES:
+        raise ValueError(f'unknown parameter type {kind!r}')
+    try:
+        import yaml
+        values = yaml.safe_load(text)
+    except ImportError:
+        import json
+        values = json.loads(text)
+    except Exception as error:  # noqa: BLE001 (yaml's own errors: the text is not YAML)
+        raise ValueError(f'{kind}: not a list such as [1, 2, 3] ({str(error).splitlines()[0]})') from None
+    if not isinstance(values, list):
+        raise ValueError(f'{kind}: {text.strip()!r} is not a list such as [1, 2, 3]')
+    element = kind[:-2]
+    fits = {'bool': lambda v: isinstance(v, bool),
+            'integer': lambda v: isinstance(v, int) and not isinstance(v, bool) and -2 ** 63 <= v < 2 ** 63,
+            'double': lambda v: isinstance(v, (int, float)) and not isinstance(v, bool),
+            'string': lambda v: isinstance(v, str),
+            'byte': lambda v: isinstance(v, int) and not isinstance(v, bool) and 0 <= v <= 255}[element]
+    for index, value in enumerate(values):
+        if not fits(value):
+            wanted = {'bool': 'true or false', 'integer': 'a whole number', 'double': 'a number',
+                      'string': "a string (quote it: '1')", 'byte': 'a whole number 0..255'}[element]
+            raise ValueError(f'{kind}: element {index} ({value!r}) is not {wanted}')
+    return [float(v) for v in values] if element == 'double' else values
+
+
+def vtk_array(kind: str, values: list):
+    """A checked list (parse_parameter_value) as the VTK array the parameter setters take."""
+    if kind == 'string[]':
+        array = vtk.vtkStringArray()
+        for value in values:
+            array.InsertNextValue(value)
+        return array
+    array = vtk.vtkDoubleArray() if kind == 'double[]' else vtk.vtkTypeInt64Array()
+    for value in values:
+        array.InsertNextValue(value)
+    return array
+
+
+class _BrowserCounter:
+    """Counts the browser tabs connected to the app (wslink's onConnect/onClose per websocket):
+    `connected` now, `seen` since the start."""
+
+    def __init__(self):
+        self.connected = 0
+        self.seen = 0
+
+    def link_protocol(self):
+        from wslink.websocket import LinkProtocol
+        counter = self
+
+        class Counting(LinkProtocol):
+            def onConnect(self, request, client_id):  # noqa: N802 (wslink's name)
+                counter.connected += 1
+                counter.seen += 1
+
+            def onClose(self, client_id):  # noqa: N802
+                counter.connected = max(0, counter.connected - 1)
+        return Counting()
+
+
 def _short_names(class_names: str, prefix: str):
     """'vtkROS2PublisherStringNode ...' -> ['String', ...] (the names CreateAndAdd... takes)."""
     return [name[len(prefix):-len('Node')] for name in class_names.split()
@@ -106,6 +185,10 @@ class App:
         self.spin_callbacks = []
         self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
         self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
+        self.browsers = _BrowserCounter()
+        self.server.add_protocol_to_configure(lambda protocol: protocol.registerLinkProtocol(
+            self.browsers.link_protocol()))
+        self.stopped_for = ''  # why serve() stopped by itself: 'duration', 'no browser'
         self._init_state(title)
         self._bind_controllers()
         self._build_layout(title)
@@ -129,6 +212,7 @@ class App:
             'remote_param_node': '/robot_state_publisher', 'remote_param_name': 'publish_frequency',
             'remote_param_type': 'double', 'remote_param_value': '20.0', 'remote_param_result': '',
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
+            'parameter_types': list(PARAMETER_TYPES),
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
             'volume_file': '', 'slice_sources': [], 'slice_source': '',
             'slices_shown': self.slices is not None and self.slices_always,
@@ -318,21 +402,22 @@ class App:
         s = self.state
         name, kind, text = s.own_param_name.strip(), s.own_param_type, s.own_param_value
         try:
+            value = parse_parameter_value(kind, text)
             if kind == 'bool':
-                ok = self.node.SetParameterAsBool(name, text.strip().lower() in ('1', 'true', 'yes', 'on'))
+                ok = self.node.SetParameterAsBool(name, value)
             elif kind == 'integer':
-                ok = self.node.SetParameterAsInteger(name, int(text))
+                ok = self.node.SetParameterAsInteger(name, value)
             elif kind == 'double':
-                ok = self.node.SetParameterAsDouble(name, float(text))
-            else:
-                ok = self.node.SetParameterAsString(name, text)
+                ok = self.node.SetParameterAsDouble(name, value)
+            elif kind == 'string':
+                ok = self.node.SetParameterAsString(name, value)
+            else:  # bool[] -> SetParameterAsBoolArray, ...
+                setter = getattr(self.node, f'SetParameterAs{kind[:-2].capitalize()}Array')
+                ok = setter(name, vtk_array(kind, value))
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             ok = False
         return self._report(ok, f'{self.node.GetROS2NodeName()}: {name} = {text}', f'Set parameter {name} failed')
-
-    PARAMETER_TYPES = {'bool': (1, 'bool_value'), 'integer': (2, 'integer_value'), 'double': (3, 'double_value'),
-                       'string': (4, 'string_value')}
 
     def set_remote_parameter(self, form=None):
         """Sends one SetParameters request to another node's `<node>/set_parameters` service (a
@@ -342,21 +427,14 @@ class App:
         s = self.state
         target, name, kind, text = s.remote_param_node.strip(), s.remote_param_name.strip(), s.remote_param_type, \
             s.remote_param_value
-        type_id, field = self.PARAMETER_TYPES.get(kind, (0, ''))
         try:
-            if not target or not name or not field:
+            if not target or not name or kind not in PARAMETER_TYPES:
                 raise ValueError('a node, a name and a type are required')
-            if kind == 'bool':
-                value = 'true' if text.strip().lower() in ('1', 'true', 'yes', 'on') else 'false'
-            elif kind == 'integer':
-                value = str(int(text))
-            elif kind == 'double':
-                value = repr(float(text))
-            else:
-                value = text
+            value = parse_parameter_value(kind, text)
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             return self._report(False, '', f'Set {target} {name} failed')
+        type_id, field = PARAMETER_TYPES[kind]
         service = target.rstrip('/') + '/set_parameters'
         if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a set on {target} still waits for its answer\n')
@@ -366,10 +444,17 @@ class App:
         ok = client is not None
         if ok:
             request = client.CreateBlankRequest()
-            ok = (request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name)
-                  and request.SetField('parameters[0].value.type', str(type_id))
-                  and request.SetField(f'parameters[0].value.{field}', value)
-                  and client.SendAsyncRequest(request) > 0)
+            path = f'parameters[0].value.{field}'
+            ok = request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name) \
+                and request.SetField('parameters[0].value.type', str(type_id))
+            if ok and kind == 'string[]':
+                ok = request.SetFieldFromStringArray(path, vtk_array(kind, value))
+            elif ok and kind.endswith('[]'):
+                ok = request.SetFieldFromArray(path, vtk_array(kind, value))
+            elif ok:
+                ok = request.SetField(path, {True: 'true', False: 'false'}.get(value, str(value))
+                                      if kind != 'double' else repr(value))
+            ok = ok and client.SendAsyncRequest(request) > 0
         if ok:
             description = f'{target}: {name} = {text}'
             self.parameter_sets.append((client, description))
@@ -618,13 +703,16 @@ def _finish_pending_tasks() -> None:
 
 def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
           open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None,
-          slices: bool | str = 'auto') -> None:
+          slices: bool | str = 'auto', browser_wait: float | None = None) -> App:
     """Serves the app on `logic` until interrupted, or for `duration` seconds (blocking). Binds
     the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
     network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks).
     `slices`: axial, sagittal and coronal panes of a volume below the 3D view (the one chosen in
     the Volumes section, else the scene's first vtkROS2VolumeNode; app.slices.set_point(x, y, z)
-    moves their planes): True always, 'auto' (default) while there is a volume, False never."""
+    moves their planes): True always, 'auto' (default) while there is a volume, False never.
+    `browser_wait`: stop after that many seconds if no browser has connected by then (a headless
+    run nobody watches); once one has, serve on (until `duration` or Ctrl-C). Returns the App
+    (`app.stopped_for`: 'duration', 'no browser' or '' for Ctrl-C)."""
     from .view import ensure_x_display
     if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
         raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
@@ -636,9 +724,14 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
     app = App(logic, title=title, slices=slices)
     if on_app is not None:
         on_app(app)
+    def stop(reason: str) -> None:
+        app.stopped_for = reason
+        asyncio.ensure_future(app.server.stop())
     if duration:
+        app.ctrl.on_server_ready.add(lambda **_: asyncio.get_event_loop().call_later(duration, stop, 'duration'))
+    if browser_wait:
         app.ctrl.on_server_ready.add(lambda **_: asyncio.get_event_loop().call_later(
-            duration, lambda: asyncio.ensure_future(app.server.stop())))
+            browser_wait, lambda: None if app.browsers.seen else stop('no browser')))
     app.ctrl.on_server_ready.add(lambda **_: print(f'[app] ros2vtk app at http://{host}:{app.server.port}/',
                                                    flush=True))
     saved_argv = sys.argv
@@ -652,3 +745,4 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
         if xvfb is not None:
             xvfb.terminate()
             xvfb.wait()
+    return app
