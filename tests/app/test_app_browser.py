@@ -7,7 +7,9 @@ in <build>/test-artifacts/app/:
   3. add a YAML publisher and publish from the form -> the rclpy subscriber receives the text;
   4. save the scene, remove the nodes, reload the page, load the scene -> the same nodes are back.
   5-8. the tf frame tree, a remote node's parameter, YAML on a mapped publisher, the icon font;
-  9. closing a tab leaves no traceback in the server's terminal.
+  9. closing a tab leaves no traceback in the server's terminal;
+  10. a volume file opened from the Volumes section -> the slice panes show it, with the robot's cut;
+  11. array parameters (integer[], string[], double[]) set from the form -> the rclpy node holds them.
 """
 from __future__ import annotations
 
@@ -134,7 +136,7 @@ def choose(driver, select_id: str, item: str) -> None:
     """Picks `item` in a Vuetify select (opens its menu, clicks the item)."""
     select = driver.find_element(By.ID, select_id)
     driver.execute_script('arguments[0].scrollIntoView({block: "center"})', select)
-    select.click()
+    select.find_element(By.XPATH, './ancestor::div[contains(@class, "v-field")][1]').click()  # the input is covered
     option = wait_for(f'{item} in the {select_id} menu', lambda: [o for o in driver.find_elements(
         By.CSS_SELECTOR, '.v-overlay--active .v-list-item') if o.text.strip() == item])
     option[0].click()
@@ -415,8 +417,9 @@ def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world
 
 
 def write_sphere_volume(path: Path) -> None:
-    """A 48^3 MetaImage of 5 mm voxels around the robot's column (centre 0, 0, 250 mm): a bright
-    sphere (1000, radius 60 mm) in a dark block (0), written with numpy and VTK's writer."""
+    """A 48^3 MetaImage of 5 mm voxels centred on the orange cylinder on the arm's base (120, 120,
+    125 mm; it does not move): a bright sphere (1000, radius 60 mm) in a dark block (0), written with
+    numpy and VTK's writer. The panes' planes go through the centre, so each cuts the cylinder."""
     import numpy as np
     import vtk
     from vtk.util import numpy_support
@@ -426,7 +429,7 @@ def write_sphere_volume(path: Path) -> None:
     image = vtk.vtkImageData()
     image.SetDimensions(n, n, n)
     image.SetSpacing(spacing, spacing, spacing)
-    image.SetOrigin(-(n - 1) / 2 * spacing, -(n - 1) / 2 * spacing, 250.0 - (n - 1) / 2 * spacing)
+    image.SetOrigin(*(c - (n - 1) / 2 * spacing for c in (120.0, 120.0, 125.0)))
     image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(voxels.ravel(), deep=True, array_type=vtk.VTK_SHORT))
     writer = vtk.vtkMetaImageWriter()
     writer.SetFileName(str(path))
@@ -458,8 +461,9 @@ def wait_for_message(driver, text: str, seconds: float = 60.0) -> str:
 
 def test_10_open_a_volume_file_into_the_slice_panes(world):
     """Volumes: a MetaImage written here is opened from the panel; the three slice panes appear
-    and each shows the sphere's cut as a bright disc in a dark block; the 3D view draws it. A
-    missing file and a file that is not a volume show their error in the panel."""
+    and each shows the sphere's cut as a bright disc in a dark block, with the robot's cut (the
+    base's orange cylinder) drawn in its colour. A missing file and a file that is not a volume
+    show their error in the panel."""
     driver = world['driver']
     assert not driver.find_elements(By.ID, 'slice_panes')  # no volume yet: no panes
     bad = ARTIFACTS / 'not-a-volume.mha'
@@ -490,7 +494,13 @@ def test_10_open_a_volume_file_into_the_slice_panes(world):
     finally:
         step_shot(driver, '10-volume-opened')
         print(f'slice panes: {discs}')
-    assert 'sphere (volume, 48x48x48)' in driver.find_element(By.ID, 'slice_source').text
+    # The robot's intersection with each plane, drawn in its colour as Slicer draws a needle in a CT:
+    # the orange cylinder's cut.
+    cuts = {o: orange_pixels(driver.find_element(By.ID, f'slice_{o}').screenshot_as_png)
+            for o in ('axial', 'sagittal', 'coronal')}
+    print(f'orange (the cylinder cut) in the panes: {cuts}')
+    assert all(n >= 4 for n in cuts.values()), cuts
+    assert 'sphere (volume, 48x48x48)' in driver.find_element(By.TAG_NAME, 'body').text
     assert orange_pixels(view_png(driver)) > 50  # the robot still in the (smaller) 3D view
 
 
