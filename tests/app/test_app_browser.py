@@ -504,6 +504,14 @@ def test_10_open_a_volume_file_into_the_slice_panes(world):
     assert orange_pixels(view_png(driver)) > 50  # the robot still in the (smaller) 3D view
 
 
+def read_json_line(process, seconds: float = 60.0):
+    """The next JSON line a peer prints, or an AssertionError after `seconds` (never a hang)."""
+    import select
+    ready, _, _ = select.select([process.stdout], [], [], seconds)
+    assert ready, f'no line from the peer within {seconds:g} s'
+    return json.loads(process.stdout.readline())
+
+
 def test_11_set_array_parameters_from_the_form(world):
     """Parameters: arrays typed as a YAML list. An rclpy node (its own process, started by test 6)
     gets `ids` (integer[]) and `names` (string[]) through its set_parameters service and prints
@@ -519,10 +527,10 @@ def test_11_set_array_parameters_from_the_form(world):
         type_into(driver, 'remote_param_value', text)
         click(driver, 'remote_param_set')
     set_remote('ids', 'integer[]', '[4, 5, 6]')
-    assert json.loads(peer.stdout.readline()) == {'ids': [4, 5, 6]}  # the rclpy node's own value
+    assert read_json_line(peer) == {'ids': [4, 5, 6]}  # the rclpy node's own value
     wait_for('the answer shown', lambda: 'ids = [4, 5, 6]: set' in driver.find_element(By.ID, 'remote_param_result').text)
     set_remote('names', 'string[]', "[left, 'right arm']")
-    assert json.loads(peer.stdout.readline()) == {'names': ['left', 'right arm']}
+    assert read_json_line(peer) == {'names': ['left', 'right arm']}
     wait_for('the answer shown', lambda: ": set" in driver.find_element(By.ID, 'remote_param_result').text
              and 'names' in driver.find_element(By.ID, 'remote_param_result').text)
     set_remote('ids', 'integer[]', '[7, eight]')
