@@ -3,6 +3,9 @@
 # Sets up (idempotent), builds, writes the phantom, starts the simulated robot(s) in their own
 # process(es) on the loopback, then examples/demo/demo.py with our default ROS node: in the web app
 # (prints its URL, http://127.0.0.1:8080/, until Ctrl-C), or with --window in a VTK window.
+# Without a display the app stops after 20 s unless a browser opens the URL by then (it then serves
+# until Ctrl-C; --duration 0: until Ctrl-C in any case), with PNG frames of its 3D view in
+# build/demo-frames and a summary.
 # Usage: scripts/demo.sh [--window] [--port N] [--robots N] [--spin timer|event] [--offscreen DIR]
 #                        [--duration S] [--urdf FILE] [--motion FILE]
 # --window without a display renders under Xvfb and writes PNG frames to build/demo-frames for 20 s
@@ -65,6 +68,8 @@ if [ "$WINDOW" = 1 ] && [ -z "${DISPLAY:-}" ]; then
   case " ${ARGS[*]-} " in *" --offscreen "*) ;; *) ARGS+=(--offscreen "$BUILD/demo-frames") ;; esac
   echo "[demo] no DISPLAY: rendering offscreen under Xvfb"
   xvfb-run -a -s "-screen 0 1280x720x24" "${VIEWER[@]}" "${ARGS[@]}"
+elif [ -z "${DISPLAY:-}" ]; then
+  "${VIEWER[@]}" --frames "$BUILD/demo-frames" "${ARGS[@]}"   # the app starts its own Xvfb
 else
-  "${VIEWER[@]}" "${ARGS[@]}"   # the app starts its own Xvfb when there is no display
+  "${VIEWER[@]}" "${ARGS[@]}"
 fi

@@ -18,7 +18,10 @@ What happens here, with the ros2vtk Python API only:
     mode also axial, sagittal and coronal panes centred on the tip, the needle's cut drawn);
   * it shows everything in the web app (`ros2vtk.app`, prints the URL) or, with --window, in a
     VTK window; without a display the window mode writes PNG frames (--offscreen DIR) and, unless
-    --duration says otherwise, stops after 20 s with a summary. Ctrl-C stops it cleanly.
+    --duration says otherwise, stops after 20 s with a summary; the app mode without a display
+    writes frames of its 3D view (--frames DIR) and stops after 20 s with a summary unless a
+    browser has connected by then (it then serves until Ctrl-C; --duration 0: until Ctrl-C in any
+    case). Ctrl-C stops it cleanly.
 """
 from __future__ import annotations
 
@@ -555,8 +558,21 @@ def run_window(demo: Demo, args, duration: float) -> int:
 
 
 def run_app(demo: Demo, args, duration: float) -> int:
-    """The web app on the demo's logic, with the phantom in its 3D view."""
+    """The web app on the demo's logic, with the phantom in its 3D view. Without a display and
+    without --duration, nobody may be watching: it stops after HEADLESS_SECONDS unless a browser
+    connects by then (it serves on until Ctrl-C once one has), and writes PNG frames of its 3D
+    view (--frames DIR) while no browser is connected."""
     import ros2vtk.app
+    wait = HEADLESS_SECONDS if not os.environ.get('DISPLAY') and args.duration is None else None
+    frames = {'written': 0, 'next': 0.0}
+    frames_dir = Path(args.frames or 'demo-frames').resolve()
+
+    def write_frame(app) -> None:
+        """A PNG of the app's 3D view (rendered here: no browser asks for frames)."""
+        from PIL import Image
+        pixels, _cols, _rows = app.area.img_cols_rows
+        Image.fromarray(pixels).save(frames_dir / f'app_frame_{frames["written"]:04d}.png')
+        frames['written'] += 1
 
     def setup(app):
         phantom = PhantomView(app.renderer, demo.image, demo.registration)
@@ -570,12 +586,42 @@ def run_app(demo: Demo, args, duration: float) -> int:
                 phantom.follow(demo.tip)
                 if phantom.tip_inside and app.slices is not None:
                     app.slices.follow(*demo.tip)  # planes through the tip, panes centred on it, as in --window
+            now = time.monotonic()
+            if wait and not app.browsers.seen and now >= frames['next']:
+                frames['next'] = now + 1.0 / args.frames_per_second
+                write_frame(app)
         app.add_spin_callback(after_spin)
         app.state.robot_selected = demo.first.GetRobotName()
-    print('[demo] starting the app (Ctrl-C stops it)', flush=True)
-    ros2vtk.app.serve(demo.logic, port=args.port, title='ros2vtk demo', on_app=setup,
-                      duration=duration if duration > 0 else None, slices=True)
-    print('[demo] stopped', flush=True)
+    if wait:
+        frames_dir.mkdir(parents=True, exist_ok=True)
+        print(f'[demo] no display: the app stops after {wait:g} s unless a browser opens it by then (it then '
+              f'serves until Ctrl-C; --duration 0 serves until Ctrl-C anyway); frames of its 3D view go to '
+              f'{frames_dir} until a browser connects', flush=True)
+    else:
+        print('[demo] starting the app (Ctrl-C stops it)', flush=True)
+    start = time.monotonic()
+    interrupted = False
+    try:
+        app = ros2vtk.app.serve(demo.logic, port=args.port, title='ros2vtk demo', on_app=setup,
+                                duration=duration if duration > 0 else None, slices=True, browser_wait=wait)
+        interrupted = not app.stopped_for
+    except KeyboardInterrupt:
+        app, interrupted = None, True
+    summary = (f'[demo] summary: {time.monotonic() - start:.1f} s, {demo.logic.GetNumberOfSpins()} spins, '
+               f'mean spin {demo.logic.GetMeanSpinDuration():.3f} ms, '
+               + ', '.join(f'{ns}: {r.GetRobotState()} {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} links'
+                           for ns, r in demo.robots.items())
+               + (', phantom placed at the tip' if demo.placement.placed else ', phantom not placed')
+               + (f', browsers connected: {app.browsers.seen}' if app is not None else '')
+               + (f', {frames["written"]} frames in {frames_dir}' if frames['written'] else ''))
+    print(summary, flush=True)
+    if interrupted:
+        print('[demo] interrupted (Ctrl-C): stopped', flush=True)
+    elif app.stopped_for == 'no browser':
+        print(f'[demo] no browser connected within {wait:g} s: stopped. To keep it serving, open the URL within '
+              f'{wait:g} s or run with --duration 0 (until Ctrl-C)', flush=True)
+    else:
+        print('[demo] stopped', flush=True)
     return 0
 
 
@@ -590,8 +636,12 @@ def main() -> int:
     parser.add_argument('--port', type=int, default=8080, help='the web app\'s port (127.0.0.1 only)')
     parser.add_argument('--offscreen', default='', help='window mode: write PNG frames here')
     parser.add_argument('--duration', type=float, default=None,
-                        help=f'seconds (default: until Ctrl-C; {HEADLESS_SECONDS:g} s for frames without a display)')
+                        help='seconds; 0: until Ctrl-C. Default without a display: the window mode stops after '
+                             f'{HEADLESS_SECONDS:g} s; the app stops after {HEADLESS_SECONDS:g} s unless a browser '
+                             'has connected (then until Ctrl-C). With a display: until Ctrl-C')
     parser.add_argument('--frames-per-second', type=float, default=0.75, help='PNG frames written per second')
+    parser.add_argument('--frames', default='', help='app mode without a display: where the frames of the 3D view '
+                        'go while no browser is connected (default ./demo-frames)')
     parser.add_argument('--urdf', default=str(REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'),
                         help='the URDF the simulated robot serves (its folder is the base of relative mesh paths)')
     parser.add_argument('--package-path', action='append', default=[],

@@ -1,6 +1,6 @@
 """`ros2vtk` — the one command line (also `python -m ros2vtk`), on the VTK-wrapped API:
 
-    ros2vtk app [--port N] [--host H --allow-remote]   the web app (http://127.0.0.1:8080/)
+    ros2vtk app [--port N] [--volume FILE] [--host H --allow-remote]   the web app (http://127.0.0.1:8080/)
     ros2vtk demo [demo options]                    the demo: simulated robot + CT phantom (scripts/demo.sh)
     ros2vtk nodes                                  ROS nodes on the graph (like `ros2 node list`)
     ros2vtk topics                                 topics with their types (`ros2 topic list -t`)
@@ -61,6 +61,9 @@ def _parser() -> argparse.ArgumentParser:
     app.add_argument('--port', type=int, default=8080, help='port (0: any free one)')
     app.add_argument('--allow-remote', action='store_true', help='allow a --host other than the loopback')
     app.add_argument('--scene', default='', help='a scene file to load at start')
+    app.add_argument('--volume', action='append', default=[], metavar='FILE',
+                     help='a CT/MRI volume to show in the slice panes and the 3D view (NRRD .nrrd/.nhdr, '
+                          'MetaImage .mha/.mhd, NIfTI .nii/.nii.gz); repeatable')
     sub.add_parser('demo', help='the demo (all further arguments go to it)', add_help=False)
     sub.add_parser('nodes', help='ROS nodes on the graph')
     sub.add_parser('topics', help='topics and their types')
@@ -154,9 +157,24 @@ def main(argv=None) -> int:
         if args.scene and not logic.GetScene().ReadFromXMLFile(args.scene):
             print(f'ros2vtk app: cannot load the scene {args.scene}', file=sys.stderr)
             return 2
+        from ros2vtk.app import volumes
+        read = []
+        for path in args.volume:
+            try:
+                read.append((volumes.volume_name(path), *volumes.read_volume(path)))
+            except ValueError as error:
+                print(f'ros2vtk app: {error}', file=sys.stderr)
+                return 2
+
+        def add_volumes(served) -> None:
+            for name, image, file_to_world in read:
+                node = volumes.add_volume_node(logic.GetScene(), image, file_to_world, name)
+                served.state.slice_source = node.GetID()
+                dims = image.GetDimensions()
+                print(f'[app] volume {name}: {dims[0]} x {dims[1]} x {dims[2]} voxels', flush=True)
         print('[app] starting (the first start imports trame and VTK: a few seconds)', flush=True)
         try:
-            app.serve(logic, host=args.host, port=args.port, allow_remote=args.allow_remote)
+            app.serve(logic, host=args.host, port=args.port, allow_remote=args.allow_remote, on_app=add_volumes)
         except (ValueError, RuntimeError) as error:
             print(f'ros2vtk app: {error}', file=sys.stderr)
             return 2

@@ -1,5 +1,6 @@
-"""An rclpy node for the app's remote-parameter test, in its own process: declares `gain`
-(double, 0.5) and refuses negative values with a reason; prints one JSON line per accepted
+"""An rclpy node for the app's remote-parameter tests, in its own process: declares `gain`
+(double, 0.5), refusing negative values with a reason, and two arrays, `ids` (integer[], [1, 2])
+and `names` (string[], ['a']); prints one JSON line per accepted
 change ({"gain": value}) and {"ready": true} once up. Runs until terminated."""
 from __future__ import annotations
 
@@ -18,6 +19,8 @@ def main() -> int:
     rclpy.init()
     node = rclpy.create_node(args.node)
     node.declare_parameter('gain', 0.5)
+    node.declare_parameter('ids', [1, 2])
+    node.declare_parameter('names', ['a'])
 
     def check(parameters) -> SetParametersResult:
         for parameter in parameters:
@@ -27,7 +30,9 @@ def main() -> int:
 
     def report(parameters) -> None:
         for parameter in parameters:
-            print(json.dumps({parameter.name: parameter.value}), flush=True)
+            value = parameter.value
+            print(json.dumps({parameter.name: list(value) if not isinstance(value, (str, float, int, bool)) else value}),
+                  flush=True)
     node.add_on_set_parameters_callback(check)
     node.add_post_set_parameters_callback(report)
     print(json.dumps({'ready': True}), flush=True)

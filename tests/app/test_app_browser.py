@@ -7,7 +7,9 @@ in <build>/test-artifacts/app/:
   3. add a YAML publisher and publish from the form -> the rclpy subscriber receives the text;
   4. save the scene, remove the nodes, reload the page, load the scene -> the same nodes are back.
   5-8. the tf frame tree, a remote node's parameter, YAML on a mapped publisher, the icon font;
-  9. closing a tab leaves no traceback in the server's terminal.
+  9. closing a tab leaves no traceback in the server's terminal;
+  10. a volume file opened from the Volumes section -> the slice panes show it, with the robot's cut;
+  11. array parameters (integer[], string[], double[]) set from the form -> the rclpy node holds them.
 """
 from __future__ import annotations
 
@@ -128,6 +130,18 @@ def click(driver, element_id: str) -> None:
     button = driver.find_element(By.ID, element_id)
     driver.execute_script('arguments[0].scrollIntoView({block: "center"})', button)
     button.click()
+
+
+def choose(driver, select_id: str, item: str) -> None:
+    """Picks `item` in a Vuetify select (opens its menu, clicks the item)."""
+    select = driver.find_element(By.ID, select_id)
+    driver.execute_script('arguments[0].scrollIntoView({block: "center"})', select)
+    select.find_element(By.XPATH, './ancestor::div[contains(@class, "v-field")][1]').click()  # the input is covered
+    option = wait_for(f'{item} in the {select_id} menu', lambda: [o for o in driver.find_elements(
+        By.CSS_SELECTOR, '.v-overlay--active .v-list-item') if o.text.strip() == item])
+    option[0].click()
+    wait_for(f'{select_id} = {item}', lambda: not driver.find_elements(By.CSS_SELECTOR, '.v-overlay--active .v-list-item'))
+    time.sleep(0.3)
 
 
 def row_text(driver, row_id: str) -> str:
@@ -309,6 +323,7 @@ def test_6_set_a_remote_rclpy_nodes_parameter_from_the_form(world):
     peer = world['start']([VENV_PYTHON, REPO / 'tests' / 'app' / 'param_peer.py', '--node', 'tuner'],
                           stdout=subprocess.PIPE)
     assert json.loads(peer.stdout.readline()) == {'ready': True}
+    world['tuner'] = peer  # test 11 sets its arrays
     type_into(driver, 'param_node', '/tuner')
     type_into(driver, 'param_names', 'gain')
     click(driver, 'param_watch')
@@ -399,3 +414,138 @@ def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world
     assert 'Traceback' not in log and 'never retrieved' not in log, log[-3000:]
     assert 'JS Error' not in log, log[-3000:]
     assert orange_pixels(view_png(driver)) > 200  # the first tab still streams
+
+
+def write_sphere_volume(path: Path) -> None:
+    """A 48^3 MetaImage of 5 mm voxels centred on the orange cylinder on the arm's base (120, 120,
+    125 mm; it does not move): a bright sphere (1000, radius 60 mm) in a dark block (0), written with
+    numpy and VTK's writer. The panes' planes go through the centre, so each cuts the cylinder."""
+    import numpy as np
+    import vtk
+    from vtk.util import numpy_support
+    n, spacing = 48, 5.0
+    z, y, x = (np.mgrid[:n, :n, :n] - (n - 1) / 2) * spacing
+    voxels = np.where(x * x + y * y + z * z <= 60.0 ** 2, 1000, 0).astype(np.int16)
+    image = vtk.vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetSpacing(spacing, spacing, spacing)
+    image.SetOrigin(*(c - (n - 1) / 2 * spacing for c in (120.0, 120.0, 125.0)))
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(voxels.ravel(), deep=True, array_type=vtk.VTK_SHORT))
+    writer = vtk.vtkMetaImageWriter()
+    writer.SetFileName(str(path))
+    writer.SetCompression(False)
+    writer.SetInputData(image)
+    writer.Write()
+
+
+def bright_disc(png: bytes) -> dict:
+    """The sphere's cut in a slice pane: white pixels (the sphere at the top of the automatic
+    window) around the pane's centre, dark corners (the block around it)."""
+    image = Image.open(io.BytesIO(png)).convert('RGB')
+    w, h = image.size
+    white = sum(1 for r, g, b in image.get_flattened_data() if min(r, g, b) > 200)
+    centre = image.getpixel((w // 2, h // 2))
+    corners = [image.getpixel((x, y)) for x in (3, w - 4) for y in (3, h - 4)]
+    return {'white_fraction': white / (w * h), 'centre': centre, 'dark_corners': all(max(c) < 60 for c in corners)}
+
+
+def wait_for_message(driver, text: str, seconds: float = 60.0) -> str:
+    """The footer's outcome line once it contains `text` (the last line seen on a timeout)."""
+    seen = []
+    try:
+        return wait_for(f'{text!r} in the outcome line', lambda: (lambda m: seen.append(m) or (text in m and m))(
+            driver.find_element(By.ID, 'message').text), seconds=seconds)
+    except AssertionError as error:
+        raise AssertionError(f'{error}; last outcome line: {seen[-1] if seen else None!r}') from None
+
+
+def test_10_open_a_volume_file_into_the_slice_panes(world):
+    """Volumes: a MetaImage written here is opened from the panel; the three slice panes appear
+    and each shows the sphere's cut as a bright disc in a dark block, with the robot's cut (the
+    base's orange cylinder) drawn in its colour. A missing file and a file that is not a volume
+    show their error in the panel."""
+    driver = world['driver']
+    assert not driver.find_elements(By.ID, 'slice_panes')  # no volume yet: no panes
+    bad = ARTIFACTS / 'not-a-volume.mha'
+    bad.write_text('this is not a MetaImage header\n')
+    type_into(driver, 'volume_file', str(ARTIFACTS / 'missing.nrrd'))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'Open volume failed: no such file')
+    type_into(driver, 'volume_file', str(bad))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'not a readable MetaImage file')
+    step_shot(driver, '10-volume-errors')
+    sphere = ARTIFACTS / 'sphere.mha'
+    write_sphere_volume(sphere)
+    type_into(driver, 'volume_file', str(sphere))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'Volume sphere opened: 48 x 48 x 48')
+    wait_for('the slice panes shown', lambda: driver.find_elements(By.ID, 'slice_panes'))
+    discs = {}
+
+    def discs_in_every_pane():
+        for orientation in ('axial', 'sagittal', 'coronal'):
+            png = driver.find_element(By.ID, f'slice_{orientation}').screenshot_as_png
+            (ARTIFACTS / f'10-slice-{orientation}.png').write_bytes(png)
+            discs[orientation] = bright_disc(png)
+        return all(d['white_fraction'] > 0.04 and min(d['centre']) > 200 and d['dark_corners'] for d in discs.values())
+    try:
+        wait_for('a bright disc in each slice pane', discs_in_every_pane, seconds=30)
+    finally:
+        step_shot(driver, '10-volume-opened')
+        print(f'slice panes: {discs}')
+    # The robot's intersection with each plane, drawn in its colour as Slicer draws a needle in a CT:
+    # the orange cylinder's cut.
+    cuts = {o: orange_pixels(driver.find_element(By.ID, f'slice_{o}').screenshot_as_png)
+            for o in ('axial', 'sagittal', 'coronal')}
+    print(f'orange (the cylinder cut) in the panes: {cuts}')
+    assert all(n >= 4 for n in cuts.values()), cuts
+    assert 'sphere (volume, 48x48x48)' in driver.find_element(By.TAG_NAME, 'body').text
+    assert orange_pixels(view_png(driver)) > 50  # the robot still in the (smaller) 3D view
+
+
+def read_json_line(process, seconds: float = 60.0):
+    """The next JSON line a peer prints, or an AssertionError after `seconds` (never a hang)."""
+    import select
+    ready, _, _ = select.select([process.stdout], [], [], seconds)
+    assert ready, f'no line from the peer within {seconds:g} s'
+    return json.loads(process.stdout.readline())
+
+
+def test_11_set_array_parameters_from_the_form(world):
+    """Parameters: arrays typed as a YAML list. An rclpy node (its own process, started by test 6)
+    gets `ids` (integer[]) and `names` (string[]) through its set_parameters service and prints
+    the values it now holds; a wrong element type is refused in the panel before anything is
+    sent; our own node's double[] parameter is read back by an rclpy parameter client."""
+    driver = world['driver']
+    peer = world['tuner']
+    type_into(driver, 'remote_param_node', '/tuner')
+
+    def set_remote(name: str, kind: str, text: str) -> None:
+        type_into(driver, 'remote_param_name', name)
+        choose(driver, 'remote_param_type', kind)
+        type_into(driver, 'remote_param_value', text)
+        click(driver, 'remote_param_set')
+    set_remote('ids', 'integer[]', '[4, 5, 6]')
+    assert read_json_line(peer) == {'ids': [4, 5, 6]}  # the rclpy node's own value
+    wait_for('the answer shown', lambda: 'ids = [4, 5, 6]: set' in driver.find_element(By.ID, 'remote_param_result').text)
+    set_remote('names', 'string[]', "[left, 'right arm']")
+    assert read_json_line(peer) == {'names': ['left', 'right arm']}
+    wait_for('the answer shown', lambda: ": set" in driver.find_element(By.ID, 'remote_param_result').text
+             and 'names' in driver.find_element(By.ID, 'remote_param_result').text)
+    set_remote('ids', 'integer[]', '[7, eight]')
+    refused = wait_for_message(driver, "integer[]: element 1 ('eight') is not a whole number")
+    # Our own node: a double[] parameter, read back by rclpy.
+    type_into(driver, 'own_param_name', 'weights')
+    choose(driver, 'own_param_type', 'double[]')
+    type_into(driver, 'own_param_value', '[0.25, 1.5, 3]')
+    click(driver, 'own_param_set')
+    wait_for_message(driver, 'weights = [0.25, 1.5, 3]')
+    step_shot(driver, '11-array-parameters')
+    reader = subprocess.run([str(VENV_PYTHON), str(REPO / 'tests' / 'interop' / 'ros_peer.py'), '--node', 'param_reader',
+                             'params', '/slicer', '--get', 'weights'], env=world['env'], capture_output=True, text=True,
+                            timeout=60)
+    got = json.loads(reader.stdout.strip().splitlines()[-1])
+    assert got['get'] == {'weights': [0.25, 1.5, 3.0]}, got
+    assert peer.poll() is None
+    print(f'refused: {refused!r}; our weights read by rclpy: {got["get"]}')

@@ -76,3 +76,17 @@ def test_a_graph_listing_that_finds_nobody_says_what_to_check():
             'ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST, so it looks only on this computer; check that the other side '
             f'uses the same domain and range') in result.stderr, result.stderr
     assert f'UDP ports {7400 + 250 * domain}-{7649 + 250 * domain} (docs/networking.md)' in result.stderr
+
+
+def test_app_volume_option_refuses_a_missing_or_unreadable_file(tmp_path):
+    """`ros2vtk app --volume FILE`: a file it cannot show is refused with its reason, exit 2, before
+    serving (the panel's form shows the same reasons: test_app_browser.py test 10)."""
+    missing = ros2vtk('app', '--port', '0', '--volume', str(tmp_path / 'ct.nrrd'))
+    assert missing.returncode == 2, missing.stdout + missing.stderr
+    assert f'ros2vtk app: no such file: {tmp_path / "ct.nrrd"}' in missing.stderr
+    garbage = tmp_path / 'ct.nii.gz'
+    garbage.write_bytes(b'not a NIfTI file')
+    unreadable = ros2vtk('app', '--port', '0', '--volume', str(garbage))
+    assert unreadable.returncode == 2, unreadable.stdout + unreadable.stderr
+    assert f'{garbage}: not a readable NIfTI file' in unreadable.stderr, unreadable.stderr
+    assert 'Traceback' not in missing.stderr + unreadable.stderr

@@ -3,18 +3,24 @@ its own logic (`ros2vtk.app.serve(logic, on_app=...)`) with the simulated robot 
 insertions. In headless Chromium: the robot row is loaded with every link tracked, the view shows
 the robot's orange (the phantom's pixels are checked by tests/demo, where its projected box is
 known), the three slice panes show the phantom, and once the phantom is placed at the tip they
-follow the needle (its cut drawn in all three at once); the demo stops by itself after --duration
-with exit 0. Screenshots in <build>/test-artifacts/app/demo-app*.png."""
+follow the needle (its cut drawn in all three at once). Run without a display and without
+--duration, as scripts/demo.sh runs it on a headless machine: with a browser connected it serves
+past its 20 s bound and Ctrl-C (SIGINT) ends it with exit 0 and one line; with no browser (a second
+demo, beside) it stops by itself after 20 s, exit 0, having written frames of its 3D view and a
+summary. Screenshots in <build>/test-artifacts/app/demo-app*.png."""
 from __future__ import annotations
 
 import io
 import os
+import shutil
+import signal
 import socket
 import subprocess
 import time
 import urllib.request
 from pathlib import Path
 
+import pytest
 from PIL import Image
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -75,23 +81,68 @@ def pixels_on_the_border(png: bytes, inset: int = 2) -> int:
     return sum(1 for x, y in border if (lambda r, g, b: b - max(r, g) < 20)(*image.getpixel((x, y))))
 
 
-def test_demo_serves_the_app_with_robot_and_phantom():
-    ARTIFACTS.mkdir(parents=True, exist_ok=True)
-    env = dict(os.environ, ROS_DOMAIN_ID=str(int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '185')) + 3),
+HEADLESS_BOUND = 20.0  # examples/demo/demo.py's HEADLESS_SECONDS
+
+
+def demo_env(domain_offset: int) -> dict:
+    env = dict(os.environ, ROS_DOMAIN_ID=str(int(os.environ.get('ROS2VTK_TEST_DOMAIN_BASE', '185')) + domain_offset),
                ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST', PYTHONPATH=str(BUILD / 'python'), PYTHONUNBUFFERED='1')
-    env.pop('DISPLAY', None)  # the app starts its own Xvfb
+    env.pop('DISPLAY', None)  # no display: the app starts its own Xvfb, the headless rules apply
+    return env
+
+
+def phantom_file() -> Path:
     phantom = BUILD / 'test-artifacts' / 'phantom.mha'
     phantom.parent.mkdir(parents=True, exist_ok=True)
-    subprocess.run([str(BUILD / 'runtime' / 'Viewer' / 'ros2vtk-make-phantom'), str(phantom)], check=True,
-                   stdout=subprocess.DEVNULL)
+    if not phantom.exists():
+        subprocess.run([str(BUILD / 'runtime' / 'Viewer' / 'ros2vtk-make-phantom'), str(phantom)], check=True,
+                       stdout=subprocess.DEVNULL)
+    return phantom
+
+
+def free_port() -> int:
     with socket.socket() as s:
         s.bind(('127.0.0.1', 0))
-        port = s.getsockname()[1]
+        return s.getsockname()[1]
+
+
+def start_demo(env: dict, port: int, *extra: str, output=subprocess.PIPE):
+    """The simulated robot and the demo in app mode, with no --duration."""
     sim = subprocess.Popen([str(BUILD / 'runtime' / 'Tools' / 'ros2vtk-sim-robot'), '--urdf', str(URDF),
                             '--motion', str(MOTION)], env=env, stdout=subprocess.DEVNULL)
-    demo = subprocess.Popen([str(VENV_PYTHON), str(REPO / 'examples' / 'demo' / 'demo.py'), '--phantom', str(phantom),
-                             '--port', str(port), '--duration', '60'], env=env, stdout=subprocess.PIPE,
+    demo = subprocess.Popen([str(VENV_PYTHON), str(REPO / 'examples' / 'demo' / 'demo.py'), '--phantom',
+                             str(phantom_file()), '--port', str(port), *extra], env=env, stdout=output,
                             stderr=subprocess.STDOUT, text=True)
+    return sim, demo
+
+
+@pytest.fixture(scope='module')
+def unwatched_demo():
+    """A second demo that no browser opens, started beside the watched one (its 20 s run costs no
+    wall time of its own): its frames directory, its output file and its processes."""
+    frames = ARTIFACTS / 'demo-unwatched-frames'
+    shutil.rmtree(frames, ignore_errors=True)
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    log_path = ARTIFACTS / 'demo-unwatched.log'
+    log = open(log_path, 'w')
+    sim, demo = start_demo(demo_env(4), free_port(), '--frames', str(frames), '--frames-per-second', '1',
+                           output=log)
+    started = time.monotonic()
+    try:
+        yield {'frames': frames, 'log': log_path, 'demo': demo, 'started': started}
+    finally:
+        for process in (demo, sim):
+            if process.poll() is None:
+                process.kill()
+            process.wait()
+        log.close()
+
+
+def test_demo_serves_the_app_with_robot_and_phantom(unwatched_demo):
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+    env = demo_env(3)
+    port = free_port()
+    sim, demo = start_demo(env, port)
     options = webdriver.ChromeOptions()
     for flag in ('--headless=new', '--no-sandbox', '--disable-dev-shm-usage', '--window-size=1600,950'):
         options.add_argument(flag)
@@ -107,6 +158,7 @@ def test_demo_serves_the_app_with_robot_and_phantom():
             return False
     try:
         wait_for('the demo app', listening, seconds=120)
+        served_at = time.monotonic()  # its 20 s bound runs from about now
         driver.get(url)
         wait_for('the robot loaded, 8/8 links', lambda: any(
             'loaded' in r.text and '8/8' in r.text for r in driver.find_elements(By.ID, 'robot-robot')))
@@ -157,7 +209,12 @@ def test_demo_serves_the_app_with_robot_and_phantom():
         (ARTIFACTS / 'demo-view.png').write_bytes(view)
         on_border = pixels_on_the_border(view)
         assert on_border < 5, f'{on_border} pixels of a model on the 3D view\'s border (demo-view.png)'
-        output, _ = demo.communicate(timeout=120)  # --duration 60 ends it
+        # Served past its bound: a browser connected within it. Then Ctrl-C.
+        wait_for('the demo past its headless bound', lambda: time.monotonic() - served_at > HEADLESS_BOUND + 5,
+                 seconds=60)
+        assert demo.poll() is None, 'the demo stopped although a browser had connected'
+        demo.send_signal(signal.SIGINT)
+        output, _ = demo.communicate(timeout=60)
     finally:
         driver.quit()
         for process in (demo, sim):
@@ -166,6 +223,35 @@ def test_demo_serves_the_app_with_robot_and_phantom():
             process.wait()
     assert demo.returncode == 0, output
     assert 'phantom placed at the needle tip' in output, output
-    assert '[demo] stopped' in output, output
+    assert 'unless a browser opens it by then' in output, output  # the rule, said at the start
+    assert output.rstrip().splitlines()[-1] == '[demo] interrupted (Ctrl-C): stopped', output[-2000:]
+    assert 'Traceback' not in output, output
+    assert 'browsers connected: 1' in output or 'browsers connected: 2' in output, output
     print(f'view: {orange} orange pixels, {on_border} model pixels on its border; slice panes (gel/tissue/tumour pixels): {slices}, '
           f'needle (orange) pixels {needle}')
+
+
+def test_unwatched_headless_demo_stops_after_its_bound_with_frames_and_a_summary(unwatched_demo):
+    """No browser ever connects: the app-mode demo without a display and without --duration stops
+    by itself after its 20 s bound with exit 0, says how to keep it serving, and leaves frames of
+    its 3D view (the robot drawn) and a summary."""
+    demo = unwatched_demo['demo']
+    demo.wait(timeout=180)
+    seconds = time.monotonic() - unwatched_demo['started']
+    output = unwatched_demo['log'].read_text()
+    assert demo.returncode == 0, output[-3000:]
+    assert 'Traceback' not in output, output[-3000:]
+    lines = output.rstrip().splitlines()
+    assert lines[-1].startswith(f'[demo] no browser connected within {HEADLESS_BOUND:g} s: stopped. To keep it '
+                                'serving, open the URL'), lines[-1]
+    assert '--duration 0' in lines[-1]
+    summary = [line for line in lines if line.startswith('[demo] summary:')]
+    assert summary and 'browsers connected: 0' in summary[0], output[-3000:]
+    frames = sorted(unwatched_demo['frames'].glob('app_frame_*.png'))
+    assert len(frames) >= 5, (frames, summary)
+    assert f'{len(frames)} frames in' in summary[0], summary
+    last = Image.open(frames[-1]).convert('RGB')
+    orange = sum(1 for r, g, b in last.get_flattened_data() if r > 100 and 0.38 < g / r < 0.6 and b / r < 0.2)
+    assert orange > 40, f'no robot orange in {frames[-1]} ({orange} pixels)'
+    print(f'unwatched demo: exit 0 after {seconds:.1f} s (bound {HEADLESS_BOUND:g} s plus start-up), '
+          f'{len(frames)} frames, {summary[0]}')

@@ -27,6 +27,8 @@ def build(app, title):
                 _topics(v3, html, ctrl)
                 _tf(v3, html, ctrl)
                 _parameters(v3, html, ctrl)
+                if app.slices is not None:
+                    _volumes(v3, html, ctrl)
                 _scene(v3, html, ctrl)
 
         slices = {}
@@ -39,8 +41,9 @@ def build(app, title):
                     with html.Div(style='display: flex; flex-direction: column; width: 100%; height: 100%;'):
                         view = rca.RemoteControlledArea(name='view', display='image',
                                                         style='width: 100%; flex: 2 1 0; min-height: 0;', id='view')
+                        # Mounted while there is a volume ('auto'), or always (slices=True).
                         with html.Div(style='display: flex; flex: 1 1 0; min-height: 0; gap: 2px; '
-                                            'background: #000;'):
+                                            'background: #000;', v_if='slices_shown', id='slice_panes'):
                             for orientation in app.slices.ORIENTATIONS:
                                 with html.Div(style='flex: 1 1 0; position: relative; min-width: 0;'):
                                     slices[orientation] = rca.RemoteControlledArea(
@@ -202,9 +205,10 @@ def _parameters(v3, html, ctrl):
             html.Div('Parameters of our node', classes='text-subtitle-2 mt-2')
             with html.Div(classes='d-flex ga-2'):
                 v3.VTextField(label='name', v_model=('own_param_name',), density='compact', id='own_param_name')
-                v3.VSelect(label='type', v_model=('own_param_type',), items=(['bool', 'integer', 'double', 'string'],),
+                v3.VSelect(label='type', v_model=('own_param_type',), items=('parameter_types',), id='own_param_type',
                            density='compact')
-                v3.VTextField(label='value', v_model=('own_param_value',), density='compact', id='own_param_value')
+                v3.VTextField(label='value (arrays: a list, [1, 2, 3])', v_model=('own_param_value',), density='compact',
+                              id='own_param_value')
             v3.VBtn('Set', click=(ctrl.set_own_parameter, "[{own_param_name: own_param_name, own_param_type: own_param_type, own_param_value: own_param_value}]"), size='small', id='own_param_set')
             html.Div("Set a parameter of another node (its set_parameters service)", classes='text-subtitle-2 mt-2')
             with html.Div(classes='d-flex ga-2'):
@@ -212,11 +216,25 @@ def _parameters(v3, html, ctrl):
                 v3.VTextField(label='name', v_model=('remote_param_name',), density='compact', id='remote_param_name')
             with html.Div(classes='d-flex ga-2'):
                 v3.VSelect(label='type', v_model=('remote_param_type',),
-                           items=(['bool', 'integer', 'double', 'string'],), density='compact')
-                v3.VTextField(label='value', v_model=('remote_param_value',), density='compact',
-                              id='remote_param_value')
+                           items=('parameter_types',), density='compact', id='remote_param_type')
+                v3.VTextField(label='value (arrays: a list, [1, 2, 3])', v_model=('remote_param_value',),
+                              density='compact', id='remote_param_value')
             v3.VBtn('Set on node', click=(ctrl.set_remote_parameter, "[{remote_param_node: remote_param_node, remote_param_name: remote_param_name, remote_param_type: remote_param_type, remote_param_value: remote_param_value}]"), size='small', id='remote_param_set')
             html.Div('{{ remote_param_result }}', classes='text-caption', id='remote_param_result')
+
+
+def _volumes(v3, html, ctrl):
+    with v3.VExpansionPanel(title='Volumes'):
+        with v3.VExpansionPanelText():
+            v3.VTextField(label='volume file on the server (.nrrd .nhdr .mha .mhd .nii .nii.gz)',
+                          v_model=('volume_file',), density='compact', id='volume_file')
+            v3.VBtn('Open volume', click=(ctrl.open_volume, "[{volume_file: volume_file}]"), size='small',
+                    color='primary', id='volume_open')
+            v3.VSelect(label='shown in the slice panes', v_model=('slice_source',), items=('slice_sources',),
+                       item_title='title', item_value='value', density='compact', classes='mt-2',
+                       no_data_text='no volume yet: open a file, or subscribe to a 3D image', id='slice_source')
+            v3.VBtn('Remove volume', click=ctrl.remove_volume, size='small', color='error', variant='tonal',
+                    v_if='slice_source', id='volume_remove')
 
 
 def _scene(v3, html, ctrl):

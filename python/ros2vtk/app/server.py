@@ -21,7 +21,7 @@ import time
 
 import vtk
 
-from . import scene_state
+from . import scene_state, volumes
 from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make_render_window
 
 REFRESH_SECONDS = 0.5   # panels and status line
@@ -47,6 +47,85 @@ class _ClosedConnectionFilter(logging.Filter):
         text = record.getMessage()
         return text != 'Exception raised' and 'ConnectionResetError' not in text \
             and 'Cannot write to closing transport' not in text
+
+
+# rcl_interfaces/msg/ParameterType ids and ParameterValue fields of the form's types.
+PARAMETER_TYPES = {'bool': (1, 'bool_value'), 'integer': (2, 'integer_value'), 'double': (3, 'double_value'),
+                   'string': (4, 'string_value'), 'byte[]': (5, 'byte_array_value'),
+                   'bool[]': (6, 'bool_array_value'), 'integer[]': (7, 'integer_array_value'),
+                   'double[]': (8, 'double_array_value'), 'string[]': (9, 'string_array_value')}
+
+
+def parse_parameter_value(kind: str, text: str):
+    """The form's text as a value of `kind` (bool, integer, double, string or an array type such as
+    integer[]: a YAML/JSON list, '[1, 2, 3]'); ValueError naming the element that does not fit."""
+    if kind == 'bool':
+        return text.strip().lower() in ('1', 'true', 'yes', 'on')
+    if kind == 'integer':
+        return int(text)
+    if kind == 'double':
+        return float(text)
+    if kind == 'string':
+        return text
+    if kind not in PARAMETER_TYPES:
+        raise ValueError(f'unknown parameter type {kind!r}')
+    try:
+        import yaml
+        values = yaml.safe_load(text)
+    except ImportError:
+        import json
+        values = json.loads(text)
+    except Exception as error:  # noqa: BLE001 (yaml's own errors: the text is not YAML)
+        raise ValueError(f'{kind}: not a list such as [1, 2, 3] ({str(error).splitlines()[0]})') from None
+    if not isinstance(values, list):
+        raise ValueError(f'{kind}: {text.strip()!r} is not a list such as [1, 2, 3]')
+    element = kind[:-2]
+    fits = {'bool': lambda v: isinstance(v, bool),
+            'integer': lambda v: isinstance(v, int) and not isinstance(v, bool) and -2 ** 63 <= v < 2 ** 63,
+            'double': lambda v: isinstance(v, (int, float)) and not isinstance(v, bool),
+            'string': lambda v: isinstance(v, str),
+            'byte': lambda v: isinstance(v, int) and not isinstance(v, bool) and 0 <= v <= 255}[element]
+    for index, value in enumerate(values):
+        if not fits(value):
+            wanted = {'bool': 'true or false', 'integer': 'a whole number', 'double': 'a number',
+                      'string': "a string (quote it: '1')", 'byte': 'a whole number 0..255'}[element]
+            raise ValueError(f'{kind}: element {index} ({value!r}) is not {wanted}')
+    return [float(v) for v in values] if element == 'double' else values
+
+
+def vtk_array(kind: str, values: list):
+    """A checked list (parse_parameter_value) as the VTK array the parameter setters take."""
+    if kind == 'string[]':
+        array = vtk.vtkStringArray()
+        for value in values:
+            array.InsertNextValue(value)
+        return array
+    array = vtk.vtkDoubleArray() if kind == 'double[]' else vtk.vtkTypeInt64Array()
+    for value in values:
+        array.InsertNextValue(value)
+    return array
+
+
+class _BrowserCounter:
+    """Counts the browser tabs connected to the app (wslink's onConnect/onClose per websocket):
+    `connected` now, `seen` since the start."""
+
+    def __init__(self):
+        self.connected = 0
+        self.seen = 0
+
+    def link_protocol(self):
+        from wslink.websocket import LinkProtocol
+        counter = self
+
+        class Counting(LinkProtocol):
+            def onConnect(self, request, client_id):  # noqa: N802 (wslink's name)
+                counter.connected += 1
+                counter.seen += 1
+
+            def onClose(self, client_id):  # noqa: N802
+                counter.connected = max(0, counter.connected - 1)
+        return Counting()
 
 
 def _short_names(class_names: str, prefix: str):
@@ -81,7 +160,7 @@ class VTKMessages:
 class App:
     """One app over one logic: state, controllers, layout, the spin task."""
 
-    def __init__(self, logic, server=None, title='ros2vtk', slices: bool = False):
+    def __init__(self, logic, server=None, title='ros2vtk', slices: bool | str = 'auto'):
         from trame.app import get_server
         self.logic = logic
         self.scene = logic.GetScene()
@@ -94,9 +173,11 @@ class App:
         self.display = make_display(logic, self.renderer)
         self.area = RenderWindowArea(self.window)
         self.view_handler = None
-        # 2D panes of the scene's first volume node (vtkROS2SliceView: needs the Display module).
+        # 2D panes of a volume (vtkROS2SliceView: needs the Display module): shown always
+        # (slices=True), never (False), or while there is a volume to show ('auto').
         import ros2vtk
         self.slices = SlicePanes(self.scene) if slices and hasattr(ros2vtk, 'vtkROS2SliceView') else None
+        self.slices_always = slices is True
         self.slice_widgets, self.slice_handlers = {}, {}
         self.framed = 0
         self.next_frame = self.next_refresh = self.next_slices = self.frame_again_at = 0.0
@@ -104,6 +185,10 @@ class App:
         self.spin_callbacks = []
         self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
         self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
+        self.browsers = _BrowserCounter()
+        self.server.add_protocol_to_configure(lambda protocol: protocol.registerLinkProtocol(
+            self.browsers.link_protocol()))
+        self.stopped_for = ''  # why serve() stopped by itself: 'duration', 'no browser'
         self._init_state(title)
         self._bind_controllers()
         self._build_layout(title)
@@ -127,8 +212,11 @@ class App:
             'remote_param_node': '/robot_state_publisher', 'remote_param_name': 'publish_frequency',
             'remote_param_type': 'double', 'remote_param_value': '20.0', 'remote_param_result': '',
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
+            'parameter_types': list(PARAMETER_TYPES),
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
-            'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4],
+            'volume_file': '', 'slice_sources': [], 'slice_source': '',
+            'slices_shown': self.slices is not None and self.slices_always,
+            'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4, 5],
             'types_publishers': _short_names(self.node.GetRegisteredROS2PublisherNodes(), 'vtkROS2Publisher'),
             'types_subscribers': _short_names(self.node.GetRegisteredROS2SubscriberNodes(), 'vtkROS2Subscriber'),
         })
@@ -165,12 +253,15 @@ class App:
         c.watch_parameters = self.watch_parameters
         c.set_own_parameter = self.set_own_parameter
         c.set_remote_parameter = self.set_remote_parameter
+        c.open_volume = self.open_volume
+        c.remove_volume = self.remove_volume
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
         c.on_error.add(self._browser_error)
         self.state.change('robot_selected', 'topic_selected')(lambda **_: self.refresh())
         self.state.change('topic_selected')(self._prefill_publish_yaml)
+        self.state.change('slice_source')(self._show_slice_source)
 
     def _browser_error(self, message):
         """A JavaScript error reported by the page: shown in the terminal as one line. Chromium's
@@ -311,21 +402,22 @@ class App:
         s = self.state
         name, kind, text = s.own_param_name.strip(), s.own_param_type, s.own_param_value
         try:
+            value = parse_parameter_value(kind, text)
             if kind == 'bool':
-                ok = self.node.SetParameterAsBool(name, text.strip().lower() in ('1', 'true', 'yes', 'on'))
+                ok = self.node.SetParameterAsBool(name, value)
             elif kind == 'integer':
-                ok = self.node.SetParameterAsInteger(name, int(text))
+                ok = self.node.SetParameterAsInteger(name, value)
             elif kind == 'double':
-                ok = self.node.SetParameterAsDouble(name, float(text))
-            else:
-                ok = self.node.SetParameterAsString(name, text)
+                ok = self.node.SetParameterAsDouble(name, value)
+            elif kind == 'string':
+                ok = self.node.SetParameterAsString(name, value)
+            else:  # bool[] -> SetParameterAsBoolArray, ...
+                setter = getattr(self.node, f'SetParameterAs{kind[:-2].capitalize()}Array')
+                ok = setter(name, vtk_array(kind, value))
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             ok = False
         return self._report(ok, f'{self.node.GetROS2NodeName()}: {name} = {text}', f'Set parameter {name} failed')
-
-    PARAMETER_TYPES = {'bool': (1, 'bool_value'), 'integer': (2, 'integer_value'), 'double': (3, 'double_value'),
-                       'string': (4, 'string_value')}
 
     def set_remote_parameter(self, form=None):
         """Sends one SetParameters request to another node's `<node>/set_parameters` service (a
@@ -335,21 +427,14 @@ class App:
         s = self.state
         target, name, kind, text = s.remote_param_node.strip(), s.remote_param_name.strip(), s.remote_param_type, \
             s.remote_param_value
-        type_id, field = self.PARAMETER_TYPES.get(kind, (0, ''))
         try:
-            if not target or not name or not field:
+            if not target or not name or kind not in PARAMETER_TYPES:
                 raise ValueError('a node, a name and a type are required')
-            if kind == 'bool':
-                value = 'true' if text.strip().lower() in ('1', 'true', 'yes', 'on') else 'false'
-            elif kind == 'integer':
-                value = str(int(text))
-            elif kind == 'double':
-                value = repr(float(text))
-            else:
-                value = text
+            value = parse_parameter_value(kind, text)
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             return self._report(False, '', f'Set {target} {name} failed')
+        type_id, field = PARAMETER_TYPES[kind]
         service = target.rstrip('/') + '/set_parameters'
         if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a set on {target} still waits for its answer\n')
@@ -359,10 +444,17 @@ class App:
         ok = client is not None
         if ok:
             request = client.CreateBlankRequest()
-            ok = (request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name)
-                  and request.SetField('parameters[0].value.type', str(type_id))
-                  and request.SetField(f'parameters[0].value.{field}', value)
-                  and client.SendAsyncRequest(request) > 0)
+            path = f'parameters[0].value.{field}'
+            ok = request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name) \
+                and request.SetField('parameters[0].value.type', str(type_id))
+            if ok and kind == 'string[]':
+                ok = request.SetFieldFromStringArray(path, vtk_array(kind, value))
+            elif ok and kind.endswith('[]'):
+                ok = request.SetFieldFromArray(path, vtk_array(kind, value))
+            elif ok:
+                ok = request.SetField(path, {True: 'true', False: 'false'}.get(value, str(value))
+                                      if kind != 'double' else repr(value))
+            ok = ok and client.SendAsyncRequest(request) > 0
         if ok:
             description = f'{target}: {name} = {text}'
             self.parameter_sets.append((client, description))
@@ -390,6 +482,43 @@ class App:
                 self.errors = (self.errors + [text])[-20:]
                 self.state.errors = list(self.errors)
         self.parameter_sets = pending
+
+    def open_volume(self, form=None, path: str | None = None):
+        """Reads a volume file (NRRD, MetaImage, NIfTI) on the server into a vtkROS2VolumeNode:
+        drawn in the 3D view by the display layer, and shown in the slice panes."""
+        self._apply(form)
+        path = self.state.volume_file if path is None else path
+        try:
+            image, file_to_world = volumes.read_volume(path)
+        except ValueError as error:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
+            return self._report(False, '', 'Open volume failed')
+        name = volumes.volume_name(path.strip())
+        node = volumes.add_volume_node(self.scene, image, file_to_world, name)
+        self.display.Update()
+        frame_camera(self.renderer)  # the volume in view (beside what was there)
+        self.render()
+        dims, spacing = image.GetDimensions(), image.GetSpacing()
+        self.state.slice_source = node.GetID()
+        self._show_slice_source(node.GetID())
+        return self._report(True, f'Volume {name} opened: {dims[0]} x {dims[1]} x {dims[2]} voxels of '
+                                  f'{spacing[0]:g} x {spacing[1]:g} x {spacing[2]:g} mm', '')
+
+    def remove_volume(self):
+        """Removes the volume node the slice panes show (a subscriber stays: remove it in Topics)."""
+        node = self.scene.GetNodeByID(self.state.slice_source) if self.state.slice_source else None
+        if node is None or not node.IsA('vtkROS2VolumeNode'):
+            return self._report(False, '', 'Remove volume: choose a volume in the list')
+        name = node.GetName()
+        volumes.remove_volume_node(self.scene, node)
+        self.state.slice_source = ''
+        self._show_slice_source('')
+        return self._report(True, f'Volume {name} removed', '')
+
+    def _show_slice_source(self, slice_source='', **_):
+        if self.slices is not None:
+            self.slices.set_source(slice_source)
+            self.next_slices = 0.0  # at the next spin
 
     def save_scene(self, form=None):
         self._apply(form)
@@ -431,6 +560,12 @@ class App:
         if self.parameter_sets:
             self._take_parameter_answers()
         s.parameters = scene_state.parameter_rows(self.scene)
+        if self.slices is not None:
+            s.slice_sources = volumes.slice_sources(self.scene)
+            shown = self.slices_always or self.slices.volume is not None
+            if shown and self.view_handler is not None:
+                self._stream_slice_panes()
+            s.slices_shown = shown
         then, spins, received = self.last_status
         total = sum(t['count'] for t in s.topics if t['direction'] == 'subscriber')
         elapsed = max(now - then, 1e-6)
@@ -514,9 +649,8 @@ class App:
 
     def _on_ready(self, **_):
         self.view_handler = self.view_widget.create_view_handler(self.area, encoder='jpeg', target_fps=20)
-        for orientation, widget in self.slice_widgets.items():
-            self.slice_handlers[orientation] = widget.create_view_handler(
-                self.slices.areas[orientation], encoder='jpeg', target_fps=10)
+        if self.slices_always:
+            self._stream_slice_panes()
         loop = asyncio.get_event_loop()
 
         def quiet_closed_connections(loop, context):
@@ -527,6 +661,15 @@ class App:
         if wake_up >= 0:
             loop.add_reader(wake_up, self._on_wake_up)
         loop.create_task(self._spin_loop())
+
+    def _stream_slice_panes(self) -> None:
+        """Streams the slice panes (once, when first shown: hidden panes' streams stalled the app's
+        loop once a robot was drawn)."""
+        if self.slice_handlers:
+            return
+        for orientation, widget in self.slice_widgets.items():
+            self.slice_handlers[orientation] = widget.create_view_handler(
+                self.slices.areas[orientation], encoder='jpeg', target_fps=10)
 
     def release_windows(self):
         """Frees the render windows' X resources while their X server is still there (the app's
@@ -560,12 +703,16 @@ def _finish_pending_tasks() -> None:
 
 def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool = False,
           open_browser: bool = False, title: str = 'ros2vtk', on_app=None, duration: float | None = None,
-          slices: bool = False) -> None:
+          slices: bool | str = 'auto', browser_wait: float | None = None) -> App:
     """Serves the app on `logic` until interrupted, or for `duration` seconds (blocking). Binds
     the loopback unless `allow_remote` is set; another host is then reachable by anyone on the
     network. `on_app(app)` runs once the App exists (add actors to app.renderer, spin callbacks).
-    `slices`: axial, sagittal and coronal panes of the scene's first vtkROS2VolumeNode below the
-    3D view (app.slices.set_point(x, y, z) moves their planes)."""
+    `slices`: axial, sagittal and coronal panes of a volume below the 3D view (the one chosen in
+    the Volumes section, else the scene's first vtkROS2VolumeNode; app.slices.set_point(x, y, z)
+    moves their planes): True always, 'auto' (default) while there is a volume, False never.
+    `browser_wait`: stop after that many seconds if no browser has connected by then (a headless
+    run nobody watches); once one has, serve on (until `duration` or Ctrl-C). Returns the App
+    (`app.stopped_for`: 'duration', 'no browser' or '' for Ctrl-C)."""
     from .view import ensure_x_display
     if host not in ('127.0.0.1', 'localhost', '::1') and not allow_remote:
         raise ValueError(f'serve: host {host} is not the loopback; pass allow_remote=True (--allow-remote) to serve it')
@@ -577,9 +724,14 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
     app = App(logic, title=title, slices=slices)
     if on_app is not None:
         on_app(app)
+    def stop(reason: str) -> None:
+        app.stopped_for = reason
+        asyncio.ensure_future(app.server.stop())
     if duration:
+        app.ctrl.on_server_ready.add(lambda **_: asyncio.get_event_loop().call_later(duration, stop, 'duration'))
+    if browser_wait:
         app.ctrl.on_server_ready.add(lambda **_: asyncio.get_event_loop().call_later(
-            duration, lambda: asyncio.ensure_future(app.server.stop())))
+            browser_wait, lambda: None if app.browsers.seen else stop('no browser')))
     app.ctrl.on_server_ready.add(lambda **_: print(f'[app] ros2vtk app at http://{host}:{app.server.port}/',
                                                    flush=True))
     saved_argv = sys.argv
@@ -593,3 +745,4 @@ def serve(logic, host: str = '127.0.0.1', port: int = 8080, allow_remote: bool =
         if xvfb is not None:
             xvfb.terminate()
             xvfb.wait()
+    return app

@@ -17,6 +17,8 @@ import time
 import numpy as np
 import vtk
 
+from .volumes import image_of
+
 # Slicer's 3D view background (bottom, top), so the view looks as Slicer users know it.
 BACKGROUND_BOTTOM = (0.7568, 0.7647, 0.9098)
 BACKGROUND_TOP = (0.4549, 0.4706, 0.7451)
@@ -187,8 +189,9 @@ def frame_camera(renderer) -> None:
 
 
 class SlicePanes:
-    """Axial, sagittal and coronal 2D views (Slicer's red, yellow and green) of the scene's first
-    vtkROS2VolumeNode, each a vtkROS2SliceView in its own offscreen window streamed as the 3D
+    """Axial, sagittal and coronal 2D views (Slicer's red, yellow and green) of a volume: the
+    chosen source (`set_source`: a vtkROS2VolumeNode, or an image subscriber whose newest image is
+    3D), else the scene's first vtkROS2VolumeNode; each a vtkROS2SliceView in its own offscreen window streamed as the 3D
     view is (`areas`, one RenderWindowArea per orientation). The models cut by each slice plane
     (a robot's needle) are drawn on it in their colours. As in Slicer, each pane stays centred
     on the volume and only its plane moves: through `point` (world mm) once a script calls
@@ -214,6 +217,7 @@ class SlicePanes:
             self.areas[orientation] = RenderWindowArea(window, vtk.vtkInteractorStyleImage())
             self.views[orientation], self.windows[orientation] = view, window
         self.volume = None
+        self.source_id = ''  # the chosen source's node ID ('' : the scene's first volume node)
         self.point: tuple[float, float, float] | None = None
         self.centred = False  # panes centred on the point (follow) or on the volume
 
@@ -234,16 +238,24 @@ class SlicePanes:
                 view.SetFieldOfView(half_height)
         self.centred = True
 
+    def set_source(self, node_id: str) -> None:
+        """The node the panes show (by ID): a volume node or a 3D image subscriber; '' for the
+        scene's first volume node. Applied on the next update."""
+        self.source_id = node_id or ''
+
     def _image_to_world(self) -> vtk.vtkMatrix4x4:
+        """A volume node's parent transform to world; identity for a subscriber's image (the slice
+        view takes those in world coordinates)."""
         matrix = vtk.vtkMatrix4x4()
-        parent = self.volume.GetParentTransformNode() if self.volume is not None else None
+        parent = self.volume.GetParentTransformNode() if self.volume is not None and hasattr(
+            self.volume, 'GetParentTransformNode') else None
         if parent is not None:
             parent.GetMatrixTransformToWorld(matrix)
         return matrix
 
     def volume_center(self) -> tuple[float, float, float] | None:
         """The centre of the shown volume in world mm (under its parent transform)."""
-        image = self.volume.GetImageData() if self.volume is not None else None
+        image = image_of(self.volume)
         if image is None:
             return None
         b = image.GetBounds()
@@ -253,7 +265,7 @@ class SlicePanes:
     def clamped_point(self) -> tuple[float, float, float] | None:
         """The point kept one voxel inside the volume (a plane on or beyond its faces would show
         nothing), in world mm."""
-        image = self.volume.GetImageData() if self.volume is not None else None
+        image = image_of(self.volume)
         if image is None or self.point is None:
             return self.point
         to_world = self._image_to_world()
@@ -268,15 +280,22 @@ class SlicePanes:
     def update(self) -> bool:
         """Follows the scene's first volume node and the point; returns whether a pane changed
         (render then)."""
-        volumes = vtk.vtkCollection()
-        self.scene.GetNodesByClass('vtkROS2VolumeNode', volumes)
-        volume = volumes.GetItemAsObject(0) if volumes.GetNumberOfItems() else None
+        volume = self.scene.GetNodeByID(self.source_id) if self.source_id else None
+        if volume is None:
+            volumes = vtk.vtkCollection()
+            self.scene.GetNodesByClass('vtkROS2VolumeNode', volumes)
+            volume = volumes.GetItemAsObject(0) if volumes.GetNumberOfItems() else None
         if volume is not self.volume:
             self.volume = volume
+            self.centers.clear()
             for view in self.views.values():
                 view.SetVolumeNode(volume)
-                if volume is not None and volume.GetWindow() > 0:
-                    view.SetWindowLevel(volume.GetWindow(), volume.GetLevel())
+                window = volume.GetWindow() if volume is not None and hasattr(volume, 'GetWindow') else 0.0
+                view.SetWindowLevel(window, volume.GetLevel() if window > 0 else 0.0)  # <= 0: its range
+            if volume is None:  # the panes are hidden: no cuts, no renders
+                return True
+        if volume is None:
+            return False
         middle, point = self.volume_center() or self.point, self.clamped_point()
         if self.centred and point is not None:
             middle = point

@@ -15,8 +15,10 @@
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/Participant.hpp"
 
+#include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkXMLDataElement.h"
 
 #include "Internal/LinkStateMonitor.hpp"
@@ -24,6 +26,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -888,6 +891,166 @@ bool vtkROS2NodeNode::SetParameterAsString(const char* name, const char* text)
   const std::string value = text ? text : "";
   ROS2VTK_SET_OWN_PARAMETER(
     ros2vtk::rcl_interfaces::msg::ParameterType::PARAMETER_STRING, string_value)
+}
+
+//------------------------------------------------------------------------------
+namespace {
+/// The elements of a one-component array as T, each checked by `convert` (false: the element
+/// is refused); the error names the first refused element.
+template<typename T, typename Convert>
+bool ArrayElements(
+  vtkDataArray* values, const char* kind, Convert convert, std::vector<T>* out, std::string* error)
+{
+  if (!values || values->GetNumberOfComponents() != 1)
+  {
+    *error = std::string("a ") + kind + " array needs one value per element";
+    return false;
+  }
+  out->clear();
+  out->reserve(static_cast<size_t>(values->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    T value{};
+    if (!convert(values, i, &value))
+    {
+      std::ostringstream reason;
+      reason << "element " << i << " (" << values->GetTuple1(i) << ") is not a " << kind;
+      *error = reason.str();
+      return false;
+    }
+    out->push_back(value);
+  }
+  return true;
+}
+
+bool WholeNumber(vtkDataArray* values, vtkIdType i, double low, double high, int64_t* out)
+{
+  const int type = values->GetDataType();
+  if (type == VTK_TYPE_INT64 || type == VTK_LONG_LONG || type == VTK_ID_TYPE ||
+    (type == VTK_LONG && sizeof(long) == 8))
+  {
+    *out = values->GetVariantValue(i).ToTypeInt64();
+    return static_cast<double>(*out) >= low && static_cast<double>(*out) <= high;
+  }
+  const double value = values->GetTuple1(i);
+  if (!std::isfinite(value) || value != std::floor(value) || value < low || value > high)
+  {
+    return false;
+  }
+  *out = static_cast<int64_t>(value);
+  return true;
+}
+} // namespace
+
+namespace {
+template<typename T>
+bool SetOwnArrayParameter(ros2vtk::wire::ParameterServer* server, const char* name, uint8_t type,
+  std::vector<T> ros2vtk::rcl_interfaces::msg::ParameterValue::*field, const std::vector<T>& values,
+  std::string* error)
+{
+  return SetOwnParameter(
+    server, name, type, [&](ros2vtk::rcl_interfaces::msg::ParameterValue& v) { v.*field = values; },
+    error);
+}
+
+bool AnyNumber(vtkDataArray* a, vtkIdType i, double* out)
+{
+  *out = a->GetTuple1(i);
+  return true;
+}
+bool NonZero(vtkDataArray* a, vtkIdType i, bool* out)
+{
+  *out = a->GetTuple1(i) != 0.0;
+  return true;
+}
+bool Int64(vtkDataArray* a, vtkIdType i, int64_t* out)
+{
+  return WholeNumber(a, i, -9223372036854775808.0, 9223372036854775807.0, out);
+}
+bool Byte(vtkDataArray* a, vtkIdType i, uint8_t* out)
+{
+  int64_t whole = 0;
+  if (!WholeNumber(a, i, 0.0, 255.0, &whole))
+  {
+    return false;
+  }
+  *out = static_cast<uint8_t>(whole);
+  return true;
+}
+} // namespace
+
+using ros2vtk::rcl_interfaces::msg::ParameterType;
+using ros2vtk::rcl_interfaces::msg::ParameterValue;
+
+bool vtkROS2NodeNode::SetParameterAsBoolArray(const char* name, vtkDataArray* values)
+{
+  std::vector<bool> elements;
+  std::string error;
+  if (!ArrayElements<bool>(values, "bool", NonZero, &elements, &error) ||
+    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
+      ParameterType::PARAMETER_BOOL_ARRAY, &ParameterValue::bool_array_value, elements, &error))
+  {
+    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
+    return false;
+  }
+  return true;
+}
+bool vtkROS2NodeNode::SetParameterAsIntegerArray(const char* name, vtkDataArray* values)
+{
+  std::vector<int64_t> elements;
+  std::string error;
+  if (!ArrayElements<int64_t>(values, "64-bit whole number", Int64, &elements, &error) ||
+    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
+      ParameterType::PARAMETER_INTEGER_ARRAY, &ParameterValue::integer_array_value, elements,
+      &error))
+  {
+    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
+    return false;
+  }
+  return true;
+}
+bool vtkROS2NodeNode::SetParameterAsDoubleArray(const char* name, vtkDataArray* values)
+{
+  std::vector<double> elements;
+  std::string error;
+  if (!ArrayElements<double>(values, "number", AnyNumber, &elements, &error) ||
+    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
+      ParameterType::PARAMETER_DOUBLE_ARRAY, &ParameterValue::double_array_value, elements, &error))
+  {
+    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
+    return false;
+  }
+  return true;
+}
+bool vtkROS2NodeNode::SetParameterAsByteArray(const char* name, vtkDataArray* values)
+{
+  std::vector<uint8_t> elements;
+  std::string error;
+  if (!ArrayElements<uint8_t>(values, "byte (0..255)", Byte, &elements, &error) ||
+    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
+      ParameterType::PARAMETER_BYTE_ARRAY, &ParameterValue::byte_array_value, elements, &error))
+  {
+    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
+    return false;
+  }
+  return true;
+}
+bool vtkROS2NodeNode::SetParameterAsStringArray(const char* name, vtkStringArray* values)
+{
+  std::vector<std::string> elements;
+  for (vtkIdType i = 0; values && i < values->GetNumberOfValues(); ++i)
+  {
+    elements.push_back(values->GetValue(i));
+  }
+  std::string error = "a string array is required";
+  if (!values ||
+    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
+      ParameterType::PARAMETER_STRING_ARRAY, &ParameterValue::string_array_value, elements, &error))
+  {
+    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
+    return false;
+  }
+  return true;
 }
 #undef ROS2VTK_SET_OWN_PARAMETER
 

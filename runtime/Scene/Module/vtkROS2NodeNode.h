@@ -21,8 +21,10 @@
 #include <memory> // for std::unique_ptr (pimpl)
 #include <string> // for std::string
 
+class vtkDataArray;
 class vtkROS2PublisherNode;
 class vtkROS2SubscriberNode;
+class vtkStringArray;
 
 namespace ros2vtk {
 namespace wire {
@@ -279,6 +281,14 @@ public:
   bool SetParameterAsInteger(const char* name, vtkTypeInt64 value);
   bool SetParameterAsDouble(const char* name, double value);
   bool SetParameterAsString(const char* name, const char* value);
+  /// Array parameters (bool[], integer[], double[], byte[], string[]) from one-component arrays:
+  /// bools are non-zero values; integers must be whole (a 64-bit integer array is taken
+  /// exactly); bytes must be whole and within 0..255. A refused element names its index.
+  bool SetParameterAsBoolArray(const char* name, vtkDataArray* values);
+  bool SetParameterAsIntegerArray(const char* name, vtkDataArray* values);
+  bool SetParameterAsDoubleArray(const char* name, vtkDataArray* values);
+  bool SetParameterAsByteArray(const char* name, vtkDataArray* values);
+  bool SetParameterAsStringArray(const char* name, vtkStringArray* values);
   /// "name (type): value", or "name (not set): not set".
   std::string PrintOwnParameter(const char* name);
   /// Largest value (bytes of a string or array) other nodes may set on these parameters; a

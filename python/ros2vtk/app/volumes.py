@@ -1,0 +1,141 @@
+"""Volumes (CT, MRI) read from files into the scene, for the app's slice panes and 3D view.
+
+    image, file_to_world = read_volume('ct.nrrd')      # ValueError with a reason on a bad file
+    node = add_volume_node(scene, image, file_to_world, 'ct')
+
+VTK 9.1's own readers: NRRD (.nrrd, .nhdr: vtkNrrdReader), MetaImage (.mha, .mhd:
+vtkMetaImageReader), NIfTI (.nii, .nii.gz: vtkNIFTIImageReader). The image keeps its file's origin
+and spacing (mm); a NIfTI file's sform (else qform) matrix, which maps its voxels to RAS mm,
+becomes a transform node above the volume node. VTK 9.1's image data has no direction matrix: the
+axes of a NRRD or MetaImage file with a rotated direction are taken as they are.
+"""
+from __future__ import annotations
+
+import os
+
+import vtk
+
+READERS = {'.nrrd': 'vtkNrrdReader', '.nhdr': 'vtkNrrdReader', '.mha': 'vtkMetaImageReader',
+           '.mhd': 'vtkMetaImageReader', '.nii': 'vtkNIFTIImageReader', '.nii.gz': 'vtkNIFTIImageReader'}
+FORMATS = {'vtkNrrdReader': 'NRRD', 'vtkMetaImageReader': 'MetaImage', 'vtkNIFTIImageReader': 'NIfTI'}
+
+
+def _suffix(path: str) -> str:
+    lower = path.lower()
+    return '.nii.gz' if lower.endswith('.nii.gz') else os.path.splitext(lower)[1]
+
+
+def volume_name(path: str) -> str:
+    """The file's name without its volume suffix ('ct' for /data/ct.nii.gz)."""
+    base = os.path.basename(path)
+    suffix = _suffix(base)
+    return base[:-len(suffix)] if suffix and base.lower().endswith(suffix) else base
+
+
+def read_volume(path: str) -> tuple[vtk.vtkImageData, vtk.vtkMatrix4x4 | None]:
+    """The 3D image of a volume file, and the matrix from its voxel frame to world mm when the
+    file has one (NIfTI), else None. ValueError with a reason for a missing, unknown, unreadable
+    or not 3D file."""
+    path = os.path.expanduser((path or '').strip())
+    if not path:
+        raise ValueError('a volume file is required (.nrrd, .nhdr, .mha, .mhd, .nii, .nii.gz)')
+    reader_class = READERS.get(_suffix(path))
+    if reader_class is None:
+        raise ValueError(f'{path}: not a volume file this app reads (.nrrd, .nhdr, .mha, .mhd, .nii, .nii.gz)')
+    if not os.path.isfile(path):
+        raise ValueError(f'no such file: {path}')
+    kind = FORMATS[reader_class]
+    if reader_class == 'vtkNrrdReader':
+        # Debian's VTK overrides vtkNrrdReader with vtkPNrrdReader (MPI), which refuses every file
+        # without an MPI controller ("No MPI Controller available"): the serial reader is used.
+        vtk.vtkObjectFactory.SetAllEnableFlags(False, 'vtkNrrdReader')
+    reader = getattr(vtk, reader_class)()
+    errors: list[str] = []
+
+    @vtk.calldata_type(vtk.VTK_STRING)
+    def collect(_caller, _event, text):
+        # 'ERROR: In file, line N\nvtkClass (0x...): reason' -> 'reason'
+        errors.append(' '.join(str(text).split('): ', 1)[-1].split()))
+    # An observed ErrorEvent is not printed: the reason goes into the ValueError instead.
+    reader.AddObserver('ErrorEvent', collect)
+    reader.GetExecutive().AddObserver('ErrorEvent', collect)
+    if not reader.CanReadFile(path):
+        raise ValueError(f'{path}: not a readable {kind} file')
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    if errors or image is None or image.GetNumberOfPoints() == 0 or image.GetPointData().GetScalars() is None:
+        detail = errors[0] if errors else 'no voxels'
+        raise ValueError(f'{path}: cannot read this {kind} file ({detail})')
+    dims = image.GetDimensions()
+    if min(dims) < 2:
+        raise ValueError(f'{path}: not a 3D volume ({dims[0]} x {dims[1]} x {dims[2]} voxels)')
+    volume = vtk.vtkImageData()
+    volume.ShallowCopy(image)  # free of the reader
+    matrix = None
+    if reader_class == 'vtkNIFTIImageReader':
+        form = reader.GetSFormMatrix() or reader.GetQFormMatrix()
+        if form is not None and not _is_identity(form):
+            matrix = vtk.vtkMatrix4x4()
+            matrix.DeepCopy(form)
+    return volume, matrix
+
+
+def _is_identity(matrix: vtk.vtkMatrix4x4) -> bool:
+    return all(matrix.GetElement(i, j) == (1.0 if i == j else 0.0) for i in range(4) for j in range(4))
+
+
+def add_volume_node(scene, image: vtk.vtkImageData, file_to_world: vtk.vtkMatrix4x4 | None, name: str):
+    """A vtkROS2VolumeNode holding `image` (window/level: its scalar range), under a transform node
+    holding `file_to_world` when given; returns the volume node."""
+    import ros2vtk
+    node = ros2vtk.vtkROS2VolumeNode()
+    node.SetName(name)
+    node.SetImageData(image)
+    scene.AddNode(node)
+    if file_to_world is not None:
+        transform = ros2vtk.vtkROS2TransformNode()
+        transform.SetName(f'{name}: file to world')
+        transform.SetMatrixTransformToParent(file_to_world)
+        scene.AddNode(transform)
+        node.SetParentTransformNodeID(transform.GetID())
+    return node
+
+
+def remove_volume_node(scene, node) -> None:
+    """Removes a volume node and the file-to-world transform node add_volume_node made for it."""
+    parent = node.GetParentTransformNode() if hasattr(node, 'GetParentTransformNode') else None
+    scene.RemoveNode(node)
+    if parent is not None and (parent.GetName() or '').endswith(': file to world'):
+        scene.RemoveNode(parent)
+
+
+def image_of(node) -> vtk.vtkImageData | None:
+    """The image a slice source shows: a volume node's image, an image subscriber's newest one."""
+    if node is None:
+        return None
+    if node.IsA('vtkROS2VolumeNode'):
+        return node.GetImageData()
+    if node.IsA('vtkROS2SubscriberNode') and node.GetNumberOfMessages() > 0:
+        value = node.GetLastMessage()
+        return value if isinstance(value, vtk.vtkImageData) else None
+    return None
+
+
+def slice_sources(scene) -> list[dict]:
+    """What the slice panes can show: every volume node, and every image subscriber whose newest
+    image is 3D (depth > 1), as {'value': node ID, 'title': label} rows."""
+    from .scene_state import nodes_of_class
+    rows = []
+    for node in nodes_of_class(scene, 'vtkROS2VolumeNode'):
+        image = node.GetImageData()
+        dims = image.GetDimensions() if image is not None else (0, 0, 0)
+        rows.append({'value': node.GetID(), 'title': f'{node.GetName()} (volume, {dims[0]}x{dims[1]}x{dims[2]})'})
+    for node in nodes_of_class(scene, 'vtkROS2SubscriberNode'):
+        if node.GetSlicerType() != 'vtkImageData':
+            continue
+        image = image_of(node)
+        if image is not None and image.GetDimensions()[2] > 1:
+            dims = image.GetDimensions()
+            rows.append({'value': node.GetID(), 'title': f'{node.GetTopic()} (subscriber, {dims[0]}x{dims[1]}x{dims[2]})'})
+    return rows
