@@ -82,6 +82,13 @@ def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
     (rule,) = load_rules([write(tmp_path, "# comment\n\n" + GOOD_POSE)], table)
     assert rule.line == 3
     assert rule.roles["translation"].path == "pose.position"
+    assert rule.blank_message == "vtk"  # the default: GetBlankMessage is the VTK value
+
+
+def test_blank_message_key_reaches_the_rule(tmp_path, table):
+    text = GOOD_POSE.replace('header = "header"', 'header = "header"\nblank_message = "message"')
+    (rule,) = load_rules([write(tmp_path, text)], table)
+    assert rule.blank_message == "message"
 
 
 @pytest.mark.parametrize("change, line, fragment, code", [
@@ -114,6 +121,8 @@ def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
      "child_frame 'pose' is not a string", "R2V205"),
     (('header = "header"', 'child_frame = "header.frame_id"'), 7,
      "'child_frame' needs a 'header'", "R2V202"),
+    (('header = "header"', 'header = "header"\nblank_message = "object"'), 8,
+     "'blank_message' must be one of vtk, message, not 'object'", "R2V202"),
 ])
 def test_each_mistake_names_file_line_and_reason(tmp_path, table, change, line, fragment, code):
     old, new = change

@@ -10,8 +10,9 @@ Each class and test keeps the name, the calls and the assertions of the original
 - a real rclpy subscriber listens to every topic the original only sends to itself, and each
   test also checks what it received (values in ROS units: metres, SI);
 - the original's open-ended `while` loops get a deadline, so a failure fails instead of hanging;
-- where our message classes differ from SlicerROS2's generated ones, the intent is kept with our
-  documented form, and the line says so (docs/porting-from-slicerros2.md lists each difference).
+- where our message classes differ from SlicerROS2's generated ones (a subscriber's
+  GetLastMessage is our VTK value), the intent is kept with our documented form, and the line
+  says so (docs/porting-from-slicerros2.md lists each difference).
 """
 from __future__ import annotations
 
@@ -163,6 +164,7 @@ ROS_TYPES = {
     'DoubleArray': 'std_msgs/msg/Float64MultiArray', 'WrenchStamped': 'geometry_msgs/msg/WrenchStamped',
     'PoseArray': 'geometry_msgs/msg/PoseArray', 'IntTable': 'std_msgs/msg/Int64MultiArray',
     'DoubleTable': 'std_msgs/msg/Float64MultiArray', 'TransformStamped': 'geometry_msgs/msg/TransformStamped',
+    'JointState': 'sensor_msgs/msg/JointState',
 }
 
 
@@ -320,21 +322,21 @@ class TestCreateAndAddPubSub(unittest.TestCase):
 
         initSubMessageCount = self.testSub.GetNumberOfMessages()
         sentDoubleArray = [1.1, 2.2, 3.3, 4.4, 5.5, 6.6]
-        # SlicerROS2's blank WrenchStamped holds the wrench in GetWrench(); ours is the wrench
-        # itself (a vtkDoubleArray of force then torque; the header is the node's FrameID).
         sentWrenchStamped = self.testPub.GetBlankMessage()
-        sentWrenchStamped.SetNumberOfValues(len(sentDoubleArray))
+        sentWrenchStamped.GetWrench().SetNumberOfValues(len(sentDoubleArray))
         for i in range(len(sentDoubleArray)):
-            sentWrenchStamped.SetValue(i, sentDoubleArray[i])
+            sentWrenchStamped.GetWrench().SetValue(i, sentDoubleArray[i])
 
         self.testPub.Publish(sentWrenchStamped)
 
         self.generic_assertions(initSubMessageCount)
 
+        # SlicerROS2's subscriber hands out its message object too (GetWrench()); ours hands out
+        # the VTK value, the wrench itself (docs/porting-from-slicerros2.md).
         receivedWrenchStamped = self.testSub.GetLastMessage()
-        self.assertTrue(sentWrenchStamped.GetNumberOfValues() == receivedWrenchStamped.GetNumberOfValues(), "Message not received correctly")
-        for i in range(sentWrenchStamped.GetNumberOfValues()):
-            self.assertTrue(sentWrenchStamped.GetValue(i) == receivedWrenchStamped.GetValue(i), "Message not received correctly")
+        self.assertTrue(sentWrenchStamped.GetWrench().GetNumberOfValues() == receivedWrenchStamped.GetNumberOfValues(), "Message not received correctly")
+        for i in range(sentWrenchStamped.GetWrench().GetNumberOfValues()):
+            self.assertTrue(sentWrenchStamped.GetWrench().GetValue(i) == receivedWrenchStamped.GetValue(i), "Message not received correctly")
         wrench = self.rclpy_message()['wrench']
         self.assertEqual([wrench['force'][a] for a in 'xyz'] + [wrench['torque'][a] for a in 'xyz'], sentDoubleArray)
 
@@ -344,12 +346,15 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         self.create_pub_sub("PoseArray")
 
         initSubMessageCount = self.testSub.GetNumberOfMessages()
-        # SlicerROS2's blank PoseArray carries its header; ours is a vtkTransformCollection and
-        # the header is the publisher's (SetFrameID, SetHeaderStamp).
         samplePubMessage = self.testPub.GetBlankMessage()
-        self.testPub.SetFrameID("test_frame")
-        self.testPub.SetHeaderStamp(123, 456)
 
+        # Set header
+        header = samplePubMessage.GetHeader()
+        header.SetFrameId("test_frame")
+        timestamp = header.GetStamp()
+        timestamp.SetSec(123)
+        timestamp.SetNanosec(456)
+        # create 3 poses with both translation and rotation
         pose1 = vtk.vtkMatrix4x4()
         pose1.SetElement(0, 3, 1.0)
         pose1.SetElement(1, 3, 2.0)
@@ -377,16 +382,16 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         pose3.SetElement(1, 0, 0.5)
         pose3.SetElement(1, 1, 0.866)
 
+        # create a tuple of three poses
         poses = (pose1, pose2, pose3)
-        # SetPoses(poses) in SlicerROS2; a vtkTransformCollection takes vtkTransforms.
-        for pose in poses:
-            transform = vtk.vtkTransform()
-            transform.SetMatrix(pose)
-            samplePubMessage.AddItem(transform)
+        # Set the poses in the sample message
+        samplePubMessage.SetPoses(poses)
         self.testPub.Publish(samplePubMessage)
 
         self.generic_assertions(initSubMessageCount)
 
+        # SlicerROS2's subscriber hands out its message object (GetHeader(), GetPoses()); ours
+        # the VTK value (a vtkTransformCollection) and the header through the subscriber.
         receivedPoseArray = self.testSub.GetLastMessage()
         self.assertEqual(self.testSub.GetLastMessageFrameID(), "test_frame", "Incorrect frame_id in header")
         self.assertAlmostEqual(self.testSub.GetLastMessageTime(), 123.000000456, places=9, msg="Incorrect timestamp in header")
@@ -402,7 +407,72 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         message = self.rclpy_message()
         self.assertEqual(message['header'], {'frame_id': 'test_frame', 'stamp': {'sec': 123, 'nanosec': 456}})
         self.assertEqual([round(p['position']['x'] * 1000, 9) for p in message['poses']], [1.0, 4.0, 7.0])
+        # pose1 is a quarter turn about z: (0, 0, sin 45°, cos 45°).
+        self.assertAlmostEqual(message['poses'][0]['orientation']['z'], math.sqrt(0.5), places=9)
+        self.assertAlmostEqual(message['poses'][0]['orientation']['w'], math.sqrt(0.5), places=9)
 
+        self.delete_pub_sub()
+
+    def test_blank_messages_of_stamped_types(self):
+        # Added (issue 14): the blank messages of the other types SlicerROS2 generates a class
+        # for, filled the way its generated classes are (GetHeader(), a vtkMatrix4x4 field,
+        # SetChildFrameId), and what rclpy receives.
+        self.create_pub_sub("TransformStamped")
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        msg = self.testPub.GetBlankMessage()
+        msg.GetHeader().SetFrameId("world")
+        msg.GetHeader().GetStamp().SetSec(1700000000)
+        msg.GetHeader().GetStamp().SetNanosec(7)
+        msg.SetChildFrameId("tool")
+        msg.GetTransform().SetElement(0, 3, 25.0)  # mm, filled in place
+        self.assertEqual(self.testPub.Publish(msg), 1)
+        self.generic_assertions(initSubMessageCount)
+        self.assertEqual(self.testSub.GetLastMessage().GetElement(0, 3), 25.0)
+        message = self.rclpy_message()
+        self.assertEqual((message['header'], message['child_frame_id']),
+                         ({'frame_id': 'world', 'stamp': {'sec': 1700000000, 'nanosec': 7}}, 'tool'))
+        self.assertAlmostEqual(message['transform']['translation']['x'], 0.025, places=12)
+        self.assertEqual(message['transform']['rotation'], {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0})
+        self.delete_pub_sub()
+
+    def test_blank_message_of_joint_state(self):
+        # Added (issue 14): JointState's fields are sequences of numbers and names.
+        self.create_pub_sub("JointState")
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        msg = self.testPub.GetBlankMessage()
+        msg.GetHeader().SetFrameId("base")
+        msg.SetName(("shoulder", "elbow"))
+        msg.SetPosition((0.5, -1.25))
+        self.testPub.Publish(msg)
+        self.generic_assertions(initSubMessageCount)
+        message = self.rclpy_message()
+        self.assertEqual((message['header']['frame_id'], message['name'], message['position']),
+                         ('base', ['shoulder', 'elbow'], [0.5, -1.25]))
+        self.assertEqual(message['header']['stamp'], {'sec': 0, 'nanosec': 0})  # as SlicerROS2: unset
+        self.delete_pub_sub()
+
+    def test_blank_messages_refuse_what_does_not_fit(self):
+        # Added (issue 14): a mistake is an error naming the field, and the node keeps working.
+        self.create_pub_sub("PoseArray")
+        msg = self.testPub.GetBlankMessage()
+        with self.assertRaisesRegex(TypeError, "poses.*vtkMatrix4x4.*vtkTransform"):
+            msg.SetPoses((vtk.vtkTransform(),))
+        with self.assertRaisesRegex(AttributeError, "has no accessor 'GetPose'.*poses"):
+            msg.GetPose()
+        other = self.ros2Node.CreateAndAddPublisherNode("PoseStamped", "slicer_test_other_type")
+        self.assertEqual(other.Publish(msg), 0)  # a PoseArray on a PoseStamped publisher
+        self.assertIn("cannot go on", other.GetLastPublishError())
+        self.assertTrue(self.ros2Node.RemoveAndDeletePublisherNode("slicer_test_other_type"))
+        # The VTK value is still taken, and the native VTK types keep their VTK blank messages.
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        self.assertEqual(self.testPub.Publish(vtk.vtkTransformCollection()), 1)
+        self.generic_assertions(initSubMessageCount)
+        self.assertEqual(len(self.rclpy_message()['poses']), 0)
+        for shortName, vtkClass in (("Pose", "vtkMatrix4x4"), ("Wrench", "vtkDoubleArray"),
+                                    ("IntArray", "vtkTypeInt64Array"), ("PointCloud", "vtkPoints")):
+            pub = self.ros2Node.CreateAndAddPublisherNode(shortName, "slicer_test_blank_" + shortName.lower())
+            self.assertEqual(pub.GetBlankMessage().GetClassName(), vtkClass)
+            self.assertTrue(self.ros2Node.RemoveAndDeletePublisherNode("slicer_test_blank_" + shortName.lower()))
         self.delete_pub_sub()
 
     def test_transform_stamped_child_frame_and_stamp(self):

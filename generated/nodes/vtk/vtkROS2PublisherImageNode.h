@@ -34,6 +34,11 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
+  /// Converts a vtkImageData into `message` (made a sensor_msgs/msg/Image) as Publish
+  /// would, without sending it and without a header stamp. False when it does not convert (the
+  /// reason in vtkErrorMacro and GetLastConversionError).
+  bool ConvertObjectToMessage(vtkObject* value, vtkROS2Message* message) override;
+
   /// The sensor_msgs image encoding to send ("rgb8", "mono16", "32FC1", ...); "" (default)
   /// picks it from the image's scalar type and components.
   void SetEncoding(const char* encoding);

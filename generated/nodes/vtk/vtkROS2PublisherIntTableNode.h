@@ -34,6 +34,11 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
+  /// Converts a vtkTable into `message` (made a std_msgs/msg/Int64MultiArray) as Publish
+  /// would, without sending it and without a header stamp. False when it does not convert (the
+  /// reason in vtkErrorMacro and GetLastConversionError).
+  bool ConvertObjectToMessage(vtkObject* value, vtkROS2Message* message) override;
+
   const char* GetSlicerType() const override { return "vtkTable"; }
 
 protected:

@@ -34,6 +34,15 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
+  /// Converts a vtkTable into `message` (made a sensor_msgs/msg/JointState) as Publish
+  /// would, without sending it and without a header stamp. False when it does not convert (the
+  /// reason in vtkErrorMacro and GetLastConversionError).
+  bool ConvertObjectToMessage(vtkObject* value, vtkROS2Message* message) override;
+
+  /// SlicerROS2 hands out its generated message object as this type's blank message (spec key
+  /// blank_message = "message"); the ros2vtk Python package does the same.
+  bool GetBlankMessageIsMessageObject() const override { return true; }
+
   /// frame_id written into the header of every message (its stamp: see SetHeaderStamp).
   void SetFrameID(const char* frameID);
   const char* GetFrameID() const { return this->FrameID.c_str(); }
