@@ -28,6 +28,12 @@ def _element_type(field_type: str) -> str:
     return field_type.split('[', 1)[0]
 
 
+def _hands_out_messages(publisher) -> bool:
+    """The generated GetBlankMessageIsMessageObject (only classes whose rule asks have it)."""
+    method = getattr(publisher, 'GetBlankMessageIsMessageObject', None)
+    return bool(method()) if method is not None else False
+
+
 class _FieldConverters:
     """ROS type -> the mapped publisher class that converts its VTK value, found once among the
     wrapped classes (no per-type list)."""
@@ -44,11 +50,11 @@ class _FieldConverters:
             try:
                 instance = getattr(ros2vtk, name)()
                 ros_type, vtk_type = instance.GetROSType(), instance.GetSlicerType()
-                # A type SlicerROS2 has a message class for stays a nested message.
-                hands_out_messages = instance.GetBlankMessageIsMessageObject()
             except (TypeError, AttributeError):  # abstract or not a publisher
                 continue
-            if ros_type and vtk_type.startswith('vtk') and not hands_out_messages:
+            # A type SlicerROS2 has a message class for stays a nested message.
+            if ros_type and vtk_type.startswith('vtk') and not _hands_out_messages(instance) \
+                    and hasattr(instance, 'ConvertObjectToMessage'):
                 found.setdefault(ros_type, {}).setdefault(vtk_type, getattr(ros2vtk, name))
         # A ROS type mapped to two VTK types (Joy: axes or buttons) has no single VTK value.
         return {ros_type: next(iter(by_vtk.values()))
@@ -228,9 +234,9 @@ def install_message_blanks(namespace: dict) -> str:
             continue
         base = namespace[name]
         try:
-            if not base().GetBlankMessageIsMessageObject():
+            if not _hands_out_messages(base()):
                 continue
-        except (TypeError, AttributeError):
+        except TypeError:  # abstract
             continue
         subclass = _publisher_handing_out_messages(base)
         why = _override_vtk_class(base, subclass)

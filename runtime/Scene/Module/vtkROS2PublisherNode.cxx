@@ -117,16 +117,6 @@ vtkROS2Message* vtkROS2PublisherNode::CreateMessageObject() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2PublisherNode::ConvertObjectToMessage(vtkObject* value, vtkROS2Message* /*message*/)
-{
-  vtkErrorMacro(
-    << "ConvertObjectToMessage: " << this->GetClassName()
-    << " has no VTK conversion (it publishes message objects or values), so it cannot convert a "
-    << (value ? value->GetClassName() : "null"));
-  return false;
-}
-
-//------------------------------------------------------------------------------
 void vtkROS2PublisherNode::SetHeaderStamp(int sec, unsigned int nanosec)
 {
   if (nanosec >= 1000000000u)

@@ -39,15 +39,6 @@ public:
   /// A default message of this node's type to fill in (nullptr until the type is known).
   /// The caller owns it (Python: an ordinary object).
   VTK_NEWINSTANCE vtkROS2Message* CreateMessageObject() const;
-  /// Converts `value` (this node's VTK type) into `message` with this node's mapping rule and
-  /// length scaling, as Publish would, without sending it and without a header stamp: how a
-  /// field of a mapped type (a Pose from a vtkMatrix4x4) is filled in a message object. False
-  /// (vtkErrorMacro) when this node has no VTK conversion or `value` does not convert.
-  virtual bool ConvertObjectToMessage(vtkObject* value, vtkROS2Message* message);
-  /// True when SlicerROS2 hands out its generated message object (GetHeader(), …) as this
-  /// publisher's blank message rather than a VTK value (mapping rule key blank_message); the
-  /// ros2vtk Python package then does the same (python/ros2vtk/blank_messages.py).
-  virtual bool GetBlankMessageIsMessageObject() const { return false; }
   /// Publishes `object` when it is of this node's VTK type (GetSlicerType(): vtkMatrix4x4,
   /// vtkPoints, vtkImageData, vtkTransformCollection, …), through the class's own Publish.
   /// A vtkROS2Message of this node's type goes to PublishMessageObject. Returns the messages
