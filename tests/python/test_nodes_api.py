@@ -52,8 +52,10 @@ def test_pose_stamped_subscriber_observer_gets_millimetres(logic):
 
     sub.AddObserver(vtkCommand.ModifiedEvent, on_modified)
     pub.SetFrameID('base')
-    matrix = pub.GetBlankMessage()
-    assert isinstance(matrix, vtkMatrix4x4)
+    # Its blank message is SlicerROS2's PoseStamped object (GetHeader(), GetPose()); the VTK
+    # value it publishes is a vtkMatrix4x4.
+    assert pub.GetBlankMessage().GetPose().IsA('vtkMatrix4x4')
+    matrix = vtkMatrix4x4()
     matrix.SetElement(0, 3, 100.0)  # mm
     matrix.SetElement(2, 3, -5.0)
     assert pub.Publish(matrix) == 1
