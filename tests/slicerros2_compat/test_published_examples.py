@@ -12,7 +12,8 @@ Each test runs the example's lines as the documentation writes them; only these 
 - Slicer spins the ROS node on a timer that fires between console commands, never while a
   script runs; a running script here spins it (`rosLogic.Spin()`), and Qt's QTimer of the
   point-cloud example is a loop. The console case (a message printed by an observer while the
-  prompt waits) runs at a real `python -i` prompt;
+  prompt waits) runs at a real `python -i` prompt and at IPython's terminal prompt (in a
+  pseudo-terminal);
 - the services example (services.rst) calls turtlesim's Spawn (`ros2 launch turtlesim
   multisim.launch.py`); turtlesim has no wheel on PyPI and we do not ship turtlesim/srv/Spawn
   (building both sides' type support would cost CI about a minute), so its port runs the same
