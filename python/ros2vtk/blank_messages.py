@@ -15,6 +15,15 @@ mapped publisher classes (geometry_msgs/Pose: the ``Pose`` rule's ``vtkMatrix4x4
 converted by that publisher class's own rule (``ConvertObjectToMessage``: millimetres to metres,
 matrix to quaternion) when the message is published. Other fields are the typed message's
 (:class:`ros2vtk.Message`): ``Get<Field>()`` / ``Set<Field>(v)``, nested messages as views.
+
+The subscribers of those types give the same kind of object from ``GetLastMessage()``, as
+SlicerROS2's do (``GetNewMessage(i)``, which SlicerROS2 lacks, still gives VTK values):
+``sub.GetLastMessage().GetHeader().GetFrameId()``,
+``.GetPoses()`` (a tuple of ``vtkMatrix4x4`` in mm), ``.GetWrench()`` (a ``vtkDoubleArray``). Its
+VTK fields are converted from the received message by the subscriber class of the field's type
+(``ConvertMessageToObject``, the subscriber's ``ScaleLengths``). The subscriber's own VTK value
+stays reachable: ``sub.GetLastVTKMessage()``, the fill-in form ``sub.GetLastMessage(value)``, and
+C++ ``GetLastMessage()``, which is unchanged.
 """
 from __future__ import annotations
 
@@ -32,6 +41,19 @@ def _hands_out_messages(publisher) -> bool:
     """The generated GetBlankMessageIsMessageObject (only classes whose rule asks have it)."""
     method = getattr(publisher, 'GetBlankMessageIsMessageObject', None)
     return bool(method()) if method is not None else False
+
+
+def _returns_messages(subscriber) -> bool:
+    """The generated GetLastMessageIsMessageObject (only classes whose rule asks have it)."""
+    method = getattr(subscriber, 'GetLastMessageIsMessageObject', None)
+    return bool(method()) if method is not None else False
+
+
+def _subscriber_class(publisher_class: type) -> Optional[type]:
+    """The subscriber class of the same mapping rule as `publisher_class`."""
+    import ros2vtk
+    name = publisher_class.__name__.replace('vtkROS2Publisher', 'vtkROS2Subscriber', 1)
+    return getattr(ros2vtk, name, None)
 
 
 class _FieldConverters:
@@ -116,12 +138,22 @@ class VTKFieldMessage(_View):
     """A message of ``ros_type`` whose fields of mapped types are VTK objects (module doc).
     ``message`` is the typed message holding every other field."""
 
-    __slots__ = ('message', '_values')
+    __slots__ = ('message', '_values', '_received_scale')
 
     def __init__(self, ros_type: str) -> None:
         object.__setattr__(self, 'message', Message(ros_type))
         object.__setattr__(self, '_values', {})
+        object.__setattr__(self, '_received_scale', None)
         super().__init__(self, '')
+
+    @classmethod
+    def received(cls, message: Message, scale_lengths: bool = True) -> 'VTKFieldMessage':
+        """A received message (a subscriber's GetLastMessage): its VTK fields are converted
+        from `message` on first read, lengths in mm unless `scale_lengths` is off."""
+        result = cls(message.ros_type)
+        object.__setattr__(result, 'message', message)
+        object.__setattr__(result, '_received_scale', bool(scale_lengths))
+        return result
 
     @property
     def ros_type(self) -> str:
@@ -134,6 +166,8 @@ class VTKFieldMessage(_View):
     def _get(self, path: str) -> Any:
         converter = self._converter(path)
         if converter is not None:
+            if path not in self._values and self._received_scale is not None:
+                self._values[path] = self._converted(converter, path)
             if self.message.vtk.IsArrayField(path):
                 return tuple(self._values.get(path, ()))
             if path not in self._values:
@@ -163,6 +197,28 @@ class VTKFieldMessage(_View):
             value = value._root.to_message().copy() if not value._path else \
                 Message(_vtk=value._root.to_message().vtk, _path=value._path)
         self.message._write(path, value)
+
+    def _converted(self, converter: type, path: str) -> Any:
+        """The received field `path` as VTK value(s), converted by the subscriber class of the
+        same rule as `converter` (a list for a sequence field)."""
+        subscriber_class = _subscriber_class(converter)
+        if subscriber_class is None:
+            raise AttributeError(f"field '{path}' of {self.ros_type}: no subscriber class "
+                                 f"for {converter.__name__}")
+        subscriber = subscriber_class()
+        subscriber.SetScaleLengths(self._received_scale)
+        is_sequence = self.message.vtk.IsArrayField(path)
+        paths = [f'{path}[{i}]' for i in range(self.message.vtk.GetFieldLength(path))] \
+            if is_sequence else [path]
+        values = []
+        for item_path in paths:
+            nested, value = Message(), converter().GetBlankMessage()
+            if not self.message.vtk.GetMessage(item_path, nested.vtk):
+                raise ValueError(f"field '{item_path}': {self.message.vtk.GetLastError()}")
+            if not subscriber.ConvertMessageToObject(nested.vtk, value):
+                raise ValueError(f"field '{item_path}': {subscriber.GetLastConversionError()}")
+            values.append(value)
+        return values if is_sequence else values[0]
 
     # ------------------------------------------------------------------ publishing
     def to_message(self, scale_lengths: bool = True) -> Message:
@@ -221,24 +277,56 @@ def _publisher_handing_out_messages(base: type) -> type:
     return Publisher
 
 
+def _subscriber_returning_messages(base: type) -> type:
+    """`base` (a mapped subscriber class) whose GetLastMessage() is a VTKFieldMessage, as
+    SlicerROS2's; GetLastVTKMessage() is the VTK value (GetNewMessage(i) still gives VTK values:
+    SlicerROS2 has no GetNewMessage)."""
+
+    class Subscriber(base):  # type: ignore[misc,valid-type]
+        __doc__ = base.__doc__
+
+        def GetLastMessage(self, *args):  # noqa: N802 - SlicerROS2's name
+            """The newest message as SlicerROS2's message object (a VTKFieldMessage; None before
+            the first). GetLastMessage(value) fills a VTK value as before."""
+            if args:
+                return base.GetLastMessage(self, *args)
+            base.GetLastMessage(self)  # the never-spun warning and conversion errors, as before
+            message = Message()
+            if not base.GetLastMessageObject(self, message.vtk):
+                return None
+            return VTKFieldMessage.received(message, self.GetScaleLengths())
+
+        def GetLastVTKMessage(self):  # noqa: N802
+            """The newest message as this subscriber's VTK value (C++ GetLastMessage())."""
+            return base.GetLastMessage(self)
+
+    Subscriber.__name__ = base.__name__
+    Subscriber.__qualname__ = base.__qualname__
+    Subscriber.__module__ = base.__module__
+    return Subscriber
+
+
 _overrides: list = []
 
 
 def install_message_blanks(namespace: dict) -> str:
-    """Makes the publisher classes whose rule asks for it hand out VTKFieldMessages (their
-    Python class, also for nodes created in C++, and `namespace`'s name for it). Returns '' or
-    why not."""
+    """Makes the publisher classes whose rule asks for it hand out VTKFieldMessages, and their
+    subscriber classes return them (their Python class, also for nodes created in C++, and
+    `namespace`'s name for it). Returns '' or why not."""
     reasons = []
+    kinds = (('vtkROS2Publisher', _hands_out_messages, _publisher_handing_out_messages),
+             ('vtkROS2Subscriber', _returns_messages, _subscriber_returning_messages))
     for name in sorted(namespace):
-        if not (name.startswith('vtkROS2Publisher') and name.endswith('Node')):
+        kind = next((k for k in kinds if name.startswith(k[0]) and name.endswith('Node')), None)
+        if kind is None:
             continue
         base = namespace[name]
         try:
-            if not _hands_out_messages(base()):
+            if not kind[1](base()):
                 continue
         except TypeError:  # abstract
             continue
-        subclass = _publisher_handing_out_messages(base)
+        subclass = kind[2](base)
         why = _override_vtk_class(base, subclass)
         if why:
             reasons.append(f'{name}: {why}')

@@ -339,6 +339,18 @@ def test_cli_generates_the_classes_of_a_good_rule(tmp_path):
     assert "ros2vtk_register_t_nodes" in (out / "src" / "tRegistration.cxx").read_text()
 
 
+@pytest.mark.parametrize("blank_message", ["vtk", "message"])
+def test_subscriber_returns_message_objects_only_when_the_rule_says(tmp_path, blank_message):
+    """blank_message = "message" flags the subscriber too (Python's GetLastMessage is then a
+    VTKFieldMessage); every object subscriber converts a message object (its fields' converter)."""
+    rule = GOOD_POSE.replace('header = "header"', f'header = "header"\nblank_message = "{blank_message}"')
+    result = run_cli(tmp_path, write(tmp_path, rule))
+    assert result.returncode == 0, result.stderr
+    header = (tmp_path / "o" / "vtk" / "vtkROS2SubscriberPoseStampedNode.h").read_text()
+    assert "bool ConvertMessageToObject(vtkROS2Message* message, vtkObject* value);" in header
+    assert ("bool GetLastMessageIsMessageObject() const { return true; }" in header) == \
+        (blank_message == "message")
+
 # ---------------------------------------------------------------- one place per kind
 
 def test_every_kind_has_its_module_and_its_template_and_nothing_else():

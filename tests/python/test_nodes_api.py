@@ -47,7 +47,7 @@ def test_pose_stamped_subscriber_observer_gets_millimetres(logic):
     seen = []
 
     def on_modified(caller, _event):
-        matrix = caller.GetLastMessage()
+        matrix = caller.GetLastMessage().GetPose()  # SlicerROS2's PoseStamped object
         seen.append((matrix.GetElement(0, 3), matrix.GetElement(2, 3), caller.GetLastMessageFrameID()))
 
     sub.AddObserver(vtkCommand.ModifiedEvent, on_modified)
@@ -101,7 +101,11 @@ def test_wrench_values_are_not_scaled(logic):
         values.InsertNextValue(value)
     assert pub.Publish(values) == 1
     assert spin_until(logic, lambda: sub.GetNumberOfMessages() >= 1)
-    received = sub.GetLastMessage()
+    # SlicerROS2's WrenchStamped object; its wrench is the Wrench rule's vtkDoubleArray ...
+    received = sub.GetLastMessage().GetWrench()
+    assert [received.GetValue(i) for i in range(6)] == [1.0, 2.0, 3.0, 0.1, 0.2, 0.3]
+    # ... and this subscriber's own VTK value is GetLastVTKMessage() (C++ GetLastMessage()).
+    received = sub.GetLastVTKMessage()
     assert [received.GetValue(i) for i in range(6)] == [1.0, 2.0, 3.0, 0.1, 0.2, 0.3]
 
 
@@ -154,7 +158,7 @@ def test_generic_publish_object_and_value_reach_the_typed_publish_or_say_why_not
         pose_pub.GlobalWarningDisplayOn()
     assert spin_until(logic, lambda: pose_sub.GetNumberOfMessages() >= 1 and text_sub.GetNumberOfMessages() >= 1
                       and int_sub.GetNumberOfMessages() >= 1)
-    assert pose_sub.GetLastMessage().GetElement(1, 3) == 42.0
+    assert pose_sub.GetLastMessage().GetPose().GetElement(1, 3) == 42.0
     assert text_sub.GetLastMessage() == 'from Slicer'
     assert int_sub.GetLastMessage() == -7
     assert (pose_pub.GetNumberOfMessagesSent(), text_pub.GetNumberOfMessagesSent(), int_pub.GetNumberOfMessagesSent()) \
