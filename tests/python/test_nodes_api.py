@@ -109,6 +109,26 @@ def test_wrench_values_are_not_scaled(logic):
     assert [received.GetValue(i) for i in range(6)] == [1.0, 2.0, 3.0, 0.1, 0.2, 0.3]
 
 
+def test_message_object_subscriber_before_any_message_and_bad_conversions(ros2vtk, logic):
+    """GetLastMessage() of a subscriber that returns SlicerROS2's message objects is None before
+    the first message; the per-field conversion refuses a wrong message or VTK type with why."""
+    sub = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('PoseArray', '/py_no_pose_array')
+    sub.GlobalWarningDisplayOff()  # the never-spun warning
+    try:
+        assert sub.GetLastMessage() is None and sub.GetLastVTKMessage() is None
+    finally:
+        sub.GlobalWarningDisplayOn()
+    pose = ros2vtk.vtkROS2SubscriberPoseNode()
+    assert not pose.ConvertMessageToObject(ros2vtk.Message('geometry_msgs/msg/Point').vtk, vtkMatrix4x4())
+    assert 'the message is a geometry_msgs/msg/Point, not a geometry_msgs/msg/Pose' in pose.GetLastConversionError()
+    assert not pose.ConvertMessageToObject(ros2vtk.Message('geometry_msgs/msg/Pose').vtk, vtkPoints())
+    assert 'is a vtkMatrix4x4, not vtkPoints' in pose.GetLastConversionError()
+    matrix = vtkMatrix4x4()
+    message = ros2vtk.Message('geometry_msgs/msg/Pose')
+    message.position.x = 0.5
+    assert pose.ConvertMessageToObject(message.vtk, matrix) and matrix.GetElement(0, 3) == 500.0
+
+
 def test_bad_publish_returns_zero_with_a_reason(logic):
     node = logic.GetDefaultROS2Node()
     pub = node.CreateAndAddPublisherNode('PoseStamped', '/py_bad_pose')

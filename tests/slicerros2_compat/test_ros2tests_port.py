@@ -455,6 +455,9 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         msg.SetPosition((0.5, -1.25))
         self.testPub.Publish(msg)
         self.generic_assertions(initSubMessageCount)
+        received = self.testSub.GetLastMessage()
+        self.assertEqual((received.GetHeader().GetFrameId(), list(received.GetName()), list(received.GetPosition())),
+                         ("base", ["shoulder", "elbow"], [0.5, -1.25]))
         message = self.rclpy_message()
         self.assertEqual((message['header']['frame_id'], message['name'], message['position']),
                          ('base', ['shoulder', 'elbow'], [0.5, -1.25]))
@@ -594,12 +597,13 @@ class TestRclpyPublishersToGeneratedMessageSubscribers(unittest.TestCase):
         topic = "slicer_from_rclpy_" + type.lower()
         sub = self.ros2Node.CreateAndAddSubscriberNode(type, topic)
         peer = ROS2TestsLogic.start_peer('pub', '/' + topic, rosType, json.dumps(message))
-        try:
-            self.assertTrue(ROS2TestsLogic.spin_until(lambda: sub.GetNumberOfMessages() >= 1),
-                            "nothing arrived from the rclpy publisher")
-        finally:
+        arrived = ROS2TestsLogic.spin_until(lambda: sub.GetNumberOfMessages() >= 1)
+        try:  # the peer ends by itself once it has sent (after its linger)
+            out, err = peer.communicate(timeout=20)
+        except subprocess.TimeoutExpired:
             out, err = ROS2TestsLogic.kill_subprocess(peer)
         self.assertIn('"sent": 1', out, err)
+        self.assertTrue(arrived, "nothing arrived from the rclpy publisher")
         received = sub.GetLastMessage()
         self.assertTrue(self.ros2Node.RemoveAndDeleteSubscriberNode(topic))
         return received
