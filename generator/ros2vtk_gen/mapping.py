@@ -34,7 +34,11 @@ BAD_LENGTHS = MAPPING_BAD_LENGTHS
 
 SHORT_NAME_RE = re.compile(r"^[A-Z][A-Za-z0-9]*$")
 RULE_KEYS = ("short_name", "aliases", "ros_type", "vtk_type", "kind", "fields", "header",
-             "child_frame", "lengths")
+             "child_frame", "lengths", "blank_message")
+# What a publisher's GetBlankMessage hands out: its VTK value, or (as SlicerROS2 does for the
+# types it generates a message class for) a message object of its ROS type whose fields of mapped
+# types are VTK values (python/ros2vtk/blank_messages.py).
+BLANK_MESSAGE_KINDS = ("vtk", "message")
 HEADER_TYPE = "std_msgs/msg/Header"
 
 class MappingError(GeneratorError):
@@ -81,6 +85,7 @@ class Rule:
     line: int
     mapping_file: str = field(default="", compare=False)  # file name for banners
     child_frame: Optional[ResolvedField] = None  # a string the publisher fills (child_frame_id)
+    blank_message: str = "vtk"  # one of BLANK_MESSAGE_KINDS
 
 
 # ---------------------------------------------------------------- locating lines
@@ -295,11 +300,16 @@ def _rule(path: str, index: int, raw: dict, lines: _Lines,
     scaled = _scaled_roles(kind, lengths, roles, element_roles, message, table,
                            lambda text: fail("lengths", text, BAD_LENGTHS))
 
+    blank_message = raw.get("blank_message", "vtk")
+    if blank_message not in BLANK_MESSAGE_KINDS:
+        raise fail("blank_message", f"'blank_message' must be one of "
+                   f"{', '.join(BLANK_MESSAGE_KINDS)}, not {blank_message!r}", BAD_KEY)
+
     return Rule(short_name=short_name, aliases=tuple(aliases), ros_type=ros_type,
                 vtk_type=vtk_type, kind=kind_name, message=message, roles=roles,
                 element_roles=element_roles, header=header, scaled_roles=scaled, source=path,
                 line=line, mapping_file=path.replace("\\", "/").rsplit("/", 1)[-1],
-                child_frame=child_frame)
+                child_frame=child_frame, blank_message=blank_message)
 
 
 def _normalise_ros_type(text: str) -> str:

@@ -121,6 +121,7 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "scaled": list(rule.scaled_roles),
         "header": _expr("message", rule.header) if rule.header else "",
         "child_frame": _expr("message", rule.child_frame) if rule.child_frame else "",
+        "blank_message_object": rule.blank_message == "message",
         "mapping_file": rule.mapping_file,
         "line": rule.line,
         "spec": f"mapping rule {rule.short_name} ({rule.mapping_file})",

@@ -89,4 +89,10 @@ from .messages import Message, install_accessors_on_vtk_messages  # noqa: E402 (
 # SlicerROS2's req.SetX(4.0) / res.GetName() on the message objects nodes hand out.
 vtk_message_accessors_missing: str = install_accessors_on_vtk_messages()
 
-__all__ += ['spin_until', 'spin_at_prompt', 'spinning_at_prompt', 'getModuleLogic', 'Message']
+from .blank_messages import VTKFieldMessage, install_message_blanks  # noqa: E402
+
+# SlicerROS2's msg = pub.GetBlankMessage(); msg.GetHeader().SetFrameId('world') on the
+# publishers of the types it generates a message class for (PoseArray, WrenchStamped, …).
+message_blanks_missing: str = install_message_blanks(globals())
+
+__all__ += ['VTKFieldMessage', 'spin_until', 'spin_at_prompt', 'spinning_at_prompt', 'getModuleLogic', 'Message']

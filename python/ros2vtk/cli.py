@@ -201,6 +201,8 @@ def main(argv=None) -> int:
         if subscriber is None:
             return 1
         printed = 0
+        # The VTK value also where GetLastMessage() is SlicerROS2's message object.
+        vtk_value = getattr(subscriber, 'GetLastVTKMessage', subscriber.GetLastMessage)
         end = time.monotonic() + args.timeout
         try:
             while printed < args.count and time.monotonic() < end:
@@ -208,7 +210,7 @@ def main(argv=None) -> int:
                 if subscriber.GetNumberOfMessages() > printed:
                     printed = subscriber.GetNumberOfMessages()
                     print(subscriber.GetLastMessageYAML(), end='')
-                    print(f'# as {_describe(subscriber.GetLastMessage())}')
+                    print(f'# as {_describe(vtk_value())}')
                     print('---', flush=True)
         except KeyboardInterrupt:
             return 0

@@ -10,8 +10,8 @@ so it neither busy-waits nor adds a fixed delay to every message.
 (For a fixed time, vtkROS2Logic.SpinFor(seconds) spins at the logic's rate.)
 
 `spin_at_prompt` is SlicerROS2's 50 Hz timer for the interactive interpreter: while the `>>>`
-prompt (or `input()` on a terminal) waits for a line, the logic spins at its SpinRate on the
-main thread, so observers fire and GetLastMessage() is current between typed commands, as in
+prompt (or `input()` on a terminal, or IPython's terminal prompt) waits for a line, the logic
+spins at its SpinRate on the main thread, so observers fire and GetLastMessage() is current between typed commands, as in
 Slicer's Python console. A running script is not interrupted (Slicer's timer does not fire
 while a script runs either); it spins with Spin / SpinFor / spin_until. `getModuleLogic()`
 turns it on for the process-wide logic it returns.
@@ -80,10 +80,66 @@ def _spin_while_waiting_for_input() -> int:
         return 0
 
 
+# --- IPython's prompt -------------------------------------------------------------------------
+# IPython's terminal reads lines with prompt_toolkit, which never calls PyOS_InputHook; it runs
+# an event-loop integration instead (`%gui qt` and the like: IPython.terminal.pt_inputhooks).
+# Ours is registered under the name 'ros2vtk' and turned on with the shell's enable_gui, as
+# `%gui ros2vtk` would; `%gui` (no name) turns it off again.
+IPYTHON_GUI_NAME = 'ros2vtk'
+
+
+def _spin_until_ipython_input(context) -> None:
+    """pt_inputhooks' contract: return once prompt_toolkit has input (context.input_is_ready)."""
+    logic = _hook_state['logic']
+    if logic is None:
+        return
+    try:
+        period = 1.0 / max(float(logic.GetSpinRate()), 1.0)
+        while not context.input_is_ready():
+            logic.Spin()
+            select.select([context.fileno()], [], [], period)
+    except KeyboardInterrupt:
+        return
+    except Exception as error:  # never let an error escape into IPython's prompt
+        _hook_state['logic'] = None
+        print(f'ros2vtk: spinning at the IPython prompt stopped: {error}', file=sys.stderr)
+
+
+def _ipython_terminal_shell():
+    """The running IPython terminal shell (prompt_toolkit's), or None outside one."""
+    ipython = sys.modules.get('IPython')
+    shell = ipython.get_ipython() if ipython is not None else None
+    if shell is None or not hasattr(shell, 'active_eventloop') or getattr(shell, 'simple_prompt', True):
+        return None  # a kernel, or --simple-prompt (reads with input(): PyOS_InputHook serves it)
+    return shell
+
+
+def _ipython_spin(shell, on: bool) -> bool:
+    current = shell.active_eventloop
+    if not on:
+        if current == IPYTHON_GUI_NAME:
+            shell.enable_gui(None)
+        return True
+    if current not in (None, IPYTHON_GUI_NAME):
+        warnings.warn(f"ros2vtk: IPython's prompt already runs the '{current}' event loop (%gui); "
+                      'spin with logic.Spin(), SpinFor() or spin_until() instead',
+                      RuntimeWarning, stacklevel=3)
+        return False
+    from IPython.terminal.pt_inputhooks import register
+    register(IPYTHON_GUI_NAME, _spin_until_ipython_input)
+    if current is None:
+        shell.enable_gui(IPYTHON_GUI_NAME)
+    return True
+
+
 def spin_at_prompt(logic) -> bool:
     """Spins `logic` (a vtkROS2Logic) at its SpinRate while the interpreter waits for a typed
-    line; `spin_at_prompt(None)` stops. Returns False (with a warning) when another library
-    (tkinter, a GUI toolkit) already owns the interpreter's input hook."""
+    line (the `>>>` prompt, input(), and IPython's terminal prompt); `spin_at_prompt(None)`
+    stops. Returns False (with a warning) when another library (tkinter, a GUI toolkit, another
+    %gui) already owns the prompt's input hook."""
+    shell = _ipython_terminal_shell()
+    if shell is not None and not _ipython_spin(shell, logic is not None):
+        return False
     hook = _input_hook_address()
     ours = _hook_state['callback']
     ours_address = ctypes.cast(ours, ctypes.c_void_p).value if ours is not None else None
@@ -108,6 +164,9 @@ def spin_at_prompt(logic) -> bool:
 
 def spinning_at_prompt():
     """The logic spun by the prompt hook, or None."""
+    shell = _ipython_terminal_shell()
+    if shell is not None and shell.active_eventloop != IPYTHON_GUI_NAME:
+        return None
     hook = _input_hook_address()
     ours = _hook_state['callback']
     if ours is None or hook.value != ctypes.cast(ours, ctypes.c_void_p).value:

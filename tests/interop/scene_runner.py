@@ -200,7 +200,9 @@ def cmd_sub(args, logic, node) -> int:
         return sub.GetNumberOfMessages() >= args.count
     run(logic, args.seconds, step)
     run(logic, args.linger, lambda: False)  # anything beyond --count would show up here
-    value = None if args.type == 'Empty' else sub.GetLastMessage()  # Empty carries no value
+    # Empty carries no value; the VTK value also where Python's GetLastMessage() is SlicerROS2's
+    # message object (PoseStamped, PoseArray, ...: GetLastVTKMessage).
+    value = None if args.type == 'Empty' else getattr(sub, 'GetLastVTKMessage', sub.GetLastMessage)()
     print(json.dumps({'count': sub.GetNumberOfMessages(), 'rejected': sub.GetNumberOfRejectedMessages(),
                       'rejection': sub.GetLastRejectionReason(),
                       'conversion_error': sub.GetLastConversionError() if hasattr(sub, 'GetLastConversionError') else '',

@@ -92,7 +92,7 @@ print(json.dumps({'received': ok, 'sec': message.header.stamp.sec if ok else Non
                   'frame_id': message.header.frame_id if ok else None,
                   'child': message.child_frame_id if ok else None,
                   'x_m': message.transform.translation.x if ok else None,
-                  'matrix_x_mm': mapped.GetLastMessage().GetElement(0, 3) if ok else None}),
+                  'matrix_x_mm': mapped.GetLastMessage().GetTransform().GetElement(0, 3) if ok else None}),
       flush=True)
 '''
 

@@ -82,6 +82,13 @@ def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
     (rule,) = load_rules([write(tmp_path, "# comment\n\n" + GOOD_POSE)], table)
     assert rule.line == 3
     assert rule.roles["translation"].path == "pose.position"
+    assert rule.blank_message == "vtk"  # the default: GetBlankMessage is the VTK value
+
+
+def test_blank_message_key_reaches_the_rule(tmp_path, table):
+    text = GOOD_POSE.replace('header = "header"', 'header = "header"\nblank_message = "message"')
+    (rule,) = load_rules([write(tmp_path, text)], table)
+    assert rule.blank_message == "message"
 
 
 @pytest.mark.parametrize("change, line, fragment, code", [
@@ -114,6 +121,8 @@ def test_good_rule_loads_with_line_of_its_table(tmp_path, table):
      "child_frame 'pose' is not a string", "R2V205"),
     (('header = "header"', 'child_frame = "header.frame_id"'), 7,
      "'child_frame' needs a 'header'", "R2V202"),
+    (('header = "header"', 'header = "header"\nblank_message = "object"'), 8,
+     "'blank_message' must be one of vtk, message, not 'object'", "R2V202"),
 ])
 def test_each_mistake_names_file_line_and_reason(tmp_path, table, change, line, fragment, code):
     old, new = change
@@ -359,6 +368,18 @@ def test_cli_generates_the_classes_of_a_good_rule(tmp_path):
     assert (out / "vtk" / "vtkROS2SubscriberPoseStampedNode.cxx").is_file()
     assert "ros2vtk_register_t_nodes" in (out / "src" / "tRegistration.cxx").read_text()
 
+
+@pytest.mark.parametrize("blank_message", ["vtk", "message"])
+def test_subscriber_returns_message_objects_only_when_the_rule_says(tmp_path, blank_message):
+    """blank_message = "message" flags the subscriber too (Python's GetLastMessage is then a
+    VTKFieldMessage); every object subscriber converts a message object (its fields' converter)."""
+    rule = GOOD_POSE.replace('header = "header"', f'header = "header"\nblank_message = "{blank_message}"')
+    result = run_cli(tmp_path, write(tmp_path, rule))
+    assert result.returncode == 0, result.stderr
+    header = (tmp_path / "o" / "vtk" / "vtkROS2SubscriberPoseStampedNode.h").read_text()
+    assert "bool ConvertMessageToObject(vtkROS2Message* message, vtkObject* value);" in header
+    assert ("bool GetLastMessageIsMessageObject() const { return true; }" in header) == \
+        (blank_message == "message")
 
 # ---------------------------------------------------------------- one place per kind
 

@@ -47,13 +47,15 @@ def test_pose_stamped_subscriber_observer_gets_millimetres(logic):
     seen = []
 
     def on_modified(caller, _event):
-        matrix = caller.GetLastMessage()
+        matrix = caller.GetLastMessage().GetPose()  # SlicerROS2's PoseStamped object
         seen.append((matrix.GetElement(0, 3), matrix.GetElement(2, 3), caller.GetLastMessageFrameID()))
 
     sub.AddObserver(vtkCommand.ModifiedEvent, on_modified)
     pub.SetFrameID('base')
-    matrix = pub.GetBlankMessage()
-    assert isinstance(matrix, vtkMatrix4x4)
+    # Its blank message is SlicerROS2's PoseStamped object (GetHeader(), GetPose()); the VTK
+    # value it publishes is a vtkMatrix4x4.
+    assert pub.GetBlankMessage().GetPose().IsA('vtkMatrix4x4')
+    matrix = vtkMatrix4x4()
     matrix.SetElement(0, 3, 100.0)  # mm
     matrix.SetElement(2, 3, -5.0)
     assert pub.Publish(matrix) == 1
@@ -99,8 +101,32 @@ def test_wrench_values_are_not_scaled(logic):
         values.InsertNextValue(value)
     assert pub.Publish(values) == 1
     assert spin_until(logic, lambda: sub.GetNumberOfMessages() >= 1)
-    received = sub.GetLastMessage()
+    # SlicerROS2's WrenchStamped object; its wrench is the Wrench rule's vtkDoubleArray ...
+    received = sub.GetLastMessage().GetWrench()
     assert [received.GetValue(i) for i in range(6)] == [1.0, 2.0, 3.0, 0.1, 0.2, 0.3]
+    # ... and this subscriber's own VTK value is GetLastVTKMessage() (C++ GetLastMessage()).
+    received = sub.GetLastVTKMessage()
+    assert [received.GetValue(i) for i in range(6)] == [1.0, 2.0, 3.0, 0.1, 0.2, 0.3]
+
+
+def test_message_object_subscriber_before_any_message_and_bad_conversions(ros2vtk, logic):
+    """GetLastMessage() of a subscriber that returns SlicerROS2's message objects is None before
+    the first message; the per-field conversion refuses a wrong message or VTK type with why."""
+    sub = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('PoseArray', '/py_no_pose_array')
+    sub.GlobalWarningDisplayOff()  # the never-spun warning
+    try:
+        assert sub.GetLastMessage() is None and sub.GetLastVTKMessage() is None
+    finally:
+        sub.GlobalWarningDisplayOn()
+    pose = ros2vtk.vtkROS2SubscriberPoseNode()
+    assert not pose.ConvertMessageToObject(ros2vtk.Message('geometry_msgs/msg/Point').vtk, vtkMatrix4x4())
+    assert 'the message is a geometry_msgs/msg/Point, not a geometry_msgs/msg/Pose' in pose.GetLastConversionError()
+    assert not pose.ConvertMessageToObject(ros2vtk.Message('geometry_msgs/msg/Pose').vtk, vtkPoints())
+    assert 'is a vtkMatrix4x4, not vtkPoints' in pose.GetLastConversionError()
+    matrix = vtkMatrix4x4()
+    message = ros2vtk.Message('geometry_msgs/msg/Pose')
+    message.position.x = 0.5
+    assert pose.ConvertMessageToObject(message.vtk, matrix) and matrix.GetElement(0, 3) == 500.0
 
 
 def test_bad_publish_returns_zero_with_a_reason(logic):
@@ -152,7 +178,7 @@ def test_generic_publish_object_and_value_reach_the_typed_publish_or_say_why_not
         pose_pub.GlobalWarningDisplayOn()
     assert spin_until(logic, lambda: pose_sub.GetNumberOfMessages() >= 1 and text_sub.GetNumberOfMessages() >= 1
                       and int_sub.GetNumberOfMessages() >= 1)
-    assert pose_sub.GetLastMessage().GetElement(1, 3) == 42.0
+    assert pose_sub.GetLastMessage().GetPose().GetElement(1, 3) == 42.0
     assert text_sub.GetLastMessage() == 'from Slicer'
     assert int_sub.GetLastMessage() == -7
     assert (pose_pub.GetNumberOfMessagesSent(), text_pub.GetNumberOfMessagesSent(), int_pub.GetNumberOfMessagesSent()) \

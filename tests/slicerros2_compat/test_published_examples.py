@@ -12,7 +12,8 @@ Each test runs the example's lines as the documentation writes them; only these 
 - Slicer spins the ROS node on a timer that fires between console commands, never while a
   script runs; a running script here spins it (`rosLogic.Spin()`), and Qt's QTimer of the
   point-cloud example is a loop. The console case (a message printed by an observer while the
-  prompt waits) runs at a real `python -i` prompt;
+  prompt waits) runs at a real `python -i` prompt and at IPython's terminal prompt (in a
+  pseudo-terminal);
 - the services example (services.rst) calls turtlesim's Spawn (`ros2 launch turtlesim
   multisim.launch.py`); turtlesim has no wheel on PyPI and we do not ship turtlesim/srv/Spawn
   (building both sides' type support would cost CI about a minute), so its port runs the same
@@ -555,33 +556,130 @@ class InteractivePrompt:
         self.process.wait(timeout=10)
 
 
+class IPythonPrompt:
+    """IPython's terminal prompt (prompt_toolkit) in a pseudo-terminal, fed as a user types:
+    each line ends with Enter (a carriage return), and what the terminal shows is read back with
+    its escape sequences removed. The terminal echoes what is typed, so a line's marker is
+    printed by an expression whose text differs from its output ('r' 'an 3' prints "ran 3")."""
+
+    def __init__(self) -> None:
+        import fcntl
+        import pty
+        import struct
+        import termios
+        import threading
+        package_parent = str(Path(ros2vtk.__file__).resolve().parents[1])
+        env = dict(os.environ, TERM='xterm', PROMPT_TOOLKIT_NO_CPR='1',
+                   PYTHONPATH=os.pathsep.join(filter(None, [package_parent, os.environ.get('PYTHONPATH')])))
+        self.master, slave = pty.openpty()
+        fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack('HHHH', 50, 400, 0, 0))
+        self.process = subprocess.Popen(
+            [VENV_PYTHON, '-m', 'IPython', '--no-banner', '--colors=NoColor', '--no-confirm-exit',
+             '--HistoryManager.enabled=False', '--TerminalInteractiveShell.autosuggestions_provider=None',
+             '--TerminalInteractiveShell.autoindent=False'],
+            stdin=slave, stdout=slave, stderr=slave, env=env, start_new_session=True)
+        os.close(slave)
+        self.output = b''
+        self.lock = threading.Lock()
+        self.seen: list[str] = []
+        self.count = 0
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self) -> None:
+        while True:
+            try:
+                chunk = os.read(self.master, 65536)
+            except OSError:
+                return
+            if not chunk:
+                return
+            with self.lock:
+                self.output += chunk
+
+    def text(self) -> str:
+        import re
+        with self.lock:
+            raw = self.output.decode(errors='replace')
+        return re.sub(r'\x1b\][^\x07]*\x07|\x1b\[[0-9;?]*[A-Za-z]|\x1b[>=]|\r', '', raw)
+
+    def type(self, line: str) -> None:
+        self.count += 1
+        marker = f'ran {self.count}'
+        # A def needs an empty line to end it, as at any Python prompt.
+        end = '\r\r' if line.startswith('def ') else '\r'
+        os.write(self.master, (line + end).encode())
+        os.write(self.master, f"print('r' 'an {self.count}')\r".encode())
+        assert self.wait_for(marker, 30), self.seen
+
+    def wait_for(self, text: str, seconds: float) -> bool:
+        deadline = time.monotonic() + seconds
+        while True:
+            shown = self.text()
+            self.seen = shown.splitlines()[-40:]
+            if text in shown:
+                return True
+            if time.monotonic() >= deadline:
+                return False
+            time.sleep(0.05)
+
+    def close(self) -> None:
+        try:
+            os.write(self.master, b'exit\r')
+            self.process.wait(timeout=10)
+        except (OSError, subprocess.TimeoutExpired):
+            self.process.kill()
+            self.process.wait()
+        os.close(self.master)
+
+
+def observer_prints_at_the_prompt(prompt, peers, topic: str) -> None:
+    """topics.rst's subscriber example typed at a prompt: the observer prints while the prompt
+    waits, because the prompt spins the module logic; with the spin off (the control) it does not."""
+    prompt.type('import ros2vtk')
+    prompt.type("rosLogic = ros2vtk.getModuleLogic('ROS2')")
+    prompt.type('rosNode = rosLogic.GetDefaultROS2Node()')
+    prompt.type(f"subString = rosNode.CreateAndAddSubscriberNode('String', '{topic}')")
+    prompt.type('def myCallback(caller=None, event=None): '
+                'print("Last message received by subscriber: {}.".format(subString.GetLastMessage()))')
+    prompt.type("observerId = subString.AddObserver('ModifiedEvent', myCallback)")
+
+    # Control: with the prompt's spin off, rclpy's messages wait in the queue and nothing prints.
+    prompt.type('ros2vtk.spin_at_prompt(None)')
+    before = peers.peer('pub', topic, 'std_msgs/msg/String', json.dumps({'data': 'queued'}),
+                        '--count', '2', '--rate', '20')
+    assert 'sent' in before.stdout.readline(), before.stderr.read()
+    assert not prompt.wait_for('Last message received by subscriber: queued.', 1.0), prompt.seen
+
+    # On (getModuleLogic turned it on; the control turned it off): the idle prompt spins.
+    prompt.type('ros2vtk.spin_at_prompt(rosLogic)')
+    assert prompt.wait_for('Last message received by subscriber: queued.', 10), prompt.seen
+    # ...and keeps spinning while nobody types: a message published now prints by itself.
+    peers.peer('pub', topic, 'std_msgs/msg/String', json.dumps({'data': 'live'}),
+               '--count', '1')
+    assert prompt.wait_for('Last message received by subscriber: live.', 20), prompt.seen
+    prompt.type("print(subString.GetNumberOfMessages(), ros2vtk.getModuleLogic() is rosLogic, 'count')")
+    assert prompt.wait_for('3 True count', 5), prompt.seen
+
+
 def test_topics_subscriber_observer_prints_at_the_interactive_prompt(peers):
     prompt = InteractivePrompt()
     try:
-        prompt.type('import ros2vtk')
-        prompt.type("rosLogic = ros2vtk.getModuleLogic('ROS2')")
-        prompt.type('rosNode = rosLogic.GetDefaultROS2Node()')
-        prompt.type("subString = rosNode.CreateAndAddSubscriberNode('String', '/prompt_string')")
-        prompt.type('def myCallback(caller=None, event=None): '
-                    'print("Last message received by subscriber: {}.".format(subString.GetLastMessage()))')
-        prompt.type("observerId = subString.AddObserver('ModifiedEvent', myCallback)")
+        observer_prints_at_the_prompt(prompt, peers, '/prompt_string')
+    finally:
+        prompt.close()
 
-        # Control: with the prompt's spin off, rclpy's messages wait in the queue and nothing prints.
-        prompt.type('ros2vtk.spin_at_prompt(None)')
-        before = peers.peer('pub', '/prompt_string', 'std_msgs/msg/String', json.dumps({'data': 'queued'}),
-                            '--count', '2', '--rate', '20')
-        assert 'sent' in before.stdout.readline(), before.stderr.read()
-        assert not prompt.wait_for('Last message received by subscriber: queued.', 1.0), prompt.seen
 
-        # On (getModuleLogic turned it on; the control turned it off): the idle prompt spins.
-        prompt.type('ros2vtk.spin_at_prompt(rosLogic)')
-        assert prompt.wait_for('Last message received by subscriber: queued.', 10), prompt.seen
-        # ...and keeps spinning while nobody types: a message published now prints by itself.
-        peers.peer('pub', '/prompt_string', 'std_msgs/msg/String', json.dumps({'data': 'live'}),
-                   '--count', '1')
-        assert prompt.wait_for('Last message received by subscriber: live.', 20), prompt.seen
-        prompt.type('print(subString.GetNumberOfMessages(), ros2vtk.getModuleLogic() is rosLogic)')
-        assert '3 True' in prompt.seen, prompt.seen
+def test_topics_subscriber_observer_prints_at_the_ipython_prompt(peers):
+    try:
+        subprocess.run([VENV_PYTHON, '-c', 'import IPython'], check=True, capture_output=True)
+    except subprocess.CalledProcessError:
+        pytest.skip(f'IPython is not installed in {VENV_PYTHON} (scripts/requirements-test.txt; '
+                    'run scripts/setup.sh)')
+    prompt = IPythonPrompt()
+    try:
+        observer_prints_at_the_prompt(prompt, peers, '/ipython_prompt_string')
+        prompt.type("print('gui', get_ipython().active_eventloop)")
+        assert prompt.wait_for('gui ros2vtk', 5), prompt.seen
     finally:
         prompt.close()
 

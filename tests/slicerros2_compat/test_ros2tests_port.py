@@ -10,8 +10,12 @@ Each class and test keeps the name, the calls and the assertions of the original
 - a real rclpy subscriber listens to every topic the original only sends to itself, and each
   test also checks what it received (values in ROS units: metres, SI);
 - the original's open-ended `while` loops get a deadline, so a failure fails instead of hanging;
-- where our message classes differ from SlicerROS2's generated ones, the intent is kept with our
-  documented form, and the line says so (docs/porting-from-slicerros2.md lists each difference).
+- where our message classes differ from SlicerROS2's generated ones, the intent is kept with
+  our documented form, and the line says so (docs/porting-from-slicerros2.md lists each
+  difference). The publishers and subscribers of the types SlicerROS2 generates a message class
+  for (PoseArray, WrenchStamped, ...) hand out message objects as its do, so those lines are the
+  original's; TestRclpyPublishersToGeneratedMessageSubscribers (added) reads messages an rclpy
+  publisher sent with the same calls.
 """
 from __future__ import annotations
 
@@ -163,6 +167,7 @@ ROS_TYPES = {
     'DoubleArray': 'std_msgs/msg/Float64MultiArray', 'WrenchStamped': 'geometry_msgs/msg/WrenchStamped',
     'PoseArray': 'geometry_msgs/msg/PoseArray', 'IntTable': 'std_msgs/msg/Int64MultiArray',
     'DoubleTable': 'std_msgs/msg/Float64MultiArray', 'TransformStamped': 'geometry_msgs/msg/TransformStamped',
+    'JointState': 'sensor_msgs/msg/JointState',
 }
 
 
@@ -320,21 +325,20 @@ class TestCreateAndAddPubSub(unittest.TestCase):
 
         initSubMessageCount = self.testSub.GetNumberOfMessages()
         sentDoubleArray = [1.1, 2.2, 3.3, 4.4, 5.5, 6.6]
-        # SlicerROS2's blank WrenchStamped holds the wrench in GetWrench(); ours is the wrench
-        # itself (a vtkDoubleArray of force then torque; the header is the node's FrameID).
         sentWrenchStamped = self.testPub.GetBlankMessage()
-        sentWrenchStamped.SetNumberOfValues(len(sentDoubleArray))
+        sentWrenchStamped.GetWrench().SetNumberOfValues(len(sentDoubleArray))
         for i in range(len(sentDoubleArray)):
-            sentWrenchStamped.SetValue(i, sentDoubleArray[i])
+            sentWrenchStamped.GetWrench().SetValue(i, sentDoubleArray[i])
 
         self.testPub.Publish(sentWrenchStamped)
 
         self.generic_assertions(initSubMessageCount)
 
         receivedWrenchStamped = self.testSub.GetLastMessage()
-        self.assertTrue(sentWrenchStamped.GetNumberOfValues() == receivedWrenchStamped.GetNumberOfValues(), "Message not received correctly")
-        for i in range(sentWrenchStamped.GetNumberOfValues()):
-            self.assertTrue(sentWrenchStamped.GetValue(i) == receivedWrenchStamped.GetValue(i), "Message not received correctly")
+        # check that sentDoubleVtkArray and receivedDoubleArray are the same
+        self.assertTrue(sentWrenchStamped.GetWrench().GetNumberOfValues() == receivedWrenchStamped.GetWrench().GetNumberOfValues(), "Message not received correctly")
+        for i in range(sentWrenchStamped.GetWrench().GetNumberOfValues()):
+            self.assertTrue(sentWrenchStamped.GetWrench().GetValue(i) == receivedWrenchStamped.GetWrench().GetValue(i), "Message not received correctly")
         wrench = self.rclpy_message()['wrench']
         self.assertEqual([wrench['force'][a] for a in 'xyz'] + [wrench['torque'][a] for a in 'xyz'], sentDoubleArray)
 
@@ -344,12 +348,15 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         self.create_pub_sub("PoseArray")
 
         initSubMessageCount = self.testSub.GetNumberOfMessages()
-        # SlicerROS2's blank PoseArray carries its header; ours is a vtkTransformCollection and
-        # the header is the publisher's (SetFrameID, SetHeaderStamp).
         samplePubMessage = self.testPub.GetBlankMessage()
-        self.testPub.SetFrameID("test_frame")
-        self.testPub.SetHeaderStamp(123, 456)
 
+        # Set header
+        header = samplePubMessage.GetHeader()
+        header.SetFrameId("test_frame")
+        timestamp = header.GetStamp()
+        timestamp.SetSec(123)
+        timestamp.SetNanosec(456)
+        # create 3 poses with both translation and rotation
         pose1 = vtk.vtkMatrix4x4()
         pose1.SetElement(0, 3, 1.0)
         pose1.SetElement(1, 3, 2.0)
@@ -377,22 +384,26 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         pose3.SetElement(1, 0, 0.5)
         pose3.SetElement(1, 1, 0.866)
 
+        # create a tuple of three poses
         poses = (pose1, pose2, pose3)
-        # SetPoses(poses) in SlicerROS2; a vtkTransformCollection takes vtkTransforms.
-        for pose in poses:
-            transform = vtk.vtkTransform()
-            transform.SetMatrix(pose)
-            samplePubMessage.AddItem(transform)
+        # Set the poses in the sample message
+        samplePubMessage.SetPoses(poses)
         self.testPub.Publish(samplePubMessage)
 
         self.generic_assertions(initSubMessageCount)
 
+        # Get the received message
         receivedPoseArray = self.testSub.GetLastMessage()
-        self.assertEqual(self.testSub.GetLastMessageFrameID(), "test_frame", "Incorrect frame_id in header")
-        self.assertAlmostEqual(self.testSub.GetLastMessageTime(), 123.000000456, places=9, msg="Incorrect timestamp in header")
-        self.assertEqual(receivedPoseArray.GetNumberOfItems(), 3, "Incorrect number of poses received")
+        # Check header
+        receivedHeader = receivedPoseArray.GetHeader()
+        self.assertEqual(receivedHeader.GetFrameId(), "test_frame", "Incorrect frame_id in header")
+        self.assertAlmostEqual(receivedHeader.GetStamp().GetSec(), 123, places=3, msg="Incorrect timestamp in header")
+        self.assertAlmostEqual(receivedHeader.GetStamp().GetNanosec(), 456, places=3, msg="Incorrect timestamp in header")
+        # Check that the number of poses is correct
+        self.assertEqual(len(receivedPoseArray.GetPoses()), 3, "Incorrect number of poses received")
+        # Check that each pose is correct
         for i, sentPose in enumerate(poses):
-            receivedPose = receivedPoseArray.GetItemAsObject(i).GetMatrix()
+            receivedPose = receivedPoseArray.GetPoses()[i]
             for row in range(4):
                 for col in range(4):
                     self.assertAlmostEqual(sentPose.GetElement(row, col),
@@ -402,7 +413,79 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         message = self.rclpy_message()
         self.assertEqual(message['header'], {'frame_id': 'test_frame', 'stamp': {'sec': 123, 'nanosec': 456}})
         self.assertEqual([round(p['position']['x'] * 1000, 9) for p in message['poses']], [1.0, 4.0, 7.0])
+        # pose1 is a quarter turn about z: (0, 0, sin 45°, cos 45°).
+        self.assertAlmostEqual(message['poses'][0]['orientation']['z'], math.sqrt(0.5), places=9)
+        self.assertAlmostEqual(message['poses'][0]['orientation']['w'], math.sqrt(0.5), places=9)
 
+        self.delete_pub_sub()
+
+    def test_blank_messages_of_stamped_types(self):
+        # Added (issue 14): the blank messages of the other types SlicerROS2 generates a class
+        # for, filled the way its generated classes are (GetHeader(), a vtkMatrix4x4 field,
+        # SetChildFrameId), and what rclpy receives.
+        self.create_pub_sub("TransformStamped")
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        msg = self.testPub.GetBlankMessage()
+        msg.GetHeader().SetFrameId("world")
+        msg.GetHeader().GetStamp().SetSec(1700000000)
+        msg.GetHeader().GetStamp().SetNanosec(7)
+        msg.SetChildFrameId("tool")
+        msg.GetTransform().SetElement(0, 3, 25.0)  # mm, filled in place
+        self.assertEqual(self.testPub.Publish(msg), 1)
+        self.generic_assertions(initSubMessageCount)
+        received = self.testSub.GetLastMessage()
+        self.assertEqual((received.GetHeader().GetFrameId(), received.GetChildFrameId()), ("world", "tool"))
+        self.assertEqual(received.GetTransform().GetElement(0, 3), 25.0)
+        # The subscriber's own VTK value stays reachable (ros2vtk's name for it).
+        self.assertEqual(self.testSub.GetLastVTKMessage().GetElement(0, 3), 25.0)
+        message = self.rclpy_message()
+        self.assertEqual((message['header'], message['child_frame_id']),
+                         ({'frame_id': 'world', 'stamp': {'sec': 1700000000, 'nanosec': 7}}, 'tool'))
+        self.assertAlmostEqual(message['transform']['translation']['x'], 0.025, places=12)
+        self.assertEqual(message['transform']['rotation'], {'x': 0.0, 'y': 0.0, 'z': 0.0, 'w': 1.0})
+        self.delete_pub_sub()
+
+    def test_blank_message_of_joint_state(self):
+        # Added (issue 14): JointState's fields are sequences of numbers and names.
+        self.create_pub_sub("JointState")
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        msg = self.testPub.GetBlankMessage()
+        msg.GetHeader().SetFrameId("base")
+        msg.SetName(("shoulder", "elbow"))
+        msg.SetPosition((0.5, -1.25))
+        self.testPub.Publish(msg)
+        self.generic_assertions(initSubMessageCount)
+        received = self.testSub.GetLastMessage()
+        self.assertEqual((received.GetHeader().GetFrameId(), list(received.GetName()), list(received.GetPosition())),
+                         ("base", ["shoulder", "elbow"], [0.5, -1.25]))
+        message = self.rclpy_message()
+        self.assertEqual((message['header']['frame_id'], message['name'], message['position']),
+                         ('base', ['shoulder', 'elbow'], [0.5, -1.25]))
+        self.assertEqual(message['header']['stamp'], {'sec': 0, 'nanosec': 0})  # as SlicerROS2: unset
+        self.delete_pub_sub()
+
+    def test_blank_messages_refuse_what_does_not_fit(self):
+        # Added (issue 14): a mistake is an error naming the field, and the node keeps working.
+        self.create_pub_sub("PoseArray")
+        msg = self.testPub.GetBlankMessage()
+        with self.assertRaisesRegex(TypeError, "poses.*vtkMatrix4x4.*vtkTransform"):
+            msg.SetPoses((vtk.vtkTransform(),))
+        with self.assertRaisesRegex(AttributeError, "has no accessor 'GetPose'.*poses"):
+            msg.GetPose()
+        other = self.ros2Node.CreateAndAddPublisherNode("PoseStamped", "slicer_test_other_type")
+        self.assertEqual(other.Publish(msg), 0)  # a PoseArray on a PoseStamped publisher
+        self.assertIn("cannot go on", other.GetLastPublishError())
+        self.assertTrue(self.ros2Node.RemoveAndDeletePublisherNode("slicer_test_other_type"))
+        # The VTK value is still taken, and the native VTK types keep their VTK blank messages.
+        initSubMessageCount = self.testSub.GetNumberOfMessages()
+        self.assertEqual(self.testPub.Publish(vtk.vtkTransformCollection()), 1)
+        self.generic_assertions(initSubMessageCount)
+        self.assertEqual(len(self.rclpy_message()['poses']), 0)
+        for shortName, vtkClass in (("Pose", "vtkMatrix4x4"), ("Wrench", "vtkDoubleArray"),
+                                    ("IntArray", "vtkTypeInt64Array"), ("PointCloud", "vtkPoints")):
+            pub = self.ros2Node.CreateAndAddPublisherNode(shortName, "slicer_test_blank_" + shortName.lower())
+            self.assertEqual(pub.GetBlankMessage().GetClassName(), vtkClass)
+            self.assertTrue(self.ros2Node.RemoveAndDeletePublisherNode("slicer_test_blank_" + shortName.lower()))
         self.delete_pub_sub()
 
     def test_transform_stamped_child_frame_and_stamp(self):
@@ -495,6 +578,96 @@ class TestCreateAndAddPubSub(unittest.TestCase):
         self.ros2Node.Destroy()
         mrmlScene.RemoveNode(self.ros2Node)
         ROS2TestsLogic.spin_some()
+
+
+class TestRclpyPublishersToGeneratedMessageSubscribers(unittest.TestCase):
+    """Added (issue 14): an rclpy publisher in its own process sends each type SlicerROS2
+    generates a message class for; our subscriber's GetLastMessage() is read with SlicerROS2's
+    calls (GetHeader().GetFrameId(), GetPoses(), GetWrench(), ...), VTK fields in mm."""
+
+    def setUp(self):
+        self.ros2Node = mrmlScene.AddNewNodeByClass("vtkMRMLROS2NodeNode")
+        self.ros2Node.Create("testNodeFromRclpy")
+
+    def tearDown(self):
+        self.ros2Node.Destroy()
+        mrmlScene.RemoveNode(self.ros2Node)
+
+    def receive(self, type, rosType, message):
+        topic = "slicer_from_rclpy_" + type.lower()
+        sub = self.ros2Node.CreateAndAddSubscriberNode(type, topic)
+        peer = ROS2TestsLogic.start_peer('pub', '/' + topic, rosType, json.dumps(message))
+        arrived = ROS2TestsLogic.spin_until(lambda: sub.GetNumberOfMessages() >= 1)
+        try:  # the peer ends by itself once it has sent (after its linger)
+            out, err = peer.communicate(timeout=20)
+        except subprocess.TimeoutExpired:
+            out, err = ROS2TestsLogic.kill_subprocess(peer)
+        self.assertIn('"sent": 1', out, err)
+        self.assertTrue(arrived, "nothing arrived from the rclpy publisher")
+        received = sub.GetLastMessage()
+        self.assertTrue(self.ros2Node.RemoveAndDeleteSubscriberNode(topic))
+        return received
+
+    def assertMatrix(self, matrix, translationMm, rotation=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
+        self.assertEqual(matrix.GetClassName(), "vtkMatrix4x4")
+        for row in range(3):
+            self.assertAlmostEqual(matrix.GetElement(row, 3), translationMm[row], places=9)
+            for col in range(3):
+                self.assertAlmostEqual(matrix.GetElement(row, col), rotation[row][col], places=9)
+
+    def test_pose_array(self):
+        s = math.sqrt(0.5)
+        received = self.receive("PoseArray", "geometry_msgs/msg/PoseArray", {
+            'header': {'frame_id': 'rclpy_frame', 'stamp': {'sec': 123, 'nanosec': 456}},
+            'poses': [{'position': {'x': 0.001, 'y': 0.002, 'z': 0.003},
+                       'orientation': {'x': 0.0, 'y': 0.0, 'z': s, 'w': s}},
+                      {'position': {'x': 0.25, 'y': 0.0, 'z': -0.5}}]})
+        receivedHeader = received.GetHeader()
+        self.assertEqual(receivedHeader.GetFrameId(), "rclpy_frame")
+        self.assertEqual((receivedHeader.GetStamp().GetSec(), receivedHeader.GetStamp().GetNanosec()), (123, 456))
+        self.assertEqual(len(received.GetPoses()), 2)
+        self.assertMatrix(received.GetPoses()[0], (1.0, 2.0, 3.0), ((0, -1, 0), (1, 0, 0), (0, 0, 1)))
+        self.assertMatrix(received.GetPoses()[1], (250.0, 0.0, -500.0))
+
+    def test_wrench_stamped(self):
+        received = self.receive("WrenchStamped", "geometry_msgs/msg/WrenchStamped", {
+            'header': {'frame_id': 'sensor'},
+            'wrench': {'force': {'x': 1.5, 'y': -2.0, 'z': 3.0}, 'torque': {'x': 0.1, 'y': 0.2, 'z': 0.3}}})
+        self.assertEqual(received.GetHeader().GetFrameId(), "sensor")
+        wrench = received.GetWrench()
+        self.assertEqual(wrench.GetClassName(), "vtkDoubleArray")
+        self.assertEqual([wrench.GetValue(i) for i in range(wrench.GetNumberOfValues())],
+                         [1.5, -2.0, 3.0, 0.1, 0.2, 0.3])
+
+    def test_pose_stamped_and_transform_stamped(self):
+        received = self.receive("PoseStamped", "geometry_msgs/msg/PoseStamped", {
+            'header': {'frame_id': 'base', 'stamp': {'sec': 7}},
+            'pose': {'position': {'x': 0.1, 'y': -0.02, 'z': 0.035}}})
+        self.assertEqual((received.GetHeader().GetFrameId(), received.GetHeader().GetStamp().GetSec()), ("base", 7))
+        self.assertMatrix(received.GetPose(), (100.0, -20.0, 35.0))
+        received = self.receive("TransformStamped", "geometry_msgs/msg/TransformStamped", {
+            'header': {'frame_id': 'world'}, 'child_frame_id': 'tool',
+            'transform': {'translation': {'x': 0.0125, 'y': 0.0, 'z': 0.0},
+                          'rotation': {'x': 1.0, 'y': 0.0, 'z': 0.0, 'w': 0.0}}})
+        self.assertEqual((received.GetHeader().GetFrameId(), received.GetChildFrameId()), ("world", "tool"))
+        self.assertMatrix(received.GetTransform(), (12.5, 0.0, 0.0), ((1, 0, 0), (0, -1, 0), (0, 0, -1)))
+
+    def test_joint_state(self):
+        received = self.receive("JointState", "sensor_msgs/msg/JointState", {
+            'header': {'frame_id': 'arm'}, 'name': ['shoulder', 'elbow'],
+            'position': [0.5, -1.25], 'velocity': [], 'effort': [2.0, 3.0]})
+        self.assertEqual(received.GetHeader().GetFrameId(), "arm")
+        self.assertEqual(list(received.GetName()), ['shoulder', 'elbow'])
+        self.assertEqual(list(received.GetPosition()), [0.5, -1.25])
+        self.assertEqual(list(received.GetVelocity()), [])
+        self.assertEqual(list(received.GetEffort()), [2.0, 3.0])
+
+    def test_joy(self):
+        # SlicerROS2's short name Joy is our JoyAxes / JoyButtons (docs/porting-from-slicerros2.md).
+        received = self.receive("JoyAxes", "sensor_msgs/msg/Joy", {
+            'header': {'frame_id': 'pad'}, 'axes': [0.5, -1.0], 'buttons': [1, 0, 1]})
+        self.assertEqual(received.GetHeader().GetFrameId(), "pad")
+        self.assertEqual((list(received.GetAxes()), list(received.GetButtons())), ([0.5, -1.0], [1, 0, 1]))
 
 
 class TestParameterNode(unittest.TestCase):

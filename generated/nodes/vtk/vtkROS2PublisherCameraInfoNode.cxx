@@ -8,6 +8,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 #include "vtkMatrix3x3.h"
 #include "vtkXMLDataElement.h"
 
@@ -82,6 +83,37 @@ int vtkROS2PublisherCameraInfoNode::PublishObject(vtkObject* object)
 vtkMatrix3x3* vtkROS2PublisherCameraInfoNode::GetBlankMessage() const
 {
   return vtkMatrix3x3::New();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherCameraInfoNode::ConvertObjectToMessage(vtkObject* value, vtkROS2Message* output)
+{
+  MessageType message;
+  std::string error;
+  const double lengthScale = this->ScaleLengths ? ::ros2vtk::convert::kMillimetresPerMetre
+                                                : ::ros2vtk::convert::kNoLengthScaling;
+  auto* typed = vtkMatrix3x3::SafeDownCast(value);
+  if (!output)
+  {
+    error = "ConvertObjectToMessage: the output vtkROS2Message is null";
+  }
+  else if (!typed)
+  {
+    error = std::string("ConvertObjectToMessage: a CameraInfo value is a vtkMatrix3x3, not ") +
+      (value ? value->GetClassName() : "null");
+  }
+  else if (!::ros2vtk::nodes::VTKToROS2(typed, message, lengthScale, &error))
+  {
+    error = error.empty() ? std::string("ConvertObjectToMessage: conversion failed") : error;
+  }
+  this->LastConversionError = error;
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  output->CopyFromRaw(MessageType::type_support(), &message);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 #include "vtkImageData.h"
 #include "vtkXMLDataElement.h"
 
@@ -83,6 +84,37 @@ int vtkROS2PublisherImageNode::PublishObject(vtkObject* object)
 vtkImageData* vtkROS2PublisherImageNode::GetBlankMessage() const
 {
   return vtkImageData::New();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherImageNode::ConvertObjectToMessage(vtkObject* value, vtkROS2Message* output)
+{
+  MessageType message;
+  std::string error;
+  const double lengthScale = this->ScaleLengths ? ::ros2vtk::convert::kMillimetresPerMetre
+                                                : ::ros2vtk::convert::kNoLengthScaling;
+  auto* typed = vtkImageData::SafeDownCast(value);
+  if (!output)
+  {
+    error = "ConvertObjectToMessage: the output vtkROS2Message is null";
+  }
+  else if (!typed)
+  {
+    error = std::string("ConvertObjectToMessage: a Image value is a vtkImageData, not ") +
+      (value ? value->GetClassName() : "null");
+  }
+  else if (!::ros2vtk::nodes::VTKToROS2(typed, message, lengthScale, &error, this->Encoding))
+  {
+    error = error.empty() ? std::string("ConvertObjectToMessage: conversion failed") : error;
+  }
+  this->LastConversionError = error;
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  output->CopyFromRaw(MessageType::type_support(), &message);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -34,6 +34,12 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
+  /// Converts a vtkImageData into `message` (made a sensor_msgs/msg/Image) with this
+  /// node's rule and length scaling, as Publish would, without sending it and without a header
+  /// stamp: how a field of this type is filled in a message object (python/ros2vtk/
+  /// blank_messages.py). False when it does not convert (vtkErrorMacro, GetLastConversionError).
+  bool ConvertObjectToMessage(vtkObject* value, vtkROS2Message* message);
+
   /// The sensor_msgs image encoding to send ("rgb8", "mono16", "32FC1", ...); "" (default)
   /// picks it from the image's scalar type and components.
   void SetEncoding(const char* encoding);

@@ -34,6 +34,16 @@ public:
   /// Why the latest Publish could not convert its argument ("" when it could).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
+  /// Converts a vtkTable into `message` (made a sensor_msgs/msg/JointState) with this
+  /// node's rule and length scaling, as Publish would, without sending it and without a header
+  /// stamp: how a field of this type is filled in a message object (python/ros2vtk/
+  /// blank_messages.py). False when it does not convert (vtkErrorMacro, GetLastConversionError).
+  bool ConvertObjectToMessage(vtkObject* value, vtkROS2Message* message);
+
+  /// True: SlicerROS2 hands out its generated message object as this type's blank message
+  /// (mapping rule key blank_message = "message"), and so does the ros2vtk Python package.
+  bool GetBlankMessageIsMessageObject() const { return true; }
+
   /// frame_id written into the header of every message (its stamp: see SetHeaderStamp).
   void SetFrameID(const char* frameID);
   const char* GetFrameID() const { return this->FrameID.c_str(); }

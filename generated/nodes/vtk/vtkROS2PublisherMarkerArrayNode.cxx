@@ -8,6 +8,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 #include "vtkPolyData.h"
 
 namespace
@@ -74,4 +75,35 @@ int vtkROS2PublisherMarkerArrayNode::PublishObject(vtkObject* object)
 vtkPolyData* vtkROS2PublisherMarkerArrayNode::GetBlankMessage() const
 {
   return vtkPolyData::New();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherMarkerArrayNode::ConvertObjectToMessage(vtkObject* value, vtkROS2Message* output)
+{
+  MessageType message;
+  std::string error;
+  const double lengthScale = this->ScaleLengths ? ::ros2vtk::convert::kMillimetresPerMetre
+                                                : ::ros2vtk::convert::kNoLengthScaling;
+  auto* typed = vtkPolyData::SafeDownCast(value);
+  if (!output)
+  {
+    error = "ConvertObjectToMessage: the output vtkROS2Message is null";
+  }
+  else if (!typed)
+  {
+    error = std::string("ConvertObjectToMessage: a MarkerArray value is a vtkPolyData, not ") +
+      (value ? value->GetClassName() : "null");
+  }
+  else if (!::ros2vtk::nodes::VTKToROS2(typed, message, lengthScale, &error))
+  {
+    error = error.empty() ? std::string("ConvertObjectToMessage: conversion failed") : error;
+  }
+  this->LastConversionError = error;
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  output->CopyFromRaw(MessageType::type_support(), &message);
+  return true;
 }

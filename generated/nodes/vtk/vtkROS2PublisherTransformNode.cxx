@@ -8,6 +8,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 #include "vtkMatrix4x4.h"
 
 namespace
@@ -74,4 +75,35 @@ int vtkROS2PublisherTransformNode::PublishObject(vtkObject* object)
 vtkMatrix4x4* vtkROS2PublisherTransformNode::GetBlankMessage() const
 {
   return vtkMatrix4x4::New();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherTransformNode::ConvertObjectToMessage(vtkObject* value, vtkROS2Message* output)
+{
+  MessageType message;
+  std::string error;
+  const double lengthScale = this->ScaleLengths ? ::ros2vtk::convert::kMillimetresPerMetre
+                                                : ::ros2vtk::convert::kNoLengthScaling;
+  auto* typed = vtkMatrix4x4::SafeDownCast(value);
+  if (!output)
+  {
+    error = "ConvertObjectToMessage: the output vtkROS2Message is null";
+  }
+  else if (!typed)
+  {
+    error = std::string("ConvertObjectToMessage: a Transform value is a vtkMatrix4x4, not ") +
+      (value ? value->GetClassName() : "null");
+  }
+  else if (!::ros2vtk::nodes::VTKToROS2(typed, message, lengthScale, &error))
+  {
+    error = error.empty() ? std::string("ConvertObjectToMessage: conversion failed") : error;
+  }
+  this->LastConversionError = error;
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  output->CopyFromRaw(MessageType::type_support(), &message);
+  return true;
 }

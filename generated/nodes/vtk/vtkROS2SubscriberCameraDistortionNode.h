@@ -13,6 +13,8 @@
 
 #include <string> // for std::string
 
+class vtkROS2Message;
+
 /// Receives sensor_msgs/msg/CameraInfo as vtkDoubleArray (mapping rule CameraDistortion, sensor_msgs.toml).
 /// Observe ModifiedEvent: it fires once per spin that brought messages (call data int*: count).
 class ROS2VTKNODES_EXPORT vtkROS2SubscriberCameraDistortionNode : public vtkROS2SubscriberNode
@@ -40,6 +42,12 @@ public:
 
   /// Why the latest conversion failed ("" when it did not).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
+
+  /// Converts `message` (a sensor_msgs/msg/CameraInfo) into `value` (a vtkDoubleArray) with this
+  /// node's rule and length scaling, as GetLastMessage would: how a field of this type is read
+  /// from a received message object (python/ros2vtk/blank_messages.py). False when it does not
+  /// convert (GetLastConversionError says why; no error is printed).
+  bool ConvertMessageToObject(vtkROS2Message* message, vtkObject* value);
 
   /// frame_id and stamp (seconds since the epoch) of the newest message's header; "" and 0
   /// before the first message.

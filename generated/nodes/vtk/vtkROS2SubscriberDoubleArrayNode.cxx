@@ -7,6 +7,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 
 namespace
 {
@@ -122,4 +123,23 @@ bool vtkROS2SubscriberDoubleArrayNode::GetNewMessage(int i, vtkDoubleArray* mess
     return false;
   }
   return this->Convert(this->GetNewRawMessage(i), message);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberDoubleArrayNode::ConvertMessageToObject(vtkROS2Message* message, vtkObject* value)
+{
+  auto* typed = vtkDoubleArray::SafeDownCast(value);
+  if (!message || message->GetTypeSupport() != &MessageType::type_support())
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: the message is a ") +
+      (message ? message->GetROSType() : "null") + ", not a std_msgs/msg/Float64MultiArray";
+    return false;
+  }
+  if (!typed)
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: a DoubleArray value is a vtkDoubleArray, not ") +
+      (value ? value->GetClassName() : "null");
+    return false;
+  }
+  return this->Convert(message->GetRawMessage(), typed);
 }

@@ -7,6 +7,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 
 namespace
 {
@@ -122,4 +123,23 @@ bool vtkROS2SubscriberIntArrayNode::GetNewMessage(int i, vtkTypeInt64Array* mess
     return false;
   }
   return this->Convert(this->GetNewRawMessage(i), message);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberIntArrayNode::ConvertMessageToObject(vtkROS2Message* message, vtkObject* value)
+{
+  auto* typed = vtkTypeInt64Array::SafeDownCast(value);
+  if (!message || message->GetTypeSupport() != &MessageType::type_support())
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: the message is a ") +
+      (message ? message->GetROSType() : "null") + ", not a std_msgs/msg/Int64MultiArray";
+    return false;
+  }
+  if (!typed)
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: a IntArray value is a vtkTypeInt64Array, not ") +
+      (value ? value->GetClassName() : "null");
+    return false;
+  }
+  return this->Convert(message->GetRawMessage(), typed);
 }

@@ -7,6 +7,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 
 namespace
 {
@@ -122,6 +123,25 @@ bool vtkROS2SubscriberJointStateNode::GetNewMessage(int i, vtkTable* message)
     return false;
   }
   return this->Convert(this->GetNewRawMessage(i), message);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberJointStateNode::ConvertMessageToObject(vtkROS2Message* message, vtkObject* value)
+{
+  auto* typed = vtkTable::SafeDownCast(value);
+  if (!message || message->GetTypeSupport() != &MessageType::type_support())
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: the message is a ") +
+      (message ? message->GetROSType() : "null") + ", not a sensor_msgs/msg/JointState";
+    return false;
+  }
+  if (!typed)
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: a JointState value is a vtkTable, not ") +
+      (value ? value->GetClassName() : "null");
+    return false;
+  }
+  return this->Convert(message->GetRawMessage(), typed);
 }
 
 //------------------------------------------------------------------------------

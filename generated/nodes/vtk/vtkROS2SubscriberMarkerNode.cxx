@@ -7,6 +7,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 
 namespace
 {
@@ -122,6 +123,25 @@ bool vtkROS2SubscriberMarkerNode::GetNewMessage(int i, vtkPolyData* message)
     return false;
   }
   return this->Convert(this->GetNewRawMessage(i), message);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberMarkerNode::ConvertMessageToObject(vtkROS2Message* message, vtkObject* value)
+{
+  auto* typed = vtkPolyData::SafeDownCast(value);
+  if (!message || message->GetTypeSupport() != &MessageType::type_support())
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: the message is a ") +
+      (message ? message->GetROSType() : "null") + ", not a visualization_msgs/msg/Marker";
+    return false;
+  }
+  if (!typed)
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: a Marker value is a vtkPolyData, not ") +
+      (value ? value->GetClassName() : "null");
+    return false;
+  }
+  return this->Convert(message->GetRawMessage(), typed);
 }
 
 //------------------------------------------------------------------------------

@@ -13,6 +13,8 @@
 
 #include <string> // for std::string
 
+class vtkROS2Message;
+
 /// Receives nav_msgs/msg/Odometry as vtkMatrix4x4 (mapping rule Odometry, nav_msgs.toml).
 /// Lengths (translation) are multiplied by 1000 (ROS m -> VTK mm) unless ScaleLengths is off.
 /// Observe ModifiedEvent: it fires once per spin that brought messages (call data int*: count).
@@ -41,6 +43,12 @@ public:
 
   /// Why the latest conversion failed ("" when it did not).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
+
+  /// Converts `message` (a nav_msgs/msg/Odometry) into `value` (a vtkMatrix4x4) with this
+  /// node's rule and length scaling, as GetLastMessage would: how a field of this type is read
+  /// from a received message object (python/ros2vtk/blank_messages.py). False when it does not
+  /// convert (GetLastConversionError says why; no error is printed).
+  bool ConvertMessageToObject(vtkROS2Message* message, vtkObject* value);
 
   /// frame_id and stamp (seconds since the epoch) of the newest message's header; "" and 0
   /// before the first message.

@@ -7,6 +7,7 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
 
 namespace
 {
@@ -122,4 +123,23 @@ bool vtkROS2SubscriberWrenchNode::GetNewMessage(int i, vtkDoubleArray* message)
     return false;
   }
   return this->Convert(this->GetNewRawMessage(i), message);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberWrenchNode::ConvertMessageToObject(vtkROS2Message* message, vtkObject* value)
+{
+  auto* typed = vtkDoubleArray::SafeDownCast(value);
+  if (!message || message->GetTypeSupport() != &MessageType::type_support())
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: the message is a ") +
+      (message ? message->GetROSType() : "null") + ", not a geometry_msgs/msg/Wrench";
+    return false;
+  }
+  if (!typed)
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: a Wrench value is a vtkDoubleArray, not ") +
+      (value ? value->GetClassName() : "null");
+    return false;
+  }
+  return this->Convert(message->GetRawMessage(), typed);
 }
