@@ -96,12 +96,13 @@ function(_ros2vtk_compile_in target)
 endfunction()
 
 # _ros2vtk_add_sanitized_twin(<name> TEST <test target> [COMPILE_IN <library>...]
-#                              [MAX_ALLOCATION_MB <n> (256)] [ENVIRONMENT ...])
+#                              [MAX_ALLOCATION_MB <n> (256)] [ASAN_OPTIONS <a=b:...>]
+#                              [ENVIRONMENT ...])
 # A copy of an existing test executable built under the sanitizers, with the sources of the
 # libraries under test compiled into it (_ros2vtk_compile_in), registered as one CTest named
 # <name> (label `sanitizer`).
 function(_ros2vtk_add_sanitized_twin name)
-  cmake_parse_arguments(ARG "" "TEST;MAX_ALLOCATION_MB" "COMPILE_IN;ENVIRONMENT" ${ARGN})
+  cmake_parse_arguments(ARG "" "TEST;MAX_ALLOCATION_MB;ASAN_OPTIONS" "COMPILE_IN;ENVIRONMENT" ${ARGN})
   if(NOT ARG_MAX_ALLOCATION_MB)
     set(ARG_MAX_ALLOCATION_MB 256)
   endif()
@@ -135,9 +136,13 @@ function(_ros2vtk_add_sanitized_twin name)
   endif()
   _ros2vtk_target_sanitizers(${name})
   add_test(NAME ${name} COMMAND ${name})
+  set(_extra "")
+  if(ARG_ASAN_OPTIONS)
+    set(_extra ":${ARG_ASAN_OPTIONS}")
+  endif()
   # One allocation above the maximum is a bug in these tests; leaks are reported.
   set_tests_properties(${name} PROPERTIES LABELS sanitizer TIMEOUT 300
-    ENVIRONMENT "ASAN_OPTIONS=max_allocation_size_mb=${ARG_MAX_ALLOCATION_MB}:allocator_may_return_null=0:detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1;${ARG_ENVIRONMENT}")
+    ENVIRONMENT "ASAN_OPTIONS=max_allocation_size_mb=${ARG_MAX_ALLOCATION_MB}:allocator_may_return_null=0:detect_leaks=1${_extra};UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1;${ARG_ENVIRONMENT}")
 endfunction()
 
 # One plain runtime library, as every runtime/<Folder>/CMakeLists.txt makes it: the target

@@ -36,6 +36,10 @@ public:
   // referenced ID -> nodes of this scene that gained a reference to it (a superset: a node that
   // dropped the reference since is visited for nothing, never missed).
   std::unordered_map<std::string, std::unordered_set<vtkROS2SceneNode*>> Referrers;
+  // The same pairs the other way round, so a node that leaves the scene is taken out of every
+  // Referrers entry it is in, including those of references it has dropped since (otherwise a
+  // freed node would be visited when the node it once referred to is removed).
+  std::unordered_map<vtkROS2SceneNode*, std::unordered_set<std::string>> ReferencedBy;
   unsigned long NodesVersion = 0; // see GetNodesVersion
 
   std::string UniqueID(const std::string& className)
@@ -128,19 +132,23 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
   this->Internals->ByID.erase(id);
   ++this->Internals->NodesVersion;
   auto& referrers = this->Internals->Referrers;
-  std::vector<std::string> roles;
-  node->GetNodeReferenceRoleList(roles);
-  for (const std::string& role : roles)
+  auto& referencedBy = this->Internals->ReferencedBy;
+  auto noted = referencedBy.find(node);
+  if (noted != referencedBy.end())
   {
-    for (int n = 0; n < node->GetNumberOfNodeReferences(role.c_str()); ++n)
+    for (const std::string& referenced : noted->second)
     {
-      const char* referenced = node->GetNthNodeReferenceID(role.c_str(), n);
-      auto entry = referenced ? referrers.find(referenced) : referrers.end();
+      auto entry = referrers.find(referenced);
       if (entry != referrers.end())
       {
         entry->second.erase(node);
+        if (entry->second.empty())
+        {
+          referrers.erase(entry);
+        }
       }
     }
+    referencedBy.erase(noted);
   }
   auto entry = referrers.find(id);
   if (entry != referrers.end())
@@ -149,6 +157,7 @@ bool vtkROS2Scene::RemoveNode(vtkROS2SceneNode* node)
     referrers.erase(entry);
     for (vtkROS2SceneNode* other : visit)
     {
+      referencedBy[other].erase(id);
       if (other->GetScene() == this)
       {
         other->ForgetReferencesTo(id.c_str());
@@ -166,6 +175,7 @@ void vtkROS2Scene::NoteReferrer(const std::string& referencedNodeID, vtkROS2Scen
   if (referrer && referrer->GetScene() == this)
   {
     this->Internals->Referrers[referencedNodeID].insert(referrer);
+    this->Internals->ReferencedBy[referrer].insert(referencedNodeID);
   }
 }
 
