@@ -497,6 +497,8 @@ class App:
         node = volumes.add_volume_node(self.scene, image, file_to_world, name)
         self.display.Update()
         frame_camera(self.renderer)  # the volume in view (beside what was there)
+        # Once more after the slice panes have taken their share of the page (a smaller 3D view).
+        self.frame_again_at = time.monotonic() + 1.0
         self.render()
         dims, spacing = image.GetDimensions(), image.GetSpacing()
         self.state.slice_source = node.GetID()
