@@ -2,7 +2,7 @@
 // shallow copy of the newest image: the node's image is overwritten on later spins.
 #include "vtkROS2ImageDisplayableManager.h"
 
-#include "SubscriberData.hpp"
+#include "Internal/SubscriberData.hpp"
 #include "vtkROS2SceneNode.h"
 #include "vtkROS2VolumeNode.h"
 

@@ -3,7 +3,7 @@
 // followers beside it in the node's vtkPropAssembly.
 #include "vtkROS2PointCloudDisplayableManager.h"
 
-#include "SubscriberData.hpp"
+#include "Internal/SubscriberData.hpp"
 #include "vtkROS2DisplayManager.h"
 #include "vtkROS2SceneNode.h"
 

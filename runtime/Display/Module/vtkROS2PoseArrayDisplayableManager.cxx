@@ -2,7 +2,7 @@
 // over the poses' positions, oriented by each pose's x axis.
 #include "vtkROS2PoseArrayDisplayableManager.h"
 
-#include "SubscriberData.hpp"
+#include "Internal/SubscriberData.hpp"
 #include "vtkROS2DisplayManager.h"
 #include "vtkROS2SceneNode.h"
 

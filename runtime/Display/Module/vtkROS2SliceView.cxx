@@ -4,7 +4,7 @@
 // re-runs no filter.
 #include "vtkROS2SliceView.h"
 
-#include "SubscriberData.hpp"
+#include "Internal/SubscriberData.hpp"
 #include "vtkROS2ModelNode.h"
 #include "vtkROS2Scene.h"
 #include "vtkROS2TransformNode.h"

@@ -1,6 +1,6 @@
 // ros2vtk — the newest message of a subscriber node as a VTK object (see the header): a table of
 // the generated subscriber classes that produce VTK data objects, by class.
-#include "SubscriberData.hpp"
+#include "Internal/SubscriberData.hpp"
 
 #include "vtkROS2SubscriberImageNode.h"
 #include "vtkROS2SubscriberMarkerArrayNode.h"
