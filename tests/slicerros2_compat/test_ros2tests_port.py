@@ -663,8 +663,8 @@ class TestRclpyPublishersToGeneratedMessageSubscribers(unittest.TestCase):
         self.assertEqual(list(received.GetEffort()), [2.0, 3.0])
 
     def test_joy(self):
-        # SlicerROS2's short name Joy is our JoyAxes / JoyButtons (docs/porting-from-slicerros2.md).
-        received = self.receive("JoyAxes", "sensor_msgs/msg/Joy", {
+        # SlicerROS2's short name Joy (an alias of our JoyAxes, whose message object is the whole Joy).
+        received = self.receive("Joy", "sensor_msgs/msg/Joy", {
             'header': {'frame_id': 'pad'}, 'axes': [0.5, -1.0], 'buttons': [1, 0, 1]})
         self.assertEqual(received.GetHeader().GetFrameId(), "pad")
         self.assertEqual((list(received.GetAxes()), list(received.GetButtons())), ([0.5, -1.0], [1, 0, 1]))
