@@ -356,8 +356,13 @@ def test_services_client_request_and_response_objects(rosNode, peers):
 
     # optional, shows which services are available
     assert 'std_srvs/srv/SetBool' in rosNode.RegisteredROS2ServiceClientNodes()
-    # example with the type (SlicerROS2: 'vtkMRMLROS2ServiceClientSpawnNode')
-    spawn1 = rosNode.CreateAndAddServiceClientNode('std_srvs/srv/SetBool', '/turtlesim1/spawn')
+    # example with the type, named as SlicerROS2 names it: by its generated client class
+    # (there 'vtkMRMLROS2ServiceClientSpawnNode'; turtlesim has no wheel, so SetBool's)
+    spawn1 = rosNode.CreateAndAddServiceClientNode('vtkMRMLROS2ServiceClientSetBoolNode', '/turtlesim1/spawn')
+    assert spawn1.GetROSType() == 'std_srvs/srv/SetBool'
+    # The bare name works when one package has it; one two packages share is refused by name.
+    assert rosNode.CreateAndAddServiceClientNode('SetBool', '/other').GetROSType() == 'std_srvs/srv/SetBool'
+    assert rosNode.CreateAndAddServiceClientNode('Empty', '/ambiguous') is None
     # to check if the client is started, in a shell: ros2 service info /turtlesim1/spawn
     assert spin_until(lambda: spawn1.IsServiceReady(), seconds=20)
 

@@ -5,6 +5,7 @@
 #include "vtkROS2Message.h"
 
 #include "Internal/MessageFields.hpp"
+#include "Internal/ServiceTypeName.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -105,7 +106,8 @@ bool vtkROS2ServiceClientNode::Attach(
     return false;
   }
   std::string error;
-  const ros2vtk::wire::ServiceTypeSupport* support = ros2vtk::wire::find_service_type(type, &error);
+  const ros2vtk::wire::ServiceTypeSupport* support =
+    ros2vtk::scene::find_service_type_by_any_name(type, &error);
   if (!support)
   {
     vtkErrorMacro("service client " << service << ": " << error);

@@ -5,6 +5,7 @@
 #include "vtkROS2Message.h"
 
 #include "Internal/MessageFields.hpp"
+#include "Internal/ServiceTypeName.hpp"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2Scene.h"
 
@@ -89,7 +90,8 @@ bool vtkROS2ServiceServerNode::Attach(
     return false;
   }
   std::string error;
-  const ros2vtk::wire::ServiceTypeSupport* support = ros2vtk::wire::find_service_type(type, &error);
+  const ros2vtk::wire::ServiceTypeSupport* support =
+    ros2vtk::scene::find_service_type_by_any_name(type, &error);
   if (!support)
   {
     vtkErrorMacro("service server " << service << ": " << error);
