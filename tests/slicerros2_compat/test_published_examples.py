@@ -675,11 +675,10 @@ def test_topics_subscriber_observer_prints_at_the_interactive_prompt(peers):
 
 
 def test_topics_subscriber_observer_prints_at_the_ipython_prompt(peers):
-    try:
-        subprocess.run([VENV_PYTHON, '-c', 'import IPython'], check=True, capture_output=True)
-    except subprocess.CalledProcessError:
-        pytest.skip(f'IPython is not installed in {VENV_PYTHON} (scripts/requirements-test.txt; '
-                    'run scripts/setup.sh)')
+    # scripts/setup.sh installs IPython (requirements-test.txt): its absence is a failure, not a skip.
+    found = subprocess.run([VENV_PYTHON, '-c', 'import IPython'], capture_output=True)
+    assert found.returncode == 0, (f'IPython is not installed in {VENV_PYTHON} '
+                                   '(scripts/requirements-test.txt; run scripts/setup.sh)')
     prompt = IPythonPrompt()
     try:
         observer_prints_at_the_prompt(prompt, peers, '/ipython_prompt_string')
