@@ -45,7 +45,9 @@ SHORT_NAMES = ['Bool', 'DoubleArray', 'Double', 'DoubleTable', 'Empty', 'Image',
                'PolyData', 'Twist', 'TwistStamped', 'PointStamped', 'PolygonStamped',
                'PoseWithCovarianceStamped', 'Odometry', 'Path', 'Imu',
                # issue 13: what users see first
-               'CameraInfo', 'CameraDistortion', 'JoyAxes', 'JoyButtons', 'PathPolyline', 'CompressedImage', 'Marker', 'MarkerArray']
+               'CameraInfo', 'CameraDistortion', 'JoyAxes', 'JoyButtons', 'PathPolyline', 'CompressedImage', 'Marker', 'MarkerArray',
+               # issue 14: SlicerROS2's name for sensor_msgs/Joy (docs/porting-from-slicerros2.md)
+               'Joy']
 
 
 def test_types_lists_a_publisher_and_a_subscriber_class_per_short_name(ros):
