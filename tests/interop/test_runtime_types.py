@@ -162,3 +162,93 @@ def test_ros2vtk_topic_echo_says_when_the_publisher_serves_no_description(ros):
     ros.stop(peer)
     assert code == 3 and out == ''
     assert 'timeout: the publisher /quiet_talker does not serve type descriptions' in err, err
+
+
+# A publisher of ours with a type nobody registers learns it from the node it publishes to: the
+# rclpy subscription's node serves the type's description too (rcl's node type cache holds the
+# types of every endpoint), so the first message can go out before anyone of ours learnt it.
+LISTENER = textwrap.dedent('''
+    import json, sys, time
+    import rclpy
+    from rclpy.parameter import Parameter
+    from service_msgs.msg import ServiceEventInfo
+    serve = sys.argv[1] == 'serve'
+    rclpy.init()
+    overrides = [] if serve else [Parameter('start_type_description_service', value=False)]
+    node = rclpy.create_node(sys.argv[2], parameter_overrides=overrides)
+    received = []
+    node.create_subscription(ServiceEventInfo, '/runtime_type_out', received.append, 10)
+    print('ready', flush=True)
+    end = time.monotonic() + float(sys.argv[3])
+    while time.monotonic() < end and not received:
+        rclpy.spin_once(node, timeout_sec=0.1)
+    fields = [{'event_type': m.event_type, 'sec': m.stamp.sec, 'nanosec': m.stamp.nanosec,
+               'gid': [int(b) for b in m.client_gid], 'sequence_number': m.sequence_number}
+              for m in received]
+    print(json.dumps(fields), flush=True)
+    node.destroy_node()
+    rclpy.shutdown()
+''')
+
+OUR_PUBLISHER = textwrap.dedent('''
+    import json, sys, time
+    import ros2vtk
+    logic = ros2vtk.vtkROS2Logic()
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode(sys.argv[1], '/runtime_type_out')
+    early = pub.PublishYAML('{event_type: 1}')  # the type is not learnt yet: refused, said why
+    early_error = pub.GetLastPublishError()
+    statuses = [pub.GetTypeStatus()]
+    sent = 0
+    end = time.monotonic() + float(sys.argv[2])
+    while time.monotonic() < end and sent < 5:
+        logic.SpinOnWakeUp(0.05)
+        if statuses[-1] != pub.GetTypeStatus():
+            statuses.append(pub.GetTypeStatus())
+        if not pub.IsWaitingForType() and pub.GetNumberOfMatchedSubscriptions() > 0:
+            yaml = '{event_type: 3, stamp: {sec: 77, nanosec: 88}, client_gid: [%s], sequence_number: -5}' % (
+                ', '.join(str(b) for b in range(16)))
+            sent += bool(pub.PublishYAML(yaml))
+            time.sleep(0.2)
+    print(json.dumps({'class': pub.GetClassName(), 'ros_type': pub.GetROSType(), 'early': bool(early),
+                      'early_error': early_error, 'statuses': statuses, 'sent': sent}), flush=True)
+''')
+
+
+def run_our_publisher(ros, seconds: float) -> dict:
+    env = dict(ros.env, PYTHONPATH=str(BUILD / 'python'))
+    process = ros.start(['/usr/bin/python3', '-c', OUR_PUBLISHER, ROS_TYPE, str(seconds)], env)
+    code, out, err = ros.finish(process, timeout=seconds + 30)
+    assert code == 0, err
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def test_yaml_publisher_learns_an_unshipped_type_from_the_rclpy_subscriber(ros):
+    listener = ros.start([str(VENV_PYTHON), '-c', LISTENER, 'serve', 'event_listener', '30'])
+    assert listener.stdout.readline().strip() == 'ready'
+    result = run_our_publisher(ros, 20)
+    code, out, err = ros.finish(listener, timeout=40)
+    assert code == 0, err
+    received = json.loads(out.strip().splitlines()[-1])
+    assert result['class'] == 'vtkROS2PublisherGenericNode'
+    assert result['ros_type'] == ROS_TYPE
+    assert not result['early']
+    assert result['early_error'].startswith('the message type is not known yet: waiting for a subscriber or '
+                                            'publisher of service_msgs/msg/ServiceEventInfo'), result
+    assert 'waiting for the type description of service_msgs/msg/ServiceEventInfo from /event_listener' \
+        in result['statuses'], result['statuses']
+    assert result['statuses'][-1] == '', result['statuses']
+    assert result['sent'] >= 1, result
+    assert received and received[0] == {'event_type': 3, 'sec': 77, 'nanosec': 88, 'gid': list(range(16)),
+                                        'sequence_number': -5}, received
+
+
+def test_a_subscriber_without_type_descriptions_gets_a_clear_status_on_our_publisher(ros):
+    listener = ros.start([str(VENV_PYTHON), '-c', LISTENER, 'quiet', 'quiet_listener', '20'])
+    assert listener.stdout.readline().strip() == 'ready'
+    result = run_our_publisher(ros, 10)
+    ros.stop(listener)
+    assert result['sent'] == 0
+    assert result['statuses'][-1].startswith(
+        'the subscriber /quiet_listener does not serve type descriptions (no /quiet_listener/get_type_description'), \
+        result['statuses']

@@ -150,6 +150,29 @@ TEST(GraphCache, WriterIsMatchedToTheNodeWhoseAnnouncementListsIt)
   EXPECT_EQ(publishers[2].node_name, "");
 }
 
+TEST(GraphCache, ReaderIsMatchedToTheNodeWhoseAnnouncementListsItAsReader)
+{
+  // A publisher of ours learning its type asks a subscription's node (issue 13): readers are
+  // found by the reader gids of the announcements, with the type hash of their USER_DATA.
+  GraphCache graph;
+  graph.add_remote_endpoint(gid(3, 1), true, "rt/chatter", "std_msgs::msg::dds_::String_", "W");
+  graph.add_remote_endpoint(gid(3, 2), false, "rt/chatter", "std_msgs::msg::dds_::String_", "R");
+  graph.add_remote_endpoint(gid(5, 1), false, "rt/chatter", "std_msgs::msg::dds_::String_");
+  graph.record_announcement(announcement(
+    3, { { "/", "talker", { gid(3, 1) }, {} }, { "/ns", "listener", {}, { gid(3, 2) } } }));
+  const auto readers = graph.remote_endpoints("rt/chatter", false);
+  ASSERT_EQ(readers.size(), 2u); // by reader gid: participant 3's, then 5's (not announced)
+  EXPECT_EQ(readers[0].node_namespace, "/ns");
+  EXPECT_EQ(readers[0].node_name, "listener"); // not "talker", which lists only the writer
+  EXPECT_EQ(readers[0].ros_type, "std_msgs/msg/String");
+  EXPECT_EQ(readers[0].type_hash, "R");
+  EXPECT_EQ(readers[1].node_name, "");
+  const auto writers = graph.remote_endpoints("rt/chatter", true);
+  ASSERT_EQ(writers.size(), 1u);
+  EXPECT_EQ(writers[0].node_name, "talker");
+  EXPECT_EQ(writers[0].type_hash, "W");
+}
+
 TEST(GraphCache, NewerAnnouncementReplacesTheParticipantsNodes)
 {
   GraphCache graph;

@@ -97,8 +97,10 @@ public:
   /// ROS node on `topic`. `type` is a short name ("String"), a class name
   /// ("vtkROS2PublisherStringNode", "vtkMRMLROS2PublisherStringNode") or a ROS type
   /// ("geometry_msgs/msg/Point", "geometry_msgs/Point"; a generic node when no single mapped
-  /// class exists). Returns the new node (owned by the scene) or nullptr with vtkErrorMacro
-  /// (unknown type: the message lists the known names; topic already used by this node).
+  /// class exists). A full ROS type no library registers makes a generic node that learns the
+  /// type from a peer on the topic (REP 2011 type descriptions). Returns the new node (owned by
+  /// the scene) or nullptr with vtkErrorMacro (unknown short name: the message lists the known
+  /// names; topic already used by this node).
   vtkROS2PublisherNode* CreateAndAddPublisherNode(const char* type, const char* topic);
   vtkROS2SubscriberNode* CreateAndAddSubscriberNode(const char* type, const char* topic);
   /// Removes the publisher/subscriber of this node on `topic` from DDS and from the scene.

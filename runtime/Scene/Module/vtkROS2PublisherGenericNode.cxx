@@ -4,6 +4,8 @@
 
 #include "Internal/GenericMessageType.hpp"
 
+#include "ros2vtk/wire/Participant.hpp"
+
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/MessageYaml.hpp"
 
@@ -19,7 +21,9 @@ namespace {
 vtkROS2TopicNode* NewGeneric(const char* rosType)
 {
   vtkROS2PublisherGenericNode* node = vtkROS2PublisherGenericNode::New();
-  if (!node->SetROSType(rosType))
+  // A full type name nothing registers is learnt from a peer on the topic (issue 13).
+  const bool registered = rosType && ros2vtk::wire::find_message_type(rosType);
+  if (!(registered ? node->SetROSType(rosType) : node->SetROSTypeResolvedAtRuntime(rosType)))
   {
     node->Delete();
     return nullptr;
@@ -29,7 +33,10 @@ vtkROS2TopicNode* NewGeneric(const char* rosType)
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkROS2PublisherGenericNode::vtkROS2PublisherGenericNode() = default;
+vtkROS2PublisherGenericNode::vtkROS2PublisherGenericNode()
+  : Learnt(new ros2vtk::scene::LearntMessageType)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkROS2PublisherGenericNode::~vtkROS2PublisherGenericNode() = default;
@@ -45,6 +52,11 @@ bool vtkROS2PublisherGenericNode::SetROSType(const char* rosType)
     vtkErrorMacro("SetROSType: " << error);
     return false;
   }
+  if (!this->Learnt->empty())
+  {
+    this->Learnt->clear(); // a registered type replaces one to be learnt
+    changed = true;
+  }
   if (changed)
   {
     this->Modified();
@@ -53,9 +65,103 @@ bool vtkROS2PublisherGenericNode::SetROSType(const char* rosType)
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::SetROSTypeResolvedAtRuntime(const char* rosType)
+{
+  if (rosType && ros2vtk::wire::find_message_type(rosType))
+  {
+    return this->SetROSType(rosType);
+  }
+  bool changed = false;
+  const std::string error = ros2vtk::scene::assign_learnt_type(rosType, this->IsAddedToROS2Node(),
+    this->Type, *this->Learnt,
+    ros2vtk::scene::LearntMessageType::Peers::SubscriptionsThenPublishers, changed);
+  if (!error.empty())
+  {
+    vtkErrorMacro("SetROSTypeResolvedAtRuntime: " << error);
+    return false;
+  }
+  if (changed)
+  {
+    this->Modified();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2PublisherGenericNode::GetTypeStatus() const
+{
+  return this->Learnt->status().c_str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::IsWaitingForType() const
+{
+  return this->Type == nullptr && !this->Learnt->empty();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::HasMessageTypeSupport() const
+{
+  return this->Type != nullptr || !this->Learnt->empty();
+}
+
+//------------------------------------------------------------------------------
 const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherGenericNode::GetMessageTypeSupport() const
 {
-  return *this->Type; // callers check HasMessageTypeSupport() first
+  // callers check HasMessageTypeSupport() first; while the type is learnt, a table naming it
+  return this->Type ? *this->Type : this->Learnt->named_only();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::CreateEndpoint(ros2vtk::wire::Participant& participant,
+  const std::string& topic, const ros2vtk::wire::QoS& qos, std::string* error)
+{
+  if (this->Type)
+  {
+    return this->Superclass::CreateEndpoint(participant, topic, qos, error);
+  }
+  // No writer yet: the graph is watched, the spin creates the writer once the type is known.
+  this->Learnt->start(participant, topic);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2PublisherGenericNode::DestroyEndpoint()
+{
+  this->Superclass::DestroyEndpoint();
+  if (!this->Type)
+  {
+    this->Learnt->stop();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2PublisherGenericNode::HasEndpoint() const
+{
+  return this->Learnt->asking() || this->Superclass::HasEndpoint();
+}
+
+//------------------------------------------------------------------------------
+int vtkROS2PublisherGenericNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
+{
+  if (!this->Learnt->asking())
+  {
+    return this->Superclass::OnROS2NodeSpin(rosNode);
+  }
+  ros2vtk::wire::Participant* participant = rosNode ? rosNode->GetParticipant() : nullptr;
+  const bool changed = this->Learnt->spin(this->Type, "publish", [&](std::string& error) {
+    return participant &&
+      this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error);
+  });
+  if (changed && !this->Type && !this->Learnt->asking())
+  {
+    vtkErrorMacro(<< this->Learnt->status());
+  }
+  if (changed)
+  {
+    this->Modified();
+  }
+  return 0;
 }
 
 //------------------------------------------------------------------------------
@@ -63,7 +169,9 @@ bool vtkROS2PublisherGenericNode::PublishYAML(const char* yaml)
 {
   if (!this->Type)
   {
-    this->RecordFailedPublish("the message type is not set (SetROSType)");
+    this->RecordFailedPublish(this->Learnt->empty()
+        ? "the message type is not set (SetROSType)"
+        : ("the message type is not known yet: " + this->Learnt->status()).c_str());
     return false;
   }
   const ros2vtk::wire::MessageTypeSupport& type = *this->Type;
@@ -82,7 +190,7 @@ bool vtkROS2PublisherGenericNode::PublishYAML(const char* yaml)
 bool vtkROS2PublisherGenericNode::ReadXML(vtkXMLDataElement* element)
 {
   const char* rosType = ros2vtk::scene::saved_generic_type(element);
-  if (rosType && !this->SetROSType(rosType))
+  if (rosType && !this->SetROSTypeResolvedAtRuntime(rosType))
   {
     return false;
   }

@@ -6,7 +6,6 @@
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 #include "ros2vtk/wire/Participant.hpp"
-#include "ros2vtk/wire/TypeDescriptionClient.hpp"
 
 #include "vtkObjectFactory.h"
 #include "vtkXMLDataElement.h"
@@ -30,7 +29,10 @@ vtkROS2TopicNode* NewGeneric(const char* rosType)
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkROS2SubscriberGenericNode::vtkROS2SubscriberGenericNode() = default;
+vtkROS2SubscriberGenericNode::vtkROS2SubscriberGenericNode()
+  : Learnt(new ros2vtk::scene::LearntMessageType)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkROS2SubscriberGenericNode::~vtkROS2SubscriberGenericNode() = default;
@@ -46,11 +48,9 @@ bool vtkROS2SubscriberGenericNode::SetROSType(const char* rosType)
     vtkErrorMacro("SetROSType: " << error);
     return false;
   }
-  if (!this->RuntimeTypeName.empty())
+  if (!this->Learnt->empty())
   {
-    this->RuntimeTypeName.clear(); // a registered type replaces one to be learnt
-    this->NamedOnlyType.reset();
-    this->TypeStatus.clear();
+    this->Learnt->clear(); // a registered type replaces one to be learnt
     changed = true;
   }
   if (changed)
@@ -67,38 +67,44 @@ bool vtkROS2SubscriberGenericNode::SetROSTypeResolvedAtRuntime(const char* rosTy
   {
     return this->SetROSType(rosType);
   }
-  std::string name = rosType ? rosType : "";
-  if (!ros2vtk::scene::runtime_type_name(name))
+  bool changed = false;
+  const std::string error = ros2vtk::scene::assign_learnt_type(rosType, this->IsAddedToROS2Node(),
+    this->Type, *this->Learnt, ros2vtk::scene::LearntMessageType::Peers::Publishers, changed);
+  if (!error.empty())
   {
-    vtkErrorMacro("SetROSTypeResolvedAtRuntime: '"
-      << (rosType ? rosType : "(null)") << "' is not a message type name (pkg/msg/Type)");
+    vtkErrorMacro("SetROSTypeResolvedAtRuntime: " << error);
     return false;
   }
-  if (this->IsAddedToROS2Node())
+  if (changed)
   {
-    vtkErrorMacro("SetROSTypeResolvedAtRuntime: cannot change the type while added to a ROS node");
-    return false;
+    this->Modified();
   }
-  if (name == this->RuntimeTypeName && !this->Type)
-  {
-    return true;
-  }
-  this->Type = nullptr;
-  this->RuntimeTypeName = name;
-  this->NamedOnlyType.reset(new ros2vtk::wire::MessageTypeSupport{});
-  this->NamedOnlyType->ros_type = this->RuntimeTypeName.c_str();
-  this->NamedOnlyType->dds_type_name = "";
-  this->NamedOnlyType->type_hash = "";
-  this->TypeStatus = "waiting to be added to a ROS node to learn " + name + " from a publisher";
-  this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2SubscriberGenericNode::GetTypeStatus() const
+{
+  return this->Learnt->status().c_str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberGenericNode::IsWaitingForType() const
+{
+  return this->Type == nullptr && !this->Learnt->empty();
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberGenericNode::HasMessageTypeSupport() const
+{
+  return this->Type != nullptr || !this->Learnt->empty();
 }
 
 //------------------------------------------------------------------------------
 const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberGenericNode::GetMessageTypeSupport() const
 {
   // callers check HasMessageTypeSupport() first; while the type is learnt, a table naming it
-  return this->Type ? *this->Type : *this->NamedOnlyType;
+  return this->Type ? *this->Type : this->Learnt->named_only();
 }
 
 //------------------------------------------------------------------------------
@@ -109,60 +115,48 @@ bool vtkROS2SubscriberGenericNode::CreateEndpoint(ros2vtk::wire::Participant& pa
   {
     return this->Superclass::CreateEndpoint(participant, topic, qos, error);
   }
-  // No subscription yet: the resolver watches the graph, the spin subscribes once it knows.
-  this->Resolver.reset(
-    new ros2vtk::wire::RuntimeTypeResolver(participant, topic, this->RuntimeTypeName));
-  this->TypeStatus = this->Resolver->status();
+  // No subscription yet: the graph is watched, the spin subscribes once the type is known.
+  this->Learnt->start(participant, topic);
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkROS2SubscriberGenericNode::DestroyEndpoint()
 {
-  this->Resolver.reset();
   this->Superclass::DestroyEndpoint();
-  if (!this->Type && !this->RuntimeTypeName.empty())
+  if (!this->Type)
   {
-    this->TypeStatus =
-      "waiting to be added to a ROS node to learn " + this->RuntimeTypeName + " from a publisher";
+    this->Learnt->stop();
   }
 }
 
 //------------------------------------------------------------------------------
 bool vtkROS2SubscriberGenericNode::HasEndpoint() const
 {
-  return this->Resolver != nullptr || this->Superclass::HasEndpoint();
+  return this->Learnt->asking() || this->Superclass::HasEndpoint();
 }
 
 //------------------------------------------------------------------------------
 int vtkROS2SubscriberGenericNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
 {
-  if (this->Resolver)
+  if (!this->Learnt->asking())
   {
-    const auto state = this->Resolver->poll();
-    if (this->Resolver->status() != this->TypeStatus)
-    {
-      this->TypeStatus = this->Resolver->status();
-      this->Modified();
-    }
-    if (state == ros2vtk::wire::RuntimeTypeResolver::State::Ready)
-    {
-      ros2vtk::wire::Participant* participant = rosNode ? rosNode->GetParticipant() : nullptr;
-      this->Type = this->Resolver->type();
-      this->Resolver.reset();
-      std::string error;
-      if (!participant ||
-        !this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error))
-      {
-        this->TypeStatus = "learnt " + this->RuntimeTypeName + " but cannot subscribe: " + error;
-        vtkErrorMacro(<< this->TypeStatus);
-        this->Type = nullptr;
-      }
-      this->Modified();
-    }
-    return 0;
+    return this->Superclass::OnROS2NodeSpin(rosNode);
   }
-  return this->Superclass::OnROS2NodeSpin(rosNode);
+  ros2vtk::wire::Participant* participant = rosNode ? rosNode->GetParticipant() : nullptr;
+  const bool changed = this->Learnt->spin(this->Type, "subscribe", [&](std::string& error) {
+    return participant &&
+      this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error);
+  });
+  if (changed && !this->Type && !this->Learnt->asking())
+  {
+    vtkErrorMacro(<< this->Learnt->status());
+  }
+  if (changed)
+  {
+    this->Modified();
+  }
+  return 0;
 }
 
 //------------------------------------------------------------------------------

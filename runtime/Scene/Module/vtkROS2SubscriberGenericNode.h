@@ -8,11 +8,11 @@
 #include "vtkROS2SubscriberNode.h"
 
 #include <memory> // for std::unique_ptr
-#include <string> // for std::string
+#include <string> // for std::string (GetLastMessage)
 
 namespace ros2vtk {
-namespace wire {
-class RuntimeTypeResolver;
+namespace scene {
+class LearntMessageType;
 }
 }
 
@@ -38,9 +38,9 @@ public:
   /// "" when the type is known; otherwise what the subscriber waits for ("waiting for the type
   /// description of pkg/msg/T from /node", "the publisher /node does not serve type descriptions
   /// (...)") or why it gave up.
-  const char* GetTypeStatus() const { return this->TypeStatus.c_str(); }
+  const char* GetTypeStatus() const;
   /// True while the type is still to be learnt from a publisher.
-  bool IsWaitingForType() const { return this->Type == nullptr && !this->RuntimeTypeName.empty(); }
+  bool IsWaitingForType() const;
 
   /// Learns the type (when waiting for it), then takes the queued messages.
   int OnROS2NodeSpin(vtkROS2NodeNode* rosNode) override;
@@ -57,10 +57,7 @@ protected:
   ~vtkROS2SubscriberGenericNode() override;
 
   const ros2vtk::wire::MessageTypeSupport& GetMessageTypeSupport() const override;
-  bool HasMessageTypeSupport() const override
-  {
-    return this->Type != nullptr || !this->RuntimeTypeName.empty();
-  }
+  bool HasMessageTypeSupport() const override;
   bool CreateEndpoint(ros2vtk::wire::Participant& participant, const std::string& topic,
     const ros2vtk::wire::QoS& qos, std::string* error) override;
   void DestroyEndpoint() override;
@@ -71,12 +68,8 @@ private:
   void operator=(const vtkROS2SubscriberGenericNode&) = delete;
 
   const ros2vtk::wire::MessageTypeSupport* Type = nullptr;
-  // A type learnt at run time: its name, a stand-in table that only names it (GetROSType, scene
-  // files) while no message can arrive, and the resolver that asks the publisher.
-  std::string RuntimeTypeName;
-  std::unique_ptr<ros2vtk::wire::MessageTypeSupport> NamedOnlyType;
-  std::unique_ptr<ros2vtk::wire::RuntimeTypeResolver> Resolver;
-  std::string TypeStatus;
+  /// A type learnt at run time from the topic's publisher (empty for a registered type).
+  std::unique_ptr<ros2vtk::scene::LearntMessageType> Learnt;
 };
 
 #endif

@@ -457,10 +457,11 @@ vtkROS2SceneNode* vtkROS2NodeNode::CreateAndAddTopicNode(bool publisher, const c
   {
     node.TakeReference(newGeneric(resolution.generic_type->ros_type));
   }
-  else if (!publisher && std::string(type).find('/') != std::string::npos)
+  else if (std::string(type).find('/') != std::string::npos)
   {
     // A full type name nothing registers: the generic subscriber learns it from the topic's
-    // publisher (REP 2011 type description; issue 13). It refuses a text that is no type name.
+    // publisher, the generic publisher from its subscriptions (REP 2011 type description;
+    // issue 13). Both refuse a text that is no type name.
     node.TakeReference(newGeneric(type));
     if (!node)
     {

@@ -166,17 +166,19 @@ void GraphCache::record_announcement(const ParticipantEntitiesInfo& info)
   {
     return;
   }
+  const auto gids_of = [](const auto& sequence) {
+    std::vector<Gid> gids(sequence.size());
+    for (size_t i = 0; i < sequence.size(); ++i)
+    {
+      std::copy(sequence[i].data.begin(), sequence[i].data.end(), gids[i].begin());
+    }
+    return gids;
+  };
   std::vector<NodeInfo> nodes;
   for (const auto& node : info.node_entities_info_seq)
   {
-    NodeInfo entry{ node.node_namespace, node.node_name, {} };
-    for (const auto& writer : node.writer_gid_seq)
-    {
-      Gid gid{};
-      std::copy(writer.data.begin(), writer.data.end(), gid.begin());
-      entry.writers.push_back(gid);
-    }
-    nodes.push_back(std::move(entry));
+    nodes.push_back(NodeInfo{ node.node_namespace, node.node_name, gids_of(node.writer_gid_seq),
+      gids_of(node.reader_gid_seq) });
   }
   std::lock_guard<std::mutex> lock(mutex_);
   remote_nodes_[participant_gid] = std::move(nodes);
@@ -256,20 +258,21 @@ size_t GraphCache::count_endpoints(const std::string& dds_topic, bool writers) c
   return count;
 }
 
-std::vector<PublisherInfo> GraphCache::remote_publishers(const std::string& dds_topic) const
+std::vector<EndpointInfo> GraphCache::remote_endpoints(
+  const std::string& dds_topic, bool writers) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  std::vector<PublisherInfo> result;
+  std::vector<EndpointInfo> result;
   for (const auto& entry : remote_endpoints_)
   {
-    if (!entry.second.is_writer || entry.second.dds_topic != dds_topic)
+    if (entry.second.is_writer != writers || entry.second.dds_topic != dds_topic)
     {
       continue;
     }
-    PublisherInfo info;
+    EndpointInfo info;
     info.ros_type = dds_type_to_ros(entry.second.dds_type);
     info.type_hash = entry.second.type_hash;
-    if (const NodeInfo* node = remote_node_of_writer_locked(entry.first))
+    if (const NodeInfo* node = remote_node_of_endpoint_locked(entry.first, writers))
     {
       info.node_name = node->node_name;
       info.node_namespace = node->node_namespace;
@@ -286,13 +289,15 @@ std::string full_node_name(const std::string& ns, const std::string& name)
 }
 } // namespace
 
-const GraphCache::NodeInfo* GraphCache::remote_node_of_writer_locked(const Gid& gid) const
+const GraphCache::NodeInfo* GraphCache::remote_node_of_endpoint_locked(
+  const Gid& gid, bool writer) const
 {
   for (const auto& participant : remote_nodes_)
   {
     for (const auto& node : participant.second)
     {
-      if (std::find(node.writers.begin(), node.writers.end(), gid) != node.writers.end())
+      const std::vector<Gid>& gids = writer ? node.writers : node.readers;
+      if (std::find(gids.begin(), gids.end(), gid) != gids.end())
         return &node;
     }
   }
@@ -304,7 +309,7 @@ std::string GraphCache::node_of_writer_locked(const Gid& gid) const
   const auto local = local_endpoints_.find(gid);
   if (local != local_endpoints_.end() && local->second.is_writer)
     return full_node_name(node_namespace_, node_name_);
-  const NodeInfo* node = remote_node_of_writer_locked(gid);
+  const NodeInfo* node = remote_node_of_endpoint_locked(gid, true);
   return node ? full_node_name(node->node_namespace, node->node_name) : std::string();
 }
 

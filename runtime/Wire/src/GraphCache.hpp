@@ -67,9 +67,14 @@ public:
   std::vector<std::pair<std::string, std::string>> node_names_and_namespaces() const;
   std::vector<TopicInfo> topic_names_and_types() const;
   size_t count_endpoints(const std::string& dds_topic, bool writers) const;
-  /// The remote writers of a DDS topic with their node (from ros_discovery_info; empty names
-  /// while that node's announcement has not arrived) and type hash.
-  std::vector<PublisherInfo> remote_publishers(const std::string& dds_topic) const;
+  /// The remote writers (`writers`) or readers of a DDS topic with their node (from
+  /// ros_discovery_info; empty names while that node's announcement has not arrived) and type
+  /// hash.
+  std::vector<EndpointInfo> remote_endpoints(const std::string& dds_topic, bool writers) const;
+  std::vector<PublisherInfo> remote_publishers(const std::string& dds_topic) const
+  {
+    return remote_endpoints(dds_topic, true);
+  }
   /// The nodes ("/ns/name") whose writers publish `dds_topic` (as `ros2 topic info -v` names
   /// them: a writer is matched to the node whose ros_discovery_info announcement lists its gid;
   /// "?" for writers no announcement lists, e.g. before it arrives or from non-ROS DDS), sorted,
@@ -99,6 +104,7 @@ private:
     std::string node_namespace;
     std::string node_name;
     std::vector<Gid> writers; ///< the writer gids its announcement lists
+    std::vector<Gid> readers; ///< the reader gids its announcement lists
   };
 
   /// Announces the local endpoints on ros_discovery_info. Lock order: publish_mutex_, then
@@ -122,9 +128,9 @@ private:
   std::map<Gid, Endpoint> remote_endpoints_;
   std::map<Gid, std::vector<NodeInfo>> remote_nodes_; ///< by participant gid
 
-  /// The remote node whose announcement lists writer `gid`, or nullptr. The one search both
-  /// remote_publishers and node_of_writer make. Caller holds mutex_.
-  const NodeInfo* remote_node_of_writer_locked(const Gid& gid) const;
+  /// The remote node whose announcement lists writer (`writer`) or reader `gid`, or nullptr. The
+  /// one search both remote_endpoints and node_of_writer make. Caller holds mutex_.
+  const NodeInfo* remote_node_of_endpoint_locked(const Gid& gid, bool writer) const;
   /// "/ns/name" of the node owning writer `gid` (ours or a remote one), or "". Caller holds mutex_.
   std::string node_of_writer_locked(const Gid& gid) const;
 };

@@ -574,7 +574,7 @@ void Participant::Impl::on_subscriber_discovery(
   if (info.status == rtps::ReaderDiscoveryInfo::DISCOVERED_READER)
   {
     graph.add_remote_endpoint(to_gid(info.info.guid()), false, info.info.topicName().to_string(),
-      info.info.typeName().to_string());
+      info.info.typeName().to_string(), type_hash_of(info.info.m_qos.m_userData));
   }
   else if (info.status == rtps::ReaderDiscoveryInfo::REMOVED_READER)
   {
@@ -725,8 +725,16 @@ std::vector<PublisherInfo> Participant::publishers_info(const std::string& topic
 {
   std::string resolved;
   return resolve_name(topic, resolved, nullptr)
-    ? impl_->graph.remote_publishers(topic_to_dds(resolved))
+    ? impl_->graph.remote_endpoints(topic_to_dds(resolved), true)
     : std::vector<PublisherInfo>();
+}
+
+std::vector<EndpointInfo> Participant::subscribers_info(const std::string& topic) const
+{
+  std::string resolved;
+  return resolve_name(topic, resolved, nullptr)
+    ? impl_->graph.remote_endpoints(topic_to_dds(resolved), false)
+    : std::vector<EndpointInfo>();
 }
 
 size_t Participant::count_subscribers(const std::string& topic) const

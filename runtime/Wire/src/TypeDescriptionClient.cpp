@@ -33,23 +33,47 @@ bool same_hash(const std::string& a, const std::string& b)
   return true;
 }
 
-std::string node_name_of(const PublisherInfo& info)
+std::string node_name_of(const EndpointInfo& info)
 {
   if (info.node_namespace.empty() || info.node_namespace == "/")
     return "/" + info.node_name;
   return info.node_namespace + "/" + info.node_name;
 }
 
+/// The endpoints of `topic` that may be asked, in the order they are tried, each with the word
+/// for its kind.
+std::vector<std::pair<EndpointInfo, const char*>> candidates(
+  const Participant& participant, const std::string& topic, RuntimeTypeResolver::Peers peers)
+{
+  std::vector<std::pair<EndpointInfo, const char*>> result;
+  if (peers == RuntimeTypeResolver::Peers::SubscriptionsThenPublishers)
+  {
+    for (EndpointInfo& info : participant.subscribers_info(topic))
+      result.emplace_back(std::move(info), "subscriber");
+  }
+  for (EndpointInfo& info : participant.publishers_info(topic))
+    result.emplace_back(std::move(info), "publisher");
+  return result;
+}
+
 } // namespace
 
 RuntimeTypeResolver::RuntimeTypeResolver(Participant& participant, std::string topic,
-  std::string ros_type, std::chrono::milliseconds service_wait)
+  std::string ros_type, std::chrono::milliseconds service_wait, Peers peers)
   : participant_(participant)
   , topic_(std::move(topic))
   , ros_type_(std::move(ros_type))
   , service_wait_(service_wait)
+  , peers_(peers)
 {
-  status_ = "waiting for a publisher of " + ros_type_ + " on " + topic_ + " to learn the type from";
+  status_ = waiting_text();
+}
+
+std::string RuntimeTypeResolver::waiting_text() const
+{
+  return std::string("waiting for a ") +
+    (peers_ == Peers::Publishers ? "publisher" : "subscriber or publisher") + " of " + ros_type_ +
+    " on " + topic_ + " to learn the type from";
 }
 
 RuntimeTypeResolver::~RuntimeTypeResolver() = default;
@@ -60,26 +84,28 @@ void RuntimeTypeResolver::set_state(State state, std::string status)
   status_ = std::move(status);
 }
 
-bool RuntimeTypeResolver::pick_publisher()
+bool RuntimeTypeResolver::pick_peer()
 {
-  bool unnamed = false;
-  for (const PublisherInfo& info : participant_.publishers_info(topic_))
+  const char* unnamed = nullptr;
+  for (const auto& candidate : candidates(participant_, topic_, peers_))
   {
+    const EndpointInfo& info = candidate.first;
     if (info.ros_type != ros_type_)
       continue;
     if (info.node_name.empty())
     {
-      unnamed = true; // its node's ros_discovery_info sample has not arrived yet
+      unnamed = unnamed ? unnamed : candidate.second; // its node's announcement is still to come
       continue;
     }
     node_ = node_name_of(info);
     type_hash_ = info.type_hash;
+    role_ = candidate.second;
     return true;
   }
   set_state(State::WaitingForPublisher,
-    unnamed
-      ? "waiting for the node name of the publisher of " + ros_type_ + " on " + topic_
-      : "waiting for a publisher of " + ros_type_ + " on " + topic_ + " to learn the type from");
+    unnamed ? std::string("waiting for the node name of the ") + unnamed + " of " + ros_type_ +
+        " on " + topic_
+            : waiting_text());
   return false;
 }
 
@@ -91,14 +117,14 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
   }
   if (node_.empty())
   {
-    if (!pick_publisher())
+    if (!pick_peer())
     {
       return state_;
     }
     if (type_hash_.empty())
     {
       set_state(State::NoService,
-        "the publisher " + node_ + " announces no type hash for " + ros_type_ +
+        "the " + std::string(role_) + " " + node_ + " announces no type hash for " + ros_type_ +
           " (ROS 2 before Jazzy): it cannot be asked for the type description");
       node_.clear(); // look again: another publisher may announce one
       return state_;
@@ -126,17 +152,18 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     set_state(State::WaitingForDescription,
       "waiting for the type description of " + ros_type_ + " from " + node_);
   }
-  // The publisher left before answering: start over with whoever publishes next.
+  // The asked endpoint left before answering: start over with whoever is there next.
   bool present = false;
-  for (const PublisherInfo& info : participant_.publishers_info(topic_))
+  for (const auto& candidate : candidates(participant_, topic_, peers_))
   {
-    present = present || (info.ros_type == ros_type_ && node_name_of(info) == node_);
+    present =
+      present || (candidate.first.ros_type == ros_type_ && node_name_of(candidate.first) == node_);
   }
   if (!present)
   {
     client_.reset();
     node_.clear();
-    pick_publisher();
+    pick_peer();
     return state_;
   }
   if (sequence_ < 0)
@@ -154,8 +181,8 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     else if (std::chrono::steady_clock::now() - asked_since_ > service_wait_)
     {
       set_state(State::NoService,
-        "the publisher " + node_ + " does not serve type descriptions (no " + node_ +
-          "/get_type_description after " +
+        "the " + std::string(role_) + " " + node_ + " does not serve type descriptions (no " +
+          node_ + "/get_type_description after " +
           std::to_string(service_wait_.count() / 1000.0).substr(0, 3) +
           " s; nodes before Jazzy, or started with start_type_description_service false, have "
           "none)");
@@ -175,8 +202,8 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     if (!response.successful)
     {
       set_state(State::Failed,
-        "the publisher " + node_ + " did not give the type description of " + ros_type_ + ": " +
-          clip_for_message(response.failure_reason));
+        "the " + std::string(role_) + " " + node_ + " did not give the type description of " +
+          ros_type_ + ": " + clip_for_message(response.failure_reason));
       client_.reset();
       return state_;
     }

@@ -93,5 +93,103 @@ const char* saved_generic_type(vtkXMLDataElement* element)
   return ros_type && *ros_type ? ros_type : nullptr;
 }
 
+std::string assign_learnt_type(const char* ros_type, bool added_to_ros_node,
+  const wire::MessageTypeSupport*& type, LearntMessageType& learnt,
+  wire::RuntimeTypeResolver::Peers peers, bool& changed)
+{
+  changed = false;
+  std::string name = ros_type ? ros_type : "";
+  if (!runtime_type_name(name))
+  {
+    return std::string("'") + (ros_type ? ros_type : "(null)") +
+      "' is not a message type name (pkg/msg/Type)";
+  }
+  if (added_to_ros_node)
+  {
+    return "cannot change the type while added to a ROS node";
+  }
+  if (name == learnt.name() && !type)
+  {
+    return std::string();
+  }
+  type = nullptr;
+  learnt.set(name.c_str(), peers);
+  changed = true;
+  return std::string();
+}
+
+LearntMessageType::LearntMessageType() = default;
+LearntMessageType::~LearntMessageType() = default;
+
+bool LearntMessageType::set(const char* ros_type, Peers peers)
+{
+  std::string name = ros_type ? ros_type : "";
+  if (!runtime_type_name(name))
+  {
+    return false;
+  }
+  resolver_.reset();
+  name_ = name;
+  peers_ = peers;
+  named_only_.reset(new wire::MessageTypeSupport{});
+  named_only_->ros_type = name_.c_str();
+  named_only_->dds_type_name = "";
+  named_only_->type_hash = "";
+  status_ = waiting_to_be_added();
+  return true;
+}
+
+void LearntMessageType::clear()
+{
+  resolver_.reset();
+  named_only_.reset();
+  name_.clear();
+  status_.clear();
+}
+
+std::string LearntMessageType::waiting_to_be_added() const
+{
+  return "waiting to be added to a ROS node to learn " + name_ + " from a " +
+    (peers_ == Peers::Publishers ? "publisher" : "subscriber or publisher");
+}
+
+void LearntMessageType::start(wire::Participant& participant, const std::string& topic)
+{
+  resolver_.reset(new wire::RuntimeTypeResolver(
+    participant, topic, name_, std::chrono::milliseconds(3000), peers_));
+  status_ = resolver_->status();
+}
+
+void LearntMessageType::stop()
+{
+  resolver_.reset();
+  if (!name_.empty())
+  {
+    status_ = waiting_to_be_added();
+  }
+}
+
+const wire::MessageTypeSupport* LearntMessageType::poll(bool& status_changed)
+{
+  status_changed = false;
+  if (!resolver_)
+  {
+    return nullptr;
+  }
+  const auto state = resolver_->poll();
+  if (resolver_->status() != status_)
+  {
+    status_ = resolver_->status();
+    status_changed = true;
+  }
+  if (state != wire::RuntimeTypeResolver::State::Ready)
+  {
+    return nullptr;
+  }
+  const wire::MessageTypeSupport* type = resolver_->type();
+  resolver_.reset();
+  return type;
+}
+
 } // namespace scene
 } // namespace ros2vtk

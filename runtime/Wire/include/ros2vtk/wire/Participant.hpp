@@ -66,14 +66,16 @@ struct TopicInfo
   std::vector<std::string> types; ///< ROS types, "std_msgs/msg/String"
 };
 
-/// One remote publisher of a topic (rclpy's get_publishers_info_by_topic, the parts we need).
-struct PublisherInfo
+/// One remote publisher or subscription of a topic (rclpy's get_publishers_info_by_topic and
+/// get_subscriptions_info_by_topic, the parts we need).
+struct EndpointInfo
 {
   std::string node_name;      ///< "" while its node's ros_discovery_info has not arrived
   std::string node_namespace; ///< "/" or "/robot1"
   std::string ros_type;       ///< "pkg/msg/Type"
   std::string type_hash;      ///< USER_DATA typehash ("RIHS01_..."), "" when it sent none
 };
+using PublisherInfo = EndpointInfo;
 
 /// One ROS 2 node. Creating it announces the node on `ros_discovery_info`; every publisher,
 /// subscription, service and client it creates is added to that announcement.
@@ -127,6 +129,8 @@ public:
   /// The publishers of other participants on `topic` (a name this node resolves).
   std::vector<PublisherInfo> publishers_info(const std::string& topic) const;
   size_t count_subscribers(const std::string& topic) const;
+  /// The subscriptions of other participants on `topic` (a name this node resolves).
+  std::vector<EndpointInfo> subscribers_info(const std::string& topic) const;
   /// The nodes ("/ns/name") publishing `topic`, sorted; "?" stands for writers that no node's
   /// ros_discovery_info announcement lists (yet).
   std::vector<std::string> publisher_node_names(const std::string& topic) const;
