@@ -355,13 +355,28 @@ def test_texts_that_are_no_type_names_are_still_refused(logic):
     node = logic.GetDefaultROS2Node()
     assert node.CreateAndAddSubscriberNode('not a/type', '/py_bad_type') is None
     assert node.CreateAndAddSubscriberNode('NoSuchShortName', '/py_bad_type') is None
-    assert node.CreateAndAddPublisherNode('nobody_ships_msgs/msg/Thing', '/py_bad_type') is None
+    assert node.CreateAndAddPublisherNode('not a/type', '/py_bad_type') is None
+    assert node.CreateAndAddPublisherNode('NoSuchShortName', '/py_bad_type') is None
     sub = ros2vtk_generic_subscriber(logic)
     assert not sub.SetROSType('nobody_ships_msgs/msg/Thing')  # SetROSType stays strict
     assert not sub.SetROSTypeResolvedAtRuntime('pkg/srv/Thing')
     assert sub.SetROSTypeResolvedAtRuntime('pkg/msg/Thing') and sub.IsWaitingForType()
     assert sub.SetROSType('std_msgs/msg/String') and not sub.IsWaitingForType()
     assert sub.GetROSType() == 'std_msgs/msg/String' and sub.GetTypeStatus() == ''
+
+
+def test_a_publisher_of_an_unregistered_type_waits_to_learn_it_and_refuses_to_publish(logic):
+    node = logic.GetDefaultROS2Node()
+    pub = node.CreateAndAddPublisherNode('nobody_ships_msgs/Thing', '/py_unknown_pub')
+    assert pub is not None and pub.GetClassName() == 'vtkROS2PublisherGenericNode'
+    assert pub.GetROSType() == 'nobody_ships_msgs/msg/Thing' and pub.IsWaitingForType()
+    spin_until(logic, lambda: False, seconds=0.3)
+    assert pub.GetTypeStatus() == ('waiting for a subscriber or publisher of nobody_ships_msgs/msg/Thing on '
+                                   '/py_unknown_pub to learn the type from')
+    assert not pub.PublishYAML('{}')
+    assert pub.GetLastPublishError().startswith('the message type is not known yet: waiting for a subscriber')
+    xml = logic.GetScene().WriteToXMLString()
+    assert 'rosType="nobody_ships_msgs/msg/Thing"' in xml
 
 
 def ros2vtk_generic_subscriber(logic):
