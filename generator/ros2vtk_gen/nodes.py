@@ -129,6 +129,7 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "state_class": "",
         "state_header": "",
         "state_expires": False,
+        "state_frames": False,
     }
     if kind.view:
         view.update(kind.view(rule, table))

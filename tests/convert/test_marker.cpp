@@ -4,10 +4,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <vtkCell.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -116,6 +123,116 @@ TEST(MarkerSet, AMarkerWithALifetimeExpiresThatLongAfterItWasAdded)
   EXPECT_FALSE(kept.expire(1'000'000'000));
   EXPECT_TRUE(kept.expire(3'900'000'000));
   EXPECT_EQ(kept.size(), 1u);
+}
+
+namespace {
+
+/// The centre of the drawn cells of marker `index` (MarkerIndex) in `drawn`.
+std::vector<double> MarkerCentre(vtkPolyData* drawn, int index)
+{
+  vtkDataArray* markers = drawn->GetCellData()->GetArray("MarkerIndex");
+  double bounds[6] = { 1e300, -1e300, 1e300, -1e300, 1e300, -1e300 };
+  for (vtkIdType cell = 0; cell < drawn->GetNumberOfCells(); ++cell)
+  {
+    if (static_cast<int>(markers->GetTuple1(cell)) != index)
+    {
+      continue;
+    }
+    vtkIdList* ids = drawn->GetCell(cell)->GetPointIds();
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      const double* p = drawn->GetPoint(ids->GetId(i));
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
+        bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
+      }
+    }
+  }
+  return { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+}
+
+} // namespace
+
+TEST(MarkerSet, MarkersArePlacedAtTheirFramesPoseInTheFixedFrame)
+{
+  // Frame "turned": 90 degrees about z, then 1 m along x; frame "moving": y metres along y, y
+  // changed by the test. Lookups are recorded: stamp 0 means the latest transform.
+  double movingY = 0.1;
+  std::vector<std::pair<std::string, int64_t>> asked;
+  const FrameLookup lookup = [&](const std::string& frame, int64_t stamp, FramePose* pose,
+                               std::string* error) {
+    asked.emplace_back(frame, stamp);
+    if (frame == "turned")
+    {
+      pose->translation[0] = 1.0;
+      pose->rotation[2] = std::sqrt(0.5);
+      pose->rotation[3] = std::sqrt(0.5);
+      return true;
+    }
+    if (frame == "moving")
+    {
+      pose->translation[1] = movingY;
+      return true;
+    }
+    *error = "frame does not exist";
+    return false;
+  };
+  Marker cube;
+  cube.shape = MarkerShape::Cube;
+  cube.scale[0] = cube.scale[1] = cube.scale[2] = 0.01;
+  cube.position[0] = 0.2; // 0.2 m along the frame's x
+  Marker turned = cube, locked = cube, unlocked = cube, lost = cube;
+  turned.frame_id = "turned";
+  turned.stamp_nanoseconds = 5'000'000'000;
+  locked.frame_id = unlocked.frame_id = "moving";
+  locked.frame_locked = true;
+  locked.stamp_nanoseconds = unlocked.stamp_nanoseconds = 7'000'000'000;
+  lost.frame_id = "nowhere";
+  MarkerSet kept;
+  std::string error;
+  ASSERT_TRUE(kept.add("m", 1, turned, &error)) << error;
+  ASSERT_TRUE(kept.add("m", 2, locked, &error)) << error;
+  ASSERT_TRUE(kept.add("m", 3, unlocked, &error)) << error;
+  ASSERT_TRUE(kept.add("m", 4, lost, &error)) << error;
+  EXPECT_TRUE(kept.locate(lookup, "world", false));
+  // A frame-locked marker is looked up at the latest transform, the others at their stamp.
+  EXPECT_EQ(asked,
+    (std::vector<std::pair<std::string, int64_t>>{ { "turned", 5'000'000'000 }, { "moving", 0 },
+      { "moving", 7'000'000'000 }, { "nowhere", 0 } }));
+  EXPECT_EQ(kept.status(),
+    "marker (ns 'm', id 4): No transform from [nowhere] to [world]: frame does not exist");
+
+  vtkNew<vtkPolyData> drawn;
+  ASSERT_TRUE(kept.to_poly_data(1000.0, drawn, &error)) << error;
+  // The marker without a frame is not drawn: three markers, in mm.
+  EXPECT_EQ(drawn->GetCellData()->GetArray("MarkerIndex")->GetRange()[1], 2.0);
+  const std::vector<double> atTurned = MarkerCentre(drawn, 0);
+  EXPECT_NEAR(atTurned[0], 1000.0, 1e-6); // x of the frame, the marker's x turned onto +y
+  EXPECT_NEAR(atTurned[1], 200.0, 1e-6);
+  EXPECT_NEAR(MarkerCentre(drawn, 1)[1], 100.0, 1e-6);
+  EXPECT_NEAR(MarkerCentre(drawn, 2)[1], 100.0, 1e-6);
+
+  // The frame moves: the next locate looks up the frame-locked marker (and the unplaced one)
+  // only; the frame-locked marker follows, the other stays where its stamp put it.
+  movingY = 0.3;
+  asked.clear();
+  EXPECT_TRUE(kept.locate(lookup, "world", false));
+  EXPECT_EQ(
+    asked, (std::vector<std::pair<std::string, int64_t>>{ { "moving", 0 }, { "nowhere", 0 } }));
+  ASSERT_TRUE(kept.to_poly_data(1000.0, drawn, &error)) << error;
+  EXPECT_NEAR(MarkerCentre(drawn, 1)[1], 300.0, 1e-6);
+  EXPECT_NEAR(MarkerCentre(drawn, 2)[1], 100.0, 1e-6);
+  // Nothing moved since: no change reported.
+  EXPECT_FALSE(kept.locate(lookup, "world", false));
+
+  // unlocate(): every marker at its own pose again, the lost one included.
+  kept.unlocate();
+  EXPECT_EQ(kept.status(), "");
+  ASSERT_TRUE(kept.to_poly_data(1000.0, drawn, &error)) << error;
+  EXPECT_EQ(drawn->GetCellData()->GetArray("MarkerIndex")->GetRange()[1], 3.0);
+  EXPECT_NEAR(MarkerCentre(drawn, 0)[0], 200.0, 1e-6);
 }
 
 TEST(MarkerSet, TextMarkersBecomeLabelsBesideTheShapes)

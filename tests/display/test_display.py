@@ -538,6 +538,159 @@ def test_text_marker_is_drawn_at_its_pose_facing_the_camera(ros2vtk, logic, vtk,
         assert mask(rgb, 'red').sum() > 300, name
 
 
+def drawn_markers(dm, subscriber) -> list:
+    """What the display draws for `subscriber`: per marker of its actor's poly data (MarkerIndex
+    order), [RGBA of its first point, centre of its cells' bounds (mm, world)]."""
+    actor = dm.GetActorForNode(subscriber)
+    drawn = actor.GetMapper().GetInput()
+    index = drawn.GetCellData().GetArray('MarkerIndex')
+    color = drawn.GetPointData().GetScalars()
+    boxes, colors = {}, {}
+    for cell in range(drawn.GetNumberOfCells() if index is not None else 0):
+        marker_index = int(index.GetValue(cell))
+        ids = drawn.GetCell(cell).GetPointIds()
+        colors.setdefault(marker_index, [int(color.GetComponent(ids.GetId(0), c)) for c in range(4)])
+        box = boxes.setdefault(marker_index, [float('inf'), float('-inf')] * 3)
+        for i in range(ids.GetNumberOfIds()):
+            p = drawn.GetPoint(ids.GetId(i))
+            for axis in range(3):
+                box[2 * axis] = min(box[2 * axis], p[axis])
+                box[2 * axis + 1] = max(box[2 * axis + 1], p[axis])
+    # The actor's own matrix places the poly data (the subscriber's parent transform): identity here.
+    matrix = actor.GetUserMatrix()
+    assert all(matrix.GetElement(i, j) == (1.0 if i == j else 0.0) for i in range(4) for j in range(4))
+    return [[colors[k], [0.5 * (boxes[k][2 * a] + boxes[k][2 * a + 1]) for a in range(3)]]
+            for k in sorted(boxes)]
+
+
+def assert_markers(found, expected, tol=0.5):
+    """`found` (drawn_markers) is `expected`: [[RGBA, [x, y, z] mm], ...] in (ns, id) order."""
+    assert len(found) == len(expected), (found, expected)
+    for (color, centre), (want_color, want_centre) in zip(found, expected):
+        assert color == want_color, (found, expected)
+        assert all(abs(a - b) <= tol for a, b in zip(centre, want_centre)), (found, expected)
+
+
+RED, GREEN, BLUE, YELLOW = [255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 0, 255]
+
+
+def frame_marker(marker_id, frame, x, rgba, locked=False):
+    m = marker('frames', marker_id, 1, x, rgba)  # CUBE, 40 mm
+    m['header'] = {'frame_id': frame}
+    m['frame_locked'] = locked
+    return m
+
+
+def test_markers_are_drawn_in_their_own_frames_and_frame_locked_ones_follow_tf(ros2vtk, logic, vtk, peers,
+                                                                                tmp_path):
+    """RViz's marker frames, on a plain Marker topic: with the subscriber's fixed frame 'world',
+    each marker is drawn at its header frame's pose from tf (rclpy broadcasts world -> fa static at
+    x 100 mm and world -> fb at y 50 mm). Red cube in fa; green in fb, frame_locked; blue in fb
+    (x -60 mm in it), not locked; yellow in 'nowhere' is not drawn and its status says so. When fb
+    moves to y 120 mm the green cube follows on spins alone, the blue stays where it arrived."""
+    view = View(vtk)
+    view.top_down(half_height=200)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('Marker', '/display_marker_frames')
+    subscriber.SetFixedFrame('world')
+    peers('tf_pub', 'world', 'fa', json.dumps({'t': [0.1, 0, 0], 'q': [0, 0, 0, 1]}), '--static',
+          '--seconds', '30', tf=True)
+    fb = peers('tf_pub', 'world', 'fb', json.dumps({'t': [0, 0.05, 0], 'q': [0, 0, 0, 1]}), '--seconds', '30',
+               tf=True)
+    markers = [frame_marker(1, 'fa', 0.0, (1.0, 0.0, 0.0, 1.0)),
+               frame_marker(2, 'fb', 0.0, (0.0, 1.0, 0.0, 1.0), locked=True),
+               frame_marker(3, 'fb', -0.06, (0.0, 0.0, 1.0, 1.0)),
+               frame_marker(4, 'nowhere', 0.0, (1.0, 1.0, 0.0, 1.0))]
+    peers('pub', '/display_marker_frames', 'visualization_msgs/Marker', json.dumps(markers), '--list',
+          '--rate', '20')
+
+    def placed():
+        logic.Spin()
+        dm.Update()
+        return subscriber.GetNumberOfMessages() == 4 and len(drawn_markers(dm, subscriber)) == 3
+    assert spin_until(logic, placed, 20.0), (subscriber.GetNumberOfMessages(), subscriber.GetLastConversionError())
+    assert_markers(drawn_markers(dm, subscriber), [[RED, [100, 0, 0]], [GREEN, [0, 50, 0]], [BLUE, [-60, 50, 0]]])
+    assert subscriber.GetFrameStatus().startswith("marker (ns 'frames', id 4): No transform from [nowhere] to "
+                                                  "[world]"), subscriber.GetFrameStatus()
+    subscriber.GetLastMessage()
+    assert 'No transform from [nowhere] to [world]' in subscriber.GetLastConversionError()
+    rgb = view.pixels('marker_frames')
+    for kind, x, y in (('red', 100, 0), ('green', 0, 50), ('blue', -60, 50)):
+        col, row = (int(round(v)) for v in view.display_point(x, y, 0))
+        assert mask(rgb, kind)[row - 2:row + 3, col - 2:col + 3].all(), (kind, x, y)
+    assert mask(rgb, 'yellow').sum() == 0
+
+    # fb moves (a new rclpy broadcaster; no marker message is sent again).
+    fb.kill()
+    peers('tf_pub', 'world', 'fb', json.dumps({'t': [0, 0.12, 0], 'q': [0, 0, 0, 1]}), '--seconds', '30', tf=True)
+
+    def moved():
+        logic.Spin()
+        dm.Update()
+        found = drawn_markers(dm, subscriber)
+        return len(found) == 3 and abs(found[1][1][1] - 120) < 0.5
+    assert spin_until(logic, moved, 20.0), drawn_markers(dm, subscriber)
+    assert_markers(drawn_markers(dm, subscriber), [[RED, [100, 0, 0]], [GREEN, [0, 120, 0]], [BLUE, [-60, 50, 0]]])
+    assert subscriber.GetNumberOfMessages() == 4
+    rgb = view.pixels('marker_frames_moved')
+    col, row = (int(round(v)) for v in view.display_point(0, 120, 0))
+    assert mask(rgb, 'green')[row - 2:row + 3, col - 2:col + 3].all()
+
+    # The fixed frame is saved with the scene, only where it is set, and read back.
+    other = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('Marker', '/display_marker_plain')
+    text = logic.GetScene().WriteToXMLString()
+    assert text.count('fixedFrame=') == 1 and 'fixedFrame="world"' in text, text
+    logic.GetDefaultROS2Node().RemoveAndDeleteSubscriberNode(other.GetTopic())
+    restored = ros2vtk.vtkROS2Logic()
+    assert restored.GetScene().ReadFromXMLString(text)
+    again = restored.GetDefaultROS2Node().GetSubscriberNodeByTopic('/display_marker_frames')
+    assert again is not None and again.GetFixedFrame() == 'world'
+    restored.GetScene().Clear()
+
+
+def test_marker_topic_keeps_markers_by_namespace_and_id(ros2vtk, logic, vtk, peers):
+    """A plain Marker topic is kept as RViz keeps it, by (ns, id): rclpy sends, a third of a second
+    apart, ADD s/1 red at x -50 mm, ADD s/2 blue at x 50 mm, DELETE s/1, ADD s/2 again at y 60 mm
+    (replaces it), DELETEALL, ADD t/5 green at the origin. After each message the display draws
+    exactly the markers RViz would, where it would."""
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('Marker', '/display_marker_keys')
+    view.pixels('marker_keys_empty')  # the first render is slow (shaders): not between two messages
+    moved_blue = marker('s', 2, 2, 0.0, (0.0, 0.0, 1.0, 1.0))
+    moved_blue['pose']['position']['y'] = 0.06
+    messages = [marker('s', 1, 1, -0.05, (1.0, 0.0, 0.0, 1.0)), marker('s', 2, 2, 0.05, (0.0, 0.0, 1.0, 1.0)),
+                dict(marker('s', 1, 1, 0.0, (0, 0, 0, 0)), action=2), moved_blue,
+                dict(marker('', 0, 1, 0.0, (0, 0, 0, 0)), action=3), marker('t', 5, 1, 0.0, (0.0, 1.0, 0.0, 1.0))]
+    peers('pub', '/display_marker_keys', 'visualization_msgs/Marker', json.dumps(messages), '--list',
+          '--rate', '3')
+    expected = [[[RED, [-50, 0, 0]]],
+                [[RED, [-50, 0, 0]], [BLUE, [50, 0, 0]]],
+                [[BLUE, [50, 0, 0]]],
+                [[BLUE, [0, 60, 0]]],
+                [],
+                [[GREEN, [0, 0, 0]]]]
+    seen = []
+    import time
+    deadline = time.monotonic() + 25.0
+    while len(seen) < len(expected) and time.monotonic() < deadline:
+        logic.Spin()
+        count = subscriber.GetNumberOfMessages()
+        if count != len(seen):
+            assert count == len(seen) + 1, f'two messages in one spin: {count} after {len(seen)}'
+            dm.Update()
+            seen.append(drawn_markers(dm, subscriber))
+            if count == 3:
+                rgb = view.pixels('marker_keys_deleted')
+                assert mask(rgb, 'red').sum() == 0 and mask(rgb, 'blue').sum() > 600
+        time.sleep(0.01)
+    assert len(seen) == len(expected), seen
+    for found, want in zip(seen, expected):
+        assert_markers(found, want)
+    assert subscriber.GetLastConversionError() == ''
+
+
 def _cube_package(vtk, folder: Path) -> Path:
     """<folder>/cubes (a ROS package) with meshes/cube.stl, a 1 m cube (scaled by the marker)."""
     package = folder / 'cubes'

@@ -4,8 +4,14 @@ VTK-wrapped API) on TOPIC; after each spin that brought messages it records what
 GetLastMessage() draws (markers kept, points, each marker's colour, bounds in mm). Prints
 {"ready": true}, then one JSON object with the snapshots once COUNT messages arrived (or S seconds)
 and, with --linger L, what it draws after L more seconds of spins without messages ("after").
+--type Marker subscribes a plain Marker topic instead; --fixed-frame F sets the subscriber's fixed
+frame (markers placed by tf); --drawn N then waits, after COUNT messages, until N markers are
+drawn and prints {"drawn": snapshot} before lingering (the test moves a frame meanwhile).
 
-    marker_array_runner.py TOPIC [--count N] [--seconds S] [--linger L]
+    marker_array_runner.py TOPIC [--count N] [--seconds S] [--linger L] [--type T]
+                           [--fixed-frame F] [--drawn N]
+
+With --drawn, --linger L ends as soon as a marker moved.
 """
 from __future__ import annotations
 
@@ -43,7 +49,10 @@ def snapshot(sub) -> dict:
             'marker_lines': [lines.get(k, 0) for k in sorted(colors)],
             'lines': drawn.GetNumberOfLines(), 'bounds': list(drawn.GetBounds()),
             'scalars': color.GetName() if color else None, 'error': sub.GetLastConversionError(),
-            'labels': labels(drawn)}
+            'labels': labels(drawn),
+            'centres': [[0.5 * (b[2 * a] + b[2 * a + 1]) for a in range(3)]
+                        for b in (bounds[k] for k in sorted(bounds))],
+            'frame_status': sub.GetFrameStatus() if hasattr(sub, 'GetFrameStatus') else ''}
 
 
 def labels(drawn) -> list:
@@ -63,10 +72,15 @@ def main() -> int:
     parser.add_argument('--count', type=int, default=3)
     parser.add_argument('--seconds', type=float, default=30.0)
     parser.add_argument('--linger', type=float, default=0.0)
+    parser.add_argument('--type', default='MarkerArray')
+    parser.add_argument('--fixed-frame', default='')
+    parser.add_argument('--drawn', type=int, default=-1)
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()
-    sub = node.CreateAndAddSubscriberNode('MarkerArray', args.topic)
+    sub = node.CreateAndAddSubscriberNode(args.type, args.topic)
+    if args.fixed_frame:
+        sub.SetFixedFrame(args.fixed_frame)
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
     snapshots = []
     end = time.monotonic() + args.seconds
@@ -76,10 +90,21 @@ def main() -> int:
         if sub.GetNumberOfMessages() != seen:
             seen = sub.GetNumberOfMessages()
             snapshots.append(snapshot(sub))
-    # --linger: spin on without messages (lifetimes expire on spins alone), then draw again.
+    drawn = None
+    if args.drawn >= 0:
+        while time.monotonic() < end:
+            drawn = snapshot(sub)
+            if drawn.get('markers') == args.drawn:
+                break
+            logic.SpinOnWakeUp(0.05)
+        print(json.dumps({'drawn': drawn}), flush=True)
+    # --linger: spin on without messages (lifetimes expire on spins alone), then draw again;
+    # after --drawn, only until a marker moved (or L seconds).
     end = time.monotonic() + args.linger
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.05)
+        if drawn is not None and snapshot(sub).get('centres') != drawn.get('centres'):
+            break
     after = snapshot(sub) if args.linger > 0 else None
     print(json.dumps({'snapshots': snapshots, 'after': after}), flush=True)
     return 0

@@ -84,7 +84,11 @@ def make_qos(name: str) -> QoSProfile:
 def cmd_pub(args: argparse.Namespace) -> int:
     cls = message_class(args.type)
     text = Path(args.json[1:]).read_text() if args.json.startswith('@') else args.json  # @FILE: large messages
-    message = from_plain(cls(), json.loads(text))
+    values = json.loads(text)
+    # --list: the JSON is a list of messages, sent in order one per period (all of them by default).
+    messages = [from_plain(cls(), v) for v in values] if args.list else [from_plain(cls(), values)]
+    if args.list and args.count == 1:
+        args.count = len(messages)
     node = rclpy.create_node(args.node)
     publisher = node.create_publisher(cls, args.topic, make_qos(args.qos))
     deadline = time.monotonic() + args.wait
@@ -94,6 +98,7 @@ def cmd_pub(args: argparse.Namespace) -> int:
     next_time = time.monotonic()
     sent = 0
     while args.count < 0 or sent < args.count:
+        message = messages[sent % len(messages)]
         if args.sequence_field:
             setattr(message, args.sequence_field, type(getattr(message, args.sequence_field))(sent))
         publisher.publish(message)
@@ -359,6 +364,7 @@ def main() -> int:
     pub.add_argument('--wait-matched', type=int, default=1)
     pub.add_argument('--linger', type=float, default=0.5)
     pub.add_argument('--sequence-field', default='')
+    pub.add_argument('--list', action='store_true', help='JSON is a list of messages sent in turn')
     echo = sub.add_parser('echo')
     echo.add_argument('topic')
     echo.add_argument('type')

@@ -154,3 +154,51 @@ def test_rclpy_marker_lifetime_text_and_mesh_resource(ros):
     assert after['count'] == 1, after  # no message since: the spins alone expired the cube
     assert after['markers'] == 1 and after['colors'] == [BLUE], after
     assert after['labels'] == first['labels'], after
+
+
+def _framed(marker_id, frame, x, rgba, locked=False, **extra):
+    marker = _marker('frames', marker_id, 1, x, rgba, **extra)  # CUBE, 0.1 m
+    marker['header'] = {'frame_id': frame}
+    marker['frame_locked'] = locked
+    return marker
+
+
+def test_rclpy_markers_in_their_own_frames_kept_by_ns_and_id(ros):
+    """A plain Marker topic with the subscriber's fixed frame 'world', everything from rclpy: tf
+    world -> fa (static, x 0.1 m) and world -> fb (y 0.05 m); seven Markers: blue f/3 in fb at x
+    -0.03 m, red f/1 in fa, green f/2 in fb frame_locked, blue f/3 again at x -0.06 m (replaces
+    it), yellow f/4 in 'nowhere', white f/5 in fa, DELETE f/5. Drawn: red (100, 0), green (0, 50),
+    blue (-60, 50) mm, the yellow one not (its status says why), f/5 gone. Then fb moves to y
+    0.12 m (a new rclpy broadcaster, no marker message): after spins alone the frame-locked green
+    cube is at (0, 120) mm, the others where they were."""
+    topic = '/scene_in/marker_frames'
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--type', 'Marker',
+                      '--fixed-frame', 'world', '--count', '7', '--drawn', '3', '--seconds', '30', '--linger', '20'],
+                     dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    ros.tf_peer('tf_pub', 'world', 'fa', json.dumps({'t': [0.1, 0, 0], 'q': [0, 0, 0, 1]}), '--static',
+                '--seconds', '40')
+    fb = ros.tf_peer('tf_pub', 'world', 'fb', json.dumps({'t': [0, 0.05, 0], 'q': [0, 0, 0, 1]}),
+                     '--seconds', '40')
+    markers = [_framed(3, 'fb', -0.03, (0.0, 0.0, 1.0, 1.0)), _framed(1, 'fa', 0.0, (1.0, 0.0, 0.0, 1.0)),
+               _framed(2, 'fb', 0.0, (0.0, 1.0, 0.0, 1.0), locked=True),
+               _framed(3, 'fb', -0.06, (0.0, 0.0, 1.0, 1.0)), _framed(4, 'nowhere', 0.0, (1.0, 1.0, 0.0, 1.0)),
+               _framed(5, 'fa', 0.05, (1.0, 1.0, 1.0, 1.0)), dict(_framed(5, 'fa', 0.0, (0, 0, 0, 0)), action=2)]
+    ros.peer('pub', topic, 'visualization_msgs/msg/Marker', json.dumps(markers), '--list', '--rate', '20')
+    line = ours.stdout.readline()
+    assert line, ours.stderr.read() if ours.poll() is not None else 'no output'
+    drawn = json.loads(line)['drawn']
+    assert drawn['count'] == 7 and drawn['markers'] == 3 and drawn['colors'] == [RED, [0, 255, 0, 255], BLUE], drawn
+    for got, want in zip(drawn['centres'], [[100, 0, 0], [0, 50, 0], [-60, 50, 0]]):
+        close(got, want, tol=0.5)
+    assert drawn['frame_status'].startswith("marker (ns 'frames', id 4): No transform from [nowhere] to [world]"), drawn
+    assert 'No transform from [nowhere] to [world]' in drawn['error'], drawn
+
+    fb.kill()
+    ros.tf_peer('tf_pub', 'world', 'fb', json.dumps({'t': [0, 0.12, 0], 'q': [0, 0, 0, 1]}), '--seconds', '40')
+    code, out, err = ros.finish(ours, timeout=45)
+    assert code == 0, err
+    after = json.loads(out.splitlines()[-1])['after']
+    assert after['count'] == 7 and after['markers'] == 3, after
+    for got, want in zip(after['centres'], [[100, 0, 0], [0, 120, 0], [-60, 50, 0]]):
+        close(got, want, tol=0.5)

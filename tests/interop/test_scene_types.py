@@ -364,7 +364,9 @@ def test_unsupported_marker_type_is_refused_with_a_reason(ros):
     ros.stop(peer)
     assert code == 0, err
     result = json.loads(out.splitlines()[-1])
-    assert result['count'] == 3 and result['value'] is None
+    # The topic's markers are kept by (ns, id): the refused one is not kept, so nothing is drawn
+    # (an empty poly data, as for a MarkerArray; RViz shows none either) and the error says why.
+    assert result['count'] == 3 and result['value'] == [], result
     assert 'marker type is not supported' in result['conversion_error'], result
 
 

@@ -174,13 +174,43 @@ def test_marker_array_kind_reads_each_marker_and_names_its_state(table):
         "ns": "ns", "id": "id", "action": "action", "type": "type", "position": "pose.position",
         "orientation": "pose.orientation", "scale": "scale", "color": "color", "points": "points",
         "lifetime": "lifetime", "text": "text", "mesh_resource": "mesh_resource",
-        "mesh_use_embedded_materials": "mesh_use_embedded_materials"}
+        "mesh_use_embedded_materials": "mesh_use_embedded_materials",
+        "frame_id": "header.frame_id", "stamp": "header.stamp", "frame_locked": "frame_locked"}
     assert sorted(rule.scaled_roles) == ["points", "position", "scale"]
     view = rule_view(rule, table)
     assert view["state_class"] == "::ros2vtk::convert::MarkerSet"
     assert view["state_header"] == "ros2vtk/convert/Marker.hpp"
     assert view["state_expires"] is True  # lifetimes: the subscriber expires markers each spin
-    assert rule_view(rules["Marker"], table)["state_class"] == ""  # every other kind: stateless
+    assert view["state_frames"] is True  # frame_id mapped: the subscriber gets a FixedFrame
+    # A Marker topic is kept by (ns, id) too (the rule maps ns, id and action), with frames.
+    marker = rule_view(rules["Marker"], table)
+    assert marker["state_class"] == view["state_class"] and marker["state_frames"] is True
+    assert rule_view(rules["PathPolyline"], table)["state_class"] == ""  # other kinds: stateless
+
+
+def test_marker_kind_keys_and_frames_come_together(tmp_path, table):
+    """kind marker: without ns/id/action a rule draws one message (stateless, as before); ns, id
+    and action come together; frame_id needs them; a rule with the key and no frame_id keeps
+    markers without a FixedFrame."""
+    from ros2vtk_gen.nodes import rule_view
+    base = """\
+    [[mapping]]
+    short_name = "One"
+    ros_type = "visualization_msgs/msg/Marker"
+    vtk_type = "vtkPolyData"
+    kind = "marker"
+    fields = { type = "type", position = "pose.position", orientation = "pose.orientation", scale = "scale", color = "color", points = "points" }
+    """
+    one = load_rules([write(tmp_path, base)], table)[0]
+    assert rule_view(one, table)["state_class"] == ""
+    keyed = base.replace('points = "points" }', 'points = "points", ns = "ns", id = "id", action = "action" }')
+    view = rule_view(load_rules([write(tmp_path, keyed)], table)[0], table)
+    assert view["state_class"] == "::ros2vtk::convert::MarkerSet" and view["state_frames"] is False
+    error = error_of(tmp_path, table, base.replace('points = "points" }', 'points = "points", ns = "ns" }')).message
+    assert "roles ns, id and action go together (this rule maps only ns)" in error, error
+    error = error_of(tmp_path, table, base.replace('points = "points" }',
+                                                   'points = "points", frame_id = "header.frame_id" }')).message
+    assert "role frame_id needs ns, id and action" in error, error
 
 
 def test_marker_kinds_optional_roles_may_be_left_out_but_not_misnamed(tmp_path, table):

@@ -21,6 +21,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -171,4 +172,33 @@ TEST(MarkerArrayFromRclpy, PolyDataOutAsOneAddedLineStripInMetres)
   EXPECT_DOUBLE_EQ(out.markers[0].points[2].x, 0.5);
   EXPECT_DOUBLE_EQ(out.markers[0].points[2].y, 0.5);
   EXPECT_FLOAT_EQ(out.markers[0].color.b, 1.0f);
+}
+
+TEST(MarkerArrayFromRclpy, EachMarkersHeaderFrameAndStampAreLookedUp)
+{
+  // Sample 4's markers are in frame 'map' stamped 20.123456789 s (not frame_locked): placed in
+  // the fixed frame by the lookup at that stamp. Here 'map' is 0.5 m along y of 'world'.
+  ros2vtk::convert::MarkerSet kept;
+  std::string error;
+  ASSERT_TRUE(ros2vtk::nodes::ROS2ToVTK(FromRclpy(4), kept, &error)) << error;
+  std::vector<std::pair<std::string, int64_t>> asked;
+  const ros2vtk::convert::FrameLookup lookup = [&](const std::string& frame, int64_t stamp,
+                                                 ros2vtk::convert::FramePose* pose, std::string*) {
+    asked.emplace_back(frame, stamp);
+    pose->translation[1] = 0.5;
+    return true;
+  };
+  EXPECT_TRUE(kept.locate(lookup, "world", false));
+  EXPECT_EQ(asked, (std::vector<std::pair<std::string, int64_t>>(3, { "map", 20'123'456'789 })));
+  const Drawn drawn = Draw(kept);
+  EXPECT_EQ(drawn.markers, 3);
+  // The bounds of sample 4 (x 0 .. 2050, y -100 .. 500 mm) moved 500 mm along y.
+  EXPECT_NEAR(drawn.bounds[0], 0.0, 1e-6);
+  EXPECT_NEAR(drawn.bounds[1], 2050.0, 1e-6);
+  EXPECT_NEAR(drawn.bounds[2], 400.0, 1e-6);
+  EXPECT_NEAR(drawn.bounds[3], 1000.0, 1e-6);
+  // Not frame_locked and placed: the next spin looks nothing up again.
+  asked.clear();
+  EXPECT_FALSE(kept.locate(lookup, "world", false));
+  EXPECT_TRUE(asked.empty());
 }

@@ -276,6 +276,10 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
 // Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker, visualization_msgs.toml; lengths: position, scale, points).
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+/// Folds `message` into `state` (what a display keeps across messages); false with the first
+/// reason when a part of it could not be applied (the rest is applied).
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, ::ros2vtk::convert::MarkerSet& state,
+  std::string* error = nullptr);
 bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
 

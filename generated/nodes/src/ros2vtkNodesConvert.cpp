@@ -1082,6 +1082,88 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
 
 //------------------------------------------------------------------------------
 // Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker)
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, ::ros2vtk::convert::MarkerSet& state, std::string* error)
+{
+  bool ok = true;
+  do // once: `continue` ends the one message's action as it ends an element's in a MarkerArray
+  {
+    if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::DELETEALL)
+    {
+      state.clear();
+      continue;
+    }
+    if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::DELETE)
+    {
+      state.remove(message.ns, message.id);
+      continue;
+    }
+    if (message.action != ::ros2vtk::visualization_msgs::msg::Marker::ADD && message.action != ::ros2vtk::visualization_msgs::msg::Marker::MODIFY)
+    {
+      if (ok && error)
+      {
+        *error = "marker (ns '" + message.ns + "', id " + std::to_string(message.id) +
+          "): unknown action " + std::to_string(message.action);
+      }
+      ok = false;
+      continue;
+    }
+    ::ros2vtk::convert::Marker marker;
+    switch (message.type)
+    {
+      case ::ros2vtk::visualization_msgs::msg::Marker::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::CUBE: marker.shape = ::ros2vtk::convert::MarkerShape::Cube; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::LINE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::LineList; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::CUBE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::CubeList; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::SphereList; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
+      default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
+    }
+    marker.position[0] = message.pose.position.x;
+    marker.position[1] = message.pose.position.y;
+    marker.position[2] = message.pose.position.z;
+    marker.orientation[0] = message.pose.orientation.x;
+    marker.orientation[1] = message.pose.orientation.y;
+    marker.orientation[2] = message.pose.orientation.z;
+    marker.orientation[3] = message.pose.orientation.w;
+    marker.scale[0] = message.scale.x;
+    marker.scale[1] = message.scale.y;
+    marker.scale[2] = message.scale.z;
+    marker.color[0] = message.color.r;
+    marker.color[1] = message.color.g;
+    marker.color[2] = message.color.b;
+    marker.color[3] = message.color.a;
+    marker.points.reserve(3 * message.points.size());
+    for (const auto& point : message.points)
+    {
+      marker.points.push_back(point.x);
+      marker.points.push_back(point.y);
+      marker.points.push_back(point.z);
+    }
+    marker.text = message.text;
+    marker.mesh_resource = message.mesh_resource;
+    marker.mesh_use_embedded_materials = message.mesh_use_embedded_materials;
+    marker.lifetime = message.lifetime.sec + 1e-9 * message.lifetime.nanosec;
+    marker.frame_id = message.header.frame_id;
+    marker.stamp_nanoseconds = int64_t{message.header.stamp.sec} * 1000000000 + message.header.stamp.nanosec;
+    marker.frame_locked = message.frame_locked;
+    std::string reason;
+    if (!state.add(message.ns, message.id, marker, &reason))
+    {
+      if (ok && error)
+      {
+        *error = reason;
+      }
+      ok = false;
+    }
+  } while (false);
+  return ok;
+}
+
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
   double lengthScale, std::string* error)
 {
@@ -1230,6 +1312,9 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, :
     marker.mesh_resource = element.mesh_resource;
     marker.mesh_use_embedded_materials = element.mesh_use_embedded_materials;
     marker.lifetime = element.lifetime.sec + 1e-9 * element.lifetime.nanosec;
+    marker.frame_id = element.header.frame_id;
+    marker.stamp_nanoseconds = int64_t{element.header.stamp.sec} * 1000000000 + element.header.stamp.nanosec;
+    marker.frame_locked = element.frame_locked;
     std::string reason;
     if (!state.add(element.ns, element.id, marker, &reason))
     {

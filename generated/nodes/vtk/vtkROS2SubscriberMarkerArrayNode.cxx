@@ -7,6 +7,9 @@
 #include "ros2vtk/convert/Units.hpp"
 
 #include "vtkObjectFactory.h"
+#include "vtkROS2Message.h"
+#include "vtkROS2NodeNode.h"
+#include "vtkXMLDataElement.h"
 
 namespace
 {
@@ -49,6 +52,7 @@ void vtkROS2SubscriberMarkerArrayNode::OnNewMessages()
       this->FoldError = error;
     }
   }
+  this->LocateKeptState(false); // the new items, in the fixed frame
   // Once per reason (a publisher may send the same undrawable TEXT marker at 10 Hz).
   if (!this->FoldError.empty() && this->FoldError != this->WarnedFoldError)
   {
@@ -63,11 +67,80 @@ void vtkROS2SubscriberMarkerArrayNode::OnNewMessages()
 //------------------------------------------------------------------------------
 bool vtkROS2SubscriberMarkerArrayNode::ExpireKeptState(vtkTypeInt64 nowNanoseconds)
 {
-  if (!this->State.expire(nowNanoseconds))
+  bool changed = this->State.expire(nowNanoseconds);
+  changed = this->LocateKeptState(this->FixedFrameChanged) || changed;
+  this->FixedFrameChanged = false;
+  if (!changed)
   {
     return false;
   }
   this->LastMessageConverted = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberMarkerArrayNode::LocateKeptState(bool all)
+{
+  if (this->FixedFrame.empty())
+  {
+    if (all)
+    {
+      this->State.unlocate(); // back to every marker at its own pose
+    }
+    return all;
+  }
+  vtkROS2NodeNode* rosNode = this->GetROS2Node();
+  const auto lookup = [rosNode, this](const std::string& frame, int64_t stamp,
+                        ::ros2vtk::convert::FramePose* pose, std::string* error)
+  {
+    if (!rosNode)
+    {
+      *error = "the subscriber is not on a ROS node (no tf buffer)";
+      return false;
+    }
+    return rosNode->LookupFramePose(
+      this->FixedFrame, frame, stamp, pose->translation, pose->rotation, error);
+  };
+  if (!this->State.locate(lookup, this->FixedFrame, all))
+  {
+    return false;
+  }
+  this->LastMessageConverted = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberMarkerArrayNode::SetFixedFrame(const char* frame)
+{
+  const std::string value = frame ? frame : "";
+  if (value == this->FixedFrame)
+  {
+    return;
+  }
+  this->FixedFrame = value;
+  this->FixedFrameChanged = true; // placed on the next spin, with the tf it brings
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkROS2SubscriberMarkerArrayNode::WriteXML(vtkXMLDataElement* element)
+{
+  this->Superclass::WriteXML(element);
+  if (!this->FixedFrame.empty()) // written only when set: files of earlier versions stay as they were
+  {
+    element->SetAttribute("fixedFrame", this->FixedFrame.c_str());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberMarkerArrayNode::ReadXML(vtkXMLDataElement* element)
+{
+  if (!this->Superclass::ReadXML(element))
+  {
+    return false;
+  }
+  const char* frame = element->GetAttribute("fixedFrame");
+  this->SetFixedFrame(frame ? frame : "");
   return true;
 }
 
@@ -115,7 +188,11 @@ vtkPolyData* vtkROS2SubscriberMarkerArrayNode::GetLastMessage()
                     << this->GetTopic() << ": " << error);
       return nullptr;
     }
-    this->LastConversionError = this->FoldError;
+    // What the latest messages could not apply, then the markers not drawn for want of a frame.
+    const std::string unplaced = this->State.status();
+    this->LastConversionError = this->FoldError.empty() || unplaced.empty()
+      ? this->FoldError + unplaced
+      : this->FoldError + "\n" + unplaced;
     this->LastMessageConverted = true;
   }
   return this->LastMessage;
@@ -171,4 +248,23 @@ bool vtkROS2SubscriberMarkerArrayNode::GetNewMessage(int i, vtkPolyData* message
     return false;
   }
   return this->Convert(this->GetNewRawMessage(i), message);
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2SubscriberMarkerArrayNode::ConvertMessageToObject(vtkROS2Message* message, vtkObject* value)
+{
+  auto* typed = vtkPolyData::SafeDownCast(value);
+  if (!message || message->GetTypeSupport() != &MessageType::type_support())
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: the message is a ") +
+      (message ? message->GetROSType() : "null") + ", not a visualization_msgs/msg/MarkerArray";
+    return false;
+  }
+  if (!typed)
+  {
+    this->LastConversionError = std::string("ConvertMessageToObject: a MarkerArray value is a vtkPolyData, not ") +
+      (value ? value->GetClassName() : "null");
+    return false;
+  }
+  return this->Convert(message->GetRawMessage(), typed);
 }

@@ -15,6 +15,8 @@
 
 #include <string> // for std::string
 
+class vtkROS2Message;
+
 /// Receives visualization_msgs/msg/MarkerArray as vtkPolyData (mapping rule MarkerArray, visualization_msgs.toml).
 /// Lengths (position, scale, points) are multiplied by 1000 (ROS m -> VTK mm) unless ScaleLengths is off.
 /// Observe ModifiedEvent: it fires once per spin that brought messages (call data int*: count).
@@ -46,6 +48,27 @@ public:
   /// Why the latest conversion failed ("" when it did not).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
 
+  /// The frame the markers are drawn in, as RViz's fixed frame: each kept marker is placed at
+  /// the pose of its header's frame in this frame, looked up in the ROS node's tf buffer at its
+  /// stamp when it arrives (the latest transform for stamp 0), and again at the latest transform
+  /// on every spin when it is frame_locked. A marker whose frame cannot be looked up is not
+  /// drawn (GetLastConversionError and GetFrameStatus say "No transform from [a] to [b]") and
+  /// is looked up again on later spins. "" (the default): frames are ignored, every marker is
+  /// drawn at its own pose in this node's frame. Saved with the scene.
+  void SetFixedFrame(const char* frame);
+  const char* GetFixedFrame() const { return this->FixedFrame.c_str(); }
+  /// Why kept markers are not drawn, one line per marker ("" when all are).
+  std::string GetFrameStatus() const { return this->State.status(); }
+
+  void WriteXML(vtkXMLDataElement* element) override;
+  bool ReadXML(vtkXMLDataElement* element) override;
+
+  /// Converts `message` (a visualization_msgs/msg/MarkerArray) into `value` (a vtkPolyData) with this
+  /// node's rule and length scaling, as GetLastMessage would: how a field of this type is read
+  /// from a received message object (python/ros2vtk/blank_messages.py). False when it does not
+  /// convert (GetLastConversionError says why; no error is printed).
+  bool ConvertMessageToObject(vtkROS2Message* message, vtkObject* value);
+
   const char* GetSlicerType() const override { return "vtkPolyData"; }
 
 protected:
@@ -67,8 +90,14 @@ protected:
   ::ros2vtk::convert::MarkerSet State; // every received message folded in (OnNewMessages)
   std::string FoldError;        // what the latest spin's messages could not apply
   std::string WarnedFoldError;  // the last reason warned about (once per reason)
-  /// Drops the kept items whose lifetime has passed (the state's expire()).
+  /// Drops the kept items whose lifetime has passed (the state's expire()) and places the
+  /// frame-locked ones again (and those not placed yet) in the fixed frame.
   bool ExpireKeptState(vtkTypeInt64 nowNanoseconds) override;
+  /// Places the kept markers in FixedFrame through the ROS node's tf buffer (all: every one,
+  /// else the new, unplaced and frame-locked ones); true when what is drawn changed.
+  bool LocateKeptState(bool all);
+  std::string FixedFrame;
+  bool FixedFrameChanged = false; // every marker is placed again on the next spin
 
 private:
   vtkROS2SubscriberMarkerArrayNode(const vtkROS2SubscriberMarkerArrayNode&) = delete;

@@ -12,6 +12,7 @@
 #include <vtkFieldData.h>
 #include <vtkStringArray.h>
 #include <vtkIntArray.h>
+#include <vtkMath.h>
 #include <vtkCellArray.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
@@ -27,6 +28,7 @@
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
@@ -498,6 +500,105 @@ bool MarkerSet::expire(int64_t now_nanoseconds)
   return dropped;
 }
 
+namespace {
+
+/// `marker` moved by `frame`: its pose (position in metres, orientation) composed after it.
+Marker placed_in(const Marker& marker, const FramePose& frame)
+{
+  Marker out = marker;
+  const vtkQuaterniond rotation(
+    frame.rotation[3], frame.rotation[0], frame.rotation[1], frame.rotation[2]);
+  double matrix[3][3];
+  rotation.ToMatrix3x3(matrix);
+  vtkMath::Multiply3x3(matrix, marker.position, out.position);
+  for (int i = 0; i < 3; ++i)
+  {
+    out.position[i] += frame.translation[i];
+  }
+  const vtkQuaterniond own(
+    marker.orientation[3], marker.orientation[0], marker.orientation[1], marker.orientation[2]);
+  const vtkQuaterniond composed = rotation * own;
+  out.orientation[0] = composed.GetX();
+  out.orientation[1] = composed.GetY();
+  out.orientation[2] = composed.GetZ();
+  out.orientation[3] = composed.GetW();
+  return out;
+}
+
+bool same_pose(const FramePose& a, const FramePose& b)
+{
+  return std::equal(a.translation, a.translation + 3, b.translation) &&
+    std::equal(a.rotation, a.rotation + 4, b.rotation);
+}
+
+} // namespace
+
+bool MarkerSet::place(Kept& kept, const FrameLookup& lookup, const std::string& fixed_frame)
+{
+  const Marker& marker = kept.marker;
+  FramePose pose;
+  std::string reason;
+  // RViz: a frame-locked marker follows the latest transform, the others their stamp.
+  const int64_t stamp = marker.frame_locked ? 0 : marker.stamp_nanoseconds;
+  const bool found = lookup && lookup(marker.frame_id, stamp, &pose, &reason);
+  const bool changed = found != kept.located || (found && !same_pose(pose, kept.frame));
+  kept.located = found;
+  if (found)
+  {
+    kept.frame = pose;
+    kept.status.clear();
+  }
+  else
+  {
+    kept.status = "No transform from [" + marker.frame_id + "] to [" + fixed_frame + "]" +
+      (reason.empty() ? std::string() : ": " + reason);
+  }
+  return changed;
+}
+
+bool MarkerSet::locate(const FrameLookup& lookup, const std::string& fixed_frame, bool all)
+{
+  bool changed = !this->placing && !this->markers.empty();
+  this->placing = true;
+  for (auto& entry : this->markers)
+  {
+    Kept& kept = entry.second;
+    if (all || !kept.located || kept.marker.frame_locked)
+    {
+      changed = this->place(kept, lookup, fixed_frame) || changed;
+    }
+  }
+  return changed;
+}
+
+void MarkerSet::unlocate()
+{
+  this->placing = false;
+  for (auto& entry : this->markers)
+  {
+    entry.second.located = false;
+    entry.second.status.clear();
+  }
+}
+
+std::string MarkerSet::status() const
+{
+  std::string lines;
+  if (!this->placing)
+  {
+    return lines;
+  }
+  for (const auto& entry : this->markers)
+  {
+    if (!entry.second.located && !entry.second.status.empty())
+    {
+      lines += (lines.empty() ? "" : "\n") + std::string("marker (ns '") + entry.first.first +
+        "', id " + std::to_string(entry.first.second) + "): " + entry.second.status;
+    }
+  }
+  return lines;
+}
+
 bool MarkerSet::remove(const std::string& ns, int id)
 {
   return this->markers.erase(std::make_pair(ns, id)) != 0;
@@ -524,9 +625,15 @@ bool MarkerSet::to_poly_data(double length_scale, vtkPolyData* poly_data, std::s
   int index = 0;
   for (const auto& entry : this->markers)
   {
+    const Kept& kept = entry.second;
+    if (this->placing && !kept.located)
+    {
+      continue; // its frame is not known in the fixed frame (status() says why)
+    }
     vtkNew<vtkPolyData> piece;
     std::string reason;
-    if (!marker_to_poly_data(entry.second.marker, length_scale, piece, &reason))
+    if (!marker_to_poly_data(this->placing ? placed_in(kept.marker, kept.frame) : kept.marker,
+          length_scale, piece, &reason))
     {
       // add() checked it at scale 1; only a scale overflowing to infinity gets here.
       return fail(error, where,

@@ -696,6 +696,41 @@ ros2vtk::tf2::BufferCore* vtkROS2NodeNode::GetTf2Buffer()
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2NodeNode::LookupFramePose(const std::string& targetFrame, const std::string& frame,
+  vtkTypeInt64 stampNanoseconds, double translation[3], double rotation[4], std::string* error)
+{
+  ros2vtk::tf2::BufferCore* buffer = this->GetTf2Buffer();
+  if (!buffer)
+  {
+    if (error)
+    {
+      *error =
+        "ROS node '" + std::string(this->GetROS2NodeName()) + "' is not created (no tf buffer)";
+    }
+    return false;
+  }
+  const ros2vtk::tf2::LookupResult result =
+    buffer->lookup_transform(targetFrame, frame, stampNanoseconds);
+  if (!result)
+  {
+    if (error)
+    {
+      *error = result.message;
+    }
+    return false;
+  }
+  const ros2vtk::tf2::Transform& transform = result.transform;
+  translation[0] = transform.translation.x();
+  translation[1] = transform.translation.y();
+  translation[2] = transform.translation.z();
+  rotation[0] = transform.rotation.x();
+  rotation[1] = transform.rotation.y();
+  rotation[2] = transform.rotation.z();
+  rotation[3] = transform.rotation.w();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 ros2vtk::tf2_ros::TransformBroadcaster* vtkROS2NodeNode::GetTf2Broadcaster(bool isStatic)
 {
   if (!this->Internals->Participant)

@@ -50,7 +50,27 @@ struct Marker
   std::string text;                         ///< Text: what is written
   std::string mesh_resource;                ///< MeshResource: a URI (package://, file://)
   bool mesh_use_embedded_materials = false; ///< MeshResource: the file's colours, if it has any
+  /// The frame the pose is in (header.frame_id) and when (header.stamp, nanoseconds; 0: the
+  /// latest transform). Used by a MarkerSet that places its markers in a fixed frame (locate).
+  std::string frame_id;
+  int64_t stamp_nanoseconds = 0;
+  /// Placed again on every locate() at the latest transform (it moves with its frame), instead
+  /// of once when it arrived at its stamp.
+  bool frame_locked = false;
 };
+
+/// Where a frame is in the fixed frame: a rigid transform (translation in metres, rotation a
+/// unit quaternion x, y, z, w) that maps points of the frame into the fixed frame.
+struct FramePose
+{
+  double translation[3] = { 0, 0, 0 };
+  double rotation[4] = { 0, 0, 0, 1 };
+};
+
+/// Looks `frame` up in the fixed frame at `stamp_nanoseconds` (0: the latest transform); false
+/// with a reason when it cannot (the caller's tf buffer has no path, or not at that time).
+using FrameLookup = std::function<bool(
+  const std::string& frame, int64_t stamp_nanoseconds, FramePose* pose, std::string* error)>;
 
 /// Reads the mesh a MeshResource marker names into `mesh` (triangles, in metres); when the file
 /// has its own colours, they are RGBA unsigned char point scalars of `mesh`. False and a reason
@@ -106,6 +126,20 @@ public:
   bool remove(const std::string& ns, int id);
   /// Drops every marker (DELETEALL).
   void clear() { this->markers.clear(); }
+
+  /// Places the markers in a fixed frame, as RViz does: a marker is drawn at the pose of its
+  /// frame_id in the fixed frame, looked up by `lookup` at its stamp when it arrives, and again
+  /// at the latest transform on every call when it is frame_locked. A marker whose frame cannot
+  /// be looked up is kept but not drawn, its reason in status(), and looked up again on the next
+  /// call (as RViz's tf message filter holds a message until its transform arrives). `all`
+  /// places every marker again (the fixed frame changed). Without a call markers are drawn at
+  /// their own pose, frames ignored. True when a marker moved, appeared or disappeared.
+  bool locate(const FrameLookup& lookup, const std::string& fixed_frame, bool all);
+  /// Drops the placement of every marker: drawn at their own pose again (no fixed frame).
+  void unlocate();
+  /// Why kept markers are not drawn, one line each ("marker (ns 'a', id 1): No transform from
+  /// [b] to [world]: ..."), in (ns, id) order; "" when every kept marker is drawn.
+  std::string status() const;
   size_t size() const { return this->markers.size(); }
   bool contains(const std::string& ns, int id) const
   {
@@ -115,8 +149,9 @@ public:
   /// Every kept marker drawn (marker_to_poly_data) and appended into `poly_data`, in (ns, id)
   /// order: the points of each, its cells (vertices, lines, polygons), its colour in the RGBA
   /// point array "Color" (the scalars), and an int cell array "MarkerIndex" numbering the
-  /// markers in that order. No marker: an empty poly data. False (output untouched) only on a
-  /// bad length scale or a null output.
+  /// markers drawn in that order. After locate(), each marker is placed at its frame's pose in
+  /// the fixed frame and those whose frame was not found are left out. No marker: an empty poly
+  /// data. False (output untouched) only on a bad length scale or a null output.
   bool to_poly_data(double length_scale, vtkPolyData* poly_data, std::string* error) const;
 
 private:
@@ -124,9 +159,15 @@ private:
   {
     Marker marker;
     int64_t expires_at; ///< nanoseconds; 0 forever
+    /// Placed in the fixed frame (locate): where its frame is, or why it is not drawn.
+    bool located = false;
+    FramePose frame;
+    std::string status;
   };
+  bool place(Kept& kept, const FrameLookup& lookup, const std::string& fixed_frame);
   std::map<std::pair<std::string, int>, Kept> markers;
   int64_t now = 0;
+  bool placing = false; ///< locate() was called (and not undone by unlocate()): frames count
 };
 
 } // namespace convert
