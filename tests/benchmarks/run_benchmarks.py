@@ -181,8 +181,9 @@ def bench_spin(ctx: 'Context') -> dict:
     urdf = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
     spins = 50 if ctx.quick else 1000
     results = {}
-    for index, robots in enumerate((1, 2, 10)):
-        with Domain(200 + index, ctx.build) as domain:
+    # 0 robots: the ROS node alone, the floor the robot rows are read against.
+    for domain_id, robots in ((203, 0), (200, 1), (201, 2), (202, 10)):
+        with Domain(domain_id, ctx.build) as domain:
             for i in range(1, robots + 1):
                 domain.start([ctx.build / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', urdf, '--rate', '100',
                               '--namespace', f'/robot{i}', '--frame-prefix', f'robot{i}/'])
