@@ -7,6 +7,8 @@
 // callback stands in for a viewer's; rendering is excluded). The robots are ros2vtk-sim-robot
 // processes the driver starts in namespaces /robot1 .. /robotN with frame prefixes robot1/ ..
 // robotN/; each becomes a robot node through CreateAndAddRobotNodeFromTopic, as users do.
+// --robots 0 spins the ROS node alone (nothing to take, nothing to update): the floor of one
+// Spin() on this machine at this rate, which the robot rows are read against.
 //
 //   bench_spin --robots N [--spins 1000] [--rate 50] [--wait 30]
 //
@@ -56,7 +58,7 @@ bool parse(int argc, char** argv, Options& o)
     else
       return false;
   }
-  return o.robots > 0 && o.spins > 0 && o.rate > 0;
+  return o.robots >= 0 && o.spins > 0 && o.rate > 0;
 }
 
 void count_event(vtkObject*, unsigned long, void* client_data, void*)

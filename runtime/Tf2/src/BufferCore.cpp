@@ -47,6 +47,7 @@ FrameId validate_frame_id(const FrameTable& frames, const char* function_name, c
 BufferCore::BufferCore(Duration cache_time)
   : cache_time_(std::max<Duration>(cache_time, 0))
   , frames_(std::make_unique<FrameTable>())
+  , walk_scratch_(std::make_unique<WalkScratch>())
 {
 }
 
@@ -86,8 +87,8 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
   {
     if (error)
     {
-      *error = "TF_OLD_DATA ignoring data from the past for frame " + checked.child + " at time " +
-        display_time(transform.stamp) + " according to authority " + authority +
+      *error = "TF_OLD_DATA ignoring data from the past for frame " + std::string(checked.child) +
+        " at time " + display_time(transform.stamp) + " according to authority " + authority +
         "\nPossible reasons are listed at http://wiki.ros.org/tf/Errors%20explained";
     }
     return false;
@@ -145,7 +146,7 @@ void BufferCore::lookup_locked(const std::string& target_frame, const std::strin
     return;
   }
 
-  WalkResult walk = TreeWalker(*frames_).transform_between(target, source, time);
+  WalkResult walk = TreeWalker(*frames_, *walk_scratch_).transform_between(target, source, time);
   result.error = walk.error;
   result.message = std::move(walk.message);
   result.ok = walk.error == Tf2Error::NoError;

@@ -8,7 +8,7 @@ FrameIds::FrameIds()
 {
 }
 
-FrameId FrameIds::intern(const std::string& name)
+FrameId FrameIds::intern(std::string_view name)
 {
   auto found = ids_.find(name);
   if (found != ids_.end())
@@ -16,12 +16,12 @@ FrameId FrameIds::intern(const std::string& name)
     return found->second;
   }
   const auto id = static_cast<FrameId>(names_.size());
-  ids_.emplace(name, id);
-  names_.push_back(name);
+  names_.emplace_back(name);
+  ids_.emplace(names_.back(), id);
   return id;
 }
 
-FrameId FrameIds::find(const std::string& name) const
+FrameId FrameIds::find(std::string_view name) const
 {
   auto found = ids_.find(name);
   return found == ids_.end() ? kNoFrame : found->second;

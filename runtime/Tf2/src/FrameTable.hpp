@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ros2vtk {
@@ -27,7 +28,7 @@ struct FrameTable
   }
 
   /// Interns a name and keeps the per-frame vectors as long as the id table.
-  FrameId intern(const std::string& name)
+  FrameId intern(std::string_view name)
   {
     const FrameId id = ids.intern(name);
     if (caches.size() < ids.size())

@@ -35,7 +35,7 @@ void add_line(std::string& message, const std::string& line)
 
 } // namespace
 
-std::string strip_leading_slash(const std::string& name)
+std::string_view strip_leading_slash(std::string_view name)
 {
   return !name.empty() && name[0] == '/' ? name.substr(1) : name;
 }
@@ -51,7 +51,7 @@ CheckedTransform check_transform_input(const TransformStamped& input, const std:
     return "\"" + authority + "\"";
   };
   const auto quoted_child = [&result] {
-    return "\"" + result.child + "\"";
+    return "\"" + std::string(result.child) + "\"";
   };
 
   std::string& message = result.message;

@@ -6,6 +6,7 @@
 #include "ros2vtk/tf2/TransformStamped.hpp"
 
 #include <string>
+#include <string_view>
 
 namespace ros2vtk {
 namespace tf2 {
@@ -17,16 +18,16 @@ constexpr double kQuaternionNormTolerance = 10e-3;
 struct CheckedTransform
 {
   bool ok = false;
-  std::string message; ///< one "TF_<ID>: ..." line per problem when not ok
-  std::string parent;  ///< frame_id without one leading '/'
-  std::string child;   ///< child_frame_id without one leading '/'
-  Transform transform; ///< with the quaternion normalised
+  std::string message;     ///< one "TF_<ID>: ..." line per problem when not ok
+  std::string_view parent; ///< frame_id without one leading '/' (a view of the input's)
+  std::string_view child;  ///< child_frame_id without one leading '/' (a view of the input's)
+  Transform transform;     ///< with the quaternion normalised
 };
 
 CheckedTransform check_transform_input(const TransformStamped& input, const std::string& authority);
 
-/// `name` without one leading '/' (tf2's stripSlash).
-std::string strip_leading_slash(const std::string& name);
+/// `name` without one leading '/' (tf2's stripSlash); a view of `name`, not a copy.
+std::string_view strip_leading_slash(std::string_view name);
 
 } // namespace tf2
 } // namespace ros2vtk

@@ -12,18 +12,13 @@ namespace tf2 {
 
 namespace {
 
-/// One step of the time walk: a frame's newest stamp and the parent that sample names.
-struct NewestLink
-{
-  TimePoint stamp;
-  FrameId parent;
-};
+using NewestLink = WalkScratch::NewestLink;
 
 constexpr TimePoint kNoTimeYet = std::numeric_limits<TimePoint>::max();
 
 // Frames met on a walk. A vector, not a hash set: chains are a handful of frames long and a
 // lookup per link runs at every spin, so node allocations cost more than a linear search. The
-// walks keep their vectors per thread (cleared, not freed) for the same reason.
+// walks keep their vectors in a WalkScratch (cleared, not freed) for the same reason.
 using FramePath = std::vector<FrameId>;
 
 // tf2's BufferCore::MAX_GRAPH_DEPTH: a walk longer than this is reported as a loop, as tf2
@@ -95,8 +90,8 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   }
 
   // Source towards its root, remembering each frame's newest link.
-  thread_local std::vector<NewestLink> source_path;
-  thread_local FramePath seen;
+  std::vector<NewestLink>& source_path = scratch_.source_links;
+  FramePath& seen = scratch_.path;
   source_path.clear();
   seen.assign(1, source);
   TimePoint common = kNoTimeYet;
@@ -129,7 +124,7 @@ WalkResult TreeWalker::latest_common_time(FrameId target, FrameId source) const
   // Target upwards until its parent lies on the source's path (or is the source).
   common = kNoTimeYet;
   FrameId common_parent = kNoFrame;
-  thread_local FramePath seen_from_target;
+  FramePath& seen_from_target = scratch_.from_target;
   seen_from_target.assign(1, target);
   for (FrameId frame = target;;)
   {
@@ -198,8 +193,8 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
   }
 
   // Source towards its root: source_to[i] maps source into path[i].
-  thread_local std::vector<Transform> source_to;
-  thread_local FramePath path;
+  std::vector<Transform>& source_to = scratch_.source_to;
+  FramePath& path = scratch_.path; // latest_common_time's use of it is over
   source_to.assign(1, Transform::identity());
   path.assign(1, source);
   SampleError source_stop; // why the source walk ended early, if it did
@@ -219,21 +214,25 @@ WalkResult TreeWalker::transform_between(FrameId target, FrameId source, TimePoi
     {
       return loop_error();
     }
-    source_to.push_back(link.transform * source_to.back());
+    // The first link is the source's own transform: composing it with the identity would cost
+    // a product for the same numbers.
+    source_to.push_back(source_to.size() == 1 ? link.transform : link.transform * source_to.back());
     frame = link.parent;
   }
 
   // Target upwards until it meets the source's path; target_to maps target into `frame`.
   Transform target_to = Transform::identity();
-  thread_local FramePath seen_from_target;
+  FramePath& seen_from_target = scratch_.from_target;
   seen_from_target.assign(1, target);
   for (FrameId frame = target;;)
   {
     auto met = std::find(path.begin(), path.end(), frame);
     if (met != path.end())
     {
-      result.transform =
-        target_to.inverse() * source_to[static_cast<std::size_t>(met - path.begin())];
+      const Transform& source_to_met = source_to[static_cast<std::size_t>(met - path.begin())];
+      // Usually the target is on the source's path (a link looked up in its robot's base): then
+      // target_to is still the identity and the answer is the source's chain as composed.
+      result.transform = frame == target ? source_to_met : target_to.inverse() * source_to_met;
       return result;
     }
     const TimeCacheInterface* cache = frames_.cache(frame);

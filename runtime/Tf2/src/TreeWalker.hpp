@@ -7,9 +7,27 @@
 #include "FrameTable.hpp"
 
 #include <string>
+#include <vector>
 
 namespace ros2vtk {
 namespace tf2 {
+
+/// The vectors a walk fills, kept by the buffer between lookups (cleared, not freed): a lookup
+/// per link runs at every spin, and these allocations cost more than the walk itself. A
+/// per-thread copy would go through __tls_get_addr at every use in a shared library.
+struct WalkScratch
+{
+  /// One step of the time walk: a frame's newest stamp and the parent that sample names.
+  struct NewestLink
+  {
+    TimePoint stamp;
+    FrameId parent;
+  };
+  std::vector<NewestLink> source_links; ///< latest_common_time: the source's chain
+  std::vector<Transform> source_to;     ///< transform_between: source into path[i]
+  std::vector<FrameId> path;            ///< frames met walking from the source
+  std::vector<FrameId> from_target;     ///< frames met walking from the target
+};
 
 struct WalkResult
 {
@@ -22,8 +40,10 @@ struct WalkResult
 class TreeWalker
 {
 public:
-  explicit TreeWalker(const FrameTable& frames)
+  /// `scratch` is only used during a call; one walk at a time per scratch.
+  TreeWalker(const FrameTable& frames, WalkScratch& scratch)
     : frames_(frames)
+    , scratch_(scratch)
   {
   }
 
@@ -44,6 +64,7 @@ private:
   std::string direction(FrameId source, FrameId target) const;
 
   const FrameTable& frames_;
+  WalkScratch& scratch_;
 };
 
 } // namespace tf2

@@ -20,6 +20,7 @@ namespace ros2vtk {
 namespace tf2 {
 
 struct FrameTable;
+struct WalkScratch;
 
 class BufferCore
 {
@@ -97,6 +98,7 @@ private:
   Duration cache_time_;
   mutable std::mutex mutex_;
   std::unique_ptr<FrameTable> frames_;
+  std::unique_ptr<WalkScratch> walk_scratch_; ///< reused by every lookup; guarded by mutex_
 };
 
 } // namespace tf2

@@ -4,9 +4,10 @@
 #define ros2vtk_tf2_FrameIds_hpp
 
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <string_view>
 #include <unordered_map>
-#include <vector>
 
 namespace ros2vtk {
 namespace tf2 {
@@ -19,12 +20,15 @@ class FrameIds
 {
 public:
   FrameIds();
+  // The map's keys point into names_: a copy would point into the original.
+  FrameIds(const FrameIds&) = delete;
+  FrameIds& operator=(const FrameIds&) = delete;
 
   /// The id of `name`, assigning the next free one the first time a name is seen.
-  FrameId intern(const std::string& name);
+  FrameId intern(std::string_view name);
 
   /// The id of `name`, or kNoFrame when it was never interned.
-  FrameId find(const std::string& name) const;
+  FrameId find(std::string_view name) const;
 
   /// The name of an id; "NO_PARENT" for kNoFrame and for ids never handed out.
   const std::string& name(FrameId id) const;
@@ -33,8 +37,11 @@ public:
   std::size_t size() const { return names_.size(); }
 
 private:
-  std::unordered_map<std::string, FrameId> ids_;
-  std::vector<std::string> names_; ///< index = id; names_[0] is "NO_PARENT"
+  // Keyed by views of names_'s strings (a deque never moves them), so a name arriving on /tf is
+  // looked up without first being copied into a std::string: every transform and every lookup
+  // of every spin passes here.
+  std::unordered_map<std::string_view, FrameId> ids_;
+  std::deque<std::string> names_; ///< index = id; names_[0] is "NO_PARENT"
 };
 
 } // namespace tf2

@@ -11,9 +11,11 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ros2vtk {
 namespace wire {
+class MessagePtr;
 class Participant;
 class Subscription;
 }
@@ -50,6 +52,7 @@ private:
   std::unique_ptr<wire::Subscription> static_;
   uint64_t rejected_ = 0;
   std::string last_rejection_;
+  std::vector<wire::MessagePtr> taken_; ///< drain's batch; emptied after use, capacity kept
 };
 
 } // namespace tf2_ros
