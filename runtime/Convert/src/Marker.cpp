@@ -478,7 +478,10 @@ bool MarkerSet::add(const std::string& ns, int id, const Marker& marker, std::st
     // At least 1 ns later, so that a stamp of 0 (a clock not yet running) still expires.
     expires_at = this->now + std::max<int64_t>(1, std::llround(marker.lifetime * 1e9));
   }
-  this->markers[key] = Kept{ marker, expires_at };
+  Kept kept;
+  kept.marker = marker;
+  kept.expires_at = expires_at;
+  this->markers[key] = std::move(kept);
   return true;
 }
 

@@ -158,7 +158,7 @@ private:
   struct Kept
   {
     Marker marker;
-    int64_t expires_at; ///< nanoseconds; 0 forever
+    int64_t expires_at = 0; ///< nanoseconds; 0 forever
     /// Placed in the fixed frame (locate): where its frame is, or why it is not drawn.
     bool located = false;
     FramePose frame;
