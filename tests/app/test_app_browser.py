@@ -124,7 +124,10 @@ def type_into(driver, element_id: str, text: str) -> None:
     field.send_keys(text)
     field.send_keys(Keys.ESCAPE)  # a combobox's list would cover the next field
     assert field.get_attribute('value') == text, f'{element_id}: {field.get_attribute("value")!r}'
-    time.sleep(0.3)  # the model reaches the server before the next click
+    # No wait for the field's model to reach the server: each form button sends its fields with
+    # the click (layout.py). Only a menu still closing could take the next click.
+    wait_for('menus closed', lambda: not driver.find_elements(By.CSS_SELECTOR, '.v-overlay--active .v-list-item'),
+             seconds=10, step=0.05)
 
 
 def click(driver, element_id: str) -> None:
@@ -141,8 +144,8 @@ def choose(driver, select_id: str, item: str) -> None:
     option = wait_for(f'{item} in the {select_id} menu', lambda: [o for o in driver.find_elements(
         By.CSS_SELECTOR, '.v-overlay--active .v-list-item') if o.text.strip() == item])
     option[0].click()
-    wait_for(f'{select_id} = {item}', lambda: not driver.find_elements(By.CSS_SELECTOR, '.v-overlay--active .v-list-item'))
-    time.sleep(0.3)
+    wait_for(f'{select_id} = {item}', lambda: not driver.find_elements(By.CSS_SELECTOR, '.v-overlay--active .v-list-item'),
+             step=0.05)  # the choice goes to the server with the form's button, as typed fields do
 
 
 def row_text(driver, row_id: str) -> str:
