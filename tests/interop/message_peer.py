@@ -7,6 +7,7 @@ serialize_message() of that message. Our side must rebuild the same bytes field 
     message_peer.py fill TYPE [TYPE ...]
     message_peer.py equal      (stdin: JSON lines {"type", "ours", "theirs"} of hex payloads;
                                 prints {"type", "equal", "error"}: rclpy deserializes both)
+    message_peer.py constants TYPE [TYPE ...]   (per type: {"type", "constants": [[name, value]]})
 """
 from __future__ import annotations
 
@@ -119,9 +120,22 @@ def equal() -> int:
     return 0
 
 
+def constants(type_names) -> int:
+    """One JSON line per type: its constants as rosidl's Python class holds them, in the .msg
+    file's order ([name, value]; bytes as their integer)."""
+    for type_name in type_names:
+        meta = type(message_class(type_name))
+        pairs = getattr(meta, f'_{meta.__name__}__constants').items()
+        print(json.dumps({'type': type_name, 'constants': [
+            [name, value[0] if isinstance(value, bytes) else value] for name, value in pairs]}), flush=True)
+    return 0
+
+
 def main() -> int:
     if len(sys.argv) == 2 and sys.argv[1] == 'equal':
         return equal()
+    if len(sys.argv) >= 3 and sys.argv[1] == 'constants':
+        return constants(sys.argv[2:])
     if len(sys.argv) < 3 or sys.argv[1] != 'fill':
         print(__doc__, file=sys.stderr)
         return 2

@@ -174,10 +174,14 @@ def cmd_params(args: argparse.Namespace) -> int:
         rclpy.spin_until_future_complete(node, future, timeout_sec=10.0)
         return future.result()
 
+    def plain(value):  # rclpy gives a byte[] as a list of one-byte bytes: JSON takes their numbers
+        value = parameter_value_to_python(value)
+        return [v[0] if isinstance(v, bytes) else v for v in value] if isinstance(value, list) else value
+
     result['list'] = sorted(call(client.list_parameters()).result.names)
     if args.get:
         values = call(client.get_parameters(args.get)).values
-        result['get'] = {name: parameter_value_to_python(value) for name, value in zip(args.get, values)}
+        result['get'] = {name: plain(value) for name, value in zip(args.get, values)}
         result['types'] = list(call(client.get_parameter_types(args.get)).types)
         result['describe'] = [{'name': d.name, 'type': d.type, 'read_only': d.read_only}
                               for d in call(client.describe_parameters(args.get)).descriptors]
@@ -201,8 +205,7 @@ def cmd_params(args: argparse.Namespace) -> int:
                             for e in events if e.node == args.target]
         if args.get:
             values = call(client.get_parameters(args.get)).values
-            result['get_after'] = {name: parameter_value_to_python(value)
-                                   for name, value in zip(args.get, values)}
+            result['get_after'] = {name: plain(value) for name, value in zip(args.get, values)}
     print(json.dumps(result), flush=True)
     node.destroy_node()
     return 0

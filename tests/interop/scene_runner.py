@@ -372,9 +372,32 @@ def cmd_serve(args, logic, node) -> int:
     node.SetParameterAsInteger('frame_count', 42)
     node.SetParameterAsDouble('needle_depth_mm', 37.5)
     node.SetParameterAsString('image_frame', 'ct')
+
+    def array(array_class, values, components=1):
+        made = array_class()
+        made.SetNumberOfComponents(components)
+        for value in values:
+            made.InsertNextValue(value)
+        return made
+    frames = vtk.vtkStringArray()
+    for frame in ('ct', 'needle tip'):
+        frames.InsertNextValue(frame)
+    set_arrays = [node.SetParameterAsBoolArray('flags', array(vtk.vtkIntArray, [1, 0, 2])),
+                  node.SetParameterAsIntegerArray('ids', array(vtk.vtkTypeInt64Array, [-2 ** 63, 7, 2 ** 63 - 1])),
+                  node.SetParameterAsDoubleArray('weights', array(vtk.vtkDoubleArray, [0.25, -1.5])),
+                  node.SetParameterAsByteArray('key', array(vtk.vtkIntArray, [0, 17, 255])),
+                  node.SetParameterAsStringArray('frames', frames)]
+    # Refused, each leaving the parameter as it was: not whole, not a byte, two components, no
+    # array, another type than the parameter has.
+    refused = [node.SetParameterAsIntegerArray('ids', array(vtk.vtkDoubleArray, [1.5])),
+               node.SetParameterAsByteArray('key', array(vtk.vtkIntArray, [256])),
+               node.SetParameterAsDoubleArray('weights', array(vtk.vtkDoubleArray, [1, 2], components=2)),
+               node.SetParameterAsStringArray('frames', None),
+               node.SetParameterAsIntegerArray('frames', array(vtk.vtkIntArray, [1]))]
     if args.value_limit >= 0:
         node.SetParameterValueSizeLimit(args.value_limit)
-    print(json.dumps({'ready': True, 'value_limit': node.GetParameterValueSizeLimit()}), flush=True)
+    print(json.dumps({'ready': True, 'value_limit': node.GetParameterValueSizeLimit(), 'set_arrays': set_arrays,
+                      'refused_arrays': refused}), flush=True)
     end = time.monotonic() + args.seconds
     while time.monotonic() < end:
         logic.SpinOnWakeUp(0.05)

@@ -120,6 +120,47 @@ print(json.dumps({'refused_wrong_type': refused, 'sent': publisher.GetNumberOfMe
 '''
 
 
+def test_constants_are_rclpys(ros):
+    """A type's constants through the wrapped API (GetNumberOfConstants, GetConstantName,
+    GetConstant) are rclpy's, by name, order and value: every primitive kind (test_msgs
+    Constants), rcl_interfaces/msg/ParameterType (the app's parameter form takes its type ids
+    there), Log's byte levels, PointField's datatypes; a type without constants has none, and
+    an unknown name is an error naming the type."""
+    types = ['rcl_interfaces/msg/ParameterType', 'rcl_interfaces/msg/Log', 'sensor_msgs/msg/PointField',
+             'std_msgs/msg/String'] + (['test_msgs/msg/Constants'] if 'test_msgs/msg/Constants' in TYPES else [])
+    peer = subprocess.run([str(VENV_PYTHON), str(HERE / 'message_peer.py'), 'constants', *types],
+                          capture_output=True, text=True, timeout=60, env=ros.env)
+    assert peer.returncode == 0, peer.stderr
+    theirs = {case['type']: case['constants'] for case in map(json.loads, peer.stdout.splitlines())}
+    script = (
+        'import json, sys, ros2vtk\n'
+        'for name in sys.argv[1:]:\n'
+        '    m = ros2vtk.vtkROS2Message(); assert m.SetROSType(name), m.GetLastError()\n'
+        '    names = [m.GetConstantName(i) for i in range(m.GetNumberOfConstants())]\n'
+        '    print(json.dumps([[n, m.GetConstant(n)] for n in names]))\n'
+        'm = ros2vtk.vtkROS2Message(); m.SetROSType("rcl_interfaces/msg/ParameterType")\n'
+        'print(json.dumps([m.GetConstant("PARAMETER_NOPE"), m.GetLastError()]))\n')
+    ours = subprocess.run(['/usr/bin/python3', '-c', script, *types], capture_output=True, text=True,
+                          timeout=60, env=_our_python(ros.env))
+    assert ours.returncode == 0, ours.stderr
+    *lines, unknown = [json.loads(line) for line in ours.stdout.splitlines()]
+    assert len(lines) == len(types)
+
+    def same(text: str, value) -> bool:  # our value as the .msg file writes it; rclpy's as Python
+        if isinstance(value, bool):
+            return text.lower() in ('true', '1') if value else text.lower() in ('false', '0')
+        if isinstance(value, str):
+            return text == value
+        return float(text) == value
+    for name, constants in zip(types, lines):
+        assert [n for n, _ in constants] == [n for n, _ in theirs[name]], name
+        assert all(same(text, value) for (_, text), (_, value) in zip(constants, theirs[name])), \
+            (name, constants, theirs[name])
+    assert theirs['std_msgs/msg/String'] == []
+    assert unknown[0] == '' and "rcl_interfaces/msg/ParameterType has no constant 'PARAMETER_NOPE'" in unknown[1]
+    print(f'constants of {len(types)} types as rclpy has them, e.g. ParameterType {lines[0]}')
+
+
 def test_rclpy_stamp_and_child_frame_reach_our_typed_object(ros):
     ours = ros.start(['/usr/bin/python3', '-c', OUR_SUBSCRIBER], env=_our_python(ros.env))
     assert json.loads(ours.stdout.readline()) == {'ready': True}

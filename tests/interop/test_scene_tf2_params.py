@@ -113,17 +113,25 @@ def test_parameter_node_reports_an_absent_node_and_reconnects_when_it_returns(ro
 
 
 def test_rclpy_parameter_client_reads_and_sets_our_nodes_parameters(ros):
+    """Our node's own parameters (SetParameterAs...), scalars and the five array types, read by
+    rclpy's parameter client; the array setters' refusals (an element that does not fit, two
+    components, no array, another type) leave the values as they were."""
     ours = ros.scene('--seconds', '20', 'serve')
-    ros.wait_ready(ours)
+    ready = json.loads(ours.stdout.readline())
+    assert ready['ready'] is True
+    assert ready['set_arrays'] == [True] * 5 and ready['refused_arrays'] == [False] * 5, ready
+    arrays = ['flags', 'ids', 'weights', 'key', 'frames']
     peer = ros.peer('params', '/slicer', '--get', 'use_registration', 'frame_count', 'needle_depth_mm',
-                    'image_frame', '--set', 'needle_depth_mm=40.0', 'frame_count="wrong type"')
+                    'image_frame', *arrays, '--set', 'needle_depth_mm=40.0', 'frame_count="wrong type"')
     code, out, err = ros.finish(peer, timeout=60)
     ros.stop(ours)
     assert code == 0, err
     result = json.loads(out)
-    assert {'use_registration', 'frame_count', 'needle_depth_mm', 'image_frame'} <= set(result['list'])
+    assert {'use_registration', 'frame_count', 'needle_depth_mm', 'image_frame', *arrays} <= set(result['list'])
     assert result['get'] == {'use_registration': True, 'frame_count': 42, 'needle_depth_mm': 37.5,
-                             'image_frame': 'ct'}
+                             'image_frame': 'ct', 'flags': [True, False, True], 'ids': [-2 ** 63, 7, 2 ** 63 - 1],
+                             'weights': [0.25, -1.5], 'key': [0, 17, 255], 'frames': ['ct', 'needle tip']}
+    assert result['types'][4:] == [6, 7, 8, 5, 9]  # rcl_interfaces ParameterType: bool[] integer[] double[] byte[] string[]
     assert result['set'][0]['successful'] is True
     assert result['set'][1]['successful'] is False
     assert result['get_after']['needle_depth_mm'] == 40.0

@@ -14,6 +14,7 @@ loop, so VTK and the scene are only touched on that one thread.
 from __future__ import annotations
 
 import asyncio
+import functools
 import logging
 import os
 import sys
@@ -27,6 +28,11 @@ from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
 SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
+# Frames are asked for no sooner than RENDER_SHARE times what the last ones took to render: on a
+# slow machine the views' frame rate drops, and the loop keeps most of its time for spinning, the
+# panels and the browser's calls (a new size of the view among them).
+RENDER_SHARE = 3.0
+JPEG_QUALITY = 80       # every frame (trame-rca's second, 'still' frame would double the renders)
 
 
 def _is_closed_connection(context: dict) -> bool:
@@ -49,11 +55,29 @@ class _ClosedConnectionFilter(logging.Filter):
             and 'Cannot write to closing transport' not in text
 
 
-# rcl_interfaces/msg/ParameterType ids and ParameterValue fields of the form's types.
-PARAMETER_TYPES = {'bool': (1, 'bool_value'), 'integer': (2, 'integer_value'), 'double': (3, 'double_value'),
-                   'string': (4, 'string_value'), 'byte[]': (5, 'byte_array_value'),
-                   'bool[]': (6, 'bool_array_value'), 'integer[]': (7, 'integer_array_value'),
-                   'double[]': (8, 'double_array_value'), 'string[]': (9, 'string_array_value')}
+@functools.cache
+def parameter_types() -> dict[str, tuple[int, str]]:
+    """The form's parameter types ('bool', ..., 'integer[]', ...) with their type id and their
+    rcl_interfaces/msg/ParameterValue field, from rcl_interfaces/msg/ParameterType's constants as
+    the generated message tables hold them (PARAMETER_INTEGER_ARRAY = 7 -> 'integer[]': (7,
+    'integer_array_value')): the app needs no ROS installation, only ros2vtk."""
+    import ros2vtk
+    constants, values = ros2vtk.vtkROS2Message(), ros2vtk.vtkROS2Message()
+    if not (constants.SetROSType('rcl_interfaces/msg/ParameterType')
+            and values.SetROSType('rcl_interfaces/msg/ParameterValue')):
+        raise RuntimeError('this build of ros2vtk has no rcl_interfaces messages')
+    types = {}
+    for index in range(constants.GetNumberOfConstants()):
+        name = constants.GetConstantName(index)  # PARAMETER_INTEGER_ARRAY
+        if name == 'PARAMETER_NOT_SET':
+            continue
+        base = name.removeprefix('PARAMETER_').lower()  # integer_array
+        field = base + '_value'
+        if not values.GetFieldType(field):
+            raise RuntimeError(f'rcl_interfaces/msg/ParameterValue has no field {field} for {name}')
+        types[base.removesuffix('_array') + '[]' if base.endswith('_array') else base] = \
+            (int(constants.GetConstant(name)), field)
+    return types
 
 
 def parse_parameter_value(kind: str, text: str):
@@ -67,7 +91,7 @@ def parse_parameter_value(kind: str, text: str):
         return float(text)
     if kind == 'string':
         return text
-    if kind not in PARAMETER_TYPES:
+    if kind not in parameter_types():
         raise ValueError(f'unknown parameter type {kind!r}')
     try:
         import yaml
@@ -171,7 +195,7 @@ class App:
         self.rates = scene_state.TopicRates()
         self.window, self.renderer = make_render_window()
         self.display = make_display(logic, self.renderer)
-        self.area = RenderWindowArea(self.window)
+        self.area = RenderWindowArea(self.window, frame_rate=1.0 / FRAME_SECONDS)
         self.view_handler = None
         # 2D panes of a volume (vtkROS2SliceView: needs the Display module): shown always
         # (slices=True), never (False), or while there is a volume to show ('auto').
@@ -212,7 +236,7 @@ class App:
             'remote_param_node': '/robot_state_publisher', 'remote_param_name': 'publish_frequency',
             'remote_param_type': 'double', 'remote_param_value': '20.0', 'remote_param_result': '',
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
-            'parameter_types': list(PARAMETER_TYPES),
+            'parameter_types': list(parameter_types()),
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
             'volume_file': '', 'slice_sources': [], 'slice_source': '',
             'slices_shown': self.slices is not None and self.slices_always,
@@ -428,13 +452,13 @@ class App:
         target, name, kind, text = s.remote_param_node.strip(), s.remote_param_name.strip(), s.remote_param_type, \
             s.remote_param_value
         try:
-            if not target or not name or kind not in PARAMETER_TYPES:
+            if not target or not name or kind not in parameter_types():
                 raise ValueError('a node, a name and a type are required')
             value = parse_parameter_value(kind, text)
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             return self._report(False, '', f'Set {target} {name} failed')
-        type_id, field = PARAMETER_TYPES[kind]
+        type_id, field = parameter_types()[kind]
         service = target.rstrip('/') + '/set_parameters'
         if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a set on {target} still waits for its answer\n')
@@ -617,7 +641,8 @@ class App:
 
     def _spin_once_and_show(self):
         """One spin, the display layer updated, a frame every FRAME_SECONDS, the slice panes (when
-        shown) every SLICE_SECONDS, the panels every REFRESH_SECONDS."""
+        shown) every SLICE_SECONDS (both less often when rendering is slow: RENDER_SHARE), the
+        panels every REFRESH_SECONDS."""
         self.logic.Spin()
         for callback in self.spin_callbacks:
             callback()
@@ -626,9 +651,10 @@ class App:
         if now >= self.next_frame:
             self._frame_once_loaded()
             self.render()
-            self.next_frame = now + FRAME_SECONDS
+            self.next_frame = now + max(FRAME_SECONDS, RENDER_SHARE * self.area.render_seconds)
         if self.slices is not None and now >= self.next_slices:
-            self.next_slices = now + SLICE_SECONDS
+            self.next_slices = now + max(SLICE_SECONDS, RENDER_SHARE * sum(
+                area.render_seconds for area in self.slices.areas.values()))
             if self.slices.update():
                 for handler in self.slice_handlers.values():
                     handler.schedule_render()
@@ -650,7 +676,8 @@ class App:
             self.errors = (self.errors + [f'spin: {error!r}'])[-20:]
 
     def _on_ready(self, **_):
-        self.view_handler = self.view_widget.create_view_handler(self.area, encoder='jpeg', target_fps=20)
+        self.view_handler = self.view_widget.create_view_handler(
+            self.area, encoder='jpeg', target_fps=20, interactive_quality=JPEG_QUALITY, still_quality=JPEG_QUALITY)
         if self.slices_always:
             self._stream_slice_panes()
         loop = asyncio.get_event_loop()
@@ -671,7 +698,8 @@ class App:
             return
         for orientation, widget in self.slice_widgets.items():
             self.slice_handlers[orientation] = widget.create_view_handler(
-                self.slices.areas[orientation], encoder='jpeg', target_fps=10)
+                self.slices.areas[orientation], encoder='jpeg', target_fps=10, interactive_quality=JPEG_QUALITY,
+                still_quality=JPEG_QUALITY)
 
     def release_windows(self):
         """Frees the render windows' X resources while their X server is still there (the app's

@@ -104,9 +104,16 @@ class ModelActors:
 
 
 class RenderWindowArea:
-    """trame-rca's remote controlled area over a plain vtkRenderWindow (no vtkWebCore)."""
+    """trame-rca's remote controlled area over a plain vtkRenderWindow (no vtkWebCore).
 
-    def __init__(self, render_window: vtk.vtkRenderWindow, style: vtk.vtkInteractorStyle | None = None):
+    `frame_rate`: the frames per second the window is rendered for, given to VTK as its desired
+    update rate, still or interacting: props that can trade quality for time (a volume's ray
+    caster, through vtkSmartVolumeMapper) keep each frame within it. Without it, Mesa's software
+    GL took 1-3 s per frame of a volume, and the app's one loop (its panels, the browser's size
+    of the view) waited behind each. `render_seconds`: what the last frame took."""
+
+    def __init__(self, render_window: vtk.vtkRenderWindow, style: vtk.vtkInteractorStyle | None = None,
+                 frame_rate: float = 10.0):
         self.window = render_window
         self.window.SetOffScreenRendering(1)
         self.interactor = vtk.vtkRenderWindowInteractor()
@@ -114,6 +121,11 @@ class RenderWindowArea:
         self.style = style or vtk.vtkInteractorStyleTrackballCamera()
         self.interactor.SetInteractorStyle(self.style)
         self.interactor.EnableRenderOff()  # frames are rendered when trame-rca asks for one
+        # The interactor's styles set the window's rate to one of these two when a drag starts and ends.
+        self.interactor.SetDesiredUpdateRate(frame_rate)
+        self.interactor.SetStillUpdateRate(frame_rate)
+        self.window.SetDesiredUpdateRate(frame_rate)
+        self.render_seconds = 0.0
         self.grab = vtk.vtkWindowToImageFilter()
         self.grab.SetInput(render_window)
         self.grab.ReadFrontBufferOff()
@@ -126,9 +138,11 @@ class RenderWindowArea:
         """(rows x cols x 3 uint8 array, cols, rows) of a fresh render, top row first."""
         for renderer in _renderers(self.window):
             renderer.ResetCameraClippingRange()  # moving robots: planes computed once would clip
+        started = time.monotonic()
         self.window.Render()
         self.grab.Modified()
         self.grab.Update()
+        self.render_seconds = time.monotonic() - started
         image = self.grab.GetOutput()
         cols, rows, _ = image.GetDimensions()
         scalars = image.GetPointData().GetScalars()

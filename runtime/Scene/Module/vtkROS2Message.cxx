@@ -189,6 +189,55 @@ std::string vtkROS2Message::GetFieldType(const char* path)
 }
 
 //------------------------------------------------------------------------------
+int vtkROS2Message::GetNumberOfConstants()
+{
+  if (!this->CheckType("GetNumberOfConstants"))
+  {
+    return -1;
+  }
+  this->Succeed();
+  return static_cast<int>(this->Type->constant_count);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2Message::GetConstantName(int index)
+{
+  if (!this->CheckType("GetConstantName"))
+  {
+    return std::string();
+  }
+  if (index < 0 || index >= static_cast<int>(this->Type->constant_count))
+  {
+    this->Fail("GetConstantName: index " + std::to_string(index) + " out of range (" +
+      std::to_string(this->Type->constant_count) + " constants in " + this->Type->ros_type + ")");
+    return std::string();
+  }
+  this->Succeed();
+  return this->Type->constants[index].name;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkROS2Message::GetConstant(const char* name)
+{
+  if (!this->CheckType("GetConstant"))
+  {
+    return std::string();
+  }
+  const std::string wanted = SafePath(name);
+  for (uint32_t i = 0; i < this->Type->constant_count; ++i)
+  {
+    if (wanted == this->Type->constants[i].name)
+    {
+      this->Succeed();
+      return this->Type->constants[i].value;
+    }
+  }
+  this->Fail("GetConstant: " + std::string(this->Type->ros_type) + " has no constant '" + wanted +
+    "'" + (this->Type->constant_count ? "" : " (it declares none)"));
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
 bool vtkROS2Message::IsMessageField(const char* path)
 {
   ros2vtk::scene::FieldDescription description;

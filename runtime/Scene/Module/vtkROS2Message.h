@@ -52,6 +52,14 @@ public:
   bool IsMessageField(const char* path);
   bool IsArrayField(const char* path);
 
+  /// The type's constants as its .msg file declares them (rcl_interfaces/msg/ParameterType:
+  /// PARAMETER_NOT_SET = 0, PARAMETER_BOOL = 1, ...), in the file's order: how many, the name of
+  /// one, and one's value as text (numbers as written, strings unquoted). An unknown name gives
+  /// "" and an error. Types learnt at run time have none (type descriptions carry no constants).
+  int GetNumberOfConstants();
+  std::string GetConstantName(int index);
+  std::string GetConstant(const char* name);
+
   /// One value as text (numbers exact, bools true/false, a nested message as YAML), or set from
   /// text. Errors name the path and the reason; a failed set changes nothing.
   std::string GetField(const char* path);

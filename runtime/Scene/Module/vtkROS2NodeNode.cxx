@@ -978,16 +978,6 @@ bool WholeNumber(vtkDataArray* values, vtkIdType i, double low, double high, int
 } // namespace
 
 namespace {
-template<typename T>
-bool SetOwnArrayParameter(ros2vtk::wire::ParameterServer* server, const char* name, uint8_t type,
-  std::vector<T> ros2vtk::rcl_interfaces::msg::ParameterValue::*field, const std::vector<T>& values,
-  std::string* error)
-{
-  return SetOwnParameter(
-    server, name, type, [&](ros2vtk::rcl_interfaces::msg::ParameterValue& v) { v.*field = values; },
-    error);
-}
-
 bool AnyNumber(vtkDataArray* a, vtkIdType i, double* out)
 {
   *out = a->GetTuple1(i);
@@ -1012,80 +1002,82 @@ bool Byte(vtkDataArray* a, vtkIdType i, uint8_t* out)
   *out = static_cast<uint8_t>(whole);
   return true;
 }
-} // namespace
+
+/// Reads the elements of a one-component vtkDataArray as T, each checked by `convert`.
+template<typename T, typename Convert>
+auto NumericElements(const char* kind, Convert convert)
+{
+  return [kind, convert](vtkDataArray* values, std::vector<T>* out, std::string* error) {
+    return ArrayElements<T>(values, kind, convert, out, error);
+  };
+}
+
+bool StringElements(vtkStringArray* values, std::vector<std::string>* out, std::string* error)
+{
+  if (!values)
+  {
+    *error = "a string array is required";
+    return false;
+  }
+  out->clear();
+  for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+  {
+    out->push_back(values->GetValue(i));
+  }
+  return true;
+}
 
 using ros2vtk::rcl_interfaces::msg::ParameterType;
 using ros2vtk::rcl_interfaces::msg::ParameterValue;
 
-bool vtkROS2NodeNode::SetParameterAsBoolArray(const char* name, vtkDataArray* values)
+/// The array setters (SetParameterAs*Array) in one: the elements `read` from `values` become
+/// the ParameterValue's `field` of `type`; a refusal is reported on `self` (vtkErrorMacro's text).
+template<typename T, typename Values, typename Read>
+bool SetArrayParameter(vtkObject* self, ros2vtk::wire::ParameterServer* server, const char* name,
+  uint8_t type, std::vector<T> ParameterValue::*field, Values* values, Read read)
 {
-  std::vector<bool> elements;
+  std::vector<T> elements;
   std::string error;
-  if (!ArrayElements<bool>(values, "bool", NonZero, &elements, &error) ||
-    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
-      ParameterType::PARAMETER_BOOL_ARRAY, &ParameterValue::bool_array_value, elements, &error))
+  if (!read(values, &elements, &error) ||
+    !SetOwnParameter(
+      server, name, type, [&](ParameterValue& value) { value.*field = elements; }, &error))
   {
-    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
+    vtkErrorWithObjectMacro(self, "SetParameter '" << (name ? name : "") << "': " << error);
     return false;
   }
   return true;
+}
+} // namespace
+
+bool vtkROS2NodeNode::SetParameterAsBoolArray(const char* name, vtkDataArray* values)
+{
+  return SetArrayParameter(this, this->Internals->Parameters.get(), name,
+    ParameterType::PARAMETER_BOOL_ARRAY, &ParameterValue::bool_array_value, values,
+    NumericElements<bool>("bool", NonZero));
 }
 bool vtkROS2NodeNode::SetParameterAsIntegerArray(const char* name, vtkDataArray* values)
 {
-  std::vector<int64_t> elements;
-  std::string error;
-  if (!ArrayElements<int64_t>(values, "64-bit whole number", Int64, &elements, &error) ||
-    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
-      ParameterType::PARAMETER_INTEGER_ARRAY, &ParameterValue::integer_array_value, elements,
-      &error))
-  {
-    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
-    return false;
-  }
-  return true;
+  return SetArrayParameter(this, this->Internals->Parameters.get(), name,
+    ParameterType::PARAMETER_INTEGER_ARRAY, &ParameterValue::integer_array_value, values,
+    NumericElements<int64_t>("64-bit whole number", Int64));
 }
 bool vtkROS2NodeNode::SetParameterAsDoubleArray(const char* name, vtkDataArray* values)
 {
-  std::vector<double> elements;
-  std::string error;
-  if (!ArrayElements<double>(values, "number", AnyNumber, &elements, &error) ||
-    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
-      ParameterType::PARAMETER_DOUBLE_ARRAY, &ParameterValue::double_array_value, elements, &error))
-  {
-    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
-    return false;
-  }
-  return true;
+  return SetArrayParameter(this, this->Internals->Parameters.get(), name,
+    ParameterType::PARAMETER_DOUBLE_ARRAY, &ParameterValue::double_array_value, values,
+    NumericElements<double>("number", AnyNumber));
 }
 bool vtkROS2NodeNode::SetParameterAsByteArray(const char* name, vtkDataArray* values)
 {
-  std::vector<uint8_t> elements;
-  std::string error;
-  if (!ArrayElements<uint8_t>(values, "byte (0..255)", Byte, &elements, &error) ||
-    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
-      ParameterType::PARAMETER_BYTE_ARRAY, &ParameterValue::byte_array_value, elements, &error))
-  {
-    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
-    return false;
-  }
-  return true;
+  return SetArrayParameter(this, this->Internals->Parameters.get(), name,
+    ParameterType::PARAMETER_BYTE_ARRAY, &ParameterValue::byte_array_value, values,
+    NumericElements<uint8_t>("byte (0..255)", Byte));
 }
 bool vtkROS2NodeNode::SetParameterAsStringArray(const char* name, vtkStringArray* values)
 {
-  std::vector<std::string> elements;
-  for (vtkIdType i = 0; values && i < values->GetNumberOfValues(); ++i)
-  {
-    elements.push_back(values->GetValue(i));
-  }
-  std::string error = "a string array is required";
-  if (!values ||
-    !SetOwnArrayParameter(this->Internals->Parameters.get(), name,
-      ParameterType::PARAMETER_STRING_ARRAY, &ParameterValue::string_array_value, elements, &error))
-  {
-    vtkErrorMacro("SetParameter '" << (name ? name : "") << "': " << error);
-    return false;
-  }
-  return true;
+  return SetArrayParameter(this, this->Internals->Parameters.get(), name,
+    ParameterType::PARAMETER_STRING_ARRAY, &ParameterValue::string_array_value, values,
+    StringElements);
 }
 #undef ROS2VTK_SET_OWN_PARAMETER
 
