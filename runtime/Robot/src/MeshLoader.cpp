@@ -40,7 +40,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <set>
 #include <sstream>
 
 namespace ros2vtk {
@@ -103,9 +102,10 @@ vtkSmartPointer<vtkUnsignedCharArray> make_color_array(vtkIdType points)
 void fill_color(
   vtkUnsignedCharArray* colors, vtkIdType from, vtkIdType to, const std::array<double, 4>& rgba)
 {
+  const unsigned char bytes[4] = { to_byte(rgba[0]), to_byte(rgba[1]), to_byte(rgba[2]),
+    to_byte(rgba[3]) };
   for (vtkIdType i = from; i < to; ++i)
-    for (int c = 0; c < 4; ++c)
-      colors->SetTypedComponent(i, c, to_byte(rgba[static_cast<size_t>(c)]));
+    colors->SetTypedTuple(i, bytes);
 }
 
 // Triangles only, no stray vertices or lines: what the scene renders and the tests measure.
@@ -342,21 +342,27 @@ bool load_with_assimp(const std::string& path, MeshData* mesh, std::string* erro
   polydata->SetPoints(collector.points);
   polydata->SetPolys(collector.triangles);
   const auto& colors = collector.point_colors;
-  std::set<std::array<double, 4>> distinct(colors.begin(), colors.end());
+  const bool one_color = !colors.empty() &&
+    std::all_of(colors.begin(), colors.end(), [&](const auto& c) { return c == colors.front(); });
   const bool all_colored = std::all_of(
     collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
   const bool any_colored = std::any_of(
     collector.point_colored.begin(), collector.point_colored.end(), [](bool b) { return b; });
-  if (any_colored && all_colored && distinct.size() == 1)
+  if (any_colored && all_colored && one_color)
   {
     mesh->has_color = true;
-    mesh->color = *distinct.begin();
+    mesh->color = colors.front();
   }
   else if (any_colored)
   {
     auto array = make_color_array(static_cast<vtkIdType>(colors.size()));
-    for (size_t i = 0; i < colors.size(); ++i)
-      fill_color(array, static_cast<vtkIdType>(i), static_cast<vtkIdType>(i + 1), colors[i]);
+    // Points come in runs of one colour (a mesh's material): one conversion per run.
+    for (size_t run = 0, i = 1; run < colors.size(); run = i++)
+    {
+      while (i < colors.size() && colors[i] == colors[run])
+        ++i;
+      fill_color(array, static_cast<vtkIdType>(run), static_cast<vtkIdType>(i), colors[run]);
+    }
     polydata->GetPointData()->AddArray(array);
     mesh->has_vertex_colors = true;
   }
