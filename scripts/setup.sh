@@ -138,4 +138,6 @@ make_venv "$JAZZY_VENV"
 install_wheels "$JAZZY_VENV" "$ROOT/scripts/requirements-jazzy.txt" \
   'rclpy, std_msgs.msg, geometry_msgs.msg, sensor_msgs.msg, rcl_interfaces.msg, rmw_dds_common.msg'
 install_wheels "$VENV" "$ROOT/scripts/requirements-test.txt" 'pyigtl, IPython'  # the 3D Slicer stand-in; the IPython prompt
+# The interop tests' own imports (pyigtl) for the Jazzy peers too: scripts/test-jazzy.sh runs them all.
+install_wheels "$JAZZY_VENV" "$ROOT/scripts/requirements-test.txt" 'pyigtl, IPython'
 log "done: venv python is $VENV/bin/python (Jazzy peers: $JAZZY_VENV/bin/python)"
