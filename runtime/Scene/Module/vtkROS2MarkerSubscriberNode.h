@@ -42,6 +42,7 @@ public:
   /// dropped, its status saying so. "" (the default): the scene's fixed frame
   /// (vtkROS2Scene::SetFixedFrame) is used; when that is "" too, frames are ignored and every
   /// marker is drawn at its own pose in this node's frame. Saved with the scene when set.
+  /// Ignored (markers always at their own pose) when the node's mapping rule maps no frame_id.
   void SetFixedFrame(const char* frame);
   const char* GetFixedFrame() const;
   /// The frame markers are placed in now: this node's fixed frame, else the scene's ("" none).
