@@ -130,6 +130,9 @@ def rule_view(rule: Rule, table: Dict[str, Message]) -> dict:
         "state_header": "",
         "state_expires": False,
         "state_frames": False,
+        "state_node_class": "",
+        # Marker-like kinds read a message's markers in one generated function (ROS2ToMarkers).
+        "to_markers": False,
     }
     if kind.view:
         view.update(kind.view(rule, table))

@@ -235,6 +235,54 @@ TEST(MarkerSet, MarkersArePlacedAtTheirFramesPoseInTheFixedFrame)
   EXPECT_NEAR(MarkerCentre(drawn, 0)[0], 200.0, 1e-6);
 }
 
+TEST(MarkerSet, ActionsAreAppliedInOrderAndMarkersOlderThanTheTfHistoryAreDropped)
+{
+  Marker cube;
+  cube.shape = MarkerShape::Cube;
+  cube.scale[0] = cube.scale[1] = cube.scale[2] = 0.1;
+  cube.frame_id = "f";
+  Marker a = cube, b = cube, old = cube, unknown = cube, gone = cube, all = cube, last = cube;
+  a.ns = b.ns = old.ns = unknown.ns = gone.ns = "s";
+  a.id = 1, b.id = 2, old.id = 3, unknown.id = 4, gone.id = 1;
+  old.stamp_nanoseconds = 1; // before the lookup's history
+  unknown.action = MarkerAction::Unknown;
+  unknown.action_value = 9;
+  gone.action = MarkerAction::Delete;
+  all.action = MarkerAction::DeleteAll;
+  last.ns = "t";
+  MarkerSet kept;
+  std::string error;
+  // The first reason is given; the rest is still applied.
+  EXPECT_FALSE(kept.apply({ a, b, old, unknown, gone }, &error));
+  EXPECT_EQ(error, "marker (ns 's', id 4): unknown action 9");
+  EXPECT_TRUE(!kept.contains("s", 1) && kept.contains("s", 2) && kept.contains("s", 3));
+  const FrameLookup lookup = [](const std::string&, int64_t stamp, FramePose* pose,
+                               std::string* reason) {
+    if (stamp != 1)
+    {
+      return true;
+    }
+    *reason = "Lookup would require extrapolation into the past";
+    pose->older_than_history = true;
+    return false;
+  };
+  EXPECT_TRUE(kept.locate(lookup, "world", false));
+  EXPECT_FALSE(kept.contains("s", 3)); // dropped, not retried
+  EXPECT_EQ(kept.status(),
+    "marker (ns 's', id 3): dropped: its stamp is older than the tf history (No transform from "
+    "[f] to [world]: Lookup would require extrapolation into the past); RViz's tf filter drops "
+    "it too");
+  // Added again with a stamp the history holds: drawn, the status forgotten.
+  old.stamp_nanoseconds = 0;
+  EXPECT_TRUE(kept.apply({ old }, &error)) << error;
+  kept.locate(lookup, "world", false);
+  EXPECT_TRUE(kept.contains("s", 3));
+  EXPECT_EQ(kept.status(), "");
+  EXPECT_TRUE(kept.apply({ all, last }, &error)) << error; // DELETEALL, then one more
+  EXPECT_EQ(kept.size(), 1u);
+  EXPECT_TRUE(kept.contains("t", 0));
+}
+
 TEST(MarkerSet, TextMarkersBecomeLabelsBesideTheShapes)
 {
   MarkerSet kept;

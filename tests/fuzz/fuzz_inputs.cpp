@@ -186,7 +186,7 @@ bool read_description(const std::string& input, ros2vtk::wire::TypeDescriptionDa
       }
       else
       {
-        description.referenced.push_back({ rest, {} });
+        description.referenced.push_back({ rest, {}, {} });
         current = &description.referenced.back();
       }
     }
@@ -260,6 +260,21 @@ bool type_description(const std::string& input)
   return true;
 }
 
+/// The constants of a .msg text (a learnt type's type_source): read or refused with a reason.
+bool msg_constants(const std::string& input)
+{
+  std::vector<ros2vtk::wire::DescriptionConstant> constants;
+  std::string error;
+  if (!ros2vtk::wire::parse_msg_constants(input, &constants, &error))
+  {
+    require(!error.empty(), "refused constants have a reason");
+    return false;
+  }
+  for (const auto& constant : constants)
+    require(!constant.name.empty(), "a constant has a name");
+  return true;
+}
+
 std::map<std::string, FuzzTarget> targets()
 {
   std::map<std::string, FuzzTarget> all;
@@ -303,6 +318,10 @@ std::map<std::string, FuzzTarget> targets()
       "F q 145 0 0 -\n", "F b 97 3 8 -\n", "T test_msgs/msg/BasicTypes\n", " 4294967295 ", " 255 ",
       "P 00010000ffffffff\n" },
     type_description });
+  add({ "msg_constants",
+    { "uint8 A=1\n", "string S='#x'\n", "float32 F=1e38\n", "int64 N=-0x8000000000000000\n",
+      "bool B=True\n", " = ", "<=", "#", "\"", "\\", "[", "string<=3 S=abcd\n" },
+    msg_constants });
   return all;
 }
 

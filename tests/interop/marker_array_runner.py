@@ -5,11 +5,12 @@ GetLastMessage() draws (markers kept, points, each marker's colour, bounds in mm
 {"ready": true}, then one JSON object with the snapshots once COUNT messages arrived (or S seconds)
 and, with --linger L, what it draws after L more seconds of spins without messages ("after").
 --type Marker subscribes a plain Marker topic instead; --fixed-frame F sets the subscriber's fixed
-frame (markers placed by tf); --drawn N then waits, after COUNT messages, until N markers are
+frame (markers placed by tf), --scene-fixed-frame F the scene's (vtkROS2Scene::SetFixedFrame, used
+by a subscriber without its own); --drawn N then waits, after COUNT messages, until N markers are
 drawn and prints {"drawn": snapshot} before lingering (the test moves a frame meanwhile).
 
     marker_array_runner.py TOPIC [--count N] [--seconds S] [--linger L] [--type T]
-                           [--fixed-frame F] [--drawn N]
+                           [--fixed-frame F] [--scene-fixed-frame F] [--drawn N]
 
 With --drawn, --linger L ends as soon as a marker moved.
 """
@@ -74,6 +75,7 @@ def main() -> int:
     parser.add_argument('--linger', type=float, default=0.0)
     parser.add_argument('--type', default='MarkerArray')
     parser.add_argument('--fixed-frame', default='')
+    parser.add_argument('--scene-fixed-frame', default='')
     parser.add_argument('--drawn', type=int, default=-1)
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
@@ -81,6 +83,8 @@ def main() -> int:
     sub = node.CreateAndAddSubscriberNode(args.type, args.topic)
     if args.fixed_frame:
         sub.SetFixedFrame(args.fixed_frame)
+    if args.scene_fixed_frame:
+        logic.GetScene().SetFixedFrame(args.scene_fixed_frame)
     print(json.dumps({'ready': True, 'class': sub.GetClassName()}), flush=True)
     snapshots = []
     end = time.monotonic() + args.seconds

@@ -10,10 +10,11 @@ The type is service_msgs/msg/ServiceEventInfo: a Kilted wheel ships it, msg_spec
 from __future__ import annotations
 
 import json
+import subprocess
 import textwrap
 from pathlib import Path
 
-from conftest import BUILD, REPO, VENV_PYTHON
+from conftest import BUILD, HERE, REPO, VENV_PYTHON
 
 ROS_TYPE = 'service_msgs/msg/ServiceEventInfo'
 TOPIC = '/runtime_type'
@@ -68,6 +69,11 @@ OURS = textwrap.dedent('''
                             'nanosec': last.stamp.nanosec, 'gid': list(last.client_gid),
                             'sequence_number': last.sequence_number,
                             'names': list(last.field_names())}
+        # Constants of the learnt type: from the .msg source the publisher sent (type_sources).
+        m = ros2vtk.vtkROS2Message()
+        assert m.SetROSType(sys.argv[1]), m.GetLastError()
+        result['constants'] = [[m.GetConstantName(i), m.GetConstant(m.GetConstantName(i))]
+                               for i in range(m.GetNumberOfConstants())]
     print(json.dumps(result), flush=True)
 ''')
 
@@ -111,6 +117,13 @@ def test_yaml_subscriber_learns_an_unshipped_type_from_the_rclpy_publisher(ros):
     assert result['fields'] == {'event_type': 2, 'sec': 1234, 'nanosec': 56789, 'gid': gid,
                                 'sequence_number': -9000000000123,
                                 'names': ['event_type', 'stamp', 'client_gid', 'sequence_number']}
+    # Its constants (REQUEST_SENT, ...: uint8) as rclpy's class holds them, by name, order, value.
+    theirs = subprocess.run([str(VENV_PYTHON), str(HERE / 'message_peer.py'), 'constants', ROS_TYPE],
+                            capture_output=True, text=True, timeout=60, env=ros.env)
+    assert theirs.returncode == 0, theirs.stderr
+    expected = json.loads(theirs.stdout.splitlines()[-1])['constants']
+    assert expected, 'rclpy has no constants for the type: the check would prove nothing'
+    assert result['constants'] == [[name, str(value)] for name, value in expected], result['constants']
 
 
 def test_a_publisher_without_type_descriptions_gets_a_clear_status(ros):

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import subprocess
 
 import pytest
 
-from conftest import BUILD, HERE, VENV_PYTHON
+from conftest import BUILD, HERE, VENV_PYTHON, tf2_msgs_env
 
 # A venv made before scripts/requirements-jazzy.txt pinned ros-jazzy-visualization-msgs has no
 # MarkerArray for the peer: skipped there (rerun scripts/setup.sh), never failed.
@@ -202,3 +203,32 @@ def test_rclpy_markers_in_their_own_frames_kept_by_ns_and_id(ros):
     assert after['count'] == 7 and after['markers'] == 3, after
     for got, want in zip(after['centres'], [[100, 0, 0], [0, 120, 0], [-60, 50, 0]]):
         close(got, want, tol=0.5)
+
+
+def test_rclpy_stamped_tf_history_places_markers_at_their_stamps_in_the_scenes_fixed_frame(ros):
+    """One rclpy node broadcasts a tf history (world -> fs at base time B: x 0.1 m, at B + 1 s: x
+    0.3 m) and a MarkerArray of three cubes at fs's origin (marker_stamps_peer.py): red stamped B,
+    green stamped B + 1 s, blue stamped B - 5 s. Our MarkerArray subscriber has no fixed frame of
+    its own; the scene's is 'world'. Each cube is looked up at its own stamp: red at x 100 mm,
+    green at x 300 mm (not the latest transform for both); blue is older than the tf history, so
+    it is dropped (as RViz's tf filter drops it) and the status says so."""
+    topic = '/scene_in/marker_stamps'
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
+                      '--scene-fixed-frame', 'world', '--drawn', '2', '--seconds', '25'],
+                     dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    env = dict(ros.env)
+    for key, value in tf2_msgs_env().items():  # the peer imports tf2_msgs
+        env[key] = os.pathsep.join(filter(None, [value, env.get(key)]))
+    peer = ros.start([str(VENV_PYTHON), str(HERE / 'marker_stamps_peer.py'), topic, '--seconds', '30'], env)
+    line = ours.stdout.readline()
+    assert line, ours.stderr.read() if ours.poll() is not None else 'no output'
+    drawn = json.loads(line)['drawn']
+    ros.stop(ours)
+    ros.stop(peer)
+    assert drawn['markers'] == 2 and drawn['colors'] == [RED, [0, 255, 0, 255]], drawn
+    for got, want in zip(drawn['centres'], [[100, 0, 0], [300, 0, 0]]):
+        close(got, want, tol=0.5)
+    status = drawn['frame_status']
+    assert status.startswith("marker (ns 's', id 3): dropped: its stamp is older than the tf history"), drawn
+    assert 'No transform from [fs] to [world]' in status and 'extrapolation into the past' in status, drawn

@@ -701,3 +701,32 @@ TEST(DynamicType, HostileSequenceCountsAreRefusedBeforeAllocating)
       << error;
   }
 }
+
+TEST(DynamicType, MalformedConstantLinesOfASourceAreRefusedWithTheLine)
+{
+  // Constants of learnt types come from the peer's .msg text (type_sources): lines that are not
+  // constants (fields, defaults holding '=', comments) are skipped, bad constants refused.
+  std::vector<wire::DescriptionConstant> constants;
+  std::string error;
+  EXPECT_TRUE(wire::parse_msg_constants(
+    "# A=1 in a comment\nstring s \"a=b\"\nint32 x 5\nuint8 A=0x10 # hex\n", &constants, &error))
+    << error;
+  ASSERT_EQ(constants.size(), 1u);
+  EXPECT_EQ(constants[0].name, "A");
+  EXPECT_EQ(constants[0].value, "16");
+  const std::pair<const char*, const char*> bad[] = {
+    { "uint8 A=256", "line 1: constant 'A': 256 is out of range for uint8" },
+    { "\nint32[] A=[1]",
+      "line 2: constant 'A' must have a primitive, non-array type, not int32[]" },
+    { "float64 lower=1.0", "line 1: constant 'lower': not an UPPER_CASE name" },
+    { "bool B=yes", "line 1: constant 'B': 'yes' is not a bool" },
+    { "float32 F=1e39", "line 1: constant 'F': '1e39' is not a finite float32" },
+    { "int8 N=", "line 1: constant 'N': no value" },
+  };
+  for (const auto& [text, reason] : bad)
+  {
+    constants.clear();
+    EXPECT_FALSE(wire::parse_msg_constants(text, &constants, &error)) << text;
+    EXPECT_EQ(error, reason) << text;
+  }
+}

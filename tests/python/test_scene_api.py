@@ -384,3 +384,26 @@ def ros2vtk_generic_subscriber(logic):
     sub = ros2vtk.vtkROS2SubscriberGenericNode()
     logic.GetScene().AddNode(sub)
     return sub
+
+
+def test_the_scenes_fixed_frame_is_saved_only_when_set_and_used_by_marker_subscribers(logic):
+    """vtkROS2Scene::SetFixedFrame (RViz's global Fixed Frame): written as the root's fixedFrame
+    only when set (files of earlier versions stay byte-identical), read back from a file, and the
+    frame a marker subscriber without its own fixed frame places its markers in."""
+    import ros2vtk
+    scene = logic.GetScene()
+    sub = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('MarkerArray', '/py_fixed_frame_markers')
+    assert scene.GetFixedFrame() == '' and 'fixedFrame' not in scene.WriteToXMLString()
+    assert sub.GetEffectiveFixedFrame() == ''
+    scene.SetFixedFrame('map')
+    assert sub.GetFixedFrame() == '' and sub.GetEffectiveFixedFrame() == 'map'
+    xml = scene.WriteToXMLString()
+    assert xml.count('fixedFrame="map"') == 1, xml  # the scene's; the subscriber has none of its own
+    sub.SetFixedFrame('odom')  # its own wins
+    assert sub.GetEffectiveFixedFrame() == 'odom'
+    xml = scene.WriteToXMLString()
+    restored = ros2vtk.vtkROS2Scene()
+    assert restored.ReadFromXMLString(xml)
+    assert restored.GetFixedFrame() == 'map'
+    scene.SetFixedFrame('')
+    assert 'fixedFrame="map"' not in scene.WriteToXMLString()

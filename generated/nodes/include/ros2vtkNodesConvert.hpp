@@ -48,6 +48,7 @@
 #include "ros2vtk/convert/Marker.hpp" // the state a subscriber folds messages into
 
 #include <string>
+#include <vector>
 
 class vtkDataArray;
 class vtkDoubleArray;
@@ -276,6 +277,9 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
 // Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker, visualization_msgs.toml; lengths: position, scale, points).
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+/// Appends the markers of `message` (its fields as ros2vtk::convert::Marker, in order).
+void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::Marker& message,
+  std::vector<::ros2vtk::convert::Marker>* markers);
 /// Folds `message` into `state` (what a display keeps across messages); false with the first
 /// reason when a part of it could not be applied (the rest is applied).
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, ::ros2vtk::convert::MarkerSet& state,
@@ -286,6 +290,9 @@ bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& 
 // MarkerArray: visualization_msgs/msg/MarkerArray <-> vtkPolyData (kind marker_array, visualization_msgs.toml; lengths: position, scale, points).
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, vtkPolyData* object,
   double lengthScale = ::ros2vtk::convert::kMillimetresPerMetre, std::string* error = nullptr);
+/// Appends the markers of `message` (its fields as ros2vtk::convert::Marker, in order).
+void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message,
+  std::vector<::ros2vtk::convert::Marker>* markers);
 /// Folds `message` into `state` (what a display keeps across messages); false with the first
 /// reason when a part of it could not be applied (the rest is applied).
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, ::ros2vtk::convert::MarkerSet& state,

@@ -1082,32 +1082,29 @@ bool VTKToROS2(vtkTable* object, ::ros2vtk::std_msgs::msg::Float64MultiArray& me
 
 //------------------------------------------------------------------------------
 // Marker: visualization_msgs/msg/Marker <-> vtkPolyData (kind marker)
-bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, ::ros2vtk::convert::MarkerSet& state, std::string* error)
+void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::Marker& message, std::vector<::ros2vtk::convert::Marker>* markers)
 {
-  bool ok = true;
-  do // once: `continue` ends the one message's action as it ends an element's in a MarkerArray
-  {
-    if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::DELETEALL)
+  markers->emplace_back();
+  ::ros2vtk::convert::Marker& marker = markers->back();
+    marker.ns = message.ns;
+    marker.id = message.id;
+    marker.action_value = message.action;
+    if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::ADD || message.action == ::ros2vtk::visualization_msgs::msg::Marker::MODIFY)
     {
-      state.clear();
-      continue;
+      marker.action = ::ros2vtk::convert::MarkerAction::Add;
     }
-    if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::DELETE)
+    else if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::DELETE)
     {
-      state.remove(message.ns, message.id);
-      continue;
+      marker.action = ::ros2vtk::convert::MarkerAction::Delete;
     }
-    if (message.action != ::ros2vtk::visualization_msgs::msg::Marker::ADD && message.action != ::ros2vtk::visualization_msgs::msg::Marker::MODIFY)
+    else if (message.action == ::ros2vtk::visualization_msgs::msg::Marker::DELETEALL)
     {
-      if (ok && error)
-      {
-        *error = "marker (ns '" + message.ns + "', id " + std::to_string(message.id) +
-          "): unknown action " + std::to_string(message.action);
-      }
-      ok = false;
-      continue;
+      marker.action = ::ros2vtk::convert::MarkerAction::DeleteAll;
     }
-    ::ros2vtk::convert::Marker marker;
+    else
+    {
+      marker.action = ::ros2vtk::convert::MarkerAction::Unknown;
+    }
     switch (message.type)
     {
       case ::ros2vtk::visualization_msgs::msg::Marker::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
@@ -1151,63 +1148,21 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, ::ros2
     marker.frame_id = message.header.frame_id;
     marker.stamp_nanoseconds = int64_t{message.header.stamp.sec} * 1000000000 + message.header.stamp.nanosec;
     marker.frame_locked = message.frame_locked;
-    std::string reason;
-    if (!state.add(message.ns, message.id, marker, &reason))
-    {
-      if (ok && error)
-      {
-        *error = reason;
-      }
-      ok = false;
-    }
-  } while (false);
-  return ok;
+}
+
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, ::ros2vtk::convert::MarkerSet& state, std::string* error)
+{
+  std::vector<::ros2vtk::convert::Marker> markers;
+  ROS2ToMarkers(message, &markers);
+  return state.apply(markers, error);
 }
 
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::Marker& message, vtkPolyData* object,
   double lengthScale, std::string* error)
 {
-  ::ros2vtk::convert::Marker marker;
-  switch (message.type)
-  {
-    case ::ros2vtk::visualization_msgs::msg::Marker::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::CUBE: marker.shape = ::ros2vtk::convert::MarkerShape::Cube; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE: marker.shape = ::ros2vtk::convert::MarkerShape::Sphere; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::CYLINDER: marker.shape = ::ros2vtk::convert::MarkerShape::Cylinder; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::LINE_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::LineStrip; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::LINE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::LineList; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::CUBE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::CubeList; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::SPHERE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::SphereList; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
-    case ::ros2vtk::visualization_msgs::msg::Marker::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
-    default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
-  }
-  marker.position[0] = message.pose.position.x;
-  marker.position[1] = message.pose.position.y;
-  marker.position[2] = message.pose.position.z;
-  marker.orientation[0] = message.pose.orientation.x;
-  marker.orientation[1] = message.pose.orientation.y;
-  marker.orientation[2] = message.pose.orientation.z;
-  marker.orientation[3] = message.pose.orientation.w;
-  marker.scale[0] = message.scale.x;
-  marker.scale[1] = message.scale.y;
-  marker.scale[2] = message.scale.z;
-  marker.color[0] = message.color.r;
-  marker.color[1] = message.color.g;
-  marker.color[2] = message.color.b;
-  marker.color[3] = message.color.a;
-  marker.points.reserve(3 * message.points.size());
-  for (const auto& point : message.points)
-  {
-    marker.points.push_back(point.x);
-    marker.points.push_back(point.y);
-    marker.points.push_back(point.z);
-  }
-  marker.text = message.text;
-  marker.mesh_resource = message.mesh_resource;
-  marker.mesh_use_embedded_materials = message.mesh_use_embedded_materials;
-  return ::ros2vtk::convert::marker_to_poly_data(marker, lengthScale, object, error);
+  std::vector<::ros2vtk::convert::Marker> markers;
+  ROS2ToMarkers(message, &markers);
+  return ::ros2vtk::convert::marker_to_poly_data(markers.front(), lengthScale, object, error);
 }
 
 bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& message,
@@ -1245,33 +1200,33 @@ bool VTKToROS2(vtkPolyData* object, ::ros2vtk::visualization_msgs::msg::Marker& 
 
 //------------------------------------------------------------------------------
 // MarkerArray: visualization_msgs/msg/MarkerArray <-> vtkPolyData (kind marker_array)
-bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, ::ros2vtk::convert::MarkerSet& state, std::string* error)
+void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, std::vector<::ros2vtk::convert::Marker>* markers)
 {
-  bool ok = true;
+  markers->reserve(markers->size() + message.markers.size());
   for (const auto& element : message.markers)
   {
     using Element = std::decay_t<decltype(element)>;
-    if (element.action == Element::DELETEALL)
+    markers->emplace_back();
+    ::ros2vtk::convert::Marker& marker = markers->back();
+    marker.ns = element.ns;
+    marker.id = element.id;
+    marker.action_value = element.action;
+    if (element.action == Element::ADD || element.action == Element::MODIFY)
     {
-      state.clear();
-      continue;
+      marker.action = ::ros2vtk::convert::MarkerAction::Add;
     }
-    if (element.action == Element::DELETE)
+    else if (element.action == Element::DELETE)
     {
-      state.remove(element.ns, element.id);
-      continue;
+      marker.action = ::ros2vtk::convert::MarkerAction::Delete;
     }
-    if (element.action != Element::ADD && element.action != Element::MODIFY)
+    else if (element.action == Element::DELETEALL)
     {
-      if (ok && error)
-      {
-        *error = "marker (ns '" + element.ns + "', id " + std::to_string(element.id) +
-          "): unknown action " + std::to_string(element.action);
-      }
-      ok = false;
-      continue;
+      marker.action = ::ros2vtk::convert::MarkerAction::DeleteAll;
     }
-    ::ros2vtk::convert::Marker marker;
+    else
+    {
+      marker.action = ::ros2vtk::convert::MarkerAction::Unknown;
+    }
     switch (element.type)
     {
       case Element::ARROW: marker.shape = ::ros2vtk::convert::MarkerShape::Arrow; break;
@@ -1315,23 +1270,20 @@ bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, :
     marker.frame_id = element.header.frame_id;
     marker.stamp_nanoseconds = int64_t{element.header.stamp.sec} * 1000000000 + element.header.stamp.nanosec;
     marker.frame_locked = element.frame_locked;
-    std::string reason;
-    if (!state.add(element.ns, element.id, marker, &reason))
-    {
-      if (ok && error)
-      {
-        *error = reason;
-      }
-      ok = false;
-    }
   }
-  return ok;
+}
+
+bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, ::ros2vtk::convert::MarkerSet& state, std::string* error)
+{
+  std::vector<::ros2vtk::convert::Marker> markers;
+  ROS2ToMarkers(message, &markers);
+  return state.apply(markers, error);
 }
 
 bool ROS2ToVTK(const ::ros2vtk::visualization_msgs::msg::MarkerArray& message, vtkPolyData* object,
   double lengthScale, std::string* error)
 {
-  // One message alone: its actions applied to an empty set; any marker it cannot draw fails it.
+// One message alone: its actions applied to an empty set; any marker it cannot draw fails it.
   ::ros2vtk::convert::MarkerSet markers;
   if (!ROS2ToVTK(message, markers, error))
   {

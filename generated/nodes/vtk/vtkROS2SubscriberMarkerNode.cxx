@@ -8,8 +8,6 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkROS2Message.h"
-#include "vtkROS2NodeNode.h"
-#include "vtkXMLDataElement.h"
 
 namespace
 {
@@ -41,107 +39,14 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberMarkerNode::GetMessage
 void vtkROS2SubscriberMarkerNode::OnNewMessages()
 {
   this->LastMessageConverted = false;
-  this->FoldError.clear();
-  this->State.set_time(this->SpinTimeNanoseconds); // what later lifetimes count from
-  for (int i = 0; i < this->GetNumberOfNewMessages(); ++i)
-  {
-    const auto* raw = static_cast<const MessageType*>(this->GetNewRawMessage(i));
-    std::string error;
-    if (raw && !::ros2vtk::nodes::ROS2ToVTK(*raw, this->State, &error) && this->FoldError.empty())
-    {
-      this->FoldError = error;
-    }
-  }
-  this->LocateKeptState(false); // the new items, in the fixed frame
-  // Once per reason (a publisher may send the same undrawable TEXT marker at 10 Hz).
-  if (!this->FoldError.empty() && this->FoldError != this->WarnedFoldError)
-  {
-    vtkWarningMacro(<< "visualization_msgs/msg/Marker on " << this->GetTopic() << ": " << this->FoldError);
-  }
-  if (!this->FoldError.empty())
-  {
-    this->WarnedFoldError = this->FoldError;
-  }
+  this->Superclass::OnNewMessages(); // the markers kept, expired and placed
 }
 
 //------------------------------------------------------------------------------
-bool vtkROS2SubscriberMarkerNode::ExpireKeptState(vtkTypeInt64 nowNanoseconds)
+void vtkROS2SubscriberMarkerNode::ReadMarkers(
+  const void* raw, std::vector<ros2vtk::convert::Marker>* markers)
 {
-  bool changed = this->State.expire(nowNanoseconds);
-  changed = this->LocateKeptState(this->FixedFrameChanged) || changed;
-  this->FixedFrameChanged = false;
-  if (!changed)
-  {
-    return false;
-  }
-  this->LastMessageConverted = false;
-  return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2SubscriberMarkerNode::LocateKeptState(bool all)
-{
-  if (this->FixedFrame.empty())
-  {
-    if (all)
-    {
-      this->State.unlocate(); // back to every marker at its own pose
-    }
-    return all;
-  }
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
-  const auto lookup = [rosNode, this](const std::string& frame, int64_t stamp,
-                        ::ros2vtk::convert::FramePose* pose, std::string* error)
-  {
-    if (!rosNode)
-    {
-      *error = "the subscriber is not on a ROS node (no tf buffer)";
-      return false;
-    }
-    return rosNode->LookupFramePose(
-      this->FixedFrame, frame, stamp, pose->translation, pose->rotation, error);
-  };
-  if (!this->State.locate(lookup, this->FixedFrame, all))
-  {
-    return false;
-  }
-  this->LastMessageConverted = false;
-  return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2SubscriberMarkerNode::SetFixedFrame(const char* frame)
-{
-  const std::string value = frame ? frame : "";
-  if (value == this->FixedFrame)
-  {
-    return;
-  }
-  this->FixedFrame = value;
-  this->FixedFrameChanged = true; // placed on the next spin, with the tf it brings
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-void vtkROS2SubscriberMarkerNode::WriteXML(vtkXMLDataElement* element)
-{
-  this->Superclass::WriteXML(element);
-  if (!this->FixedFrame.empty()) // written only when set: files of earlier versions stay as they were
-  {
-    element->SetAttribute("fixedFrame", this->FixedFrame.c_str());
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkROS2SubscriberMarkerNode::ReadXML(vtkXMLDataElement* element)
-{
-  if (!this->Superclass::ReadXML(element))
-  {
-    return false;
-  }
-  const char* frame = element->GetAttribute("fixedFrame");
-  this->SetFixedFrame(frame ? frame : "");
-  return true;
+  ::ros2vtk::nodes::ROS2ToMarkers(*static_cast<const MessageType*>(raw), markers);
 }
 
 //------------------------------------------------------------------------------
@@ -178,21 +83,12 @@ vtkPolyData* vtkROS2SubscriberMarkerNode::GetLastMessage()
     {
       return nullptr;
     }
-    std::string error;
-    if (!this->State.to_poly_data(this->ScaleLengths ? ::ros2vtk::convert::kMillimetresPerMetre
-                                                     : ::ros2vtk::convert::kNoLengthScaling,
-          this->LastMessage, &error))
+    if (!this->DrawKeptMarkers(this->LastMessage, &this->LastConversionError))
     {
-      this->LastConversionError = error;
       vtkErrorMacro(<< "cannot draw the visualization_msgs/msg/Marker markers kept from "
-                    << this->GetTopic() << ": " << error);
+                    << this->GetTopic() << ": " << this->LastConversionError);
       return nullptr;
     }
-    // What the latest messages could not apply, then the markers not drawn for want of a frame.
-    const std::string unplaced = this->State.status();
-    this->LastConversionError = this->FoldError.empty() || unplaced.empty()
-      ? this->FoldError + unplaced
-      : this->FoldError + "\n" + unplaced;
     this->LastMessageConverted = true;
   }
   return this->LastMessage;
@@ -211,12 +107,10 @@ bool vtkROS2SubscriberMarkerNode::GetLastMessage(vtkPolyData* message)
     this->LastConversionError = "no message";
     return false;
   }
-  std::string error;
-  if (!this->State.to_poly_data(this->ScaleLengths ? ::ros2vtk::convert::kMillimetresPerMetre
-                                                   : ::ros2vtk::convert::kNoLengthScaling,
-        message, &error))
+  std::string status;
+  if (!this->DrawKeptMarkers(message, &status))
   {
-    this->LastConversionError = error;
+    this->LastConversionError = status;
     return false;
   }
   return true;

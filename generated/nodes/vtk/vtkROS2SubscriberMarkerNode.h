@@ -5,13 +5,11 @@
 
 #include "ros2vtkNodesModule.h" // for export macro
 
-#include "vtkROS2SubscriberNode.h"
+#include "vtkROS2MarkerSubscriberNode.h"
 #include "vtkWrappingHints.h" // for VTK_NEWINSTANCE
 
 #include "vtkPolyData.h" // for the node-owned last message
 #include "vtkNew.h"          // for vtkNew
-
-#include "ros2vtk/convert/Marker.hpp" // for the state every message is folded into
 
 #include <string> // for std::string
 
@@ -20,18 +18,18 @@ class vtkROS2Message;
 /// Receives visualization_msgs/msg/Marker as vtkPolyData (mapping rule Marker, visualization_msgs.toml).
 /// Lengths (position, scale, points) are multiplied by 1000 (ROS m -> VTK mm) unless ScaleLengths is off.
 /// Observe ModifiedEvent: it fires once per spin that brought messages (call data int*: count).
-class ROS2VTKNODES_EXPORT vtkROS2SubscriberMarkerNode : public vtkROS2SubscriberNode
+class ROS2VTKNODES_EXPORT vtkROS2SubscriberMarkerNode : public vtkROS2MarkerSubscriberNode
 {
 public:
   static vtkROS2SubscriberMarkerNode* New();
-  vtkTypeMacro(vtkROS2SubscriberMarkerNode, vtkROS2SubscriberNode);
+  vtkTypeMacro(vtkROS2SubscriberMarkerNode, vtkROS2MarkerSubscriberNode);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Messages brought by the latest spin (0 when it brought none), oldest first.
   int GetNumberOfNewMessages() const { return this->Superclass::GetNumberOfNewMessages(); }
 
   /// What the messages received so far add up to (kind marker: every message of every
-  /// spin is folded into a ::ros2vtk::convert::MarkerSet this node keeps), as a vtkPolyData owned by
+  /// spin is kept by vtkROS2MarkerSubscriberNode), as a vtkPolyData owned by
   /// this node, drawn on the first call after a spin (or a change of ScaleLengths); nullptr
   /// before the first message. GetLastConversionError names what the latest spin's messages
   /// could not apply (the rest is applied). GetNewMessage(i) draws message i alone.
@@ -47,21 +45,6 @@ public:
 
   /// Why the latest conversion failed ("" when it did not).
   const char* GetLastConversionError() const { return this->LastConversionError.c_str(); }
-
-  /// The frame the markers are drawn in, as RViz's fixed frame: each kept marker is placed at
-  /// the pose of its header's frame in this frame, looked up in the ROS node's tf buffer at its
-  /// stamp when it arrives (the latest transform for stamp 0), and again at the latest transform
-  /// on every spin when it is frame_locked. A marker whose frame cannot be looked up is not
-  /// drawn (GetLastConversionError and GetFrameStatus say "No transform from [a] to [b]") and
-  /// is looked up again on later spins. "" (the default): frames are ignored, every marker is
-  /// drawn at its own pose in this node's frame. Saved with the scene.
-  void SetFixedFrame(const char* frame);
-  const char* GetFixedFrame() const { return this->FixedFrame.c_str(); }
-  /// Why kept markers are not drawn, one line per marker ("" when all are).
-  std::string GetFrameStatus() const { return this->State.status(); }
-
-  void WriteXML(vtkXMLDataElement* element) override;
-  bool ReadXML(vtkXMLDataElement* element) override;
 
   /// Converts `message` (a visualization_msgs/msg/Marker) into `value` (a vtkPolyData) with this
   /// node's rule and length scaling, as GetLastMessage would: how a field of this type is read
@@ -92,17 +75,8 @@ protected:
   bool LastMessageConverted = false; // LastMessage holds the newest raw message's conversion
   bool LastMessageScaled = true;      // ... made with this ScaleLengths
   std::string LastConversionError;
-  ::ros2vtk::convert::MarkerSet State; // every received message folded in (OnNewMessages)
-  std::string FoldError;        // what the latest spin's messages could not apply
-  std::string WarnedFoldError;  // the last reason warned about (once per reason)
-  /// Drops the kept items whose lifetime has passed (the state's expire()) and places the
-  /// frame-locked ones again (and those not placed yet) in the fixed frame.
-  bool ExpireKeptState(vtkTypeInt64 nowNanoseconds) override;
-  /// Places the kept markers in FixedFrame through the ROS node's tf buffer (all: every one,
-  /// else the new, unplaced and frame-locked ones); true when what is drawn changed.
-  bool LocateKeptState(bool all);
-  std::string FixedFrame;
-  bool FixedFrameChanged = false; // every marker is placed again on the next spin
+  void ReadMarkers(const void* raw, std::vector<ros2vtk::convert::Marker>* markers) override;
+  void OnKeptMarkersChanged() override { this->LastMessageConverted = false; }
 
 private:
   vtkROS2SubscriberMarkerNode(const vtkROS2SubscriberMarkerNode&) = delete;

@@ -57,11 +57,14 @@ def state_view(roles) -> dict:
             # messages with its node clock and drops expired markers on every spin.
             "state_expires": True,
             # ... and locate(lookup, fixed frame, all): the subscriber gets a FixedFrame.
-            "state_frames": "frame_id" in roles}
+            "state_frames": "frame_id" in roles,
+            # ... which the runtime's subscriber base class does: keeping, lifetimes, frames.
+            "state_node_class": "vtkROS2MarkerSubscriberNode"}
 
 
 def _view(rule, table):
-    view = {"shapes": shapes_of(table[rule.ros_type])}
+    view = {"shapes": shapes_of(table[rule.ros_type]), "to_markers": True,
+            "state_header": "ros2vtk/convert/Marker.hpp"}
     if "ns" in rule.roles:
         view.update(state_view(rule.roles))
     return view

@@ -16,7 +16,7 @@ from .marker import COLOR, DURATION, FRAME_ROLES, MESH_ROLES, POINTS, shapes_of,
 
 def _view(rule, table):
     element = table[rule.roles["sequence"].field.type.ros_name()]
-    return dict(state_view(rule.element_roles), shapes=shapes_of(element))
+    return dict(state_view(rule.element_roles), shapes=shapes_of(element), to_markers=True)
 
 
 KIND = Kind(name="marker_array", vtk_types=("vtkPolyData",),

@@ -478,6 +478,7 @@ bool MarkerSet::add(const std::string& ns, int id, const Marker& marker, std::st
     // At least 1 ns later, so that a stamp of 0 (a clock not yet running) still expires.
     expires_at = this->now + std::max<int64_t>(1, std::llround(marker.lifetime * 1e9));
   }
+  this->dropped.erase(key);
   Kept kept;
   kept.marker = marker;
   kept.expires_at = expires_at;
@@ -485,22 +486,56 @@ bool MarkerSet::add(const std::string& ns, int id, const Marker& marker, std::st
   return true;
 }
 
+bool MarkerSet::apply(const std::vector<Marker>& applied, std::string* error)
+{
+  bool ok = true;
+  for (const Marker& marker : applied)
+  {
+    std::string reason;
+    switch (marker.action)
+    {
+      case MarkerAction::DeleteAll:
+        this->clear();
+        continue;
+      case MarkerAction::Delete:
+        this->remove(marker.ns, marker.id);
+        continue;
+      case MarkerAction::Add:
+        if (this->add(marker.ns, marker.id, marker, &reason))
+        {
+          continue;
+        }
+        break;
+      case MarkerAction::Unknown:
+        reason = "marker (ns '" + marker.ns + "', id " + std::to_string(marker.id) +
+          "): unknown action " + std::to_string(marker.action_value);
+        break;
+    }
+    if (ok && error)
+    {
+      *error = reason;
+    }
+    ok = false;
+  }
+  return ok;
+}
+
 bool MarkerSet::expire(int64_t now_nanoseconds)
 {
-  bool dropped = false;
+  bool expired = false;
   for (auto it = this->markers.begin(); it != this->markers.end();)
   {
     if (it->second.expires_at != 0 && now_nanoseconds >= it->second.expires_at)
     {
       it = this->markers.erase(it);
-      dropped = true;
+      expired = true;
     }
     else
     {
       ++it;
     }
   }
-  return dropped;
+  return expired;
 }
 
 namespace {
@@ -536,7 +571,8 @@ bool same_pose(const FramePose& a, const FramePose& b)
 
 } // namespace
 
-bool MarkerSet::place(Kept& kept, const FrameLookup& lookup, const std::string& fixed_frame)
+bool MarkerSet::place(
+  Kept& kept, const FrameLookup& lookup, const std::string& fixed_frame, bool* too_old)
 {
   const Marker& marker = kept.marker;
   FramePose pose;
@@ -546,6 +582,7 @@ bool MarkerSet::place(Kept& kept, const FrameLookup& lookup, const std::string& 
   const bool found = lookup && lookup(marker.frame_id, stamp, &pose, &reason);
   const bool changed = found != kept.located || (found && !same_pose(pose, kept.frame));
   kept.located = found;
+  *too_old = !found && pose.older_than_history && !marker.frame_locked;
   if (found)
   {
     kept.frame = pose;
@@ -563,13 +600,22 @@ bool MarkerSet::locate(const FrameLookup& lookup, const std::string& fixed_frame
 {
   bool changed = !this->placing && !this->markers.empty();
   this->placing = true;
-  for (auto& entry : this->markers)
+  for (auto it = this->markers.begin(); it != this->markers.end();)
   {
-    Kept& kept = entry.second;
+    Kept& kept = it->second;
     if (all || !kept.located || kept.marker.frame_locked)
     {
-      changed = this->place(kept, lookup, fixed_frame) || changed;
+      bool too_old = false;
+      changed = this->place(kept, lookup, fixed_frame, &too_old) || changed;
+      if (too_old)
+      {
+        this->dropped[it->first] = "dropped: its stamp is older than the tf history (" +
+          kept.status + "); RViz's tf filter drops it too";
+        it = this->markers.erase(it);
+        continue;
+      }
     }
+    ++it;
   }
   return changed;
 }
@@ -577,6 +623,7 @@ bool MarkerSet::locate(const FrameLookup& lookup, const std::string& fixed_frame
 void MarkerSet::unlocate()
 {
   this->placing = false;
+  this->dropped.clear();
   for (auto& entry : this->markers)
   {
     entry.second.located = false;
@@ -591,13 +638,20 @@ std::string MarkerSet::status() const
   {
     return lines;
   }
+  const auto line = [&lines](const std::pair<std::string, int>& key, const std::string& reason) {
+    lines += (lines.empty() ? "" : "\n") + std::string("marker (ns '") + key.first + "', id " +
+      std::to_string(key.second) + "): " + reason;
+  };
   for (const auto& entry : this->markers)
   {
     if (!entry.second.located && !entry.second.status.empty())
     {
-      lines += (lines.empty() ? "" : "\n") + std::string("marker (ns '") + entry.first.first +
-        "', id " + std::to_string(entry.first.second) + "): " + entry.second.status;
+      line(entry.first, entry.second.status);
     }
+  }
+  for (const auto& entry : this->dropped)
+  {
+    line(entry.first, entry.second);
   }
   return lines;
 }

@@ -156,6 +156,8 @@ public:
   std::string hash;
   std::vector<Member> members;
   std::vector<FieldInfo> fields;
+  std::vector<DescriptionConstant> constant_texts; // what `constants` points into
+  std::vector<ConstantInfo> constants;
   size_t struct_size = 0;
   size_t align = alignof(void*);
   size_t min_serialized_size = 0; ///< lower bound of one serialized element (read_length)
@@ -1407,8 +1409,14 @@ std::unique_ptr<DynamicType> build_one(Builder& builder, const std::string& name
   t.struct_size = type->struct_size;
   t.field_count = static_cast<uint32_t>(type->fields.size());
   t.fields = type->fields.data();
-  t.constant_count = 0; // descriptions carry no constants
-  t.constants = nullptr;
+  // Descriptions carry no constants; the .msg source the peer sent may (parse_msg_constants).
+  type->constant_texts = source.constants;
+  for (const DescriptionConstant& c : type->constant_texts)
+  {
+    type->constants.push_back(ConstantInfo{ c.name.c_str(), c.type, c.value.c_str() });
+  }
+  t.constant_count = static_cast<uint32_t>(type->constants.size());
+  t.constants = type->constants.empty() ? nullptr : type->constants.data();
   t.create = kCreate[slot];
   t.destroy = &table_destroy;
   t.copy = &table_copy;

@@ -1,4 +1,5 @@
 #include "NodeClassRegistry.hpp"
+#include "Internal/TextAffixes.hpp"
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
@@ -11,17 +12,6 @@ namespace scene {
 void register_builtin_node_classes(NodeClassRegistry& registry);
 
 namespace {
-
-bool starts_with(const std::string& text, const std::string& prefix)
-{
-  return text.compare(0, prefix.size(), prefix) == 0;
-}
-
-bool ends_with(const std::string& text, const std::string& suffix)
-{
-  return text.size() >= suffix.size() &&
-    text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 // "vtkROS2PublisherStringNode" / "vtkMRMLROS2PublisherStringNode" -> ("Publisher", "String").
 // False when the name has neither prefix.

@@ -697,8 +697,13 @@ ros2vtk::tf2::BufferCore* vtkROS2NodeNode::GetTf2Buffer()
 
 //------------------------------------------------------------------------------
 bool vtkROS2NodeNode::LookupFramePose(const std::string& targetFrame, const std::string& frame,
-  vtkTypeInt64 stampNanoseconds, double translation[3], double rotation[4], std::string* error)
+  vtkTypeInt64 stampNanoseconds, double translation[3], double rotation[4], std::string* error,
+  bool* olderThanHistory)
 {
+  if (olderThanHistory)
+  {
+    *olderThanHistory = false;
+  }
   ros2vtk::tf2::BufferCore* buffer = this->GetTf2Buffer();
   if (!buffer)
   {
@@ -716,6 +721,10 @@ bool vtkROS2NodeNode::LookupFramePose(const std::string& targetFrame, const std:
     if (error)
     {
       *error = result.message;
+    }
+    if (olderThanHistory)
+    {
+      *olderThanHistory = result.error == ros2vtk::tf2::Tf2Error::BackwardExtrapolation;
     }
     return false;
   }

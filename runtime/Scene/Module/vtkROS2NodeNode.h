@@ -351,10 +351,13 @@ public:
   ros2vtk::tf2::BufferCore* GetTf2Buffer();
   /// Where `frame` is in `targetFrame` at `stampNanoseconds` (0: the latest transform), from
   /// this node's tf buffer: a translation (metres) and a unit quaternion x, y, z, w that map
-  /// points of `frame` into `targetFrame`. False and tf2's reason when it cannot be looked up.
-  /// For generated code that places data by its header (markers), with std types only.
+  /// points of `frame` into `targetFrame`. False and tf2's reason when it cannot be looked up;
+  /// `olderThanHistory` (when given) then says whether the stamp is older than the oldest
+  /// transform the buffer holds on the way (tf2's backward extrapolation: waiting cannot help).
+  /// For code that places data by its header (markers), with std types only.
   bool LookupFramePose(const std::string& targetFrame, const std::string& frame,
-    vtkTypeInt64 stampNanoseconds, double translation[3], double rotation[4], std::string* error);
+    vtkTypeInt64 stampNanoseconds, double translation[3], double rotation[4], std::string* error,
+    bool* olderThanHistory = nullptr);
   /// The node's /tf (or /tf_static) broadcaster, created on first use; nullptr before Create.
   ros2vtk::tf2_ros::TransformBroadcaster* GetTf2Broadcaster(bool isStatic);
   /// The server of this node's own parameters (nullptr before Create).

@@ -46,45 +46,18 @@ bool vtkROS2PublisherGenericNode::SetROSType(const char* rosType)
 {
   bool changed = false;
   const std::string error =
-    ros2vtk::scene::assign_generic_type(rosType, this->IsAddedToROS2Node(), this->Type, changed);
-  if (!error.empty())
-  {
-    vtkErrorMacro("SetROSType: " << error);
-    return false;
-  }
-  if (!this->Learnt->empty())
-  {
-    this->Learnt->clear(); // a registered type replaces one to be learnt
-    changed = true;
-  }
-  if (changed)
-  {
-    this->Modified();
-  }
-  return true;
+    this->Learnt->set_registered(rosType, this->IsAddedToROS2Node(), this->Type, changed);
+  return ros2vtk::scene::finish_type_change(this, "SetROSType", error, changed);
 }
 
 //------------------------------------------------------------------------------
 bool vtkROS2PublisherGenericNode::SetROSTypeResolvedAtRuntime(const char* rosType)
 {
-  if (rosType && ros2vtk::wire::find_message_type(rosType))
-  {
-    return this->SetROSType(rosType);
-  }
   bool changed = false;
-  const std::string error = ros2vtk::scene::assign_learnt_type(rosType, this->IsAddedToROS2Node(),
-    this->Type, *this->Learnt,
-    ros2vtk::scene::LearntMessageType::Peers::SubscriptionsThenPublishers, changed);
-  if (!error.empty())
-  {
-    vtkErrorMacro("SetROSTypeResolvedAtRuntime: " << error);
-    return false;
-  }
-  if (changed)
-  {
-    this->Modified();
-  }
-  return true;
+  const std::string error =
+    this->Learnt->set_resolved_at_runtime(rosType, this->IsAddedToROS2Node(), this->Type,
+      ros2vtk::scene::LearntMessageType::Peers::SubscriptionsThenPublishers, changed);
+  return ros2vtk::scene::finish_type_change(this, "SetROSTypeResolvedAtRuntime", error, changed);
 }
 
 //------------------------------------------------------------------------------
@@ -116,23 +89,16 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2PublisherGenericNode::GetMessage
 bool vtkROS2PublisherGenericNode::CreateEndpoint(ros2vtk::wire::Participant& participant,
   const std::string& topic, const ros2vtk::wire::QoS& qos, std::string* error)
 {
-  if (this->Type)
-  {
-    return this->Superclass::CreateEndpoint(participant, topic, qos, error);
-  }
   // No writer yet: the graph is watched, the spin creates the writer once the type is known.
-  this->Learnt->start(participant, topic);
-  return true;
+  return this->Learnt->watch_unless_known(this->Type, participant, topic) ||
+    this->Superclass::CreateEndpoint(participant, topic, qos, error);
 }
 
 //------------------------------------------------------------------------------
 void vtkROS2PublisherGenericNode::DestroyEndpoint()
 {
   this->Superclass::DestroyEndpoint();
-  if (!this->Type)
-  {
-    this->Learnt->stop();
-  }
+  this->Learnt->stop_unless_known(this->Type);
 }
 
 //------------------------------------------------------------------------------
@@ -148,19 +114,11 @@ int vtkROS2PublisherGenericNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
   {
     return this->Superclass::OnROS2NodeSpin(rosNode);
   }
-  ros2vtk::wire::Participant* participant = rosNode ? rosNode->GetParticipant() : nullptr;
-  const bool changed = this->Learnt->spin(this->Type, "publish", [&](std::string& error) {
-    return participant &&
-      this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error);
-  });
-  if (changed && !this->Type && !this->Learnt->asking())
-  {
-    vtkErrorMacro(<< this->Learnt->status());
-  }
-  if (changed)
-  {
-    this->Modified();
-  }
+  this->Learnt->spin_node(this, this->Type, rosNode ? rosNode->GetParticipant() : nullptr,
+    "publish", [this](ros2vtk::wire::Participant& participant, std::string& error) {
+      return this->Superclass::CreateEndpoint(
+        participant, this->GetTopic(), this->GetQoS(), &error);
+    });
   return 0;
 }
 

@@ -33,6 +33,7 @@ public:
     ByID;                                      // less<>: find(const char*) copies nothing
   std::map<std::string, int> NextIndexByClass; // for `<ClassName><n>` IDs
   std::string RemovalReason;                   // while ClearBecause runs: why the nodes leave
+  std::string FixedFrame;                      // SetFixedFrame ("" none)
   // referenced ID -> nodes of this scene that gained a reference to it (a superset: a node that
   // dropped the reference since is visited for nothing, never missed).
   std::unordered_map<std::string, std::unordered_set<vtkROS2SceneNode*>> Referrers;
@@ -337,6 +338,11 @@ std::string vtkROS2Scene::WriteToXMLString()
   vtkNew<vtkXMLDataElement> root;
   root->SetName(SceneTag);
   root->SetIntAttribute("version", SceneFormatVersion);
+  if (!this->Internals->FixedFrame
+         .empty()) // only when set: files of earlier versions stay as they were
+  {
+    root->SetAttribute("fixedFrame", this->Internals->FixedFrame.c_str());
+  }
   for (const auto& node : this->Internals->Nodes)
   {
     if (!node->GetSaveWithScene())
@@ -464,6 +470,8 @@ bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
     incoming.emplace_back(node, id);
   }
   this->Clear();
+  const char* fixedFrame = root->GetAttribute("fixedFrame");
+  this->SetFixedFrame(fixedFrame ? fixedFrame : "");
   std::vector<vtkROS2SceneNode*> restored;
   for (const auto& [node, id] : incoming)
   {
@@ -484,9 +492,28 @@ bool vtkROS2Scene::ReadFromXMLElement(vtkXMLDataElement* root)
 }
 
 //------------------------------------------------------------------------------
+void vtkROS2Scene::SetFixedFrame(const char* frame)
+{
+  const std::string value = frame ? frame : "";
+  if (value == this->Internals->FixedFrame)
+  {
+    return;
+  }
+  this->Internals->FixedFrame = value;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkROS2Scene::GetFixedFrame() const
+{
+  return this->Internals->FixedFrame.c_str();
+}
+
+//------------------------------------------------------------------------------
 void vtkROS2Scene::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "FixedFrame: " << this->Internals->FixedFrame << "\n";
   os << indent << "NumberOfNodes: " << this->Internals->Nodes.size() << "\n";
   for (const auto& node : this->Internals->Nodes)
   {

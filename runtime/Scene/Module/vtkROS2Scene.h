@@ -75,6 +75,14 @@ public:
   /// (error listing the known classes) for an unknown class.
   vtkROS2SceneNode* AddNewNodeByClass(const char* className, const char* name = "");
 
+  /// The scene's fixed frame, as RViz's global "Fixed Frame": the frame displays draw in when
+  /// they have none of their own (marker subscribers without SetFixedFrame place their markers
+  /// in it through their ROS node's tf buffer). "" (the default): none, each display draws in
+  /// its own frame. Saved with the scene (attribute `fixedFrame` of the root, only when set);
+  /// reading a scene file sets it from the file. Fires ModifiedEvent when it changes.
+  void SetFixedFrame(const char* frame);
+  const char* GetFixedFrame() const;
+
   /// Saves every node to an XML scene file / string. False (vtkErrorMacro) on I/O failure.
   bool WriteToXMLFile(const char* fileName);
   std::string WriteToXMLString();

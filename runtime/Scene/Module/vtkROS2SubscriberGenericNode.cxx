@@ -42,44 +42,18 @@ bool vtkROS2SubscriberGenericNode::SetROSType(const char* rosType)
 {
   bool changed = false;
   const std::string error =
-    ros2vtk::scene::assign_generic_type(rosType, this->IsAddedToROS2Node(), this->Type, changed);
-  if (!error.empty())
-  {
-    vtkErrorMacro("SetROSType: " << error);
-    return false;
-  }
-  if (!this->Learnt->empty())
-  {
-    this->Learnt->clear(); // a registered type replaces one to be learnt
-    changed = true;
-  }
-  if (changed)
-  {
-    this->Modified();
-  }
-  return true;
+    this->Learnt->set_registered(rosType, this->IsAddedToROS2Node(), this->Type, changed);
+  return ros2vtk::scene::finish_type_change(this, "SetROSType", error, changed);
 }
 
 //------------------------------------------------------------------------------
 bool vtkROS2SubscriberGenericNode::SetROSTypeResolvedAtRuntime(const char* rosType)
 {
-  if (rosType && ros2vtk::wire::find_message_type(rosType))
-  {
-    return this->SetROSType(rosType);
-  }
   bool changed = false;
-  const std::string error = ros2vtk::scene::assign_learnt_type(rosType, this->IsAddedToROS2Node(),
-    this->Type, *this->Learnt, ros2vtk::scene::LearntMessageType::Peers::Publishers, changed);
-  if (!error.empty())
-  {
-    vtkErrorMacro("SetROSTypeResolvedAtRuntime: " << error);
-    return false;
-  }
-  if (changed)
-  {
-    this->Modified();
-  }
-  return true;
+  const std::string error =
+    this->Learnt->set_resolved_at_runtime(rosType, this->IsAddedToROS2Node(), this->Type,
+      ros2vtk::scene::LearntMessageType::Peers::Publishers, changed);
+  return ros2vtk::scene::finish_type_change(this, "SetROSTypeResolvedAtRuntime", error, changed);
 }
 
 //------------------------------------------------------------------------------
@@ -111,23 +85,16 @@ const ros2vtk::wire::MessageTypeSupport& vtkROS2SubscriberGenericNode::GetMessag
 bool vtkROS2SubscriberGenericNode::CreateEndpoint(ros2vtk::wire::Participant& participant,
   const std::string& topic, const ros2vtk::wire::QoS& qos, std::string* error)
 {
-  if (this->Type)
-  {
-    return this->Superclass::CreateEndpoint(participant, topic, qos, error);
-  }
   // No subscription yet: the graph is watched, the spin subscribes once the type is known.
-  this->Learnt->start(participant, topic);
-  return true;
+  return this->Learnt->watch_unless_known(this->Type, participant, topic) ||
+    this->Superclass::CreateEndpoint(participant, topic, qos, error);
 }
 
 //------------------------------------------------------------------------------
 void vtkROS2SubscriberGenericNode::DestroyEndpoint()
 {
   this->Superclass::DestroyEndpoint();
-  if (!this->Type)
-  {
-    this->Learnt->stop();
-  }
+  this->Learnt->stop_unless_known(this->Type);
 }
 
 //------------------------------------------------------------------------------
@@ -143,19 +110,11 @@ int vtkROS2SubscriberGenericNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
   {
     return this->Superclass::OnROS2NodeSpin(rosNode);
   }
-  ros2vtk::wire::Participant* participant = rosNode ? rosNode->GetParticipant() : nullptr;
-  const bool changed = this->Learnt->spin(this->Type, "subscribe", [&](std::string& error) {
-    return participant &&
-      this->Superclass::CreateEndpoint(*participant, this->GetTopic(), this->GetQoS(), &error);
-  });
-  if (changed && !this->Type && !this->Learnt->asking())
-  {
-    vtkErrorMacro(<< this->Learnt->status());
-  }
-  if (changed)
-  {
-    this->Modified();
-  }
+  this->Learnt->spin_node(this, this->Type, rosNode ? rosNode->GetParticipant() : nullptr,
+    "subscribe", [this](ros2vtk::wire::Participant& participant, std::string& error) {
+      return this->Superclass::CreateEndpoint(
+        participant, this->GetTopic(), this->GetQoS(), &error);
+    });
   return 0;
 }
 

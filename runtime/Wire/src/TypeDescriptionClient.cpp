@@ -20,6 +20,33 @@ namespace tdi = ::ros2vtk::type_description_interfaces;
 
 namespace {
 
+/// The constants of each described type whose .msg source the peer sent (encoding "msg"; .srv
+/// and .action sources are not split into their messages here, so those types get none). A
+/// source that does not parse leaves its type without constants: the type is still usable.
+void add_source_constants(
+  const std::vector<tdi::msg::TypeSource>& sources, TypeDescriptionData& description)
+{
+  for (const tdi::msg::TypeSource& source : sources)
+  {
+    if (source.encoding != "msg")
+    {
+      continue;
+    }
+    IndividualDescription* target =
+      source.type_name == description.type.type_name ? &description.type : nullptr;
+    for (IndividualDescription& referenced : description.referenced)
+    {
+      target = referenced.type_name == source.type_name ? &referenced : target;
+    }
+    std::vector<DescriptionConstant> constants;
+    std::string error;
+    if (target && parse_msg_constants(source.raw_file_contents, &constants, &error))
+    {
+      target->constants = std::move(constants);
+    }
+  }
+}
+
 bool same_hash(const std::string& a, const std::string& b)
 {
   if (a.size() != b.size())
@@ -173,7 +200,8 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
       tdi::srv::GetTypeDescription_Request request;
       request.type_name = ros_type_;
       request.type_hash = type_hash_;
-      request.include_type_sources = false;
+      // The .msg sources: a description has no constants, the source text does.
+      request.include_type_sources = true;
       sequence_ = client_->send_request(&request);
       set_state(State::WaitingForDescription,
         "waiting for the type description of " + ros_type_ + " from " + node_);
@@ -208,8 +236,9 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
       return state_;
     }
     std::string error;
-    const MessageTypeSupport* built =
-      build_dynamic_message_type(from_message(response.type_description), type_hash_, &error);
+    TypeDescriptionData description = from_message(response.type_description);
+    add_source_constants(response.type_sources, description);
+    const MessageTypeSupport* built = build_dynamic_message_type(description, type_hash_, &error);
     client_.reset();
     if (!built)
     {

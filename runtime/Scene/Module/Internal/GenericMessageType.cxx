@@ -2,6 +2,7 @@
 
 #include "ros2vtk/wire/MessageTypeSupport.hpp"
 
+#include "vtkObject.h"
 #include "vtkXMLDataElement.h"
 
 #include <cctype>
@@ -118,6 +119,20 @@ std::string assign_learnt_type(const char* ros_type, bool added_to_ros_node,
   return std::string();
 }
 
+bool finish_type_change(vtkObject* node, const char* call, const std::string& error, bool changed)
+{
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(node, << call << ": " << error);
+    return false;
+  }
+  if (changed)
+  {
+    node->Modified();
+  }
+  return true;
+}
+
 LearntMessageType::LearntMessageType() = default;
 LearntMessageType::~LearntMessageType() = default;
 
@@ -189,6 +204,63 @@ const wire::MessageTypeSupport* LearntMessageType::poll(bool& status_changed)
   const wire::MessageTypeSupport* type = resolver_->type();
   resolver_.reset();
   return type;
+}
+
+std::string LearntMessageType::set_registered(const char* ros_type, bool added_to_ros_node,
+  const wire::MessageTypeSupport*& type, bool& changed)
+{
+  const std::string error = assign_generic_type(ros_type, added_to_ros_node, type, changed);
+  if (error.empty() && !empty())
+  {
+    clear(); // a registered type replaces one to be learnt
+    changed = true;
+  }
+  return error;
+}
+
+std::string LearntMessageType::set_resolved_at_runtime(const char* ros_type, bool added_to_ros_node,
+  const wire::MessageTypeSupport*& type, Peers peers, bool& changed)
+{
+  if (ros_type && wire::find_message_type(ros_type))
+  {
+    return set_registered(ros_type, added_to_ros_node, type, changed);
+  }
+  return assign_learnt_type(ros_type, added_to_ros_node, type, *this, peers, changed);
+}
+
+bool LearntMessageType::watch_unless_known(
+  const wire::MessageTypeSupport* type, wire::Participant& participant, const std::string& topic)
+{
+  if (type)
+  {
+    return false;
+  }
+  start(participant, topic);
+  return true;
+}
+
+void LearntMessageType::stop_unless_known(const wire::MessageTypeSupport* type)
+{
+  if (!type)
+  {
+    stop();
+  }
+}
+
+void LearntMessageType::spin_node(vtkObject* node, const wire::MessageTypeSupport*& type,
+  wire::Participant* participant, const char* verb,
+  const std::function<bool(wire::Participant&, std::string&)>& create)
+{
+  const bool changed = spin(
+    type, verb, [&](std::string& error) { return participant && create(*participant, error); });
+  if (changed && !type && !asking())
+  {
+    vtkErrorWithObjectMacro(node, << status());
+  }
+  if (changed)
+  {
+    node->Modified();
+  }
 }
 
 } // namespace scene

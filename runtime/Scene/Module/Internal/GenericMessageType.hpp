@@ -5,9 +5,11 @@
 
 #include "ros2vtk/wire/TypeDescriptionClient.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 
+class vtkObject;
 class vtkXMLDataElement;
 
 namespace ros2vtk {
@@ -44,6 +46,10 @@ std::string assign_learnt_type(const char* ros_type, bool added_to_ros_node,
   const wire::MessageTypeSupport*& type, LearntMessageType& learnt,
   wire::RuntimeTypeResolver::Peers peers, bool& changed);
 
+/// The end of a generic node's SetROSType / SetROSTypeResolvedAtRuntime (`call`): the error
+/// reported on `node` when there is one (false), else `node` Modified when `changed` (true).
+bool finish_type_change(vtkObject* node, const char* call, const std::string& error, bool changed);
+
 /// A type a generic subscriber or publisher learns at run time from the graph (issue 13): its
 /// name, a stand-in table that only names it (GetROSType, scene files) while nothing can be sent
 /// or received, the resolver that asks a peer's node, and what it waits for in words. Both
@@ -67,6 +73,30 @@ public:
   const std::string& name() const { return name_; }
   /// The stand-in table: names the type, describes nothing.
   const wire::MessageTypeSupport& named_only() const { return *named_only_; }
+
+  ///@{
+  /// What both generic nodes do with their type (`type`: the node's registered or learnt type,
+  /// nullptr while it is to be learnt), so that each node's methods only delegate here.
+  /// SetROSType: a registered type, which replaces one to be learnt. "" or the reason.
+  std::string set_registered(const char* ros_type, bool added_to_ros_node,
+    const wire::MessageTypeSupport*& type, bool& changed);
+  /// SetROSTypeResolvedAtRuntime: a registered name as set_registered, another learnt from
+  /// `peers`. "" or the reason.
+  std::string set_resolved_at_runtime(const char* ros_type, bool added_to_ros_node,
+    const wire::MessageTypeSupport*& type, Peers peers, bool& changed);
+  /// CreateEndpoint: while the type is to be learnt, starts watching `topic` and returns true
+  /// (the endpoint is created by spin_node once the type is known); false when `type` is known
+  /// (the node creates its endpoint now).
+  bool watch_unless_known(
+    const wire::MessageTypeSupport* type, wire::Participant& participant, const std::string& topic);
+  /// DestroyEndpoint: stops asking while the type is still to be learnt.
+  void stop_unless_known(const wire::MessageTypeSupport* type);
+  /// OnROS2NodeSpin while asking(): one step of spin(), `create` making the endpoint once the
+  /// type is learnt; reports a failure on `node` and marks it Modified when something changed.
+  void spin_node(vtkObject* node, const wire::MessageTypeSupport*& type,
+    wire::Participant* participant, const char* verb,
+    const std::function<bool(wire::Participant&, std::string&)>& create);
+  ///@}
 
   /// Starts watching the graph for a peer of `topic` to ask (the node was added to a ROS node).
   void start(wire::Participant& participant, const std::string& topic);

@@ -1,5 +1,6 @@
 // ros2vtk — finding a service type by any of the names scripts give it (see the header).
 #include "Internal/ServiceTypeName.hpp"
+#include "Internal/TextAffixes.hpp"
 
 #include <vector>
 
@@ -7,17 +8,6 @@ namespace ros2vtk {
 namespace scene {
 
 namespace {
-
-bool starts_with(const std::string& text, const std::string& prefix)
-{
-  return text.compare(0, prefix.size(), prefix) == 0;
-}
-
-bool ends_with(const std::string& text, const std::string& suffix)
-{
-  return text.size() >= suffix.size() &&
-    text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 /// "vtkMRMLROS2ServiceClientSetBoolNode" (SlicerROS2's classes, and ours spelled the same way)
 /// -> "SetBool"; anything else unchanged.

@@ -37,8 +37,23 @@ enum class MarkerShape
   Unsupported,
 };
 
+/// What a kept marker's message asks of the MarkerSet (MarkerSet::apply), as RViz applies a
+/// marker's action: the template maps the message's ADD/MODIFY, DELETE and DELETEALL onto it.
+enum class MarkerAction
+{
+  Add,       ///< ADD and MODIFY: keep it under (ns, id), replacing what was there
+  Delete,    ///< drop (ns, id)
+  DeleteAll, ///< drop every marker
+  Unknown,   ///< anything else: refused with its value (Marker::action_value)
+};
+
 struct Marker
 {
+  /// The key a MarkerSet keeps it under (the message's ns and id) and what to do with it.
+  std::string ns;
+  int id = 0;
+  MarkerAction action = MarkerAction::Add;
+  int action_value = 0; ///< the action as sent (named in the reason of an Unknown one)
   MarkerShape shape = MarkerShape::Unsupported;
   double position[3] = { 0, 0, 0 };
   double orientation[4] = { 0, 0, 0, 1 }; ///< x, y, z, w
@@ -65,6 +80,10 @@ struct FramePose
 {
   double translation[3] = { 0, 0, 0 };
   double rotation[4] = { 0, 0, 0, 1 };
+  /// Set by a lookup that fails because the stamp is older than the oldest transform its tf
+  /// buffer still holds: waiting cannot help, so the marker is dropped (RViz's tf filter drops
+  /// such a message) instead of being looked up again.
+  bool older_than_history = false;
 };
 
 /// Looks `frame` up in the fixed frame at `stamp_nanoseconds` (0: the latest transform); false
@@ -122,23 +141,34 @@ public:
   /// Drops every marker whose lifetime has passed at `now_nanoseconds` (as RViz does on its
   /// clock); true when one was dropped. A clock that went backwards expires nothing early.
   bool expire(int64_t now_nanoseconds);
+  /// Applies each marker's action in order (its ns, id and action): Add as add(), Delete as
+  /// remove(), DeleteAll as clear(); an Unknown action is refused. False with the first reason
+  /// when one could not be applied (the others are).
+  bool apply(const std::vector<Marker>& markers, std::string* error);
   /// Drops (ns, id); false when no such marker was kept (not an error for a display).
   bool remove(const std::string& ns, int id);
   /// Drops every marker (DELETEALL).
-  void clear() { this->markers.clear(); }
+  void clear()
+  {
+    this->markers.clear();
+    this->dropped.clear();
+  }
 
   /// Places the markers in a fixed frame, as RViz does: a marker is drawn at the pose of its
   /// frame_id in the fixed frame, looked up by `lookup` at its stamp when it arrives, and again
   /// at the latest transform on every call when it is frame_locked. A marker whose frame cannot
   /// be looked up is kept but not drawn, its reason in status(), and looked up again on the next
-  /// call (as RViz's tf message filter holds a message until its transform arrives). `all`
+  /// call (as RViz's tf message filter holds a message until its transform arrives); one whose
+  /// lookup says its stamp is older than the tf history (FramePose::older_than_history) is
+  /// dropped, and status() says so until its key is added again or the set cleared. `all`
   /// places every marker again (the fixed frame changed). Without a call markers are drawn at
   /// their own pose, frames ignored. True when a marker moved, appeared or disappeared.
   bool locate(const FrameLookup& lookup, const std::string& fixed_frame, bool all);
   /// Drops the placement of every marker: drawn at their own pose again (no fixed frame).
   void unlocate();
   /// Why kept markers are not drawn, one line each ("marker (ns 'a', id 1): No transform from
-  /// [b] to [world]: ..."), in (ns, id) order; "" when every kept marker is drawn.
+  /// [b] to [world]: ..."), in (ns, id) order, then the markers dropped as too old; "" when
+  /// every kept marker is drawn and none was dropped.
   std::string status() const;
   size_t size() const { return this->markers.size(); }
   bool contains(const std::string& ns, int id) const
@@ -164,8 +194,10 @@ private:
     FramePose frame;
     std::string status;
   };
-  bool place(Kept& kept, const FrameLookup& lookup, const std::string& fixed_frame);
+  bool place(Kept& kept, const FrameLookup& lookup, const std::string& fixed_frame, bool* too_old);
   std::map<std::pair<std::string, int>, Kept> markers;
+  /// Markers dropped by locate() as older than the tf history, and why (until re-added).
+  std::map<std::pair<std::string, int>, std::string> dropped;
   int64_t now = 0;
   bool placing = false; ///< locate() was called (and not undone by unlocate()): frames count
 };

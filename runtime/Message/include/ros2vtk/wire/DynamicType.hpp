@@ -42,11 +42,23 @@ struct DescriptionField
   std::string default_value;
 };
 
+/// A constant of a type (`uint8 BOOL=1`). REP 2011 descriptions carry none: they come from the
+/// type's .msg source (GetTypeDescription's type_sources), read by parse_msg_constants.
+struct DescriptionConstant
+{
+  std::string name;
+  FieldType type = FieldType::Bool;
+  std::string value; ///< normalised as the generator's ConstantInfo values (strings unquoted)
+};
+
 /// type_description_interfaces/msg/IndividualTypeDescription.
 struct IndividualDescription
 {
   std::string type_name;
   std::vector<DescriptionField> fields;
+  /// Not part of the description (nor of its hash): from the type's .msg source when the peer
+  /// sent it; a built type offers them as the generated tables do (MessageTypeSupport::constants).
+  std::vector<DescriptionConstant> constants;
 };
 
 /// type_description_interfaces/msg/TypeDescription.
@@ -83,6 +95,13 @@ std::string type_description_hash(const TypeDescriptionData& description, std::s
 /// naming the type and field) for a malformed or too large description.
 const MessageTypeSupport* build_dynamic_message_type(const TypeDescriptionData& description,
   const std::string& expected_hash, std::string* error, const DynamicTypeLimits& limits = {});
+
+/// The constants of a .msg text (a type_source of encoding "msg"), in order. Only constant lines
+/// (`TYPE NAME=VALUE`) are read; fields come from the description. False with a reason (the
+/// line and what is wrong) for a constant of a non-primitive type, a bad name or a value that
+/// does not read as its type.
+bool parse_msg_constants(
+  const std::string& text, std::vector<DescriptionConstant>* constants, std::string* error);
 
 /// True when `type` was built by build_dynamic_message_type.
 bool is_dynamic_message_type(const MessageTypeSupport* type);
