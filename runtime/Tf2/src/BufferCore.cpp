@@ -70,8 +70,8 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
 
   std::lock_guard<std::mutex> lock(mutex_);
   latest_poses_->invalidate(); // (a refused sample may still have replaced the frame's cache)
-  const FrameId child = frames_->intern(checked.child);
-  const FrameId parent = frames_->intern(checked.parent);
+  const FrameId child = frames_->intern_child(checked.child);
+  const FrameId parent = frames_->intern_parent(child, checked.parent);
   auto& cache = frames_->caches[child];
   if (!cache || cache->is_static() != is_static)
   {
