@@ -59,6 +59,17 @@ void expect_as_walked(const BufferCore& buffer, const std::string& target, const
   EXPECT_TRUE(same_rotation(latest.transform.rotation, walked.transform.rotation, 1e-12));
 }
 
+/// The latest lookup of `frame` in world, on a chain without rotations: its stamp and offset.
+void expect_latest_offset(const BufferCore& buffer, const std::string& frame,
+  TimePoint expected_stamp, const Eigen::Vector3d& expected_offset)
+{
+  SCOPED_TRACE("world <- " + frame);
+  const LookupResult latest = buffer.lookup_transform("world", frame, kLatestTime);
+  ASSERT_TRUE(latest.ok) << latest.message;
+  EXPECT_EQ(latest.stamp, expected_stamp);
+  EXPECT_TRUE(same_vector(latest.transform.translation, expected_offset));
+}
+
 struct Expected
 {
   std::string frame;
@@ -111,14 +122,8 @@ TEST(BufferLatest, TheWorldPoseOfTheLastLinkIsTheHandComputedOne)
   ASSERT_TRUE(buffer.set_transform(make_stamped("base", "l1", sec(1), { 0, 2, 0 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("base", "l1", sec(3), { 0, 4, 0 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("l1", "l2", sec(2), { 0, 0, 1 }), "x"));
-  const LookupResult l1 = buffer.lookup_transform("world", "l1", kLatestTime);
-  ASSERT_TRUE(l1.ok) << l1.message;
-  EXPECT_EQ(l1.stamp, sec(3));
-  EXPECT_TRUE(same_vector(l1.transform.translation, { 1, 4, 0 }));
-  const LookupResult l2 = buffer.lookup_transform("world", "l2", kLatestTime);
-  ASSERT_TRUE(l2.ok) << l2.message;
-  EXPECT_EQ(l2.stamp, sec(2));
-  EXPECT_TRUE(same_vector(l2.transform.translation, { 1, 3, 1 }));
+  expect_latest_offset(buffer, "l1", sec(3), { 1, 4, 0 });
+  expect_latest_offset(buffer, "l2", sec(2), { 1, 3, 1 });
 }
 
 TEST(BufferLatest, AParentChangedWithinTheHistoryIsFollowedAtTheChainTime)
@@ -130,13 +135,8 @@ TEST(BufferLatest, AParentChangedWithinTheHistoryIsFollowedAtTheChainTime)
   ASSERT_TRUE(buffer.set_transform(make_stamped("a", "x", sec(1), { 0, 0, 1 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("b", "x", sec(2), { 0, 0, 2 }), "x"));
   ASSERT_TRUE(buffer.set_transform(make_stamped("x", "y", sec(1), { 0, 0, 3 }), "x"));
-  const LookupResult x = buffer.lookup_transform("world", "x", kLatestTime);
-  ASSERT_TRUE(x.ok) << x.message;
-  EXPECT_TRUE(same_vector(x.transform.translation, { 0, 1, 2 }));
-  const LookupResult y = buffer.lookup_transform("world", "y", kLatestTime);
-  ASSERT_TRUE(y.ok) << y.message;
-  EXPECT_EQ(y.stamp, sec(1));
-  EXPECT_TRUE(same_vector(y.transform.translation, { 1, 0, 4 }));
+  expect_latest_offset(buffer, "x", sec(2), { 0, 1, 2 });
+  expect_latest_offset(buffer, "y", sec(1), { 1, 0, 4 });
 }
 
 TEST(BufferLatest, ErrorsDoNotDependOnWhatWasLookedUpBefore)
