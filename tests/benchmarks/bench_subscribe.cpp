@@ -6,7 +6,11 @@
 // message to its VTK type (vtkMatrix4x4, vtkImageData, vtkPolyData, vtkTransformCollection).
 // Per message it records the end-to-end latency: wall clock once the VTK value is ready minus the
 // header stamp the publisher wrote just before publishing (same host, same clock). Per spin it
-// records the conversion time (the GetLastMessage() call) and the spin time.
+// records the conversion time (the GetLastMessage() call) and the spin time. Each latency is also
+// split at the wake-up the DDS thread raised once it had taken and deserialized the message: the
+// first wake-up at or after the message's stamp. `queued_ms` = that wake-up − stamp (the
+// sender's write, the transport, Fast DDS and our deserialization), `wake_to_ready_ms` = VTK value
+// ready − that wake-up (the spinner's wake-up, the spin and the conversion).
 //
 //   bench_subscribe --type PoseStamped|Image|PointCloud2|PoseArray --topic T [--seconds S]
 //                   [--idle S] [--depth N]
@@ -26,6 +30,8 @@
 #include "ros2vtk/geometry_msgs/msg/pose_stamped.hpp"
 #include "ros2vtk/sensor_msgs/msg/image.hpp"
 #include "ros2vtk/sensor_msgs/msg/point_cloud2.hpp"
+#include "ros2vtk/wire/Participant.hpp"
+#include "ros2vtk/wire/WakeUp.hpp"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -33,7 +39,9 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -72,6 +80,10 @@ struct Record
   std::vector<double> latency_ms;    // per message
   std::vector<double> conversion_ms; // per spin that brought messages
   std::vector<double> per_spin_messages;
+  std::vector<double> queued_ms;        // per message: stamp -> the DDS thread's wake-up
+  std::vector<double> wake_to_ready_ms; // per message: that wake-up -> VTK value ready
+  std::mutex wake_mutex;
+  std::vector<double> wake_ups; // wall seconds of the DDS thread's wake-ups since the last spin
   std::string conversion_error;
   size_t converted_size = 0; // points, pixels or poses of the newest conversion
 };
@@ -137,10 +149,30 @@ int run(const Options& options)
     c->record->converted_size = size_of(value);
     const int count = c->probe->NewCount();
     c->record->per_spin_messages.push_back(count);
+    std::vector<double> wake_ups;
+    {
+      std::lock_guard<std::mutex> lock(c->record->wake_mutex);
+      wake_ups.swap(c->record->wake_ups);
+    }
     for (int i = 0; i < count; ++i)
-      c->record->latency_ms.push_back(1000.0 * (ready - stamp_seconds<Message>(c->probe->Raw(i))));
+    {
+      const double stamp = stamp_seconds<Message>(c->probe->Raw(i));
+      c->record->latency_ms.push_back(1000.0 * (ready - stamp));
+      auto wake = std::lower_bound(wake_ups.begin(), wake_ups.end(), stamp);
+      if (wake != wake_ups.end())
+      {
+        c->record->queued_ms.push_back(1000.0 * (*wake - stamp));
+        c->record->wake_to_ready_ms.push_back(1000.0 * (ready - *wake));
+      }
+    }
   });
   probe->AddObserver(vtkCommand::ModifiedEvent, observer);
+  // On the DDS thread, after a message was taken, deserialized and queued.
+  node->GetParticipant()->wake_up().set_callback([&record] {
+    const double now = bench::wall_seconds();
+    std::lock_guard<std::mutex> lock(record.wake_mutex);
+    record.wake_ups.push_back(now);
+  });
 
   std::printf("{\"ready\": true}\n");
   std::fflush(stdout);
@@ -172,7 +204,10 @@ int run(const Options& options)
     .numbers("conversion_ms", record.conversion_ms)
     .numbers("spin_ms", spin_ms)
     .numbers("messages_per_spin", record.per_spin_messages)
+    .numbers("queued_ms", record.queued_ms)
+    .numbers("wake_to_ready_ms", record.wake_to_ready_ms)
     .print();
+  node->GetParticipant()->wake_up().set_callback(nullptr);
   return 0;
 }
 

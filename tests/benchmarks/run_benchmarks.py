@@ -1263,6 +1263,10 @@ def bench_sender_split(ctx: 'Context') -> dict:
                 domain_id = 200 + (domain_id - 199) % 10
                 run[label] = {'sent': sent['sent'], 'received': got['received'], 'lost': sent['sent'] - got['received'],
                               'latency_ms': summary(got['latency_ms']), 'sender_publish_ms': summary(sent['publish_ms'])}
+                # bench_subscribe splits its latency at the DDS thread's wake-up (where the tail comes from).
+                for part in ('queued_ms', 'wake_to_ready_ms'):
+                    if part in got:
+                        run[label][part] = summary(got[part])
             run['median_ratio'] = run['ours']['latency_ms'].get('median', float('nan')) / \
                 run['rclpy']['latency_ms'].get('median', float('nan'))
             run['p99_ratio'] = run['ours']['latency_ms'].get('p99', float('nan')) / \

@@ -90,6 +90,8 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
     return false;
   }
   ros2vtk::tf2::LookupResult& result = *this->LastResult; // reused: see BufferCore
+  const bool wasOk = this->Status == 1;
+  const ros2vtk::tf2::Transform previous = result.transform;
   buffer.lookup_transform(this->ParentFrame, this->ChildFrame, ros2vtk::tf2::kLatestTime, result);
   if (!result.ok)
   {
@@ -110,13 +112,17 @@ bool vtkROS2Tf2LookupNode::UpdateFromBuffer(const ros2vtk::tf2::BufferCore& buff
   const bool newStamp = result.stamp != this->LastStampNanoseconds;
   this->LastStampNanoseconds = result.stamp;
   this->LastStamp = static_cast<double>(result.stamp) * 1e-9;
-  const Eigen::Isometry3d isometry = result.isometry();
   const double scale = this->ScaleLengths ? ros2vtk::convert::kMillimetresPerMetre : 1.0;
-  vtkMatrix4x4* matrix = this->LookupMatrix; // reused: one lookup per link at every spin
-  double elements[16];
-  ros2vtk::convert::isometry_to_elements(isometry, scale, elements);
-  matrix->DeepCopy(elements); // one Modified(), where twelve SetElement calls made twelve
-  const bool changed = this->SetMatrixTransformToParent(matrix);
+  bool changed = false;
+  if (!wasOk || result.transform != previous || scale != this->AppliedScale ||
+    this->MatrixTransformToParent->GetMTime() != this->AppliedMatrixTime)
+  {
+    double elements[16];
+    ros2vtk::convert::isometry_to_elements(result.isometry(), scale, elements);
+    changed = this->SetMatrixTransformToParent(elements);
+    this->AppliedScale = scale;
+    this->AppliedMatrixTime = this->MatrixTransformToParent->GetMTime();
+  }
   if (!changed && newStamp && this->ModifiedOnLookup)
   {
     this->Modified();

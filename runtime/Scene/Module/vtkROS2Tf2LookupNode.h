@@ -8,9 +8,6 @@
 #include "ros2vtkSceneModule.h" // for export macro
 #include "vtkROS2TransformNode.h"
 
-#include "vtkMatrix4x4.h" // for the vtkNew member
-#include "vtkNew.h"       // for vtkNew
-
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
@@ -95,7 +92,10 @@ protected:
   std::string LastError;
   double LastStamp = 0.0;
   long long LastStampNanoseconds = 0;
-  vtkNew<vtkMatrix4x4> LookupMatrix; // scratch for UpdateFromBuffer
+  // What UpdateFromBuffer last applied: a lookup that brings the same transform again, at the
+  // same scale, into a matrix nobody touched since, has nothing to convert or compare.
+  double AppliedScale = 0.0;
+  vtkMTimeType AppliedMatrixTime = 0;
 #ifndef __VTK_WRAP__
   std::unique_ptr<ros2vtk::tf2::LookupResult> LastResult; // reused by UpdateFromBuffer
 #endif

@@ -5,6 +5,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkXMLDataElement.h"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <string>
@@ -58,19 +59,18 @@ bool vtkROS2TransformNode::SetMatrixTransformToParent(vtkMatrix4x4* matrix)
     vtkErrorMacro("SetMatrixTransformToParent: null matrix");
     return false;
   }
-  bool changed = false;
-  for (int i = 0; i < 4 && !changed; ++i)
-  {
-    for (int j = 0; j < 4 && !changed; ++j)
-    {
-      changed = this->MatrixTransformToParent->GetElement(i, j) != matrix->GetElement(i, j);
-    }
-  }
-  if (!changed)
+  return this->SetMatrixTransformToParent(matrix->GetData());
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2TransformNode::SetMatrixTransformToParent(const double elements[16])
+{
+  const double* current = this->MatrixTransformToParent->GetData();
+  if (std::equal(elements, elements + 16, current))
   {
     return false;
   }
-  this->MatrixTransformToParent->DeepCopy(matrix);
+  this->MatrixTransformToParent->DeepCopy(elements);
   this->Modified();
   this->InvokeEvent(TransformModifiedEvent);
   return true;

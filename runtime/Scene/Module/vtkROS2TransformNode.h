@@ -31,6 +31,11 @@ public:
   /// Copies `matrix`; fires TransformModifiedEvent only when a value changed. Returns whether
   /// it changed.
   bool SetMatrixTransformToParent(vtkMatrix4x4* matrix);
+#ifndef __VTK_WRAP__
+  /// The same from 16 row-major elements, with no vtkMatrix4x4 in between (a tf lookup per
+  /// robot link at every spin).
+  bool SetMatrixTransformToParent(const double elements[16]);
+#endif
 
   /// A subscriber's vtkMatrix4x4 (SetMatrixTransformToParent).
   bool CopyContentFrom(vtkObject* data, std::string* error) override;

@@ -2,6 +2,7 @@
 
 #include "FrameListing.hpp"
 #include "FrameTable.hpp"
+#include "LatestPoses.hpp"
 #include "TransformInputCheck.hpp"
 #include "TreeWalker.hpp"
 
@@ -48,6 +49,7 @@ BufferCore::BufferCore(Duration cache_time)
   : cache_time_(std::max<Duration>(cache_time, 0))
   , frames_(std::make_unique<FrameTable>())
   , walk_scratch_(std::make_unique<WalkScratch>())
+  , latest_poses_(std::make_unique<LatestPoses>())
 {
 }
 
@@ -67,8 +69,9 @@ bool BufferCore::set_transform(const TransformStamped& transform, const std::str
   }
 
   std::lock_guard<std::mutex> lock(mutex_);
-  const FrameId child = frames_->intern(checked.child);
-  const FrameId parent = frames_->intern(checked.parent);
+  latest_poses_->invalidate(); // (a refused sample may still have replaced the frame's cache)
+  const FrameId child = frames_->intern_child(checked.child);
+  const FrameId parent = frames_->intern_parent(child, checked.parent);
   auto& cache = frames_->caches[child];
   if (!cache || cache->is_static() != is_static)
   {
@@ -146,7 +149,10 @@ void BufferCore::lookup_locked(const std::string& target_frame, const std::strin
     return;
   }
 
-  WalkResult walk = TreeWalker(*frames_, *walk_scratch_).transform_between(target, source, time);
+  // Latest-time lookups (every link at every spin) share one walk per state of the buffer.
+  WalkResult walk = time == kLatestTime
+    ? latest_poses_->lookup(*frames_, *walk_scratch_, target, source)
+    : TreeWalker(*frames_, *walk_scratch_).transform_between(target, source, time);
   result.error = walk.error;
   result.message = std::move(walk.message);
   result.ok = walk.error == Tf2Error::NoError;
@@ -287,6 +293,7 @@ std::string BufferCore::all_frames_as_yaml(TimePoint current_time) const
 void BufferCore::clear()
 {
   std::lock_guard<std::mutex> lock(mutex_);
+  latest_poses_->invalidate();
   for (auto& cache : frames_->caches)
   {
     if (cache)

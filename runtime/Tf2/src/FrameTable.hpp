@@ -35,9 +35,37 @@ struct FrameTable
     {
       caches.resize(ids.size());
       authorities.resize(ids.size());
+      next_child.resize(ids.size(), kNoFrame);
     }
     return id;
   }
+
+  /// intern() for the child of an incoming transform. A broadcaster sends its frames in the same
+  /// order in every message: the frame that followed the previous child last time is checked
+  /// first, by comparing names, which costs less than hashing the name.
+  FrameId intern_child(std::string_view name)
+  {
+    FrameId id = next_child.empty() ? kNoFrame : next_child[last_child];
+    if (id == kNoFrame || ids.name(id) != name)
+    {
+      id = intern(name);
+      next_child[last_child] = id;
+    }
+    last_child = id;
+    return id;
+  }
+
+  /// intern() for the parent of an incoming transform: usually the child's current parent.
+  FrameId intern_parent(FrameId child, std::string_view name)
+  {
+    const TimeCacheInterface* known = cache(child);
+    const FrameId id = known ? known->latest_time_and_parent().second : kNoFrame;
+    return id != kNoFrame && ids.name(id) == name ? id : intern(name);
+  }
+
+private:
+  std::vector<FrameId> next_child; ///< index = FrameId (kNoFrame: before the first child)
+  FrameId last_child = kNoFrame;
 };
 
 } // namespace tf2

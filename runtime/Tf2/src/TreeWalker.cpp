@@ -21,11 +21,6 @@ constexpr TimePoint kNoTimeYet = std::numeric_limits<TimePoint>::max();
 // walks keep their vectors in a WalkScratch (cleared, not freed) for the same reason.
 using FramePath = std::vector<FrameId>;
 
-// tf2's BufferCore::MAX_GRAPH_DEPTH: a walk longer than this is reported as a loop, as tf2
-// does. Frames come from the network; without the bound a 10 000-frame chain costs 10^8 steps
-// per lookup per spin (the loop check below is linear in the path) (issue 11.5).
-constexpr std::size_t kMaxGraphDepth = 1000;
-
 /// Adds `frame` to `path`; false when it was there already (the tree has a loop) or the path
 /// is longer than tf2 allows.
 bool visit(FramePath& path, FrameId frame)

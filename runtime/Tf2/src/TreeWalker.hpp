@@ -6,11 +6,17 @@
 
 #include "FrameTable.hpp"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace ros2vtk {
 namespace tf2 {
+
+/// tf2's BufferCore::MAX_GRAPH_DEPTH: a walk longer than this is reported as a loop, as tf2
+/// does. Frames come from the network; without the bound a 10 000-frame chain costs 10^8 steps
+/// per lookup per spin (the loop check is linear in the path) (issue 11.5).
+constexpr std::size_t kMaxGraphDepth = 1000;
 
 /// The vectors a walk fills, kept by the buffer between lookups (cleared, not freed): a lookup
 /// per link runs at every spin, and these allocations cost more than the walk itself. A

@@ -21,6 +21,7 @@ namespace tf2 {
 
 struct FrameTable;
 struct WalkScratch;
+class LatestPoses;
 
 class BufferCore
 {
@@ -99,6 +100,7 @@ private:
   mutable std::mutex mutex_;
   std::unique_ptr<FrameTable> frames_;
   std::unique_ptr<WalkScratch> walk_scratch_; ///< reused by every lookup; guarded by mutex_
+  std::unique_ptr<LatestPoses> latest_poses_; ///< latest-time poses of this state; mutex_ too
 };
 
 } // namespace tf2
