@@ -30,6 +30,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
+from view_pictures import pixels_on_the_border
 
 REPO = Path(__file__).resolve().parents[2]
 BUILD = Path(os.environ.get('ROS2VTK_BUILD_DIR', REPO / 'build'))
@@ -547,6 +548,28 @@ def test_10b_the_3d_view_follows_its_smaller_size_once_the_slice_panes_appear(wo
     # The robot and the volume: pixels that are not Slicer's blue-dominant background.
     drawn = sum(1 for r, g, b in image.get_flattened_data() if b - max(r, g) < 20)
     assert drawn > 2000, f'{drawn} pixels of the scene in the 3D view (10b-view.png)'
+
+
+def test_10c_the_swinging_robot_stays_whole_in_the_3d_view(world):
+    """The simulated arm swings (its default motion: every joint over 70 % of its range, periods of
+    6-10 s) beside the volume of test 10: the view is framed on the robot's workspace (every pose
+    within its joint limits) and the volume, so no part of the robot reaches the view's border in
+    any of eight views taken over 10 s, and the camera does not follow the moves (the server frames
+    the view no more times during the swing: one terminal line per framing)."""
+    driver = world['driver']
+    log = ARTIFACTS / 'server.log'
+    framed_before = log.read_text().count('[app] 3D view framed')
+    on_border = []
+    for k in range(8):
+        view = view_png(driver)
+        (ARTIFACTS / f'10c-swing-{k}.png').write_bytes(view)
+        on_border.append(pixels_on_the_border(view))
+        time.sleep(1.25)
+    framings = [line for line in log.read_text().splitlines() if '[app] 3D view framed' in line]
+    print(f'model pixels on the border: {on_border}; framings so far: {framings}')
+    assert max(on_border) < 5, f'the robot reaches the 3D view\'s border: {on_border} (10c-swing-k.png)'
+    assert framed_before >= 1 and 'robot workspace' in framings[-1], framings
+    assert len(framings) == framed_before, f'the camera moved by itself during the swing: {framings[framed_before:]}'
 
 
 def read_json_line(process, seconds: float = 60.0):

@@ -108,3 +108,29 @@ TEST(KinematicTree, ChainOfTenThousandLinksIsWalkedParentFirst)
   ASSERT_EQ(poses.size(), static_cast<size_t>(links));
   EXPECT_NEAR(poses.at("link_0").translation().z(), 9.999, 1e-9); // 9999 joints of 1 mm
 }
+
+TEST(KinematicTree, LinkReachBoundsEveryPose)
+{
+  std::string error;
+  auto tree = KinematicTree::from_urdf(kUrdf, &error);
+  ASSERT_TRUE(tree) << error;
+  const auto reach = tree->link_reach();
+  // By hand: column 0.1; arm 0.1 + 0.5; slider + its 0.2 travel; tip at the slider's origin.
+  EXPECT_NEAR(reach.at("base"), 0.0, 1e-12);
+  EXPECT_NEAR(reach.at("column"), 0.1, 1e-12);
+  EXPECT_NEAR(reach.at("arm"), 0.6, 1e-12);
+  EXPECT_NEAR(reach.at("slider"), 0.8, 1e-12);
+  EXPECT_NEAR(reach.at("tip"), 0.8, 1e-12);
+  // No pose over a grid of the joints' ranges puts a link's origin further from the root.
+  for (double shoulder = -1.5; shoulder <= 1.5; shoulder += 0.25)
+  {
+    for (double insertion = 0.0; insertion <= 0.2; insertion += 0.05)
+    {
+      for (const auto& [link, pose] :
+        tree->link_poses({ { "shoulder", shoulder }, { "insertion", insertion } }))
+      {
+        EXPECT_LE(pose.translation().norm(), reach.at(link) + 1e-12) << link;
+      }
+    }
+  }
+}

@@ -23,7 +23,8 @@ import time
 import vtk
 
 from . import scene_state, volumes
-from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make_render_window
+from ..framing import ViewFraming
+from .view import RenderWindowArea, SlicePanes, make_display, make_render_window
 
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
@@ -203,8 +204,9 @@ class App:
         self.slices = SlicePanes(self.scene) if slices and hasattr(ros2vtk, 'vtkROS2SliceView') else None
         self.slices_always = slices is True
         self.slice_widgets, self.slice_handlers = {}, {}
-        self.framed = 0
-        self.next_frame = self.next_refresh = self.next_slices = self.frame_again_at = 0.0
+        # The camera frames the robots' workspaces and what is drawn; again only when that changes.
+        self.framing = ViewFraming(self.scene, self.renderer)
+        self.next_frame = self.next_refresh = self.next_slices = 0.0
         self.errors = []
         self.spin_callbacks = []
         self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
@@ -326,8 +328,7 @@ class App:
             for folder in (s.robot_mesh_paths or '').split(os.pathsep):
                 if folder.strip():
                     robot.AddMeshSearchPath(folder.strip())
-            s.robot_selected = name
-            self.framed = 0  # frame the view again once it has loaded
+            s.robot_selected = name  # (the view is framed again once it has loaded: ViewFraming)
         return self._report(robot is not None, f'Robot {name} added ({s.robot_source})', f'Add robot {name} failed')
 
     def remove_robot(self, name=None):
@@ -520,10 +521,8 @@ class App:
         name = volumes.volume_name(path.strip())
         node = volumes.add_volume_node(self.scene, image, file_to_world, name)
         self.display.Update()
-        frame_camera(self.renderer)  # the volume in view (beside what was there)
-        # Once more after the slice panes have taken their share of the page (a smaller 3D view).
-        self.frame_again_at = time.monotonic() + 1.0
-        self.render()
+        self._frame_view(now=True)  # the volume in view beside the robots (again once the panes
+        self.render()  # have taken their share of the page: the view's new shape)
         dims, spacing = image.GetDimensions(), image.GetSpacing()
         self.state.slice_source = node.GetID()
         self._show_slice_source(node.GetID())
@@ -561,11 +560,10 @@ class App:
         else:
             ok = self.scene.ReadFromXMLFile(path)
             self.node = self.logic.GetDefaultROS2Node()
-            self.framed = 0
         return self._report(ok, f'Scene loaded from {path}', f'Load {path} failed')
 
     def reset_camera(self):
-        frame_camera(self.renderer)
+        self._frame_view(now=True)
         self.render()
 
     # ------------------------------------------------------------------ refresh and spin
@@ -611,18 +609,11 @@ class App:
         if self.view_handler is not None:
             self.view_handler.schedule_render()
 
-    def _frame_once_loaded(self):
-        """Frames the camera when the number of models changes, and once more a second later (links
-        reach their tf poses over the first spins after a load)."""
-        models = self.scene.GetNumberOfNodesByClass('vtkROS2ModelNode')
-        now = time.monotonic()
-        if models and models != self.framed:
-            self.framed = models
-            self.frame_again_at = now + 1.0
-            frame_camera(self.renderer)
-        elif self.frame_again_at and now >= self.frame_again_at:
-            self.frame_again_at = 0.0
-            frame_camera(self.renderer)
+    def _frame_view(self, now: bool = False) -> None:
+        """Frames the 3D view now, or when what it shows asks for it (ViewFraming.update); one
+        terminal line each time, so a camera that moves by itself can be told from a user's."""
+        if self.framing.frame() if now else self.framing.update():
+            print(f'[app] 3D view framed: {self.framing.describe()}', flush=True)
 
     async def _spin_loop(self):
         period = 1.0 / max(self.logic.GetSpinRate(), 1.0)
@@ -649,7 +640,7 @@ class App:
         self.display.Update()
         now = time.monotonic()
         if now >= self.next_frame:
-            self._frame_once_loaded()
+            self._frame_view()
             self.render()
             self.next_frame = now + max(FRAME_SECONDS, RENDER_SHARE * self.area.render_seconds)
         if self.slices is not None and now >= self.next_slices:

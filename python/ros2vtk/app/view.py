@@ -189,19 +189,6 @@ def make_render_window(size=(1000, 620)):
     return window, renderer
 
 
-def frame_camera(renderer) -> None:
-    """Everything in view, z up, seen from the front-right as Slicer's default 3D view."""
-    camera = renderer.GetActiveCamera()
-    camera.SetViewUp(0, 0, 1)
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(1, -1.1, 0.55)
-    camera.SetViewAngle(30.0)
-    renderer.ResetCamera()
-    # No zoom out: the bounding sphere filling the view's height already leaves room around the
-    # robot for its motion (the demo's --window framing, whose frames tests/demo checks).
-    renderer.ResetCameraClippingRange()
-
-
 class SlicePanes:
     """Axial, sagittal and coronal 2D views (Slicer's red, yellow and green) of a volume: the
     chosen source (`set_source`: a vtkROS2VolumeNode, or an image subscriber whose newest image is

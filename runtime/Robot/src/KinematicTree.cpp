@@ -3,6 +3,8 @@
 
 #include <urdf_parser/urdf_parser.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace ros2vtk {
@@ -192,6 +194,31 @@ std::map<std::string, Eigen::Isometry3d> KinematicTree::link_poses(
     poses[transform.child] = poses[transform.parent] * transform.transform;
   }
   return poses;
+}
+
+std::map<std::string, double> KinematicTree::link_reach() const
+{
+  auto travel = [](const JointInfo& joint) {
+    return joint.type == JointInfo::Type::Prismatic
+      ? std::max(std::abs(joint.lower), std::abs(joint.upper)) * joint.axis.norm()
+      : 0.0;
+  };
+  std::map<std::string, double> reach;
+  reach[root_link_] = 0.0;
+  // joints_ is in depth-first order, so each parent's reach is known before its children.
+  for (const auto& joint : joints_)
+  {
+    double moved = travel(joint);
+    if (!joint.mimic_joint.empty() && joint.type == JointInfo::Type::Prismatic)
+    {
+      const JointInfo* leader = this->joint(joint.mimic_joint);
+      const double led = leader ? std::max(std::abs(leader->lower), std::abs(leader->upper)) : 0.0;
+      moved =
+        (std::abs(joint.mimic_multiplier) * led + std::abs(joint.mimic_offset)) * joint.axis.norm();
+    }
+    reach[joint.child_link] = reach[joint.parent_link] + joint.origin.translation().norm() + moved;
+  }
+  return reach;
 }
 
 } // namespace robot

@@ -18,12 +18,14 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 #include "vtkXMLDataElement.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -423,6 +425,59 @@ int vtkROS2RobotNode::GetNumberOfPlaceholders() const
 {
   return this->Internals->Loaded ? static_cast<int>(this->Internals->Visuals.placeholder_count())
                                  : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::GetWorkspaceSphere(double sphere[4])
+{
+  vtkInternals& internals = *this->Internals;
+  const std::map<std::string, double> reach = internals.JointStates.GetLinkReach();
+  if (!internals.Loaded || reach.empty())
+  {
+    return false;
+  }
+  double radius = 0.0;
+  for (const auto& entry : reach)
+  {
+    radius = std::max(radius, entry.second * MillimetresPerMetre);
+  }
+  for (vtkROS2ModelNode* model : internals.Models)
+  {
+    const char* link = model ? model->GetAttribute(LinkAttribute) : nullptr;
+    auto linkReach = link ? reach.find(link) : reach.end();
+    if (linkReach == reach.end() || !model->GetPolyData() ||
+      model->GetPolyData()->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    double bounds[6];
+    model->GetPolyData()->GetBounds(bounds);                     // metres, in the visual's frame
+    vtkMatrix4x4* modelToLink = model->GetMatrixModelToParent(); // -> link frame, mm
+    double extent = 0.0;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double point[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+        bounds[4 + ((corner >> 2) & 1)], 1.0 };
+      double inLink[4];
+      modelToLink->MultiplyPoint(point, inLink);
+      extent = std::max(
+        extent, std::sqrt(inLink[0] * inLink[0] + inLink[1] * inLink[1] + inLink[2] * inLink[2]));
+    }
+    radius = std::max(radius, linkReach->second * MillimetresPerMetre + extent);
+  }
+  vtkROS2TransformNode* root =
+    this->GetLinkTransformNode(internals.JointStates.GetRootLink().c_str());
+  vtkNew<vtkMatrix4x4> rootToWorld; // identity: the fixed frame's origin until the root is known
+  if (root)
+  {
+    root->GetMatrixTransformToWorld(rootToWorld);
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    sphere[axis] = rootToWorld->GetElement(axis, 3);
+  }
+  sphere[3] = radius;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -94,6 +94,16 @@ void RobotJointStateDriver::Unload()
 }
 
 //------------------------------------------------------------------------------
+std::map<std::string, double> RobotJointStateDriver::GetLinkReach() const
+{
+  return this->Kinematics ? this->Kinematics->tree().link_reach() : std::map<std::string, double>{};
+}
+
+std::string RobotJointStateDriver::GetRootLink() const
+{
+  return this->Kinematics ? this->Kinematics->tree().root_link() : std::string();
+}
+
 std::vector<std::string> RobotJointStateDriver::GetJointNames() const
 {
   return this->Kinematics ? this->Kinematics->joint_names() : std::vector<std::string>();

@@ -59,6 +59,10 @@ public:
   bool Load(const std::string& urdfXml, std::string* error);
   void Unload();
   bool IsLoaded() const { return static_cast<bool>(this->Kinematics); }
+  /// For every link, the furthest its origin can be from the root link's (metres; KinematicTree::
+  /// link_reach), and the root link's name; empty before a load.
+  std::map<std::string, double> GetLinkReach() const;
+  std::string GetRootLink() const;
 
   /// Actuated joints (moving, not mimic), URDF tree order; empty before a load.
   std::vector<std::string> GetJointNames() const;

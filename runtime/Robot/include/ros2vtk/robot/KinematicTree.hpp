@@ -75,6 +75,13 @@ public:
   std::map<std::string, Eigen::Isometry3d> link_poses(
     const std::map<std::string, double>& positions) const;
 
+  /// For every link, the furthest its origin can be from the root link's origin over all joint
+  /// positions (metres): the lengths of the joint origins along its chain plus each prismatic
+  /// joint's largest travel within its limits (a mimic one's: |multiplier| x its leader's plus
+  /// |offset|). An upper bound (rotations only turn these segments); floating and planar joints
+  /// count as at their origin (robot_state_publisher does not move them either).
+  std::map<std::string, double> link_reach() const;
+
 private:
   std::string robot_name_;
   std::string root_link_;
