@@ -178,11 +178,13 @@ def test_1_add_robot_from_parameter_form(world):
     links = driver.find_element(By.TAG_NAME, 'body').text
     for link in ('base_link', 'instrument_link', 'needle_tip'):
         assert link in links, f'link {link} missing from the link table'
-    after = wait_for('the robot orange in the view', lambda: orange_pixels(view_png(driver)) > 200 and
+    # (The view frames the robot's whole workspace, a sphere of its reach: upright, the arm takes
+    # about 40 % of the view's height, and its orange knob and needle guide some 70 pixels.)
+    after = wait_for('the robot orange in the view', lambda: orange_pixels(view_png(driver)) > 40 and
                      orange_pixels(view_png(driver)), seconds=60)
     step_shot(driver, '1-robot-added')
     (ARTIFACTS / '1-view.png').write_bytes(view_png(driver))
-    assert before < 50, f'orange before the robot was added: {before}'
+    assert before < 10, f'orange before the robot was added: {before}'
     print(f'robot row: {row!r}; orange pixels {before} -> {after}')
 
 
@@ -259,7 +261,7 @@ def test_4_save_reload_page_load_scene(world, tmp_path):
     wait_for('the robot loaded again', lambda: 'loaded' in row_text(driver, 'robot-arm'))
     wait_for('the subscriber counting again', lambda: (lambda c: len(c) > 5 and c[5].text not in ('', '0'))(
         driver.find_elements(By.CSS_SELECTOR, '[id="topic-subscriber-/chatter"] td')))
-    wait_for('the robot orange in the view again', lambda: orange_pixels(view_png(driver)) > 200, seconds=60)
+    wait_for('the robot orange in the view again', lambda: orange_pixels(view_png(driver)) > 40, seconds=60)
     step_shot(driver, '4-scene-loaded')
 
 
@@ -410,7 +412,7 @@ def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world
     try:
         driver.get(world['url'])
         wait_for('the view streaming in the second tab', lambda: driver.find_elements(By.ID, 'view') and
-                 orange_pixels(view_png(driver)) > 200, seconds=60)
+                 orange_pixels(view_png(driver)) > 40, seconds=60)
     finally:
         driver.close()
         driver.switch_to.window(first)
@@ -418,7 +420,7 @@ def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world
     log = (ARTIFACTS / 'server.log').read_text()
     assert 'Traceback' not in log and 'never retrieved' not in log, log[-3000:]
     assert 'JS Error' not in log, log[-3000:]
-    assert orange_pixels(view_png(driver)) > 200  # the first tab still streams
+    assert orange_pixels(view_png(driver)) > 40  # the first tab still streams
 
 
 def write_sphere_volume(path: Path) -> None:
@@ -570,6 +572,35 @@ def test_10c_the_swinging_robot_stays_whole_in_the_3d_view(world):
     assert max(on_border) < 5, f'the robot reaches the 3D view\'s border: {on_border} (10c-swing-k.png)'
     assert framed_before >= 1 and 'robot workspace' in framings[-1], framings
     assert len(framings) == framed_before, f'the camera moved by itself during the swing: {framings[framed_before:]}'
+
+
+def test_10d_window_and_level_of_the_volume_from_the_panel(world):
+    """The Volumes section sets the chosen volume's window/level (vtkROS2VolumeNode.SetWindow/
+    SetLevel): with a level far above the sphere's 1000 the panes go dark (no white disc); text
+    that is no number is refused with its reason; an empty window goes back to the scalar range
+    and the white disc returns."""
+    driver = world['driver']
+    panes = ('axial', 'sagittal', 'coronal')
+
+    def whites():
+        return {o: bright_disc(driver.find_element(By.ID, f'slice_{o}').screenshot_as_png)['white_fraction']
+                for o in panes}
+    type_into(driver, 'volume_window', '100')
+    type_into(driver, 'volume_level', '5000')
+    click(driver, 'volume_window_level')
+    wait_for_message(driver, 'sphere: window 100, level 5000')
+    dark = wait_for('the slice panes dark (level above the sphere)',
+                    lambda: (lambda w: all(v < 0.002 for v in w.values()) and w)(whites()), seconds=30)
+    step_shot(driver, '10d-window-level')
+    type_into(driver, 'volume_window', 'wide')
+    click(driver, 'volume_window_level')
+    wait_for_message(driver, 'Window/level not set: window and level are numbers')
+    type_into(driver, 'volume_window', '')
+    click(driver, 'volume_window_level')
+    wait_for_message(driver, 'window/level from its scalar range')
+    back = wait_for('the white disc back in every pane',
+                    lambda: (lambda w: all(v > 0.04 for v in w.values()) and w)(whites()), seconds=30)
+    print(f'white fraction of the panes: level 5000 {dark}, scalar range {back}')
 
 
 def read_json_line(process, seconds: float = 60.0):

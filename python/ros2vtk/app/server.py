@@ -16,6 +16,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import logging
+import math
 import os
 import sys
 import time
@@ -240,7 +241,7 @@ class App:
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
             'parameter_types': list(parameter_types()),
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
-            'volume_file': '', 'slice_sources': [], 'slice_source': '',
+            'volume_file': '', 'slice_sources': [], 'slice_source': '', 'volume_window': '', 'volume_level': '',
             'slices_shown': self.slices is not None and self.slices_always,
             'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4, 5],
             'types_publishers': _short_names(self.node.GetRegisteredROS2PublisherNodes(), 'vtkROS2Publisher'),
@@ -281,6 +282,7 @@ class App:
         c.set_remote_parameter = self.set_remote_parameter
         c.open_volume = self.open_volume
         c.remove_volume = self.remove_volume
+        c.set_window_level = self.set_window_level
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
@@ -539,6 +541,35 @@ class App:
         self.state.slice_source = ''
         self._show_slice_source('')
         return self._report(True, f'Volume {name} removed', '')
+
+    def set_window_level(self, form=None):
+        """The chosen volume's window and level (vtkROS2VolumeNode.SetWindow/SetLevel), used by the
+        3D view's rendering and the slice panes; a window of 0 or left empty: its scalar range."""
+        self._apply(form)
+        s = self.state
+        node = self.scene.GetNodeByID(s.slice_source) if s.slice_source else None
+        if node is None or not node.IsA('vtkROS2VolumeNode'):
+            return self._report(False, '', 'Window/level: choose a volume in the list')
+        text_window, text_level = str(s.volume_window or '').strip(), str(s.volume_level or '').strip()
+        try:
+            window = float(text_window) if text_window else 0.0
+            level = float(text_level) if text_level else 0.0
+        except ValueError:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(
+                f'window and level are numbers (got {text_window!r}, {text_level!r})\n')
+            return self._report(False, '', 'Window/level not set')
+        if not (math.isfinite(window) and math.isfinite(level)):
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText('window and level are finite numbers\n')
+            return self._report(False, '', 'Window/level not set')
+        node.SetWindow(max(window, 0.0))
+        node.SetLevel(level)
+        node.Modified()
+        self.display.Update()
+        self.render()
+        self.next_slices = 0.0  # the panes at the next spin
+        if window > 0:
+            return self._report(True, f'{node.GetName()}: window {window:g}, level {level:g}', '')
+        return self._report(True, f'{node.GetName()}: window/level from its scalar range', '')
 
     def _show_slice_source(self, slice_source='', **_):
         if self.slices is not None:

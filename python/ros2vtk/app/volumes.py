@@ -185,31 +185,19 @@ def remove_volume_node(scene, node) -> None:
 
 
 def image_of(node) -> vtk.vtkImageData | None:
-    """The image a slice source shows: a volume node's image, an image subscriber's newest one."""
-    if node is None:
+    """The image a slice source (a volume node) shows."""
+    if node is None or not node.IsA('vtkROS2VolumeNode'):
         return None
-    if node.IsA('vtkROS2VolumeNode'):
-        return node.GetImageData()
-    if node.IsA('vtkROS2SubscriberNode') and node.GetNumberOfMessages() > 0:
-        value = node.GetLastMessage()
-        return value if isinstance(value, vtk.vtkImageData) else None
-    return None
+    return node.GetImageData()
 
 
 def slice_sources(scene) -> list[dict]:
-    """What the slice panes can show: every volume node, and every image subscriber whose newest
-    image is 3D (depth > 1), as {'value': node ID, 'title': label} rows."""
+    """What the slice panes can show: every volume node, as {'value': node ID, 'title': label}
+    rows. (No image subscriber: no mapped ROS type gives a 3D image, so none is offered.)"""
     from .scene_state import nodes_of_class
     rows = []
     for node in nodes_of_class(scene, 'vtkROS2VolumeNode'):
         image = node.GetImageData()
         dims = image.GetDimensions() if image is not None else (0, 0, 0)
         rows.append({'value': node.GetID(), 'title': f'{node.GetName()} (volume, {dims[0]}x{dims[1]}x{dims[2]})'})
-    for node in nodes_of_class(scene, 'vtkROS2SubscriberNode'):
-        if node.GetSlicerType() != 'vtkImageData':
-            continue
-        image = image_of(node)
-        if image is not None and image.GetDimensions()[2] > 1:
-            dims = image.GetDimensions()
-            rows.append({'value': node.GetID(), 'title': f'{node.GetTopic()} (subscriber, {dims[0]}x{dims[1]}x{dims[2]})'})
     return rows

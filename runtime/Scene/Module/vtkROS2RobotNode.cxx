@@ -11,6 +11,7 @@
 #include "vtkROS2TransformNode.h"
 
 #include "ros2vtk/convert/Units.hpp"
+#include "ros2vtk/robot/KinematicTree.hpp"
 #include "ros2vtk/robot/RobotLoader.hpp"
 #include "ros2vtk/robot/XacroProcessor.hpp"
 
@@ -25,7 +26,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -39,6 +39,32 @@ const char* const LinkRole = "robotLink";
 const char* const LinkAttribute = "ros2vtk.link";
 const char* const PlaceholderAttribute = "ros2vtk.placeholder";
 constexpr double MillimetresPerMetre = ros2vtk::convert::kMillimetresPerMetre;
+
+// Balls (centre, radius) and the smallest ball holding two of them: a robot's workspace.
+namespace EnclosingSphere {
+struct Ball
+{
+  Eigen::Vector3d Centre = Eigen::Vector3d::Zero();
+  double Radius = 0.0;
+  double Extent = 0.0; // added to Radius by Grown(): the link's visuals around its origin
+  Ball Grown() const { return { this->Centre, this->Radius + this->Extent, 0.0 }; }
+};
+
+Ball Union(const Ball& a, const Ball& b)
+{
+  const double distance = (b.Centre - a.Centre).norm();
+  if (distance + b.Radius <= a.Radius)
+  {
+    return a;
+  }
+  if (distance + a.Radius <= b.Radius)
+  {
+    return b;
+  }
+  const double radius = (distance + a.Radius + b.Radius) / 2;
+  return { a.Centre + (b.Centre - a.Centre) * ((radius - a.Radius) / distance), radius, 0.0 };
+}
+} // namespace EnclosingSphere
 
 // Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
 // shared through the loader's cache) and the matrix brings it into the millimetre scene.
@@ -431,21 +457,24 @@ int vtkROS2RobotNode::GetNumberOfPlaceholders() const
 bool vtkROS2RobotNode::GetWorkspaceSphere(double sphere[4])
 {
   vtkInternals& internals = *this->Internals;
-  const std::map<std::string, double> reach = internals.JointStates.GetLinkReach();
+  const std::map<std::string, ros2vtk::robot::LinkReach> reach =
+    internals.JointStates.GetLinkReach();
   if (!internals.Loaded || reach.empty())
   {
     return false;
   }
-  double radius = 0.0;
+  // Each link's ball (root frame, mm), grown by the furthest point of its visuals from its origin.
+  std::map<std::string, EnclosingSphere::Ball> balls;
   for (const auto& entry : reach)
   {
-    radius = std::max(radius, entry.second * MillimetresPerMetre);
+    balls[entry.first] = { entry.second.centre * MillimetresPerMetre,
+      entry.second.radius * MillimetresPerMetre };
   }
   for (vtkROS2ModelNode* model : internals.Models)
   {
     const char* link = model ? model->GetAttribute(LinkAttribute) : nullptr;
-    auto linkReach = link ? reach.find(link) : reach.end();
-    if (linkReach == reach.end() || !model->GetPolyData() ||
+    auto ball = link ? balls.find(link) : balls.end();
+    if (ball == balls.end() || !model->GetPolyData() ||
       model->GetPolyData()->GetNumberOfPoints() == 0)
     {
       continue;
@@ -460,23 +489,31 @@ bool vtkROS2RobotNode::GetWorkspaceSphere(double sphere[4])
         bounds[4 + ((corner >> 2) & 1)], 1.0 };
       double inLink[4];
       modelToLink->MultiplyPoint(point, inLink);
-      extent = std::max(
-        extent, std::sqrt(inLink[0] * inLink[0] + inLink[1] * inLink[1] + inLink[2] * inLink[2]));
+      extent = std::max(extent, Eigen::Vector3d(inLink[0], inLink[1], inLink[2]).norm());
     }
-    radius = std::max(radius, linkReach->second * MillimetresPerMetre + extent);
+    ball->second.Extent = std::max(ball->second.Extent, extent);
   }
+  EnclosingSphere::Ball all = balls.begin()->second.Grown();
+  for (const auto& entry : balls)
+  {
+    all = EnclosingSphere::Union(all, entry.second.Grown());
+  }
+  // Into the world: the root link's pose now (the fixed frame's origin until it is known).
   vtkROS2TransformNode* root =
     this->GetLinkTransformNode(internals.JointStates.GetRootLink().c_str());
-  vtkNew<vtkMatrix4x4> rootToWorld; // identity: the fixed frame's origin until the root is known
+  vtkNew<vtkMatrix4x4> rootToWorld;
   if (root)
   {
     root->GetMatrixTransformToWorld(rootToWorld);
   }
+  const double centre[4] = { all.Centre.x(), all.Centre.y(), all.Centre.z(), 1.0 };
+  double world[4];
+  rootToWorld->MultiplyPoint(centre, world);
   for (int axis = 0; axis < 3; ++axis)
   {
-    sphere[axis] = rootToWorld->GetElement(axis, 3);
+    sphere[axis] = world[axis];
   }
-  sphere[3] = radius;
+  sphere[3] = all.Radius;
   return true;
 }
 

@@ -94,9 +94,10 @@ void RobotJointStateDriver::Unload()
 }
 
 //------------------------------------------------------------------------------
-std::map<std::string, double> RobotJointStateDriver::GetLinkReach() const
+std::map<std::string, ros2vtk::robot::LinkReach> RobotJointStateDriver::GetLinkReach() const
 {
-  return this->Kinematics ? this->Kinematics->tree().link_reach() : std::map<std::string, double>{};
+  return this->Kinematics ? this->Kinematics->tree().link_reach()
+                          : std::map<std::string, ros2vtk::robot::LinkReach>{};
 }
 
 std::string RobotJointStateDriver::GetRootLink() const
