@@ -51,13 +51,17 @@ def where_the_scene_puts_the_bright_voxel(path: Path):
     return to_world.MultiplyPoint(point)[:3], node, scene
 
 
-def write_lps_nrrd(path: Path) -> None:
-    # Axis i along +y (2 mm), axis j along -x (3 mm), axis k along +z (4 mm), in LPS.
-    header = ('NRRD0004\ntype: uint8\ndimension: 3\nspace: left-posterior-superior\n'
-              f'sizes: {DIMS[0]} {DIMS[1]} {DIMS[2]}\n'
-              'space directions: (0,2,0) (-3,0,0) (0,0,4)\nkinds: domain domain domain\n'
+def write_nrrd(path: Path, space: str, directions: str) -> None:
+    """A NRRD file: header text by hand (origin (10, 20, 30)), then the voxels, raw."""
+    header = (f'NRRD0004\ntype: uint8\ndimension: 3\nspace: {space}\nsizes: {DIMS[0]} {DIMS[1]} {DIMS[2]}\n'
+              f'space directions: {directions}\nkinds: domain domain domain\n'
               'encoding: raw\nspace origin: (10,20,30)\n\n')
     path.write_bytes(header.encode() + voxels())
+
+
+def write_lps_nrrd(path: Path) -> None:
+    # Axis i along +y (2 mm), axis j along -x (3 mm), axis k along +z (4 mm), in LPS.
+    write_nrrd(path, 'left-posterior-superior', '(0,2,0) (-3,0,0) (0,0,4)')
 
 
 def test_nrrd_space_directions_rotated_in_lps_space(tmp_path):
@@ -72,11 +76,7 @@ def test_nrrd_space_directions_rotated_in_lps_space(tmp_path):
 
 def test_nrrd_in_ras_space_keeps_its_signs(tmp_path):
     path = tmp_path / 'ras.nrrd'
-    header = ('NRRD0004\ntype: uint8\ndimension: 3\nspace: right-anterior-superior\n'
-              f'sizes: {DIMS[0]} {DIMS[1]} {DIMS[2]}\n'
-              'space directions: (0,2,0) (-3,0,0) (0,0,4)\nkinds: domain domain domain\n'
-              'encoding: raw\nspace origin: (10,20,30)\n\n')
-    path.write_bytes(header.encode() + voxels())
+    write_nrrd(path, 'right-anterior-superior', '(0,2,0) (-3,0,0) (0,0,4)')
     world, *_ = where_the_scene_puts_the_bright_voxel(path)
     i, j, k = BRIGHT
     assert numpy.allclose(world, (10 + j * -3, 20 + i * 2, 30 + k * 4)), world
@@ -98,11 +98,7 @@ def test_metaimage_transform_matrix(tmp_path):
 
 def test_axis_aligned_files_keep_their_origin_and_no_transform(tmp_path):
     path = tmp_path / 'plain.nrrd'
-    header = ('NRRD0004\ntype: uint8\ndimension: 3\nspace: right-anterior-superior\n'
-              f'sizes: {DIMS[0]} {DIMS[1]} {DIMS[2]}\n'
-              'space directions: (2,0,0) (0,3,0) (0,0,4)\nkinds: domain domain domain\n'
-              'encoding: raw\nspace origin: (10,20,30)\n\n')
-    path.write_bytes(header.encode() + voxels())
+    write_nrrd(path, 'right-anterior-superior', '(2,0,0) (0,3,0) (0,0,4)')
     world, node, _ = where_the_scene_puts_the_bright_voxel(path)
     assert node.GetParentTransformNode() is None
     i, j, k = BRIGHT
@@ -111,11 +107,7 @@ def test_axis_aligned_files_keep_their_origin_and_no_transform(tmp_path):
 
 def test_a_direction_that_is_no_matrix_is_refused(tmp_path):
     path = tmp_path / 'broken.nrrd'
-    header = ('NRRD0004\ntype: uint8\ndimension: 3\nspace: right-anterior-superior\n'
-              f'sizes: {DIMS[0]} {DIMS[1]} {DIMS[2]}\n'
-              'space directions: (0,2,0) (-3,0) (0,0,4)\nkinds: domain domain domain\n'
-              'encoding: raw\nspace origin: (10,20,30)\n\n')
-    path.write_bytes(header.encode() + voxels())
+    write_nrrd(path, 'right-anterior-superior', '(0,2,0) (-3,0) (0,0,4)')
     with pytest.raises(ValueError, match='not a 3 x 3 matrix'):
         volumes.read_volume(str(path))
 

@@ -211,6 +211,7 @@ class App:
         self.errors = []
         self.spin_callbacks = []
         self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
+        self.parameter_queue = []  # (service, name, type, value, description) waiting for their service
         self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
         self.browsers = _BrowserCounter()
         self.server.add_protocol_to_configure(lambda protocol: protocol.registerLinkProtocol(
@@ -461,11 +462,21 @@ class App:
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             return self._report(False, '', f'Set {target} {name} failed')
-        type_id, field = parameter_types()[kind]
         service = target.rstrip('/') + '/set_parameters'
+        description = f'{target}: {name} = {text}'
         if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
-            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a set on {target} still waits for its answer\n')
-            return self._report(False, '', f'Set {target} {name} failed')
+            # One request per service client node at a time: this one waits for the answer to the
+            # one in flight, then goes (in the order they were asked for).
+            self.parameter_queue.append((service, name, kind, value, description))
+            print(f'[app] parameter set queued behind the one in flight: {description}', flush=True)
+            s.remote_param_result = f'{description}: queued behind the set in flight'
+            return self._report(True, f'Set request queued for {service}', '')
+        ok = self._send_parameter_set(service, name, kind, value, description)
+        return self._report(ok, f'Set request sent to {service}', f'Set {target} {name} failed')
+
+    def _send_parameter_set(self, service: str, name: str, kind: str, value, description: str) -> bool:
+        """Sends one SetParameters request for `name` (checked value of type `kind`)."""
+        type_id, field = parameter_types()[kind]
         client = self.node.GetServiceClientNodeByService(service) or \
             self.node.CreateAndAddServiceClientNode('rcl_interfaces/srv/SetParameters', service)
         ok = client is not None
@@ -483,10 +494,9 @@ class App:
                                       if kind != 'double' else repr(value))
             ok = ok and client.SendAsyncRequest(request) > 0
         if ok:
-            description = f'{target}: {name} = {text}'
             self.parameter_sets.append((client, description))
-            s.remote_param_result = f'{description}: sent, waiting for the answer'
-        return self._report(ok, f'Set request sent to {service}', f'Set {target} {name} failed')
+            self.state.remote_param_result = f'{description}: sent, waiting for the answer'
+        return ok
 
     def _take_parameter_answers(self):
         """Shows the answers of set_parameters requests that arrived; drops their clients."""
@@ -509,6 +519,17 @@ class App:
                 self.errors = (self.errors + [text])[-20:]
                 self.state.errors = list(self.errors)
         self.parameter_sets = pending
+        for queued in list(self.parameter_queue):  # the next queued set of each free service
+            service = queued[0]
+            if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
+                continue
+            self.parameter_queue.remove(queued)
+            if not self._send_parameter_set(*queued):
+                text = f'{queued[-1]}: not sent ({self.messages.take().strip() or "no client"})'
+                self.state.remote_param_result = text
+                self.state.message, self.state.message_kind = text, 'error'
+                self.errors = (self.errors + [text])[-20:]
+                self.state.errors = list(self.errors)
 
     def open_volume(self, form=None, path: str | None = None):
         """Reads a volume file (NRRD, MetaImage, NIfTI) on the server into a vtkROS2VolumeNode:
@@ -612,7 +633,7 @@ class App:
         s.tf_lookups, s.tf_broadcasters = scene_state.tf_rows(self.scene)
         s.tf_frames = scene_state.tf_frame_rows(self.node)
         s.tf_publishers = scene_state.tf_publishers(self.node)
-        if self.parameter_sets:
+        if self.parameter_sets or self.parameter_queue:
             self._take_parameter_answers()
         s.parameters = scene_state.parameter_rows(self.scene)
         if self.slices is not None:
