@@ -655,12 +655,12 @@ def test_11_set_array_parameters_from_the_form(world):
 
 def test_12_sets_on_one_node_wait_in_order_for_its_answer(world):
     """Parameters: a set asked for while an earlier one on the same node waits for its answer is
-    queued, not refused. An rclpy node that answers its first set 8 s late: `gain` = 4, then 5
+    queued, not refused. An rclpy node that answers its first set 6 s late: `gain` = 4, then 5
     while 4 waits (queued, one terminal line); the node receives them in that order (it prints
     4.0, then 5.0) and both answers are shown."""
     driver = world['driver']
     peer = world['start']([VENV_PYTHON, REPO / 'tests' / 'app' / 'param_peer.py', '--node', 'slow_tuner',
-                           '--slow-first', '8'], stdout=subprocess.PIPE)
+                           '--slow-first', '6'], stdout=subprocess.PIPE)
     assert read_json_line(peer) == {'ready': True}
     choose(driver, 'remote_param_type', 'double')
     type_into(driver, 'remote_param_node', '/slow_tuner')

@@ -30,6 +30,7 @@ from .view import RenderWindowArea, SlicePanes, make_display, make_render_window
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
 SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
+PARAMETER_SET_SECONDS = 15.0  # a set_parameters answer (and the node's discovery) may take this long
 # Frames are asked for no sooner than RENDER_SHARE times what the last ones took to render: on a
 # slow machine the views' frame rate drops, and the loop keeps most of its time for spinning, the
 # panels and the browser's calls (a new size of the view among them).
@@ -481,6 +482,7 @@ class App:
             self.node.CreateAndAddServiceClientNode('rcl_interfaces/srv/SetParameters', service)
         ok = client is not None
         if ok:
+            client.SetTimeout(PARAMETER_SET_SECONDS)
             request = client.CreateBlankRequest()
             path = f'parameters[0].value.{field}'
             ok = request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name) \
