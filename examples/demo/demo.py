@@ -35,6 +35,7 @@ from pathlib import Path
 
 import ros2vtk
 import vtk
+from ros2vtk.framing import ViewFraming
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -223,19 +224,6 @@ def display_box(renderer, bounds):
     return [min(p[0] for p in points), min(p[1] for p in points), max(p[0] for p in points), max(p[1] for p in points)]
 
 
-def frame_scene(renderer) -> None:
-    """Everything in view (robot whole, phantom), z up, from the front-right, with a margin for
-    the arm's motion (re-framed once the arm is tracked and once the phantom is placed)."""
-    camera = renderer.GetActiveCamera()
-    camera.SetViewUp(0, 0, 1)
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(1.0, -1.1, 0.55)
-    camera.SetViewAngle(30.0)
-    renderer.ResetCamera()
-    camera.Zoom(1.0)  # (the bounding sphere of the arm and the phantom leaves room for the motion)
-    renderer.ResetCameraClippingRange()
-
-
 # The 2D panes of the window mode, top to bottom, with Slicer's view colours (red, yellow, green).
 SLICE_PANES = (('axial', (0.95, 0.35, 0.35)), ('sagittal', (0.95, 0.85, 0.3)), ('coronal', (0.45, 0.8, 0.4)))
 VIEW_WIDTH = 0.7  # of the window, for the 3D view; the panes share the rest
@@ -264,6 +252,7 @@ class Viewer:
         self.tip = None            # the needle tip (world mm) once every link is tracked
         self.tip_link_id = None    # the tip link's transform node: its model is the tip marker
         self.tip_model_id = None
+        self.framing = ViewFraming(scene, self.renderer)  # the robot's workspace and the phantom
         self.frame = 0
         # Axial, sagittal and coronal panes of the phantom (vtkROS2SliceView: resliced where the
         # registration puts it, the needle's cut drawn in its colour) right of the 3D view, centred
@@ -336,9 +325,11 @@ class Viewer:
             self.renderer.RemoveActor(self.actors.pop(gone))
 
     def reset_camera(self) -> None:
-        frame_scene(self.renderer)
+        self.framing.frame()
 
     def render(self) -> str | None:
+        # Framed on the robot's workspace and the phantom, again only when that changes.
+        self.framing.update()
         # The robot moves: near/far planes computed once would clip links that swing towards or
         # away from the camera (seen as a needle guide missing from a frame).
         self.renderer.ResetCameraClippingRange()
@@ -373,7 +364,10 @@ class Viewer:
                 'phantom_display_box': display_box(self.renderer, self.phantom.world_bounds()),
                 'slice_planes_mm': self.phantom.slice_planes(),
                 'voxel_mm': list(self.phantom.image.GetSpacing()),
-                'view_viewport_px': [v * self.window.GetSize()[i % 2] for i, v in enumerate(self.renderer.GetViewport())]}
+                'view_viewport_px': [v * self.window.GetSize()[i % 2] for i, v in enumerate(self.renderer.GetViewport())],
+                'camera_mm': list(self.renderer.GetActiveCamera().GetPosition())
+                + list(self.renderer.GetActiveCamera().GetFocalPoint()),
+                'framings': self.framing.frames}
         centre = [0.0, 0.0, 0.0]
         for orientation, view in self.slice_views.items():
             view.GetSliceCenter(centre)
@@ -527,8 +521,6 @@ def run_window(demo: Demo, args, duration: float) -> int:
             viewer.phantom.set_visible(demo.placement.placed)
             if demo.placement.placed:
                 viewer.follow_tip()
-            if event:
-                viewer.reset_camera()  # the robot whole and the phantom in one view
             now = time.monotonic()
             if args.offscreen:
                 if event == 'placed' or now - last_frame >= 1.0 / args.frames_per_second:
@@ -581,7 +573,6 @@ def run_app(demo: Demo, args, duration: float) -> int:
         def after_spin():
             if demo.after_spin():
                 phantom.set_visible(demo.placement.placed)
-                app.framed = -1  # re-frame: the robot whole and the phantom
             if demo.tip is not None and demo.placement.placed:
                 phantom.follow(demo.tip)
                 if phantom.tip_inside and app.slices is not None:

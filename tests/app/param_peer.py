@@ -1,12 +1,14 @@
 """An rclpy node for the app's remote-parameter tests, in its own process: declares `gain`
 (double, 0.5), refusing negative values with a reason, and two arrays, `ids` (integer[], [1, 2])
 and `names` (string[], ['a']); prints one JSON line per accepted
-change ({"gain": value}) and {"ready": true} once up. Runs until terminated."""
+change ({"gain": value}) and {"ready": true} once up; `--slow-first S` answers its first set
+request S seconds late (the callback blocks its executor). Runs until terminated."""
 from __future__ import annotations
 
 import argparse
 import json
 import sys
+import time
 
 import rclpy
 from rcl_interfaces.msg import SetParametersResult
@@ -15,6 +17,7 @@ from rcl_interfaces.msg import SetParametersResult
 def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument('--node', default='tuner')
+    parser.add_argument('--slow-first', type=float, default=0.0)
     args = parser.parse_args()
     rclpy.init()
     node = rclpy.create_node(args.node)
@@ -22,7 +25,12 @@ def main() -> int:
     node.declare_parameter('ids', [1, 2])
     node.declare_parameter('names', ['a'])
 
+    slow = [args.slow_first]
+
     def check(parameters) -> SetParametersResult:
+        if slow[0] > 0:
+            time.sleep(slow.pop())
+            slow.append(0.0)
         for parameter in parameters:
             if parameter.name == 'gain' and parameter.value < 0:
                 return SetParametersResult(successful=False, reason='gain must be >= 0')

@@ -22,7 +22,8 @@ import time
 import vtk
 
 import ros2vtk
-from ros2vtk.app.view import ensure_x_display, frame_camera, make_display, make_render_window
+from ros2vtk.app.view import ensure_x_display, make_display, make_render_window
+from ros2vtk.framing import ViewFraming
 
 
 def wait_loaded(logic, display, robots, seconds: float) -> bool:
@@ -58,7 +59,7 @@ def bare_frames(live_actors: list, frames: int, period: float) -> list[float]:
         if live.GetUserMatrix() is not None:
             actor.SetUserMatrix(live.GetUserMatrix())
         renderer.AddActor(actor)
-    frame_camera(renderer)
+    ViewFraming(None, renderer).frame()
     window.Render()
     actors = actors_of(renderer)
     times = []
@@ -91,7 +92,7 @@ def main() -> int:
         window, renderer = make_render_window()
         display = make_display(logic, renderer)
         loaded = wait_loaded(logic, display, robots, args.wait)
-        frame_camera(renderer)
+        ViewFraming(logic.GetScene(), renderer).frame()
         window.Render()
         period = 1.0 / args.rate
         spin_ms, update_ms, render_ms, frame_ms, messages = [], [], [], [], []

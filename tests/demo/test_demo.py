@@ -136,6 +136,11 @@ def test_demo_shows_the_needle_reaching_into_the_phantom():
     assert all(150 <= side <= 500 for side in sides), sides
     nearest = [min(max(0.0, bounds[2 * i]), bounds[2 * i + 1]) for i in range(3)]
     assert math.dist(nearest, (0, 0, 0)) < 1000, bounds
+    # Framed on the robot's workspace and the phantom once it is placed, the camera stays where it
+    # is while the arm moves (no camera that follows each frame's bounds).
+    placed = [f for f in tracked if infos[f]['phantom_visible']]
+    cameras = {tuple(round(c, 3) for c in infos[f]['camera_mm']) for f in placed}
+    assert len(placed) >= 3 and len(cameras) == 1, [(f.name, infos[f]['camera_mm'], infos[f]['framings']) for f in placed]
     # The three slices through the tip (within a voxel) whenever it is inside; the 2D panes
     # centred on it, their planes cutting the needle (vtkCutter of the scene's models).
     for frame in at_tip:

@@ -452,3 +452,40 @@ def test_removing_a_robot_after_its_own_subscriber_left_the_scene_reports_nothin
     assert node.RemoveAndDeleteRobotNode('solo')
     assert errors == []
     assert node.GetRobotNodeByName('solo') is None
+
+
+def test_the_workspace_sphere_holds_the_robot_in_every_pose(logic, vtk):
+    """GetWorkspaceSphere (what the app's 3D view frames): the surgical arm, placed by its joint
+    positions (no tf), has every model inside the sphere at every corner and middle of its joints'
+    ranges; the sphere is centred on its shoulder (the column turns about the axis the shoulder
+    is on) and moves with the base placement."""
+    import itertools
+    node, robot = make_robot(logic, 'arm')
+    sphere = [0.0] * 4
+    assert not robot.GetWorkspaceSphere(sphere)  # not loaded yet
+    assert robot.LoadRobotDescription(ARM.read_text(), str(ARM.parent))
+    assert robot.GetWorkspaceSphere(sphere)
+    # The shoulder: 0.1 + 0.4 m above the base; the arm below it: 0.35 + 0.3 + 0.12 + 0.2 + 0.08
+    # (insertion travel) + 0.05 m, plus the needle tip's marker.
+    assert sphere[:3] == pytest.approx([0.0, 0.0, 500.0], abs=1e-6)
+    assert 1100.0 < sphere[3] < 1150.0, sphere
+    limits = {'shoulder_pitch': (-1.6, 1.6), 'elbow_pitch': (-2.2, 2.2), 'wrist_pitch': (-1.5, 1.5),
+              'instrument_insertion': (0.0, 0.08), 'base_to_column': (-2.8, 0.0)}
+    furthest = 0.0
+    for values in itertools.product(*[(low, (low + high) / 2, high) for low, high in limits.values()]):
+        for joint, value in zip(limits, values):
+            assert robot.SetJointPosition(joint, value)
+        logic.Spin()
+        for n in range(robot.GetNumberOfModelNodes()):
+            b = bounds(robot.GetNthModelNode(n), vtk)
+            for corner in itertools.product(b[0:2], b[2:4], b[4:6]):
+                furthest = max(furthest, sum((c - s) ** 2 for c, s in zip(corner, sphere[:3])) ** 0.5)
+    print(f"furthest model box corner {furthest:.0f} mm from the centre; sphere {sphere}")
+    # (Box corners of a model can lie a little outside a sphere its surface never leaves.)
+    assert furthest <= sphere[3] * 1.01, (furthest, sphere)
+    assert furthest > sphere[3] * 0.95, (furthest, sphere)  # and not much too large
+    placement = vtk.vtkMatrix4x4()
+    placement.SetElement(1, 3, 300.0)
+    robot.GetBaseTransformNode().SetMatrixTransformToParent(placement)
+    assert robot.GetWorkspaceSphere(sphere)
+    assert sphere[:3] == pytest.approx([0.0, 300.0, 500.0], abs=1e-6)

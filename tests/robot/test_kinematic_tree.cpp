@@ -108,3 +108,72 @@ TEST(KinematicTree, ChainOfTenThousandLinksIsWalkedParentFirst)
   ASSERT_EQ(poses.size(), static_cast<size_t>(links));
   EXPECT_NEAR(poses.at("link_0").translation().z(), 9.999, 1e-9); // 9999 joints of 1 mm
 }
+
+TEST(KinematicTree, LinkReachBoundsEveryPose)
+{
+  std::string error;
+  auto tree = KinematicTree::from_urdf(kUrdf, &error);
+  ASSERT_TRUE(tree) << error;
+  const auto reach = tree->link_reach();
+  // By hand: column fixed at (0, 0, 0.1); arm's origin stays at (0.5, 0, 0.1) (the shoulder
+  // turns about its own origin); the slider moves up to 0.2 from there; the tip with it.
+  auto expect = [&](const char* link, Eigen::Vector3d centre, double radius) {
+    EXPECT_NEAR((reach.at(link).centre - centre).norm(), 0.0, 1e-12) << link;
+    EXPECT_NEAR(reach.at(link).radius, radius, 1e-12) << link;
+  };
+  expect("base", { 0, 0, 0 }, 0.0);
+  expect("column", { 0, 0, 0.1 }, 0.0);
+  expect("arm", { 0.5, 0, 0.1 }, 0.0);
+  expect("slider", { 0.5, 0, 0.1 }, 0.2);
+  expect("tip", { 0.5, 0, 0.1 }, 0.2);
+  // No pose over a grid of the joints' ranges puts a link's origin outside its ball.
+  for (double shoulder = -1.5; shoulder <= 1.5; shoulder += 0.25)
+  {
+    for (double insertion = 0.0; insertion <= 0.2; insertion += 0.05)
+    {
+      for (const auto& [link, pose] :
+        tree->link_poses({ { "shoulder", shoulder }, { "insertion", insertion } }))
+      {
+        EXPECT_LE(
+          (pose.translation() - reach.at(link).centre).norm(), reach.at(link).radius + 1e-12)
+          << link;
+      }
+    }
+  }
+}
+
+TEST(KinematicTree, LinkReachOfAnArmOnAColumnStartsAtItsShoulder)
+{
+  // A column turning about z with the shoulder on that axis: the shoulder stays in place, so the
+  // arm's links are within the arm's length of it (not of the base).
+  const char* urdf = R"(<?xml version="1.0"?>
+<robot name="column_arm">
+  <link name="base"/><link name="column"/><link name="upper"/><link name="fore"/>
+  <joint name="turn" type="revolute"><parent link="base"/><child link="column"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+  <joint name="shoulder" type="revolute"><parent link="column"/><child link="upper"/>
+    <origin xyz="0 0 0.4"/><axis xyz="0 1 0"/><limit lower="-1.6" upper="1.6" effort="1" velocity="1"/></joint>
+  <joint name="elbow" type="revolute"><parent link="upper"/><child link="fore"/>
+    <origin xyz="0 0 0.35"/><axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+</robot>)";
+  std::string error;
+  auto tree = KinematicTree::from_urdf(urdf, &error);
+  ASSERT_TRUE(tree) << error;
+  const auto reach = tree->link_reach();
+  EXPECT_NEAR((reach.at("upper").centre - Eigen::Vector3d(0, 0, 0.5)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(reach.at("upper").radius, 0.0, 1e-12);
+  EXPECT_NEAR((reach.at("fore").centre - Eigen::Vector3d(0, 0, 0.5)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(reach.at("fore").radius, 0.35, 1e-12);
+  for (double turn = -3; turn <= 3; turn += 0.5)
+  {
+    for (double shoulder = -1.6; shoulder <= 1.6; shoulder += 0.4)
+    {
+      for (const auto& [link, pose] :
+        tree->link_poses({ { "turn", turn }, { "shoulder", shoulder }, { "elbow", 1.0 } }))
+      {
+        EXPECT_LE((pose.translation() - reach.at(link).centre).norm(), reach.at(link).radius + 1e-9)
+          << link;
+      }
+    }
+  }
+}

@@ -232,7 +232,14 @@ def _volumes(v3, html, ctrl):
                     color='primary', id='volume_open')
             v3.VSelect(label='shown in the slice panes', v_model=('slice_source',), items=('slice_sources',),
                        item_title='title', item_value='value', density='compact', classes='mt-2',
-                       no_data_text='no volume yet: open a file, or subscribe to a 3D image', id='slice_source')
+                       no_data_text='no volume yet: open a file', id='slice_source')
+            with html.Div(classes='d-flex ga-2 mt-2', v_if='slice_source'):
+                v3.VTextField(label='window (empty: scalar range)', v_model=('volume_window',), density='compact',
+                              id='volume_window')
+                v3.VTextField(label='level', v_model=('volume_level',), density='compact', id='volume_level')
+            v3.VBtn('Set window/level', click=(ctrl.set_window_level, "[{slice_source: slice_source, "
+                    "volume_window: volume_window, volume_level: volume_level}]"), size='small',
+                    v_if='slice_source', id='volume_window_level')
             v3.VBtn('Remove volume', click=ctrl.remove_volume, size='small', color='error', variant='tonal',
                     v_if='slice_source', id='volume_remove')
 

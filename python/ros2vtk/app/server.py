@@ -16,6 +16,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import logging
+import math
 import os
 import sys
 import time
@@ -23,11 +24,13 @@ import time
 import vtk
 
 from . import scene_state, volumes
-from .view import RenderWindowArea, SlicePanes, frame_camera, make_display, make_render_window
+from ..framing import ViewFraming
+from .view import RenderWindowArea, SlicePanes, make_display, make_render_window
 
 REFRESH_SECONDS = 0.5   # panels and status line
 FRAME_SECONDS = 0.1     # 3D view (10 frames/s)
 SLICE_SECONDS = 0.25    # slice panes (4 frames/s: three more renders and encodings per frame)
+PARAMETER_SET_SECONDS = 15.0  # a set_parameters answer (and the node's discovery) may take this long
 # Frames are asked for no sooner than RENDER_SHARE times what the last ones took to render: on a
 # slow machine the views' frame rate drops, and the loop keeps most of its time for spinning, the
 # panels and the browser's calls (a new size of the view among them).
@@ -203,11 +206,13 @@ class App:
         self.slices = SlicePanes(self.scene) if slices and hasattr(ros2vtk, 'vtkROS2SliceView') else None
         self.slices_always = slices is True
         self.slice_widgets, self.slice_handlers = {}, {}
-        self.framed = 0
-        self.next_frame = self.next_refresh = self.next_slices = self.frame_again_at = 0.0
+        # The camera frames the robots' workspaces and what is drawn; again only when that changes.
+        self.framing = ViewFraming(self.scene, self.renderer)
+        self.next_frame = self.next_refresh = self.next_slices = 0.0
         self.errors = []
         self.spin_callbacks = []
         self.parameter_sets = []  # (client node, description) of set_parameters requests in flight
+        self.parameter_queue = []  # (service, name, type, value, description) waiting for their service
         self.last_status = (time.monotonic(), logic.GetNumberOfSpins(), 0)
         self.browsers = _BrowserCounter()
         self.server.add_protocol_to_configure(lambda protocol: protocol.registerLinkProtocol(
@@ -238,7 +243,7 @@ class App:
             'own_param_name': 'rate', 'own_param_type': 'double', 'own_param_value': '1.0',
             'parameter_types': list(parameter_types()),
             'scene_file': os.path.abspath('ros2vtk-scene.xml'),
-            'volume_file': '', 'slice_sources': [], 'slice_source': '',
+            'volume_file': '', 'slice_sources': [], 'slice_source': '', 'volume_window': '', 'volume_level': '',
             'slices_shown': self.slices is not None and self.slices_always,
             'message': '', 'message_kind': 'info', 'errors': [], 'status': '', 'panels': [0, 1, 2, 3, 4, 5],
             'types_publishers': _short_names(self.node.GetRegisteredROS2PublisherNodes(), 'vtkROS2Publisher'),
@@ -279,6 +284,7 @@ class App:
         c.set_remote_parameter = self.set_remote_parameter
         c.open_volume = self.open_volume
         c.remove_volume = self.remove_volume
+        c.set_window_level = self.set_window_level
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
@@ -326,8 +332,7 @@ class App:
             for folder in (s.robot_mesh_paths or '').split(os.pathsep):
                 if folder.strip():
                     robot.AddMeshSearchPath(folder.strip())
-            s.robot_selected = name
-            self.framed = 0  # frame the view again once it has loaded
+            s.robot_selected = name  # (the view is framed again once it has loaded: ViewFraming)
         return self._report(robot is not None, f'Robot {name} added ({s.robot_source})', f'Add robot {name} failed')
 
     def remove_robot(self, name=None):
@@ -458,15 +463,26 @@ class App:
         except ValueError as error:
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'{error}\n')
             return self._report(False, '', f'Set {target} {name} failed')
-        type_id, field = parameter_types()[kind]
         service = target.rstrip('/') + '/set_parameters'
+        description = f'{target}: {name} = {text}'
         if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
-            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'a set on {target} still waits for its answer\n')
-            return self._report(False, '', f'Set {target} {name} failed')
+            # One request per service client node at a time: this one waits for the answer to the
+            # one in flight, then goes (in the order they were asked for).
+            self.parameter_queue.append((service, name, kind, value, description))
+            print(f'[app] parameter set queued behind the one in flight: {description}', flush=True)
+            s.remote_param_result = f'{description}: queued behind the set in flight'
+            return self._report(True, f'Set request queued for {service}', '')
+        ok = self._send_parameter_set(service, name, kind, value, description)
+        return self._report(ok, f'Set request sent to {service}', f'Set {target} {name} failed')
+
+    def _send_parameter_set(self, service: str, name: str, kind: str, value, description: str) -> bool:
+        """Sends one SetParameters request for `name` (checked value of type `kind`)."""
+        type_id, field = parameter_types()[kind]
         client = self.node.GetServiceClientNodeByService(service) or \
             self.node.CreateAndAddServiceClientNode('rcl_interfaces/srv/SetParameters', service)
         ok = client is not None
         if ok:
+            client.SetTimeout(PARAMETER_SET_SECONDS)
             request = client.CreateBlankRequest()
             path = f'parameters[0].value.{field}'
             ok = request.SetFieldLength('parameters', 1) and request.SetField('parameters[0].name', name) \
@@ -480,10 +496,9 @@ class App:
                                       if kind != 'double' else repr(value))
             ok = ok and client.SendAsyncRequest(request) > 0
         if ok:
-            description = f'{target}: {name} = {text}'
             self.parameter_sets.append((client, description))
-            s.remote_param_result = f'{description}: sent, waiting for the answer'
-        return self._report(ok, f'Set request sent to {service}', f'Set {target} {name} failed')
+            self.state.remote_param_result = f'{description}: sent, waiting for the answer'
+        return ok
 
     def _take_parameter_answers(self):
         """Shows the answers of set_parameters requests that arrived; drops their clients."""
@@ -506,6 +521,17 @@ class App:
                 self.errors = (self.errors + [text])[-20:]
                 self.state.errors = list(self.errors)
         self.parameter_sets = pending
+        for queued in list(self.parameter_queue):  # the next queued set of each free service
+            service = queued[0]
+            if any(c.GetServiceName() == service for c, _ in self.parameter_sets):
+                continue
+            self.parameter_queue.remove(queued)
+            if not self._send_parameter_set(*queued):
+                text = f'{queued[-1]}: not sent ({self.messages.take().strip() or "no client"})'
+                self.state.remote_param_result = text
+                self.state.message, self.state.message_kind = text, 'error'
+                self.errors = (self.errors + [text])[-20:]
+                self.state.errors = list(self.errors)
 
     def open_volume(self, form=None, path: str | None = None):
         """Reads a volume file (NRRD, MetaImage, NIfTI) on the server into a vtkROS2VolumeNode:
@@ -520,10 +546,8 @@ class App:
         name = volumes.volume_name(path.strip())
         node = volumes.add_volume_node(self.scene, image, file_to_world, name)
         self.display.Update()
-        frame_camera(self.renderer)  # the volume in view (beside what was there)
-        # Once more after the slice panes have taken their share of the page (a smaller 3D view).
-        self.frame_again_at = time.monotonic() + 1.0
-        self.render()
+        self._frame_view(now=True)  # the volume in view beside the robots (again once the panes
+        self.render()  # have taken their share of the page: the view's new shape)
         dims, spacing = image.GetDimensions(), image.GetSpacing()
         self.state.slice_source = node.GetID()
         self._show_slice_source(node.GetID())
@@ -540,6 +564,35 @@ class App:
         self.state.slice_source = ''
         self._show_slice_source('')
         return self._report(True, f'Volume {name} removed', '')
+
+    def set_window_level(self, form=None):
+        """The chosen volume's window and level (vtkROS2VolumeNode.SetWindow/SetLevel), used by the
+        3D view's rendering and the slice panes; a window of 0 or left empty: its scalar range."""
+        self._apply(form)
+        s = self.state
+        node = self.scene.GetNodeByID(s.slice_source) if s.slice_source else None
+        if node is None or not node.IsA('vtkROS2VolumeNode'):
+            return self._report(False, '', 'Window/level: choose a volume in the list')
+        text_window, text_level = str(s.volume_window or '').strip(), str(s.volume_level or '').strip()
+        try:
+            window = float(text_window) if text_window else 0.0
+            level = float(text_level) if text_level else 0.0
+        except ValueError:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(
+                f'window and level are numbers (got {text_window!r}, {text_level!r})\n')
+            return self._report(False, '', 'Window/level not set')
+        if not (math.isfinite(window) and math.isfinite(level)):
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText('window and level are finite numbers\n')
+            return self._report(False, '', 'Window/level not set')
+        node.SetWindow(max(window, 0.0))
+        node.SetLevel(level)
+        node.Modified()
+        self.display.Update()
+        self.render()
+        self.next_slices = 0.0  # the panes at the next spin
+        if window > 0:
+            return self._report(True, f'{node.GetName()}: window {window:g}, level {level:g}', '')
+        return self._report(True, f'{node.GetName()}: window/level from its scalar range', '')
 
     def _show_slice_source(self, slice_source='', **_):
         if self.slices is not None:
@@ -561,11 +614,10 @@ class App:
         else:
             ok = self.scene.ReadFromXMLFile(path)
             self.node = self.logic.GetDefaultROS2Node()
-            self.framed = 0
         return self._report(ok, f'Scene loaded from {path}', f'Load {path} failed')
 
     def reset_camera(self):
-        frame_camera(self.renderer)
+        self._frame_view(now=True)
         self.render()
 
     # ------------------------------------------------------------------ refresh and spin
@@ -583,7 +635,7 @@ class App:
         s.tf_lookups, s.tf_broadcasters = scene_state.tf_rows(self.scene)
         s.tf_frames = scene_state.tf_frame_rows(self.node)
         s.tf_publishers = scene_state.tf_publishers(self.node)
-        if self.parameter_sets:
+        if self.parameter_sets or self.parameter_queue:
             self._take_parameter_answers()
         s.parameters = scene_state.parameter_rows(self.scene)
         if self.slices is not None:
@@ -611,18 +663,11 @@ class App:
         if self.view_handler is not None:
             self.view_handler.schedule_render()
 
-    def _frame_once_loaded(self):
-        """Frames the camera when the number of models changes, and once more a second later (links
-        reach their tf poses over the first spins after a load)."""
-        models = self.scene.GetNumberOfNodesByClass('vtkROS2ModelNode')
-        now = time.monotonic()
-        if models and models != self.framed:
-            self.framed = models
-            self.frame_again_at = now + 1.0
-            frame_camera(self.renderer)
-        elif self.frame_again_at and now >= self.frame_again_at:
-            self.frame_again_at = 0.0
-            frame_camera(self.renderer)
+    def _frame_view(self, now: bool = False) -> None:
+        """Frames the 3D view now, or when what it shows asks for it (ViewFraming.update); one
+        terminal line each time, so a camera that moves by itself can be told from a user's."""
+        if self.framing.frame() if now else self.framing.update():
+            print(f'[app] 3D view framed: {self.framing.describe()}', flush=True)
 
     async def _spin_loop(self):
         period = 1.0 / max(self.logic.GetSpinRate(), 1.0)
@@ -649,7 +694,7 @@ class App:
         self.display.Update()
         now = time.monotonic()
         if now >= self.next_frame:
-            self._frame_once_loaded()
+            self._frame_view()
             self.render()
             self.next_frame = now + max(FRAME_SECONDS, RENDER_SHARE * self.area.render_seconds)
         if self.slices is not None and now >= self.next_slices:

@@ -189,23 +189,9 @@ def make_render_window(size=(1000, 620)):
     return window, renderer
 
 
-def frame_camera(renderer) -> None:
-    """Everything in view, z up, seen from the front-right as Slicer's default 3D view."""
-    camera = renderer.GetActiveCamera()
-    camera.SetViewUp(0, 0, 1)
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetPosition(1, -1.1, 0.55)
-    camera.SetViewAngle(30.0)
-    renderer.ResetCamera()
-    # No zoom out: the bounding sphere filling the view's height already leaves room around the
-    # robot for its motion (the demo's --window framing, whose frames tests/demo checks).
-    renderer.ResetCameraClippingRange()
-
-
 class SlicePanes:
     """Axial, sagittal and coronal 2D views (Slicer's red, yellow and green) of a volume: the
-    chosen source (`set_source`: a vtkROS2VolumeNode, or an image subscriber whose newest image is
-    3D), else the scene's first vtkROS2VolumeNode; each a vtkROS2SliceView in its own offscreen window streamed as the 3D
+    chosen source (`set_source`: a vtkROS2VolumeNode), else the scene's first vtkROS2VolumeNode; each a vtkROS2SliceView in its own offscreen window streamed as the 3D
     view is (`areas`, one RenderWindowArea per orientation). The models cut by each slice plane
     (a robot's needle) are drawn on it in their colours. As in Slicer, each pane stays centred
     on the volume and only its plane moves: through `point` (world mm) once a script calls
@@ -234,6 +220,7 @@ class SlicePanes:
         self.source_id = ''  # the chosen source's node ID ('' : the scene's first volume node)
         self.point: tuple[float, float, float] | None = None
         self.centred = False  # panes centred on the point (follow) or on the volume
+        self.window_level = None  # (window, level) given to the panes
 
     def set_point(self, x: float, y: float, z: float) -> None:
         """The point (world mm) the three slice planes go through (applied on the next update)."""
@@ -253,13 +240,12 @@ class SlicePanes:
         self.centred = True
 
     def set_source(self, node_id: str) -> None:
-        """The node the panes show (by ID): a volume node or a 3D image subscriber; '' for the
-        scene's first volume node. Applied on the next update."""
+        """The volume node the panes show (by ID); '' for the scene's first volume node. Applied on
+        the next update."""
         self.source_id = node_id or ''
 
     def _image_to_world(self) -> vtk.vtkMatrix4x4:
-        """A volume node's parent transform to world; identity for a subscriber's image (the slice
-        view takes those in world coordinates)."""
+        """The volume node's parent transform to world (identity without one)."""
         matrix = vtk.vtkMatrix4x4()
         parent = self.volume.GetParentTransformNode() if self.volume is not None and hasattr(
             self.volume, 'GetParentTransformNode') else None
@@ -302,14 +288,19 @@ class SlicePanes:
         if volume is not self.volume:
             self.volume = volume
             self.centers.clear()
+            self.window_level = None
             for view in self.views.values():
                 view.SetVolumeNode(volume)
-                window = volume.GetWindow() if volume is not None and hasattr(volume, 'GetWindow') else 0.0
-                view.SetWindowLevel(window, volume.GetLevel() if window > 0 else 0.0)  # <= 0: its range
             if volume is None:  # the panes are hidden: no cuts, no renders
                 return True
         if volume is None:
             return False
+        window = volume.GetWindow() if hasattr(volume, 'GetWindow') else 0.0
+        window_level = (window, volume.GetLevel() if window > 0 else 0.0)  # window <= 0: its range
+        if window_level != self.window_level:  # the node's window/level, set by a script or the panel
+            self.window_level = window_level
+            for view in self.views.values():
+                view.SetWindowLevel(*window_level)
         middle, point = self.volume_center() or self.point, self.clamped_point()
         if self.centred and point is not None:
             middle = point

@@ -6,11 +6,15 @@
 VTK 9.1's own readers: NRRD (.nrrd, .nhdr: vtkNrrdReader), MetaImage (.mha, .mhd:
 vtkMetaImageReader), NIfTI (.nii, .nii.gz: vtkNIFTIImageReader). The image keeps its file's origin
 and spacing (mm); a NIfTI file's sform (else qform) matrix, which maps its voxels to RAS mm,
-becomes a transform node above the volume node. VTK 9.1's image data has no direction matrix: the
-axes of a NRRD or MetaImage file with a rotated direction are taken as they are.
+becomes a transform node above the volume node. VTK 9.1's NRRD and MetaImage readers ignore the
+file's direction, so it is read from the header here (NRRD `space directions`, MetaImage
+`TransformMatrix`): when the axes are rotated, or a NRRD file's `space` is left-posterior-superior
+(turned into RAS as Slicer does: x and y negated), the image is read with origin 0 and the file's
+voxel-to-world matrix (direction x spacing, origin) becomes that transform node.
 """
 from __future__ import annotations
 
+import math
 import os
 
 import vtk
@@ -73,12 +77,82 @@ def read_volume(path: str) -> tuple[vtk.vtkImageData, vtk.vtkMatrix4x4 | None]:
     volume = vtk.vtkImageData()
     volume.ShallowCopy(image)  # free of the reader
     matrix = None
+    placement = _header_placement(path, reader_class, volume.GetSpacing())
+    if placement is not None:
+        spacing, matrix = placement
+        volume.SetSpacing(*spacing)
+        volume.SetOrigin(0.0, 0.0, 0.0)  # the matrix places the voxels
     if reader_class == 'vtkNIFTIImageReader':
         form = reader.GetSFormMatrix() or reader.GetQFormMatrix()
         if form is not None and not _is_identity(form):
             matrix = vtk.vtkMatrix4x4()
             matrix.DeepCopy(form)
     return volume, matrix
+
+
+def _header_fields(path: str, separator: str) -> dict[str, str]:
+    """The `key<separator>value` lines of a text header (NRRD: up to its first blank line;
+    MetaImage: up to ElementDataFile), keys lower case."""
+    fields = {}
+    with open(path, 'rb') as stream:
+        for raw in stream:
+            line = raw.decode('latin-1').strip()
+            if not line:
+                break
+            key, found, value = line.partition(separator)
+            if found and not line.startswith('#'):
+                fields[key.strip().lower()] = value.strip()
+                if key.strip().lower() == 'elementdatafile':
+                    break
+    return fields
+
+
+def _numbers(text: str) -> list[float]:
+    return [float(v) for v in text.replace('(', ' ').replace(')', ' ').replace(',', ' ').split()]
+
+
+NRRD_LPS = ('left-posterior-superior', 'lps')
+
+
+def _header_placement(path: str, reader_class: str, spacing):
+    """The spacing and the matrix from (index x spacing) to world mm that a NRRD or MetaImage
+    header gives (columns: each axis's unit direction; last column: the origin; a NRRD in LPS
+    space turned into RAS as Slicer does), or None when its axes are the world's (the image's
+    origin and spacing then say it all). ValueError for a direction that is no 3 x 3 matrix."""
+    if reader_class == 'vtkNrrdReader':
+        fields = _header_fields(path, ':')
+        if 'space directions' not in fields:
+            return None
+        axes = [a for a in fields['space directions'].replace(')', ')|').split('|') if a.strip()]
+        columns = [_numbers(a) for a in axes if a.strip() != 'none']  # direction x spacing
+        origin = _numbers(fields.get('space origin', '(0,0,0)'))
+        flip = fields.get('space', '').lower() in NRRD_LPS
+    elif reader_class == 'vtkMetaImageReader':
+        fields = _header_fields(path, '=')
+        text = fields.get('transformmatrix') or fields.get('rotation') or fields.get('orientation')
+        if text is None:
+            return None
+        values = _numbers(text)
+        # MetaIO lists each axis's direction in turn (ITK's MetaImageIO: axis i = values[3i:3i+3]).
+        columns = [[v * spacing[i] for v in values[3 * i:3 * i + 3]] for i in range(len(values) // 3)]
+        origin = _numbers(fields.get('offset') or fields.get('position') or fields.get('origin') or '0 0 0')
+        flip = False
+    else:
+        return None
+    if len(columns) != 3 or any(len(c) != 3 for c in columns) or len(origin) != 3 or \
+            any(math.hypot(*c) == 0 for c in columns):
+        raise ValueError(f'{path}: its direction is not a 3 x 3 matrix with a 3D origin')
+    lengths = [math.hypot(*c) for c in columns]
+    unit = [[v / length for v in c] for c, length in zip(columns, lengths)]
+    if not flip and all(abs(unit[c][r] - (1.0 if r == c else 0.0)) < 1e-9 for r in range(3) for c in range(3)):
+        return None
+    sign = (-1.0, -1.0, 1.0) if flip else (1.0, 1.0, 1.0)
+    matrix = vtk.vtkMatrix4x4()
+    for row in range(3):
+        for column in range(3):
+            matrix.SetElement(row, column, sign[row] * unit[column][row])
+        matrix.SetElement(row, 3, sign[row] * origin[row])
+    return lengths, matrix
 
 
 def _is_identity(matrix: vtk.vtkMatrix4x4) -> bool:
@@ -111,31 +185,19 @@ def remove_volume_node(scene, node) -> None:
 
 
 def image_of(node) -> vtk.vtkImageData | None:
-    """The image a slice source shows: a volume node's image, an image subscriber's newest one."""
-    if node is None:
+    """The image a slice source (a volume node) shows."""
+    if node is None or not node.IsA('vtkROS2VolumeNode'):
         return None
-    if node.IsA('vtkROS2VolumeNode'):
-        return node.GetImageData()
-    if node.IsA('vtkROS2SubscriberNode') and node.GetNumberOfMessages() > 0:
-        value = node.GetLastMessage()
-        return value if isinstance(value, vtk.vtkImageData) else None
-    return None
+    return node.GetImageData()
 
 
 def slice_sources(scene) -> list[dict]:
-    """What the slice panes can show: every volume node, and every image subscriber whose newest
-    image is 3D (depth > 1), as {'value': node ID, 'title': label} rows."""
+    """What the slice panes can show: every volume node, as {'value': node ID, 'title': label}
+    rows. (No image subscriber: no mapped ROS type gives a 3D image, so none is offered.)"""
     from .scene_state import nodes_of_class
     rows = []
     for node in nodes_of_class(scene, 'vtkROS2VolumeNode'):
         image = node.GetImageData()
         dims = image.GetDimensions() if image is not None else (0, 0, 0)
         rows.append({'value': node.GetID(), 'title': f'{node.GetName()} (volume, {dims[0]}x{dims[1]}x{dims[2]})'})
-    for node in nodes_of_class(scene, 'vtkROS2SubscriberNode'):
-        if node.GetSlicerType() != 'vtkImageData':
-            continue
-        image = image_of(node)
-        if image is not None and image.GetDimensions()[2] > 1:
-            dims = image.GetDimensions()
-            rows.append({'value': node.GetID(), 'title': f'{node.GetTopic()} (subscriber, {dims[0]}x{dims[1]}x{dims[2]})'})
     return rows

@@ -3,6 +3,8 @@
 
 #include <urdf_parser/urdf_parser.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace ros2vtk {
@@ -192,6 +194,96 @@ std::map<std::string, Eigen::Isometry3d> KinematicTree::link_poses(
     poses[transform.child] = poses[transform.parent] * transform.transform;
   }
   return poses;
+}
+
+std::map<std::string, LinkReach> KinematicTree::link_reach() const
+{
+  // What is known of each link's frame over all joint positions, from the root down:
+  // Fixed: its pose (`pose`); Turning: its origin fixed at pose.translation(), its orientation
+  // pose.linear() turned about the root-frame `axis` through that origin; Free: its origin within
+  // `reach` (orientation unknown).
+  enum class Known
+  {
+    Fixed,
+    Turning,
+    Free
+  };
+  struct Frame
+  {
+    Known known = Known::Fixed;
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    LinkReach reach;
+  };
+  auto travel = [this](const JointInfo& joint) {
+    if (joint.type != JointInfo::Type::Prismatic)
+      return 0.0;
+    const JointInfo* leader = joint.mimic_joint.empty() ? &joint : this->joint(joint.mimic_joint);
+    const double led = leader ? std::max(std::abs(leader->lower), std::abs(leader->upper)) : 0.0;
+    return joint.mimic_joint.empty()
+      ? led * joint.axis.norm()
+      : (std::abs(joint.mimic_multiplier) * led + std::abs(joint.mimic_offset)) * joint.axis.norm();
+  };
+  auto turns = [](const JointInfo& joint) {
+    return joint.type == JointInfo::Type::Revolute || joint.type == JointInfo::Type::Continuous;
+  };
+  std::map<std::string, Frame> frames;
+  frames[root_link_] = Frame{};
+  // joints_ is in depth-first order, so each parent is known before its children.
+  for (const auto& joint : joints_)
+  {
+    const Frame parent = frames[joint.parent_link];
+    Frame child;
+    const double moved = travel(joint);
+    if (parent.known == Known::Free)
+    {
+      child.known = Known::Free;
+      child.reach.centre = parent.reach.centre;
+      child.reach.radius = parent.reach.radius + joint.origin.translation().norm() + moved;
+    }
+    else
+    {
+      // Where the joint's origin is: fixed for a Fixed parent; on a circle about the parent's
+      // axis for a Turning one (its centre fixed, its radius the offset across the axis).
+      const Eigen::Vector3d offset = parent.pose.linear() * joint.origin.translation();
+      const Eigen::Vector3d along =
+        parent.known == Known::Turning ? parent.axis * parent.axis.dot(offset) : offset;
+      const Eigen::Vector3d centre = parent.pose.translation() + along;
+      const double across = (offset - along).norm() < 1e-9 ? 0.0 : (offset - along).norm();
+      const Eigen::Isometry3d pose = parent.pose * joint.origin;
+      if (across == 0.0 && moved == 0.0 && parent.known == Known::Fixed && turns(joint))
+      {
+        child.known = Known::Turning; // origin in place, turning about the joint's axis
+        child.pose = pose;
+        child.axis = (pose.linear() * joint.axis).normalized();
+      }
+      else if (across == 0.0 && moved == 0.0 && !turns(joint) &&
+        joint.type != JointInfo::Type::Prismatic)
+      {
+        child.known = parent.known; // fixed (or floating, planar: at their origin) joint
+        child.pose = pose;
+        child.axis = parent.axis;
+      }
+      else
+      {
+        child.known = Known::Free;
+      }
+      child.reach.centre = centre;
+      child.reach.radius = across + moved;
+    }
+    if (child.known != Known::Free)
+    {
+      child.reach.centre = child.pose.translation();
+      child.reach.radius = 0.0;
+    }
+    frames[joint.child_link] = child;
+  }
+  std::map<std::string, LinkReach> reach;
+  for (const auto& entry : frames)
+  {
+    reach[entry.first] = entry.second.reach;
+  }
+  return reach;
 }
 
 } // namespace robot

@@ -11,6 +11,7 @@
 #include "vtkROS2TransformNode.h"
 
 #include "ros2vtk/convert/Units.hpp"
+#include "ros2vtk/robot/KinematicTree.hpp"
 #include "ros2vtk/robot/RobotLoader.hpp"
 #include "ros2vtk/robot/XacroProcessor.hpp"
 
@@ -18,6 +19,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkWeakPointer.h"
 #include "vtkXMLDataElement.h"
@@ -37,6 +39,32 @@ const char* const LinkRole = "robotLink";
 const char* const LinkAttribute = "ros2vtk.link";
 const char* const PlaceholderAttribute = "ros2vtk.placeholder";
 constexpr double MillimetresPerMetre = ros2vtk::convert::kMillimetresPerMetre;
+
+// Balls (centre, radius) and the smallest ball holding two of them: a robot's workspace.
+namespace EnclosingSphere {
+struct Ball
+{
+  Eigen::Vector3d Centre = Eigen::Vector3d::Zero();
+  double Radius = 0.0;
+  double Extent = 0.0; // added to Radius by Grown(): the link's visuals around its origin
+  Ball Grown() const { return { this->Centre, this->Radius + this->Extent, 0.0 }; }
+};
+
+Ball Union(const Ball& a, const Ball& b)
+{
+  const double distance = (b.Centre - a.Centre).norm();
+  if (distance + b.Radius <= a.Radius)
+  {
+    return a;
+  }
+  if (distance + a.Radius <= b.Radius)
+  {
+    return b;
+  }
+  const double radius = (distance + a.Radius + b.Radius) / 2;
+  return { a.Centre + (b.Centre - a.Centre) * ((radius - a.Radius) / distance), radius, 0.0 };
+}
+} // namespace EnclosingSphere
 
 // Visual origin (metres) x uniform m -> mm scale: the model's geometry stays in metres (it is
 // shared through the loader's cache) and the matrix brings it into the millimetre scene.
@@ -423,6 +451,70 @@ int vtkROS2RobotNode::GetNumberOfPlaceholders() const
 {
   return this->Internals->Loaded ? static_cast<int>(this->Internals->Visuals.placeholder_count())
                                  : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkROS2RobotNode::GetWorkspaceSphere(double sphere[4])
+{
+  vtkInternals& internals = *this->Internals;
+  const std::map<std::string, ros2vtk::robot::LinkReach> reach =
+    internals.JointStates.GetLinkReach();
+  if (!internals.Loaded || reach.empty())
+  {
+    return false;
+  }
+  // Each link's ball (root frame, mm), grown by the furthest point of its visuals from its origin.
+  std::map<std::string, EnclosingSphere::Ball> balls;
+  for (const auto& entry : reach)
+  {
+    balls[entry.first] = { entry.second.centre * MillimetresPerMetre,
+      entry.second.radius * MillimetresPerMetre };
+  }
+  for (vtkROS2ModelNode* model : internals.Models)
+  {
+    const char* link = model ? model->GetAttribute(LinkAttribute) : nullptr;
+    auto ball = link ? balls.find(link) : balls.end();
+    if (ball == balls.end() || !model->GetPolyData() ||
+      model->GetPolyData()->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    double bounds[6];
+    model->GetPolyData()->GetBounds(bounds);                     // metres, in the visual's frame
+    vtkMatrix4x4* modelToLink = model->GetMatrixModelToParent(); // -> link frame, mm
+    double extent = 0.0;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double point[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+        bounds[4 + ((corner >> 2) & 1)], 1.0 };
+      double inLink[4];
+      modelToLink->MultiplyPoint(point, inLink);
+      extent = std::max(extent, Eigen::Vector3d(inLink[0], inLink[1], inLink[2]).norm());
+    }
+    ball->second.Extent = std::max(ball->second.Extent, extent);
+  }
+  EnclosingSphere::Ball all = balls.begin()->second.Grown();
+  for (const auto& entry : balls)
+  {
+    all = EnclosingSphere::Union(all, entry.second.Grown());
+  }
+  // Into the world: the root link's pose now (the fixed frame's origin until it is known).
+  vtkROS2TransformNode* root =
+    this->GetLinkTransformNode(internals.JointStates.GetRootLink().c_str());
+  vtkNew<vtkMatrix4x4> rootToWorld;
+  if (root)
+  {
+    root->GetMatrixTransformToWorld(rootToWorld);
+  }
+  const double centre[4] = { all.Centre.x(), all.Centre.y(), all.Centre.z(), 1.0 };
+  double world[4];
+  rootToWorld->MultiplyPoint(centre, world);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    sphere[axis] = world[axis];
+  }
+  sphere[3] = all.Radius;
+  return true;
 }
 
 //------------------------------------------------------------------------------

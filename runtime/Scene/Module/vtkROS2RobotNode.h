@@ -176,6 +176,14 @@ public:
   const char* GetLastJointStateError() const;
   ///@}
 
+  /// The robot's workspace: a sphere (centre x, y, z and radius, world mm) that holds every
+  /// visual of the robot in every joint position within the limits, centred on its root link's
+  /// origin where it is now (what a view frames to keep the whole robot in sight while it moves).
+  /// The radius is each link's reach (KinematicTree::link_reach: the joint origins' lengths along
+  /// its chain plus prismatic travel) plus the furthest point of its visuals from the link's
+  /// origin. False (sphere unchanged) before the robot is loaded.
+  bool GetWorkspaceSphere(double sphere[4]);
+
   /// Builds the robot from URDF text right away (besides the automatic load from the source),
   /// with relative mesh paths taken from `baseFolder`. False (state "failed") on a broken URDF.
   bool LoadRobotDescription(const char* urdfXml, const char* baseFolder = "");

@@ -94,6 +94,17 @@ void RobotJointStateDriver::Unload()
 }
 
 //------------------------------------------------------------------------------
+std::map<std::string, ros2vtk::robot::LinkReach> RobotJointStateDriver::GetLinkReach() const
+{
+  return this->Kinematics ? this->Kinematics->tree().link_reach()
+                          : std::map<std::string, ros2vtk::robot::LinkReach>{};
+}
+
+std::string RobotJointStateDriver::GetRootLink() const
+{
+  return this->Kinematics ? this->Kinematics->tree().root_link() : std::string();
+}
+
 std::vector<std::string> RobotJointStateDriver::GetJointNames() const
 {
   return this->Kinematics ? this->Kinematics->joint_names() : std::vector<std::string>();

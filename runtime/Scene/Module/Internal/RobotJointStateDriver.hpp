@@ -33,6 +33,7 @@ class vtkROS2Tf2LookupNode;
 namespace ros2vtk {
 namespace robot {
 class JointStateKinematics;
+struct LinkReach;
 }
 namespace scene {
 
@@ -59,6 +60,10 @@ public:
   bool Load(const std::string& urdfXml, std::string* error);
   void Unload();
   bool IsLoaded() const { return static_cast<bool>(this->Kinematics); }
+  /// For every link, a ball holding its origin in every joint position (root link frame,
+  /// metres; KinematicTree::link_reach), and the root link's name; empty before a load.
+  std::map<std::string, ros2vtk::robot::LinkReach> GetLinkReach() const;
+  std::string GetRootLink() const;
 
   /// Actuated joints (moving, not mimic), URDF tree order; empty before a load.
   std::vector<std::string> GetJointNames() const;

@@ -52,6 +52,13 @@ struct LinkTransform
   bool is_static = false;
 };
 
+/// Where a link's origin can be: within `radius` of `centre` (root link frame, metres).
+struct LinkReach
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+};
+
 class KinematicTree
 {
 public:
@@ -74,6 +81,15 @@ public:
   /// Pose of every link in the root link's frame.
   std::map<std::string, Eigen::Isometry3d> link_poses(
     const std::map<std::string, double>& positions) const;
+
+  /// For every link, a ball in the root link's frame (metres) that holds its origin in every
+  /// joint position within the limits: centred on the deepest point of its chain that no joint
+  /// moves (a joint turning about an axis that the next joint's origin lies on leaves that origin
+  /// in place), with radius the lengths of the joint origins below that point plus each
+  /// prismatic joint's largest travel (a mimic one's: |multiplier| x its leader's plus |offset|).
+  /// An upper bound (rotations only turn these segments); floating and planar joints count as at
+  /// their origin (robot_state_publisher does not move them either).
+  std::map<std::string, LinkReach> link_reach() const;
 
 private:
   std::string robot_name_;
