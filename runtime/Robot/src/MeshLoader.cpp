@@ -273,26 +273,27 @@ struct AssimpCollector
     if (!mesh || !mesh->mVertices)
       return;
     const vtkIdType first = points->GetNumberOfPoints();
+    points->SetNumberOfPoints(first + static_cast<vtkIdType>(mesh->mNumVertices));
     for (unsigned v = 0; v < mesh->mNumVertices; ++v)
     {
       const aiVector3D p = transform * mesh->mVertices[v];
-      points->InsertNextPoint(p.x, p.y, p.z);
+      points->SetPoint(first + static_cast<vtkIdType>(v), p.x, p.y, p.z);
     }
     std::array<double, 4> rgba{ { 1.0, 1.0, 1.0, 1.0 } };
     const bool has_material_color = material_diffuse(scene, mesh->mMaterialIndex, &rgba, &textures);
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v)
+    if (mesh->HasVertexColors(0))
     {
-      if (mesh->HasVertexColors(0))
+      for (unsigned v = 0; v < mesh->mNumVertices; ++v)
       {
         const aiColor4D& c = mesh->mColors[0][v];
         point_colors.push_back({ { c.r, c.g, c.b, c.a } });
-        point_colored.push_back(true);
       }
-      else
-      {
-        point_colors.push_back(rgba);
-        point_colored.push_back(has_material_color);
-      }
+      point_colored.insert(point_colored.end(), mesh->mNumVertices, true);
+    }
+    else
+    {
+      point_colors.insert(point_colors.end(), mesh->mNumVertices, rgba);
+      point_colored.insert(point_colored.end(), mesh->mNumVertices, has_material_color);
     }
     // Polygons go in as they are and vtkTriangleFilter triangulates them (finish()): assimp
     // 5.2's own aiProcess_Triangulate aborts the process on some malformed files (an ai_assert
