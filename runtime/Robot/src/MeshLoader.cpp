@@ -273,11 +273,10 @@ struct AssimpCollector
     if (!mesh || !mesh->mVertices)
       return;
     const vtkIdType first = points->GetNumberOfPoints();
-    points->SetNumberOfPoints(first + static_cast<vtkIdType>(mesh->mNumVertices));
     for (unsigned v = 0; v < mesh->mNumVertices; ++v)
     {
       const aiVector3D p = transform * mesh->mVertices[v];
-      points->SetPoint(first + static_cast<vtkIdType>(v), p.x, p.y, p.z);
+      points->InsertNextPoint(p.x, p.y, p.z);
     }
     std::array<double, 4> rgba{ { 1.0, 1.0, 1.0, 1.0 } };
     const bool has_material_color = material_diffuse(scene, mesh->mMaterialIndex, &rgba, &textures);
