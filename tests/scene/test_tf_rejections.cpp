@@ -1,13 +1,17 @@
-// Rejected tf transforms are warned at a bounded rate (issue 10, item 5): a sender publishing a bad
-// transform on every spin (as a 1 kHz broadcaster would) gives the receiving ROS node one warning
-// at once, then at most one a second summing what arrived since, never one per spin. The sender is
-// a second ROS node of this process with a generic tf2_msgs/TFMessage publisher on /tf.
+// The tf intake of a ROS node. Rejected tf transforms are warned at a bounded rate (issue 10, item
+// 5): a sender publishing a bad transform on every spin (as a 1 kHz broadcaster would) gives the
+// receiving ROS node one warning at once, then at most one a second summing what arrived since,
+// never one per spin. The sender is a second ROS node of this process with a generic
+// tf2_msgs/TFMessage publisher on /tf.
 #include "ros2vtk_test/SceneTestSupport.hpp"
 #include "vtkROS2Logic.h"
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2PublisherGenericNode.h"
 #include "vtkROS2Scene.h"
+#include "vtkROS2Tf2LookupNode.h"
+#include "ros2vtk/tf2/BufferCore.hpp"
 
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
@@ -106,4 +110,49 @@ TEST_F(Tf2RejectionsTest, ManyBadTransformsAreWarnedAtOnceThenAtMostOnceASecond)
   EXPECT_LE(warnings, 1 + static_cast<int>(elapsed)) << "in " << elapsed << " s:\n"
                                                      << this->Output->Warnings;
   EXPECT_LT(warnings * 10, transforms) << this->Output->Warnings;
+}
+
+// The tf intake runs where tf2_ros's listener thread runs it, not in the spin (issue 17): the DDS
+// thread that deserialized a /tf message inserts it into the node's buffer, so a buffer that is
+// never spun still answers, and the next spin only looks up (and reports what was inserted).
+// The receiver is a second logic that this test never spins until the buffer answered.
+TEST_F(Tf2RejectionsTest, TransformsReachTheBufferWithoutASpin)
+{
+  vtkNew<vtkROS2Logic> receiverLogic;
+  vtkROS2NodeNode* receiver = receiverLogic->GetDefaultROS2Node();
+  ASSERT_NE(receiver, nullptr);
+  vtkROS2Tf2LookupNode* lookup = receiver->CreateAndAddTf2LookupNode("world", "tool");
+  ASSERT_NE(lookup, nullptr) << this->Output->Errors;
+  ros2vtk::tf2::BufferCore* buffer = receiver->GetTf2Buffer();
+  ASSERT_NE(buffer, nullptr);
+
+  vtkNew<vtkROS2NodeNode> sender;
+  this->Logic->GetScene()->AddNode(sender);
+  ASSERT_TRUE(sender->Create("good_tf_sender"));
+  vtkNew<vtkROS2PublisherGenericNode> tf;
+  this->Logic->GetScene()->AddNode(tf);
+  ASSERT_TRUE(tf->SetROSType("tf2_msgs/msg/TFMessage"));
+  ASSERT_TRUE(tf->AddToROS2Node(sender->GetID(), "/tf")) << this->Output->Errors;
+  const char* good = "{transforms: [{header: {stamp: {sec: 5}, frame_id: world}, "
+                     "child_frame_id: tool, transform: {translation: {x: 0.25}, "
+                     "rotation: {w: 1.0}}}]}";
+
+  // Publish until the receiver's buffer answers; only the sender's logic spins meanwhile.
+  bool answered = false;
+  for (const auto stop = Clock::now() + std::chrono::seconds(20); !answered && Clock::now() < stop;)
+  {
+    ASSERT_TRUE(tf->PublishYAML(good));
+    this->Logic->Spin();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    answered = buffer->can_transform("world", "tool", ros2vtk::tf2::kLatestTime);
+  }
+  ASSERT_TRUE(answered) << "the buffer of a node that never spun has no world <- tool";
+  EXPECT_STREQ(lookup->GetLookupStatus(), "waiting"); // nodes change on the spin only
+  EXPECT_EQ(receiverLogic->GetNumberOfSpins(), 0);
+
+  // The first spin looks up and counts the transforms inserted since the last spin.
+  EXPECT_GE(receiverLogic->Spin(), 2); // >= 1 transform inserted + the lookup node's update
+  EXPECT_STREQ(lookup->GetLookupStatus(), "ok");
+  // 0.25 m on the wire, millimetres in the scene.
+  EXPECT_DOUBLE_EQ(lookup->GetMatrixTransformToParent()->GetElement(0, 3), 250.0);
 }

@@ -23,6 +23,10 @@ std::unique_ptr<TransformListener> TransformListener::create(
   listener->static_ = participant.create_subscription(type, "/tf_static", static_qos, error);
   if (!listener->dynamic_ || !listener->static_)
     return nullptr;
+  TransformListener* self = listener.get(); // the sinks go with the subscriptions it owns
+  listener->static_->set_sink([self](wire::MessagePtr&& message) { self->insert(message, true); });
+  listener->dynamic_->set_sink(
+    [self](wire::MessagePtr&& message) { self->insert(message, false); });
   return listener;
 }
 
@@ -45,49 +49,64 @@ const std::string& TransformListener::authority_of(const std::array<uint8_t, 16>
   return authorities_.emplace(writer, std::move(node)).first->second;
 }
 
-TransformListener::~TransformListener() = default;
-
-size_t TransformListener::drain(wire::Subscription& subscription, bool is_static)
+TransformListener::~TransformListener()
 {
-  std::vector<wire::MessagePtr>& messages = taken_; // a member: no allocation per spin
-  messages.clear();
-  subscription.take(messages);
-  size_t inserted = 0;
-  // One transform and one reason for the whole batch: their strings keep their storage.
-  tf2::TransformStamped transform;
-  std::string reason;
-  for (const auto& message : messages)
+  // Stop the DDS threads' inserts before any member they use goes.
+  dynamic_.reset();
+  static_.reset();
+}
+
+std::string TransformListener::last_rejection() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return last_rejection_;
+}
+
+void TransformListener::insert(const wire::MessagePtr& message, bool is_static)
+{
+  const auto* tf = static_cast<const tf2_msgs::msg::TFMessage*>(message.get());
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::string& authority = authority_of(message.publisher_gid);
+  tf2::TransformStamped& transform = scratch_;
+  for (const auto& t : tf->transforms)
   {
-    const auto* tf = static_cast<const tf2_msgs::msg::TFMessage*>(message.get());
-    const std::string& authority = authority_of(message.publisher_gid);
-    for (const auto& t : tf->transforms)
+    transform.frame_id = t.header.frame_id;
+    transform.child_frame_id = t.child_frame_id;
+    transform.stamp = tf2::time_from_sec_nanosec(t.header.stamp.sec, t.header.stamp.nanosec);
+    transform.transform.translation = Eigen::Vector3d(
+      t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
+    // Eigen's constructor order is (w, x, y, z).
+    transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w,
+      t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z);
+    if (buffer_.set_transform(transform, authority, is_static, &reason_))
     {
-      transform.frame_id = t.header.frame_id;
-      transform.child_frame_id = t.child_frame_id;
-      transform.stamp = tf2::time_from_sec_nanosec(t.header.stamp.sec, t.header.stamp.nanosec);
-      transform.transform.translation = Eigen::Vector3d(
-        t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
-      // Eigen's constructor order is (w, x, y, z).
-      transform.transform.rotation = Eigen::Quaterniond(t.transform.rotation.w,
-        t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z);
-      if (buffer_.set_transform(transform, authority, is_static, &reason))
-      {
-        ++inserted;
-      }
-      else
-      {
-        ++rejected_;
-        last_rejection_ = reason;
-      }
+      ++inserted_;
+    }
+    else
+    {
+      ++rejected_;
+      last_rejection_ = reason_;
     }
   }
-  messages.clear(); // the messages go now, not at the next spin
-  return inserted;
 }
 
 size_t TransformListener::process()
 {
-  return drain(*static_, true) + drain(*dynamic_, false);
+  // Messages that arrived before create() set the sinks (a transient-local /tf_static backlog).
+  for (auto* subscription : { static_.get(), dynamic_.get() })
+  {
+    if (subscription->pending() == 0)
+      continue;
+    taken_.clear();
+    subscription->take(taken_);
+    for (const auto& message : taken_)
+      insert(message, subscription == static_.get());
+    taken_.clear();
+  }
+  const uint64_t inserted = inserted_;
+  const size_t count = static_cast<size_t>(inserted - inserted_reported_);
+  inserted_reported_ = inserted;
+  return count;
 }
 
 } // namespace tf2_ros

@@ -135,14 +135,23 @@ void Subscription::Impl::on_data_available(dds::DataReader* data_reader)
       std::chrono::system_clock::now().time_since_epoch())
                                        .count();
     ++received;
+    std::shared_ptr<const Subscription::Sink> consumer;
     {
       std::lock_guard<std::mutex> lock(mutex);
-      queue.push_back(std::move(message));
-      while (queue.size() > queue_limit)
+      consumer = sink;
+      if (!consumer)
       {
-        queue.pop_front();
-        ++dropped;
+        queue.push_back(std::move(message));
+        while (queue.size() > queue_limit)
+        {
+          queue.pop_front();
+          ++dropped;
+        }
       }
+    }
+    if (consumer)
+    {
+      (*consumer)(std::move(message));
     }
     queued = true;
   }
@@ -174,6 +183,17 @@ size_t Subscription::take(std::vector<MessagePtr>& out)
   }
   impl_->queue.clear();
   return count;
+}
+
+void Subscription::set_sink(Sink sink)
+{
+  std::shared_ptr<const Sink> consumer;
+  if (sink)
+  {
+    consumer = std::make_shared<const Sink>(std::move(sink));
+  }
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->sink = std::move(consumer);
 }
 
 size_t Subscription::pending() const

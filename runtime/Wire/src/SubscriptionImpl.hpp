@@ -41,6 +41,9 @@ public:
 
   mutable std::mutex mutex;
   std::deque<MessagePtr> queue;
+  /// set_sink()'s consumer; copied under the mutex and called outside it, so replacing it never
+  /// races a call in progress.
+  std::shared_ptr<const Subscription::Sink> sink;
   size_t queue_limit = 1000;
   std::string last_rejection;
   std::atomic<uint64_t> received{ 0 };

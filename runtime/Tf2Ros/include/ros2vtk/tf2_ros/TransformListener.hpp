@@ -1,15 +1,19 @@
 // ros2vtk — feeds a tf2 BufferCore from /tf and /tf_static as tf2_ros's TransformListener does
 // (QoS: keep last 100 reliable volatile for /tf, keep last 100 reliable transient local for
-// /tf_static). DDS threads only queue; process() inserts on the owner's thread.
+// /tf_static). As tf2_ros's listener thread does, the DDS thread that deserialized a /tf message
+// inserts it into the (locked) buffer, so the owner's spin only looks transforms up; process()
+// inserts what arrived before the DDS threads took over and reports the counts.
 #ifndef ros2vtk_tf2_ros_TransformListener_hpp
 #define ros2vtk_tf2_ros_TransformListener_hpp
 
 #include "ros2vtk/tf2/BufferCore.hpp"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -31,28 +35,38 @@ public:
     wire::Participant& participant, tf2::BufferCore& buffer, std::string* error);
   ~TransformListener();
 
-  /// Inserts every queued transform into the buffer. Returns how many were inserted; rejected
-  /// ones (NaN, self transform, bad quaternion…) are counted, the last reason kept.
+  /// Inserts any transform still queued, and returns how many were inserted since the last call
+  /// (on any thread); rejected ones (NaN, self transform, bad quaternion…) are counted, the last
+  /// reason kept.
   size_t process();
 
   uint64_t rejected_count() const { return rejected_; }
-  const std::string& last_rejection() const { return last_rejection_; }
+  std::string last_rejection() const;
 
 private:
   TransformListener(wire::Participant& participant, tf2::BufferCore& buffer);
-  size_t drain(wire::Subscription& subscription, bool is_static);
+  /// Every transform of one /tf or /tf_static message into the buffer: on a DDS thread, or from
+  /// process() for messages queued before the sinks were set.
+  void insert(const wire::MessagePtr& message, bool is_static);
   /// The authority recorded with a transform: the node of the writer that sent it (from the
   /// ROS graph, as `ros2 topic info -v` names it), or kUnknownAuthority until the graph knows it.
   const std::string& authority_of(const std::array<uint8_t, 16>& writer);
 
   wire::Participant& participant_;
   tf2::BufferCore& buffer_;
+  /// Guards what insert() uses: /tf and /tf_static may arrive on two DDS threads at once.
+  mutable std::mutex mutex_;
   std::map<std::array<uint8_t, 16>, std::string> authorities_; ///< writers whose node is known
+  std::string last_rejection_;
+  tf2::TransformStamped scratch_; ///< reused: its strings keep their storage between messages
+  std::string reason_;
+  std::vector<wire::MessagePtr> taken_; ///< process()'s batch; emptied after use
+  std::atomic<uint64_t> inserted_{ 0 };
+  std::atomic<uint64_t> rejected_{ 0 };
+  uint64_t inserted_reported_ = 0; ///< inserted_ at the last process()
+  // Last: destroyed first, so no DDS thread runs insert() on members already gone.
   std::unique_ptr<wire::Subscription> dynamic_;
   std::unique_ptr<wire::Subscription> static_;
-  uint64_t rejected_ = 0;
-  std::string last_rejection_;
-  std::vector<wire::MessagePtr> taken_; ///< drain's batch; emptied after use, capacity kept
 };
 
 } // namespace tf2_ros

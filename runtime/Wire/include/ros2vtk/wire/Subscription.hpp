@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,6 +54,14 @@ public:
 
   /// Moves every queued message into `out` (appended, oldest first); returns how many.
   size_t take(std::vector<MessagePtr>& out);
+
+  /// Receives each later message on the DDS thread that deserialized it, instead of the queue
+  /// (messages queued before stay there for take()); the participant's wake-up is raised as for a
+  /// queued one. For thread-safe consumers that should not wait for a spin: the tf listener
+  /// inserts into its locked buffer as tf2_ros's listener thread does, so a spin only looks up.
+  /// A sink must be quick and must never touch the scene. An empty function queues again.
+  using Sink = std::function<void(MessagePtr&&)>;
+  void set_sink(Sink sink);
   /// Messages waiting in the queue.
   size_t pending() const;
 
