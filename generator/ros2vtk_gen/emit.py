@@ -193,13 +193,28 @@ def field_view(item: Field, owner: str, table: Dict[str, Message]) -> dict:
     }
 
 
-def description_view(description: dict) -> dict:
-    """A TypeDescription (typehash.message_description / service_description) as the
-    templates write it into a constant table: C++ literals, the type first, then the
-    referenced types in order."""
-    def individual(item: dict) -> dict:
+def cpp_text_literal(text: str, indent: str) -> str:
+    """`text` as adjacent C++ string literals, one per line of the text (a long .msg file stays
+    readable in the generated code); "" for no text."""
+    lines = text.splitlines(keepends=True)
+    if not lines:
+        return '""'
+    def literal(line: str) -> str:
+        if line.endswith("\n"):
+            return cpp_string_literal(line[:-1])[:-1] + '\\n"'
+        return cpp_string_literal(line)
+    return ("\n" + indent).join(literal(line) for line in lines)
+
+
+def description_view(description: dict, sources: List[dict]) -> dict:
+    """A TypeDescription (typehash.message_description / service_description) and the type
+    sources served with it (typehash.description_sources) as the templates write them into a
+    constant table: C++ literals, the type first, then the referenced types in order."""
+    def individual(item: dict, source: dict) -> dict:
         return {
             "type_name": cpp_string_literal(item["type_name"]),
+            "encoding": cpp_string_literal(source["encoding"]),
+            "raw_file_contents": cpp_text_literal(source["raw_file_contents"], "    "),
             "fields": [{
                 "name": cpp_string_literal(f["name"]),
                 "type_id": f["type"]["type_id"],
@@ -209,8 +224,16 @@ def description_view(description: dict) -> dict:
                 "default_value": cpp_string_literal(f["default_value"]),
             } for f in item["fields"]],
         }
-    return {"type": individual(description["type_description"]),
-            "referenced": [individual(item) for item in description["referenced_type_descriptions"]]}
+    referenced = description["referenced_type_descriptions"]
+    return {"type": individual(description["type_description"], sources[0]),
+            "referenced": [individual(item, source) for item, source in zip(referenced, sources[1:])]}
+
+
+def described(description: dict, item: Union[Message, Service, Action],
+              table: Dict[str, Message]) -> dict:
+    """description_view of `item`'s description with the sources served with it."""
+    return description_view(description, typehash.description_sources(
+        description, typehash.own_source(item), table))
 
 
 def message_view(message: Message, table: Dict[str, Message]) -> dict:
@@ -239,7 +262,7 @@ def message_view(message: Message, table: Dict[str, Message]) -> dict:
         "ros_type": message.ros_type,
         "dds_type_name": naming.dds_type_name(message),
         "type_hash": typehash.type_hash(message, table),
-        "description": description_view(typehash.message_description(message, table)),
+        "description": described(typehash.message_description(message, table), message, table),
         "namespace": naming.cpp_namespace(message.package, message.kind),
         "qualified": qualified,
         "header": header,
@@ -390,7 +413,7 @@ def _service_artefacts(service: Service, table: Dict[str, Message]) -> List[Arte
         "name": service.name,
         "ros_type": service.ros_type,
         "type_hash": typehash.type_hash(service, table),
-        "description": description_view(typehash.service_description(service, table)),
+        "description": described(typehash.service_description(service, table), service, table),
         "namespace": naming.cpp_namespace(service.package, service.kind),
         "header": header,
         "guard": naming.include_guard(header),
@@ -412,7 +435,7 @@ def _action_artefacts(action: Action, table: Dict[str, Message]) -> List[Artefac
         "name": action.name,
         "ros_type": action.ros_type,
         "type_hash": typehash.type_hash(action, table),
-        "description": description_view(typehash.action_description(action, table)),
+        "description": described(typehash.action_description(action, table), action, table),
         "namespace": naming.cpp_namespace(action.package, "action"),
         "header": header,
         "guard": naming.include_guard(header),

@@ -176,6 +176,43 @@ def action_description(action: Action, table: Dict[str, Message]) -> dict:
             "referenced_type_descriptions": [references[name] for name in sorted(references)]}
 
 
+IMPLICIT = "implicit"
+
+
+def type_source(encoding: str, text: str) -> dict:
+    """One TypeSource as rosidl_generator_c embeds it (full__description.c.em): the file's
+    lines joined by '\\n', so without the file's last newline; "implicit" types (the halves of
+    a .srv, what a .action synthesizes) have no text."""
+    return {"encoding": encoding, "raw_file_contents": "\n".join(text.splitlines())}
+
+
+def own_source(item: Union[Message, Service, Action]) -> dict:
+    """The TypeSource of a spec's own type: its file for a .msg, .srv or .action, "implicit"
+    for the messages and services rosidl synthesizes from a .srv or .action."""
+    if isinstance(item, Action):
+        return type_source("action", item.text)
+    if isinstance(item, Service):
+        return type_source("srv", item.text) if item.kind == "srv" else type_source(IMPLICIT, "")
+    return type_source("msg", item.text) if item.kind == "msg" else type_source(IMPLICIT, "")
+
+
+def description_sources(description: dict, own: dict, table: Dict[str, Message]) -> List[dict]:
+    """The type_sources rcl serves for `description` when asked (include_type_sources): the
+    type's own source (`own`), then one per referenced type in the description's order; a
+    referenced pkg/msg/ type's is its .msg file, a pkg/srv/ or pkg/action/ type's is implicit
+    (a service or action only references the types it synthesizes there). A .msg type missing
+    from `table` (service_msgs/msg/ServiceEventInfo when service_msgs is not given) has an
+    empty text."""
+    sources = [own]
+    for individual in description["referenced_type_descriptions"]:
+        name = individual["type_name"]
+        if name.split("/")[1] == "msg":
+            sources.append(type_source("msg", table[name].text if name in table else ""))
+        else:
+            sources.append(type_source(IMPLICIT, ""))
+    return sources
+
+
 def _without_defaults(individual: dict) -> dict:
     return {"type_name": individual["type_name"],
             "fields": [{"name": f["name"], "type": f["type"]} for f in individual["fields"]]}

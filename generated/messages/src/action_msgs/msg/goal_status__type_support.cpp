@@ -39,7 +39,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "goal_info", 1, 0, 0, "action_msgs/msg/GoalInfo", "" },
   { "status", 2, 0, 0, "", "" },
@@ -56,12 +57,67 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields3 },
+  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1,
+    { "msg",
+    "# Goal ID\n"
+    "unique_identifier_msgs/UUID goal_id\n"
+    "\n"
+    "# Time when the goal was accepted\n"
+    "builtin_interfaces/Time stamp" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields3,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "action_msgs/msg/GoalStatus", 2, kDescribedFields0 },
+  { "action_msgs/msg/GoalStatus", 2, kDescribedFields0,
+    { "msg",
+    "# An action goal can be in one of these states after it is accepted by an action\n"
+    "# server.\n"
+    "#\n"
+    "# For more information, see http://design.ros2.org/articles/actions.html\n"
+    "\n"
+    "# Indicates status has not been properly set.\n"
+    "int8 STATUS_UNKNOWN   = 0\n"
+    "\n"
+    "# The goal has been accepted and is awaiting execution.\n"
+    "int8 STATUS_ACCEPTED  = 1\n"
+    "\n"
+    "# The goal is currently being executed by the action server.\n"
+    "int8 STATUS_EXECUTING = 2\n"
+    "\n"
+    "# The client has requested that the goal be canceled and the action server has\n"
+    "# accepted the cancel request.\n"
+    "int8 STATUS_CANCELING = 3\n"
+    "\n"
+    "# The goal was achieved successfully by the action server.\n"
+    "int8 STATUS_SUCCEEDED = 4\n"
+    "\n"
+    "# The goal was canceled after an external request from an action client.\n"
+    "int8 STATUS_CANCELED  = 5\n"
+    "\n"
+    "# The goal was terminated by the action server without an external request.\n"
+    "int8 STATUS_ABORTED   = 6\n"
+    "\n"
+    "# Goal info (contains ID and timestamp).\n"
+    "GoalInfo goal_info\n"
+    "\n"
+    "# Action goal state-machine status.\n"
+    "int8 status" } },
   3,
   kReferencedDescriptions,
 };

@@ -26,7 +26,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "goal_info", 1, 0, 0, "action_msgs/msg/GoalInfo", "" },
 };
@@ -42,12 +43,36 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields3 },
+  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1,
+    { "msg",
+    "# Goal ID\n"
+    "unique_identifier_msgs/UUID goal_id\n"
+    "\n"
+    "# Time when the goal was accepted\n"
+    "builtin_interfaces/Time stamp" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields3,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "action_msgs/srv/CancelGoal_Request", 1, kDescribedFields0 },
+  { "action_msgs/srv/CancelGoal_Request", 1, kDescribedFields0,
+    { "implicit",
+    "" } },
   3,
   kReferencedDescriptions,
 };

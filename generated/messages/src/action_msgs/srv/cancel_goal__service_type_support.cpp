@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "action_msgs/srv/CancelGoal_Request", "" },
   { "response_message", 1, 0, 0, "action_msgs/srv/CancelGoal_Response", "" },
@@ -56,16 +57,113 @@ const wire::TypeDescriptionField kDescribedFields7[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1 },
-  { "action_msgs/srv/CancelGoal_Event", 3, kDescribedFields2 },
-  { "action_msgs/srv/CancelGoal_Request", 1, kDescribedFields3 },
-  { "action_msgs/srv/CancelGoal_Response", 2, kDescribedFields4 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields5 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields7 },
+  { "action_msgs/msg/GoalInfo", 2, kDescribedFields1,
+    { "msg",
+    "# Goal ID\n"
+    "unique_identifier_msgs/UUID goal_id\n"
+    "\n"
+    "# Time when the goal was accepted\n"
+    "builtin_interfaces/Time stamp" } },
+  { "action_msgs/srv/CancelGoal_Event", 3, kDescribedFields2,
+    { "implicit",
+    "" } },
+  { "action_msgs/srv/CancelGoal_Request", 1, kDescribedFields3,
+    { "implicit",
+    "" } },
+  { "action_msgs/srv/CancelGoal_Response", 2, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields5,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields7,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "action_msgs/srv/CancelGoal", 3, kDescribedFields0 },
+  { "action_msgs/srv/CancelGoal", 3, kDescribedFields0,
+    { "srv",
+    "# Cancel one or more goals with the following policy:\n"
+    "#\n"
+    "# - If the goal ID is zero and timestamp is zero, cancel all goals.\n"
+    "# - If the goal ID is zero and timestamp is not zero, cancel all goals accepted\n"
+    "#   at or before the timestamp.\n"
+    "# - If the goal ID is not zero and timestamp is zero, cancel the goal with the\n"
+    "#   given ID regardless of the time it was accepted.\n"
+    "# - If the goal ID is not zero and timestamp is not zero, cancel the goal with\n"
+    "#   the given ID and all goals accepted at or before the timestamp.\n"
+    "\n"
+    "# Goal info describing the goals to cancel, see above.\n"
+    "GoalInfo goal_info\n"
+    "---\n"
+    "##\n"
+    "## Return codes.\n"
+    "##\n"
+    "\n"
+    "# Indicates the request was accepted without any errors.\n"
+    "#\n"
+    "# One or more goals have transitioned to the CANCELING state. The\n"
+    "# goals_canceling list is not empty.\n"
+    "int8 ERROR_NONE=0\n"
+    "\n"
+    "# Indicates the request was rejected.\n"
+    "#\n"
+    "# No goals have transitioned to the CANCELING state. The goals_canceling list is\n"
+    "# empty.\n"
+    "int8 ERROR_REJECTED=1\n"
+    "\n"
+    "# Indicates the requested goal ID does not exist.\n"
+    "#\n"
+    "# No goals have transitioned to the CANCELING state. The goals_canceling list is\n"
+    "# empty.\n"
+    "int8 ERROR_UNKNOWN_GOAL_ID=2\n"
+    "\n"
+    "# Indicates the goal is not cancelable because it is already in a terminal state.\n"
+    "#\n"
+    "# No goals have transitioned to the CANCELING state. The goals_canceling list is\n"
+    "# empty.\n"
+    "int8 ERROR_GOAL_TERMINATED=3\n"
+    "\n"
+    "# Return code, see above definitions.\n"
+    "int8 return_code\n"
+    "\n"
+    "# Goals that accepted the cancel request.\n"
+    "GoalInfo[] goals_canceling" } },
   7,
   kReferencedDescriptions,
 };

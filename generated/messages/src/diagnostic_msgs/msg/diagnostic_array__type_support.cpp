@@ -37,7 +37,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "status", 145, 0, 0, "diagnostic_msgs/msg/DiagnosticStatus", "" },
@@ -62,13 +63,60 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields2 },
-  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields3 },
-  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields2,
+    { "msg",
+    "# This message holds the status of an individual component of the robot.\n"
+    "\n"
+    "# Possible levels of operations.\n"
+    "byte OK=0\n"
+    "byte WARN=1\n"
+    "byte ERROR=2\n"
+    "byte STALE=3\n"
+    "\n"
+    "# Level of operation enumerated above.\n"
+    "byte level\n"
+    "# A description of the test/component reporting.\n"
+    "string name\n"
+    "# A description of the status.\n"
+    "string message\n"
+    "# A hardware unique string.\n"
+    "string hardware_id\n"
+    "# An array of values associated with the status.\n"
+    "KeyValue[] values\n" } },
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields3,
+    { "msg",
+    "# What to label this value when viewing.\n"
+    "string key\n"
+    "# A value to track over time.\n"
+    "string value" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields4,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "diagnostic_msgs/msg/DiagnosticArray", 2, kDescribedFields0 },
+  { "diagnostic_msgs/msg/DiagnosticArray", 2, kDescribedFields0,
+    { "msg",
+    "# This message is used to send diagnostic information about the state of the robot.\n"
+    "std_msgs/Header header # for timestamp\n"
+    "DiagnosticStatus[] status # an array of components being reported on" } },
   4,
   kReferencedDescriptions,
 };

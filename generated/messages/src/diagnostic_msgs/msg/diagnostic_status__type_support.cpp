@@ -48,7 +48,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "level", 16, 0, 0, "", "" },
   { "name", 17, 0, 0, "", "" },
@@ -61,10 +62,34 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "value", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields1 },
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields1,
+    { "msg",
+    "# What to label this value when viewing.\n"
+    "string key\n"
+    "# A value to track over time.\n"
+    "string value" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields0 },
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields0,
+    { "msg",
+    "# This message holds the status of an individual component of the robot.\n"
+    "\n"
+    "# Possible levels of operations.\n"
+    "byte OK=0\n"
+    "byte WARN=1\n"
+    "byte ERROR=2\n"
+    "byte STALE=3\n"
+    "\n"
+    "# Level of operation enumerated above.\n"
+    "byte level\n"
+    "# A description of the test/component reporting.\n"
+    "string name\n"
+    "# A description of the status.\n"
+    "string message\n"
+    "# A hardware unique string.\n"
+    "string hardware_id\n"
+    "# An array of values associated with the status.\n"
+    "KeyValue[] values\n" } },
   1,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "diagnostic_msgs/srv/AddDiagnostics_Request", "" },
   { "response_message", 1, 0, 0, "diagnostic_msgs/srv/AddDiagnostics_Response", "" },
@@ -49,14 +50,79 @@ const wire::TypeDescriptionField kDescribedFields5[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "diagnostic_msgs/srv/AddDiagnostics_Event", 3, kDescribedFields2 },
-  { "diagnostic_msgs/srv/AddDiagnostics_Request", 1, kDescribedFields3 },
-  { "diagnostic_msgs/srv/AddDiagnostics_Response", 2, kDescribedFields4 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields5 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "diagnostic_msgs/srv/AddDiagnostics_Event", 3, kDescribedFields2,
+    { "implicit",
+    "" } },
+  { "diagnostic_msgs/srv/AddDiagnostics_Request", 1, kDescribedFields3,
+    { "implicit",
+    "" } },
+  { "diagnostic_msgs/srv/AddDiagnostics_Response", 2, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields5,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "diagnostic_msgs/srv/AddDiagnostics", 3, kDescribedFields0 },
+  { "diagnostic_msgs/srv/AddDiagnostics", 3, kDescribedFields0,
+    { "srv",
+    "# This service is used as part of the process for loading analyzers at runtime,\n"
+    "# and should be used by a loader script or program, not as a standalone service.\n"
+    "# Information about dynamic addition of analyzers can be found at\n"
+    "# http://wiki.ros.org/diagnostics/Tutorials/Adding%20Analyzers%20at%20Runtime\n"
+    "\n"
+    "# The load_namespace parameter defines the namespace where parameters for the\n"
+    "# initialization of analyzers in the diagnostic aggregator have been loaded. The\n"
+    "# value should be a global name (i.e. /my/name/space), not a relative\n"
+    "# (my/name/space) or private (~my/name/space) name. Analyzers will not be added\n"
+    "# if a non-global name is used. The call will also fail if the namespace\n"
+    "# contains parameters that follow a namespace structure that does not conform to\n"
+    "# that expected by the analyzer definitions. See\n"
+    "# http://wiki.ros.org/diagnostics/Tutorials/Configuring%20Diagnostic%20Aggregators\n"
+    "# and http://wiki.ros.org/diagnostics/Tutorials/Using%20the%20GenericAnalyzer\n"
+    "# for examples of the structure of yaml files which are expected to have been\n"
+    "# loaded into the namespace.\n"
+    "string load_namespace\n"
+    "---\n"
+    "\n"
+    "# True if diagnostic aggregator was updated with new diagnostics, False\n"
+    "# otherwise. A false return value means that either there is a bond in the\n"
+    "# aggregator which already used the requested namespace, or the initialization\n"
+    "# of analyzers failed.\n"
+    "bool success\n"
+    "\n"
+    "# Message with additional information about the success or failure\n"
+    "string message" } },
   5,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "diagnostic_msgs/srv/SelfTest_Request", "" },
   { "response_message", 1, 0, 0, "diagnostic_msgs/srv/SelfTest_Response", "" },
@@ -61,16 +62,82 @@ const wire::TypeDescriptionField kDescribedFields7[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields2 },
-  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields3 },
-  { "diagnostic_msgs/srv/SelfTest_Event", 3, kDescribedFields4 },
-  { "diagnostic_msgs/srv/SelfTest_Request", 1, kDescribedFields5 },
-  { "diagnostic_msgs/srv/SelfTest_Response", 3, kDescribedFields6 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "diagnostic_msgs/msg/DiagnosticStatus", 5, kDescribedFields2,
+    { "msg",
+    "# This message holds the status of an individual component of the robot.\n"
+    "\n"
+    "# Possible levels of operations.\n"
+    "byte OK=0\n"
+    "byte WARN=1\n"
+    "byte ERROR=2\n"
+    "byte STALE=3\n"
+    "\n"
+    "# Level of operation enumerated above.\n"
+    "byte level\n"
+    "# A description of the test/component reporting.\n"
+    "string name\n"
+    "# A description of the status.\n"
+    "string message\n"
+    "# A hardware unique string.\n"
+    "string hardware_id\n"
+    "# An array of values associated with the status.\n"
+    "KeyValue[] values\n" } },
+  { "diagnostic_msgs/msg/KeyValue", 2, kDescribedFields3,
+    { "msg",
+    "# What to label this value when viewing.\n"
+    "string key\n"
+    "# A value to track over time.\n"
+    "string value" } },
+  { "diagnostic_msgs/srv/SelfTest_Event", 3, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "diagnostic_msgs/srv/SelfTest_Request", 1, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "diagnostic_msgs/srv/SelfTest_Response", 3, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "diagnostic_msgs/srv/SelfTest", 3, kDescribedFields0 },
+  { "diagnostic_msgs/srv/SelfTest", 3, kDescribedFields0,
+    { "srv",
+    "---\n"
+    "string id\n"
+    "byte passed\n"
+    "DiagnosticStatus[] status" } },
   7,
   kReferencedDescriptions,
 };

@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "linear", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
   { "angular", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
@@ -40,10 +41,24 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "z", 11, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields1 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields1,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Accel", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/Accel", 2, kDescribedFields0,
+    { "msg",
+    "# This expresses acceleration in free space broken into its linear and angular parts.\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
   1,
   kReferencedDescriptions,
 };

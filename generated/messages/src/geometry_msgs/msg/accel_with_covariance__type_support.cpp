@@ -32,7 +32,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "accel", 1, 0, 0, "geometry_msgs/msg/Accel", "" },
   { "covariance", 59, 36, 0, "", "" },
@@ -47,11 +48,35 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "z", 11, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Accel", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Accel", 2, kDescribedFields1,
+    { "msg",
+    "# This expresses acceleration in free space broken into its linear and angular parts.\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/AccelWithCovariance", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/AccelWithCovariance", 2, kDescribedFields0,
+    { "msg",
+    "# This expresses acceleration in free space with uncertainty.\n"
+    "\n"
+    "Accel accel\n"
+    "\n"
+    "# Row-major representation of the 6x6 covariance matrix\n"
+    "# The orientation parameters use a fixed-axis representation.\n"
+    "# In order, the parameters are:\n"
+    "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+    "float64[36] covariance" } },
   2,
   kReferencedDescriptions,
 };

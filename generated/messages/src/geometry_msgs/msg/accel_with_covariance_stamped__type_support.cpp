@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "accel", 1, 0, 0, "geometry_msgs/msg/AccelWithCovariance", "" },
@@ -61,14 +62,61 @@ const wire::TypeDescriptionField kDescribedFields5[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Accel", 2, kDescribedFields2 },
-  { "geometry_msgs/msg/AccelWithCovariance", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields4 },
-  { "std_msgs/msg/Header", 2, kDescribedFields5 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Accel", 2, kDescribedFields2,
+    { "msg",
+    "# This expresses acceleration in free space broken into its linear and angular parts.\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
+  { "geometry_msgs/msg/AccelWithCovariance", 2, kDescribedFields3,
+    { "msg",
+    "# This expresses acceleration in free space with uncertainty.\n"
+    "\n"
+    "Accel accel\n"
+    "\n"
+    "# Row-major representation of the 6x6 covariance matrix\n"
+    "# The orientation parameters use a fixed-axis representation.\n"
+    "# In order, the parameters are:\n"
+    "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+    "float64[36] covariance" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields4,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields5,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/AccelWithCovarianceStamped", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/AccelWithCovarianceStamped", 2, kDescribedFields0,
+    { "msg",
+    "# This represents an estimated accel with reference coordinate frame and timestamp.\n"
+    "std_msgs/Header header\n"
+    "AccelWithCovariance accel" } },
   5,
   kReferencedDescriptions,
 };

@@ -47,7 +47,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "m", 11, 0, 0, "", "" },
   { "com", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
@@ -64,10 +65,37 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "z", 11, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields1 },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields1,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Inertia", 8, kDescribedFields0 },
+  { "geometry_msgs/msg/Inertia", 8, kDescribedFields0,
+    { "msg",
+    "# Mass [kg]\n"
+    "float64 m\n"
+    "\n"
+    "# Center of mass [m]\n"
+    "geometry_msgs/Vector3 com\n"
+    "\n"
+    "# Inertia Tensor [kg-m^2]\n"
+    "#     | ixx ixy ixz |\n"
+    "# I = | ixy iyy iyz |\n"
+    "#     | ixz iyz izz |\n"
+    "float64 ixx\n"
+    "float64 ixy\n"
+    "float64 ixz\n"
+    "float64 iyy\n"
+    "float64 iyz\n"
+    "float64 izz" } },
   1,
   kReferencedDescriptions,
 };

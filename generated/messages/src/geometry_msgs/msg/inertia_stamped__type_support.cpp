@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "inertia", 1, 0, 0, "geometry_msgs/msg/Inertia", "" },
@@ -63,13 +64,64 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Inertia", 8, kDescribedFields2 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields3 },
-  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Inertia", 8, kDescribedFields2,
+    { "msg",
+    "# Mass [kg]\n"
+    "float64 m\n"
+    "\n"
+    "# Center of mass [m]\n"
+    "geometry_msgs/Vector3 com\n"
+    "\n"
+    "# Inertia Tensor [kg-m^2]\n"
+    "#     | ixx ixy ixz |\n"
+    "# I = | ixy iyy iyz |\n"
+    "#     | ixz iyz izz |\n"
+    "float64 ixx\n"
+    "float64 ixy\n"
+    "float64 ixz\n"
+    "float64 iyy\n"
+    "float64 iyz\n"
+    "float64 izz" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields3,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields4,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/InertiaStamped", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/InertiaStamped", 2, kDescribedFields0,
+    { "msg",
+    "# An Inertia with a time stamp and reference frame.\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "Inertia inertia" } },
   4,
   kReferencedDescriptions,
 };

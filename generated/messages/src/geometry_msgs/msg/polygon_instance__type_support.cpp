@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "polygon", 1, 0, 0, "geometry_msgs/msg/Polygon", "" },
   { "id", 8, 0, 0, "", "" },
@@ -43,11 +44,33 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "points", 145, 0, 0, "geometry_msgs/msg/Point32", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Point32", 3, kDescribedFields1 },
-  { "geometry_msgs/msg/Polygon", 1, kDescribedFields2 },
+  { "geometry_msgs/msg/Point32", 3, kDescribedFields1,
+    { "msg",
+    "# This contains the position of a point in free space(with 32 bits of precision).\n"
+    "# It is recommended to use Point wherever possible instead of Point32.\n"
+    "#\n"
+    "# This recommendation is to promote interoperability.\n"
+    "#\n"
+    "# This message is designed to take up less space when sending\n"
+    "# lots of points at once, as in the case of a PointCloud.\n"
+    "\n"
+    "float32 x\n"
+    "float32 y\n"
+    "float32 z" } },
+  { "geometry_msgs/msg/Polygon", 1, kDescribedFields2,
+    { "msg",
+    "# A specification of a polygon where the first and last points are assumed to be connected\n"
+    "\n"
+    "Point32[] points" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/PolygonInstance", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/PolygonInstance", 2, kDescribedFields0,
+    { "msg",
+    "# A specification of a polygon where the first and last points are assumed to be connected\n"
+    "# It includes a unique identification field for disambiguating multiple instances\n"
+    "\n"
+    "geometry_msgs/Polygon polygon\n"
+    "int64 id" } },
   2,
   kReferencedDescriptions,
 };

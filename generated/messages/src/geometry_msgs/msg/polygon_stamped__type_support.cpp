@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "polygon", 1, 0, 0, "geometry_msgs/msg/Polygon", "" },
@@ -56,13 +57,53 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point32", 3, kDescribedFields2 },
-  { "geometry_msgs/msg/Polygon", 1, kDescribedFields3 },
-  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point32", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space(with 32 bits of precision).\n"
+    "# It is recommended to use Point wherever possible instead of Point32.\n"
+    "#\n"
+    "# This recommendation is to promote interoperability.\n"
+    "#\n"
+    "# This message is designed to take up less space when sending\n"
+    "# lots of points at once, as in the case of a PointCloud.\n"
+    "\n"
+    "float32 x\n"
+    "float32 y\n"
+    "float32 z" } },
+  { "geometry_msgs/msg/Polygon", 1, kDescribedFields3,
+    { "msg",
+    "# A specification of a polygon where the first and last points are assumed to be connected\n"
+    "\n"
+    "Point32[] points" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields4,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/PolygonStamped", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/PolygonStamped", 2, kDescribedFields0,
+    { "msg",
+    "# This represents a Polygon with reference coordinate frame and timestamp\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "Polygon polygon" } },
   4,
   kReferencedDescriptions,
 };

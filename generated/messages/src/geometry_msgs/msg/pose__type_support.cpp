@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "position", 1, 0, 0, "geometry_msgs/msg/Point", "" },
   { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
@@ -51,11 +52,28 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "w", 11, 0, 0, "", "1.0" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Point", 3, kDescribedFields1 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields1,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields0,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
   2,
   kReferencedDescriptions,
 };

@@ -32,7 +32,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "pose", 1, 0, 0, "geometry_msgs/msg/Pose", "" },
   { "covariance", 59, 36, 0, "", "" },
@@ -53,12 +54,39 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "w", 11, 0, 0, "", "1.0" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Point", 3, kDescribedFields1 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields2 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields3 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields1,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields2,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields3,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields0,
+    { "msg",
+    "# This represents a pose in free space with uncertainty.\n"
+    "\n"
+    "Pose pose\n"
+    "\n"
+    "# Row-major representation of the 6x6 covariance matrix\n"
+    "# The orientation parameters use a fixed-axis representation.\n"
+    "# In order, the parameters are:\n"
+    "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+    "float64[36] covariance" } },
   3,
   kReferencedDescriptions,
 };

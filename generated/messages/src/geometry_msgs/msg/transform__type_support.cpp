@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "translation", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
   { "rotation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
@@ -51,11 +52,33 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "z", 11, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields1 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields1,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Transform", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/Transform", 2, kDescribedFields0,
+    { "msg",
+    "# This represents the transform between two coordinate frames in free space.\n"
+    "\n"
+    "Vector3 translation\n"
+    "Quaternion rotation" } },
   2,
   kReferencedDescriptions,
 };

@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "vector", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
@@ -53,12 +54,49 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2 },
-  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields3,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Vector3Stamped", 2, kDescribedFields0 },
+  { "geometry_msgs/msg/Vector3Stamped", 2, kDescribedFields0,
+    { "msg",
+    "# This represents a Vector3 with reference coordinate frame and timestamp\n"
+    "\n"
+    "# Note that this follows vector semantics with it always anchored at the origin,\n"
+    "# so the rotational elements of a transform are the only parts applied when transforming.\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "Vector3 vector" } },
   3,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "lifecycle_msgs/srv/ChangeState_Request", "" },
   { "response_message", 1, 0, 0, "lifecycle_msgs/srv/ChangeState_Response", "" },
@@ -52,15 +53,156 @@ const wire::TypeDescriptionField kDescribedFields6[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields2 },
-  { "lifecycle_msgs/srv/ChangeState_Event", 3, kDescribedFields3 },
-  { "lifecycle_msgs/srv/ChangeState_Request", 1, kDescribedFields4 },
-  { "lifecycle_msgs/srv/ChangeState_Response", 1, kDescribedFields5 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields2,
+    { "msg",
+    "# Default values for transitions as described in:\n"
+    "# http://design.ros2.org/articles/node_lifecycle.html\n"
+    "\n"
+    "# Reserved [0-9], publicly available transitions.\n"
+    "# When a node is in one of these primary states, these transitions can be\n"
+    "# invoked.\n"
+    "\n"
+    "# This transition will instantiate the node, but will not run any code beyond\n"
+    "# the constructor.\n"
+    "uint8 TRANSITION_CREATE = 0\n"
+    "\n"
+    "# The node's onConfigure callback will be called to allow the node to load its\n"
+    "# configuration and conduct any required setup.\n"
+    "uint8 TRANSITION_CONFIGURE = 1\n"
+    "\n"
+    "# The node's callback onCleanup will be called in this transition to allow the\n"
+    "# node to load its configuration and conduct any required setup.\n"
+    "uint8 TRANSITION_CLEANUP = 2\n"
+    "\n"
+    "# The node's callback onActivate will be executed to do any final preparations\n"
+    "# to start executing.\n"
+    "uint8 TRANSITION_ACTIVATE = 3\n"
+    "\n"
+    "# The node's callback onDeactivate will be executed to do any cleanup to start\n"
+    "# executing, and reverse the onActivate changes.\n"
+    "uint8 TRANSITION_DEACTIVATE = 4\n"
+    "\n"
+    "# This signals shutdown during an unconfigured state, the node's callback\n"
+    "# onShutdown will be executed to do any cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_UNCONFIGURED_SHUTDOWN  = 5\n"
+    "\n"
+    "# This signals shutdown during an inactive state, the node's callback onShutdown\n"
+    "# will be executed to do any cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_INACTIVE_SHUTDOWN = 6\n"
+    "\n"
+    "# This signals shutdown during an active state, the node's callback onShutdown\n"
+    "# will be executed to do any cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_ACTIVE_SHUTDOWN = 7\n"
+    "\n"
+    "# This transition will simply cause the deallocation of the node.\n"
+    "uint8 TRANSITION_DESTROY = 8\n"
+    "\n"
+    "# Reserved [10-69], private transitions\n"
+    "# These transitions are not publicly available and cannot be invoked by a user.\n"
+    "# The following transitions are implicitly invoked based on the callback\n"
+    "# feedback of the intermediate transition states.\n"
+    "uint8 TRANSITION_ON_CONFIGURE_SUCCESS = 10\n"
+    "uint8 TRANSITION_ON_CONFIGURE_FAILURE = 11\n"
+    "uint8 TRANSITION_ON_CONFIGURE_ERROR = 12\n"
+    "\n"
+    "uint8 TRANSITION_ON_CLEANUP_SUCCESS = 20\n"
+    "uint8 TRANSITION_ON_CLEANUP_FAILURE = 21\n"
+    "uint8 TRANSITION_ON_CLEANUP_ERROR = 22\n"
+    "\n"
+    "uint8 TRANSITION_ON_ACTIVATE_SUCCESS = 30\n"
+    "uint8 TRANSITION_ON_ACTIVATE_FAILURE = 31\n"
+    "uint8 TRANSITION_ON_ACTIVATE_ERROR = 32\n"
+    "\n"
+    "uint8 TRANSITION_ON_DEACTIVATE_SUCCESS = 40\n"
+    "uint8 TRANSITION_ON_DEACTIVATE_FAILURE = 41\n"
+    "uint8 TRANSITION_ON_DEACTIVATE_ERROR = 42\n"
+    "\n"
+    "uint8 TRANSITION_ON_SHUTDOWN_SUCCESS = 50\n"
+    "uint8 TRANSITION_ON_SHUTDOWN_FAILURE = 51\n"
+    "uint8 TRANSITION_ON_SHUTDOWN_ERROR = 52\n"
+    "\n"
+    "uint8 TRANSITION_ON_ERROR_SUCCESS = 60\n"
+    "uint8 TRANSITION_ON_ERROR_FAILURE = 61\n"
+    "uint8 TRANSITION_ON_ERROR_ERROR = 62\n"
+    "\n"
+    "# Reserved [90-99]. Transition callback success values.\n"
+    "# These return values ought to be set as a return value for each callback.\n"
+    "# Depending on which return value, the transition will be executed correctly or\n"
+    "# fallback/error callbacks will be triggered.\n"
+    "\n"
+    "# The transition callback successfully performed its required functionality.\n"
+    "uint8 TRANSITION_CALLBACK_SUCCESS = 97\n"
+    "\n"
+    "# The transition callback failed to perform its required functionality.\n"
+    "uint8 TRANSITION_CALLBACK_FAILURE = 98\n"
+    "\n"
+    "# The transition callback encountered an error that requires special cleanup, if\n"
+    "# possible.\n"
+    "uint8 TRANSITION_CALLBACK_ERROR = 99\n"
+    "\n"
+    "##\n"
+    "## Fields\n"
+    "##\n"
+    "\n"
+    "# The transition id from above definitions.\n"
+    "uint8 id\n"
+    "\n"
+    "# A text label of the transition.\n"
+    "string label" } },
+  { "lifecycle_msgs/srv/ChangeState_Event", 3, kDescribedFields3,
+    { "implicit",
+    "" } },
+  { "lifecycle_msgs/srv/ChangeState_Request", 1, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "lifecycle_msgs/srv/ChangeState_Response", 1, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "lifecycle_msgs/srv/ChangeState", 3, kDescribedFields0 },
+  { "lifecycle_msgs/srv/ChangeState", 3, kDescribedFields0,
+    { "srv",
+    "# The requested transition.\n"
+    "#\n"
+    "# This change state service will fail if the transition is not possible.\n"
+    "Transition transition\n"
+    "---\n"
+    "\n"
+    "# Indicates whether the service was able to initiate the state transition\n"
+    "bool success" } },
   6,
   kReferencedDescriptions,
 };

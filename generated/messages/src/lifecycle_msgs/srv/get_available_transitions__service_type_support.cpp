@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Request", "" },
   { "response_message", 1, 0, 0, "lifecycle_msgs/srv/GetAvailableTransitions_Response", "" },
@@ -61,17 +62,220 @@ const wire::TypeDescriptionField kDescribedFields8[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "lifecycle_msgs/msg/State", 2, kDescribedFields2 },
-  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields3 },
-  { "lifecycle_msgs/msg/TransitionDescription", 3, kDescribedFields4 },
-  { "lifecycle_msgs/srv/GetAvailableTransitions_Event", 3, kDescribedFields5 },
-  { "lifecycle_msgs/srv/GetAvailableTransitions_Request", 1, kDescribedFields6 },
-  { "lifecycle_msgs/srv/GetAvailableTransitions_Response", 1, kDescribedFields7 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "lifecycle_msgs/msg/State", 2, kDescribedFields2,
+    { "msg",
+    "# Primary state definitions as depicted in:\n"
+    "# http://design.ros2.org/articles/node_lifecycle.html\n"
+    "\n"
+    "# These are the primary states. State changes can only be requested when the\n"
+    "# node is in one of these states.\n"
+    "\n"
+    "# Indicates state has not yet been set.\n"
+    "uint8 PRIMARY_STATE_UNKNOWN = 0\n"
+    "\n"
+    "# This is the life cycle state the node is in immediately after being\n"
+    "# instantiated.\n"
+    "uint8 PRIMARY_STATE_UNCONFIGURED = 1\n"
+    "\n"
+    "# This state represents a node that is not currently performing any processing.\n"
+    "uint8 PRIMARY_STATE_INACTIVE = 2\n"
+    "\n"
+    "# This is the main state of the node's life cycle. While in this state, the node\n"
+    "# performs any processing, responds to service requests, reads and processes\n"
+    "# data, produces output, etc.\n"
+    "uint8 PRIMARY_STATE_ACTIVE = 3\n"
+    "\n"
+    "# The finalized state is the state in which the node ends immediately before\n"
+    "# being destroyed.\n"
+    "uint8 PRIMARY_STATE_FINALIZED = 4\n"
+    "\n"
+    "# Temporary intermediate states. When a transition is requested, the node\n"
+    "# changes its state into one of these states.\n"
+    "\n"
+    "# In this transition state the node's onConfigure callback will be called to\n"
+    "# allow the node to load its configuration and conduct any required setup.\n"
+    "uint8 TRANSITION_STATE_CONFIGURING = 10\n"
+    "\n"
+    "# In this transition state the node's callback onCleanup will be called to clear\n"
+    "# all state and return the node to a functionally equivalent state as when\n"
+    "# first created.\n"
+    "uint8 TRANSITION_STATE_CLEANINGUP = 11\n"
+    "\n"
+    "# In this transition state the callback onShutdown will be executed to do any\n"
+    "# cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_STATE_SHUTTINGDOWN = 12\n"
+    "\n"
+    "# In this transition state the callback onActivate will be executed to do any\n"
+    "# final preparations to start executing.\n"
+    "uint8 TRANSITION_STATE_ACTIVATING = 13\n"
+    "\n"
+    "# In this transition state the callback onDeactivate will be executed to do any\n"
+    "# cleanup to start executing, and reverse the onActivate changes.\n"
+    "uint8 TRANSITION_STATE_DEACTIVATING = 14\n"
+    "\n"
+    "# This transition state is where any error may be cleaned up.\n"
+    "uint8 TRANSITION_STATE_ERRORPROCESSING = 15\n"
+    "\n"
+    "# The state id value from the above definitions.\n"
+    "uint8 id\n"
+    "\n"
+    "# A text label of the state.\n"
+    "string label" } },
+  { "lifecycle_msgs/msg/Transition", 2, kDescribedFields3,
+    { "msg",
+    "# Default values for transitions as described in:\n"
+    "# http://design.ros2.org/articles/node_lifecycle.html\n"
+    "\n"
+    "# Reserved [0-9], publicly available transitions.\n"
+    "# When a node is in one of these primary states, these transitions can be\n"
+    "# invoked.\n"
+    "\n"
+    "# This transition will instantiate the node, but will not run any code beyond\n"
+    "# the constructor.\n"
+    "uint8 TRANSITION_CREATE = 0\n"
+    "\n"
+    "# The node's onConfigure callback will be called to allow the node to load its\n"
+    "# configuration and conduct any required setup.\n"
+    "uint8 TRANSITION_CONFIGURE = 1\n"
+    "\n"
+    "# The node's callback onCleanup will be called in this transition to allow the\n"
+    "# node to load its configuration and conduct any required setup.\n"
+    "uint8 TRANSITION_CLEANUP = 2\n"
+    "\n"
+    "# The node's callback onActivate will be executed to do any final preparations\n"
+    "# to start executing.\n"
+    "uint8 TRANSITION_ACTIVATE = 3\n"
+    "\n"
+    "# The node's callback onDeactivate will be executed to do any cleanup to start\n"
+    "# executing, and reverse the onActivate changes.\n"
+    "uint8 TRANSITION_DEACTIVATE = 4\n"
+    "\n"
+    "# This signals shutdown during an unconfigured state, the node's callback\n"
+    "# onShutdown will be executed to do any cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_UNCONFIGURED_SHUTDOWN  = 5\n"
+    "\n"
+    "# This signals shutdown during an inactive state, the node's callback onShutdown\n"
+    "# will be executed to do any cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_INACTIVE_SHUTDOWN = 6\n"
+    "\n"
+    "# This signals shutdown during an active state, the node's callback onShutdown\n"
+    "# will be executed to do any cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_ACTIVE_SHUTDOWN = 7\n"
+    "\n"
+    "# This transition will simply cause the deallocation of the node.\n"
+    "uint8 TRANSITION_DESTROY = 8\n"
+    "\n"
+    "# Reserved [10-69], private transitions\n"
+    "# These transitions are not publicly available and cannot be invoked by a user.\n"
+    "# The following transitions are implicitly invoked based on the callback\n"
+    "# feedback of the intermediate transition states.\n"
+    "uint8 TRANSITION_ON_CONFIGURE_SUCCESS = 10\n"
+    "uint8 TRANSITION_ON_CONFIGURE_FAILURE = 11\n"
+    "uint8 TRANSITION_ON_CONFIGURE_ERROR = 12\n"
+    "\n"
+    "uint8 TRANSITION_ON_CLEANUP_SUCCESS = 20\n"
+    "uint8 TRANSITION_ON_CLEANUP_FAILURE = 21\n"
+    "uint8 TRANSITION_ON_CLEANUP_ERROR = 22\n"
+    "\n"
+    "uint8 TRANSITION_ON_ACTIVATE_SUCCESS = 30\n"
+    "uint8 TRANSITION_ON_ACTIVATE_FAILURE = 31\n"
+    "uint8 TRANSITION_ON_ACTIVATE_ERROR = 32\n"
+    "\n"
+    "uint8 TRANSITION_ON_DEACTIVATE_SUCCESS = 40\n"
+    "uint8 TRANSITION_ON_DEACTIVATE_FAILURE = 41\n"
+    "uint8 TRANSITION_ON_DEACTIVATE_ERROR = 42\n"
+    "\n"
+    "uint8 TRANSITION_ON_SHUTDOWN_SUCCESS = 50\n"
+    "uint8 TRANSITION_ON_SHUTDOWN_FAILURE = 51\n"
+    "uint8 TRANSITION_ON_SHUTDOWN_ERROR = 52\n"
+    "\n"
+    "uint8 TRANSITION_ON_ERROR_SUCCESS = 60\n"
+    "uint8 TRANSITION_ON_ERROR_FAILURE = 61\n"
+    "uint8 TRANSITION_ON_ERROR_ERROR = 62\n"
+    "\n"
+    "# Reserved [90-99]. Transition callback success values.\n"
+    "# These return values ought to be set as a return value for each callback.\n"
+    "# Depending on which return value, the transition will be executed correctly or\n"
+    "# fallback/error callbacks will be triggered.\n"
+    "\n"
+    "# The transition callback successfully performed its required functionality.\n"
+    "uint8 TRANSITION_CALLBACK_SUCCESS = 97\n"
+    "\n"
+    "# The transition callback failed to perform its required functionality.\n"
+    "uint8 TRANSITION_CALLBACK_FAILURE = 98\n"
+    "\n"
+    "# The transition callback encountered an error that requires special cleanup, if\n"
+    "# possible.\n"
+    "uint8 TRANSITION_CALLBACK_ERROR = 99\n"
+    "\n"
+    "##\n"
+    "## Fields\n"
+    "##\n"
+    "\n"
+    "# The transition id from above definitions.\n"
+    "uint8 id\n"
+    "\n"
+    "# A text label of the transition.\n"
+    "string label" } },
+  { "lifecycle_msgs/msg/TransitionDescription", 3, kDescribedFields4,
+    { "msg",
+    "# The transition id and label of this description.\n"
+    "Transition transition\n"
+    "\n"
+    "# The current state from which this transition transitions.\n"
+    "State start_state\n"
+    "\n"
+    "# The desired target state of this transition.\n"
+    "State goal_state" } },
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Event", 3, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Request", 1, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "lifecycle_msgs/srv/GetAvailableTransitions_Response", 1, kDescribedFields7,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "lifecycle_msgs/srv/GetAvailableTransitions", 3, kDescribedFields0 },
+  { "lifecycle_msgs/srv/GetAvailableTransitions", 3, kDescribedFields0,
+    { "srv",
+    "---\n"
+    "# An array of the possible start_state-goal_state transitions\n"
+    "TransitionDescription[] available_transitions" } },
   8,
   kReferencedDescriptions,
 };

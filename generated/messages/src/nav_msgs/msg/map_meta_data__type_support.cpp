@@ -43,7 +43,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "map_load_time", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
   { "resolution", 10, 0, 0, "", "" },
@@ -71,13 +72,57 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "w", 11, 0, 0, "", "1.0" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields4,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "nav_msgs/msg/MapMetaData", 5, kDescribedFields0 },
+  { "nav_msgs/msg/MapMetaData", 5, kDescribedFields0,
+    { "msg",
+    "# This hold basic information about the characteristics of the OccupancyGrid\n"
+    "\n"
+    "# The time at which the map was loaded\n"
+    "builtin_interfaces/Time map_load_time\n"
+    "\n"
+    "# The map resolution [m/cell]\n"
+    "float32 resolution\n"
+    "\n"
+    "# Map width [cells]\n"
+    "uint32 width\n"
+    "\n"
+    "# Map height [cells]\n"
+    "uint32 height\n"
+    "\n"
+    "# The origin of the map [m, m, rad].  This is the real-world pose of the\n"
+    "# bottom left corner of cell (0,0) in the map.\n"
+    "geometry_msgs/Pose origin" } },
   4,
   kReferencedDescriptions,
 };

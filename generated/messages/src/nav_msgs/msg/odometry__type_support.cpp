@@ -45,7 +45,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "child_frame_id", 17, 0, 0, "", "" },
@@ -93,18 +94,105 @@ const wire::TypeDescriptionField kDescribedFields9[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5 },
-  { "geometry_msgs/msg/Twist", 2, kDescribedFields6 },
-  { "geometry_msgs/msg/TwistWithCovariance", 2, kDescribedFields7 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields8 },
-  { "std_msgs/msg/Header", 2, kDescribedFields9 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields4,
+    { "msg",
+    "# This represents a pose in free space with uncertainty.\n"
+    "\n"
+    "Pose pose\n"
+    "\n"
+    "# Row-major representation of the 6x6 covariance matrix\n"
+    "# The orientation parameters use a fixed-axis representation.\n"
+    "# In order, the parameters are:\n"
+    "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+    "float64[36] covariance" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Twist", 2, kDescribedFields6,
+    { "msg",
+    "# This expresses velocity in free space broken into its linear and angular parts.\n"
+    "\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
+  { "geometry_msgs/msg/TwistWithCovariance", 2, kDescribedFields7,
+    { "msg",
+    "# This expresses velocity in free space with uncertainty.\n"
+    "\n"
+    "Twist twist\n"
+    "\n"
+    "# Row-major representation of the 6x6 covariance matrix\n"
+    "# The orientation parameters use a fixed-axis representation.\n"
+    "# In order, the parameters are:\n"
+    "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+    "float64[36] covariance" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields8,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields9,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "nav_msgs/msg/Odometry", 4, kDescribedFields0 },
+  { "nav_msgs/msg/Odometry", 4, kDescribedFields0,
+    { "msg",
+    "# This represents an estimate of a position and velocity in free space.\n"
+    "# The pose in this message should be specified in the coordinate frame given by header.frame_id\n"
+    "# The twist in this message should be specified in the coordinate frame given by the child_frame_id\n"
+    "\n"
+    "# Includes the frame id of the pose parent.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Frame id the pose points to. The twist is in this coordinate frame.\n"
+    "string child_frame_id\n"
+    "\n"
+    "# Estimated pose that is typically relative to a fixed world frame.\n"
+    "geometry_msgs/PoseWithCovariance pose\n"
+    "\n"
+    "# Estimated linear and angular velocity relative to child_frame_id.\n"
+    "geometry_msgs/TwistWithCovariance twist" } },
   9,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "nav_msgs/srv/GetPlan_Request", "" },
   { "response_message", 1, 0, 0, "nav_msgs/srv/GetPlan_Response", "" },
@@ -77,20 +78,112 @@ const wire::TypeDescriptionField kDescribedFields11[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/PoseStamped", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5 },
-  { "nav_msgs/msg/Path", 2, kDescribedFields6 },
-  { "nav_msgs/srv/GetPlan_Event", 3, kDescribedFields7 },
-  { "nav_msgs/srv/GetPlan_Request", 3, kDescribedFields8 },
-  { "nav_msgs/srv/GetPlan_Response", 1, kDescribedFields9 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields10 },
-  { "std_msgs/msg/Header", 2, kDescribedFields11 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/PoseStamped", 2, kDescribedFields4,
+    { "msg",
+    "# A Pose with reference coordinate frame and timestamp\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "Pose pose" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "nav_msgs/msg/Path", 2, kDescribedFields6,
+    { "msg",
+    "# An array of poses that represents a Path for a robot to follow.\n"
+    "\n"
+    "# Indicates the frame_id of the path.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Array of poses to follow.\n"
+    "geometry_msgs/PoseStamped[] poses" } },
+  { "nav_msgs/srv/GetPlan_Event", 3, kDescribedFields7,
+    { "implicit",
+    "" } },
+  { "nav_msgs/srv/GetPlan_Request", 3, kDescribedFields8,
+    { "implicit",
+    "" } },
+  { "nav_msgs/srv/GetPlan_Response", 1, kDescribedFields9,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields10,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields11,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "nav_msgs/srv/GetPlan", 3, kDescribedFields0 },
+  { "nav_msgs/srv/GetPlan", 3, kDescribedFields0,
+    { "srv",
+    "# Get a plan from the current position to the goal Pose\n"
+    "\n"
+    "# The start pose for the plan\n"
+    "geometry_msgs/PoseStamped start\n"
+    "\n"
+    "# The final pose of the goal position\n"
+    "geometry_msgs/PoseStamped goal\n"
+    "\n"
+    "# If the goal is obstructed, how many meters the planner can\n"
+    "# relax the constraint in x and y before failing.\n"
+    "float32 tolerance\n"
+    "---\n"
+    "# Array of poses from start to goal if one was successfully found.\n"
+    "Path plan" } },
   11,
   kReferencedDescriptions,
 };

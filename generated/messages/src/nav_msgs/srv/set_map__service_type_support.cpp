@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "nav_msgs/srv/SetMap_Request", "" },
   { "response_message", 1, 0, 0, "nav_msgs/srv/SetMap_Response", "" },
@@ -88,22 +89,145 @@ const wire::TypeDescriptionField kDescribedFields13[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/PoseWithCovarianceStamped", 2, kDescribedFields5 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields6 },
-  { "nav_msgs/msg/MapMetaData", 5, kDescribedFields7 },
-  { "nav_msgs/msg/OccupancyGrid", 3, kDescribedFields8 },
-  { "nav_msgs/srv/SetMap_Event", 3, kDescribedFields9 },
-  { "nav_msgs/srv/SetMap_Request", 2, kDescribedFields10 },
-  { "nav_msgs/srv/SetMap_Response", 1, kDescribedFields11 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields12 },
-  { "std_msgs/msg/Header", 2, kDescribedFields13 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/PoseWithCovariance", 2, kDescribedFields4,
+    { "msg",
+    "# This represents a pose in free space with uncertainty.\n"
+    "\n"
+    "Pose pose\n"
+    "\n"
+    "# Row-major representation of the 6x6 covariance matrix\n"
+    "# The orientation parameters use a fixed-axis representation.\n"
+    "# In order, the parameters are:\n"
+    "# (x, y, z, rotation about X axis, rotation about Y axis, rotation about Z axis)\n"
+    "float64[36] covariance" } },
+  { "geometry_msgs/msg/PoseWithCovarianceStamped", 2, kDescribedFields5,
+    { "msg",
+    "# This expresses an estimated pose with a reference coordinate frame and timestamp\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "PoseWithCovariance pose" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields6,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "nav_msgs/msg/MapMetaData", 5, kDescribedFields7,
+    { "msg",
+    "# This hold basic information about the characteristics of the OccupancyGrid\n"
+    "\n"
+    "# The time at which the map was loaded\n"
+    "builtin_interfaces/Time map_load_time\n"
+    "\n"
+    "# The map resolution [m/cell]\n"
+    "float32 resolution\n"
+    "\n"
+    "# Map width [cells]\n"
+    "uint32 width\n"
+    "\n"
+    "# Map height [cells]\n"
+    "uint32 height\n"
+    "\n"
+    "# The origin of the map [m, m, rad].  This is the real-world pose of the\n"
+    "# bottom left corner of cell (0,0) in the map.\n"
+    "geometry_msgs/Pose origin" } },
+  { "nav_msgs/msg/OccupancyGrid", 3, kDescribedFields8,
+    { "msg",
+    "# This represents a 2-D grid map\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# MetaData for the map\n"
+    "MapMetaData info\n"
+    "\n"
+    "# The map data, in row-major order, starting with (0,0). \n"
+    "# Cell (1, 0) will be listed second, representing the next cell in the x direction. \n"
+    "# Cell (0, 1) will be at the index equal to info.width, followed by (1, 1).\n"
+    "# The values inside are application dependent, but frequently, \n"
+    "# 0 represents unoccupied, 1 represents definitely occupied, and\n"
+    "# -1 represents unknown. \n"
+    "int8[] data" } },
+  { "nav_msgs/srv/SetMap_Event", 3, kDescribedFields9,
+    { "implicit",
+    "" } },
+  { "nav_msgs/srv/SetMap_Request", 2, kDescribedFields10,
+    { "implicit",
+    "" } },
+  { "nav_msgs/srv/SetMap_Response", 1, kDescribedFields11,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields12,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields13,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "nav_msgs/srv/SetMap", 3, kDescribedFields0 },
+  { "nav_msgs/srv/SetMap", 3, kDescribedFields0,
+    { "srv",
+    "# Set a new map together with an initial pose\n"
+    "\n"
+    "# Requested 2D map to be set.\n"
+    "nav_msgs/OccupancyGrid map\n"
+    "\n"
+    "# Estimated initial pose when setting new map.\n"
+    "geometry_msgs/PoseWithCovarianceStamped initial_pose\n"
+    "---\n"
+    "\n"
+    "# True if the map was successfully set, false otherwise.\n"
+    "bool success" } },
   13,
   kReferencedDescriptions,
 };

@@ -52,7 +52,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
   { "node", 17, 0, 0, "", "" },
@@ -81,12 +82,89 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "string_array_value", 161, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields2 },
-  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields3 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields2,
+    { "msg",
+    "# This is the message to communicate a parameter. It is an open struct with an enum in\n"
+    "# the descriptor to select which value is active.\n"
+    "\n"
+    "# The full name of the parameter.\n"
+    "string name\n"
+    "\n"
+    "# The parameter's value which can be one of several types, see\n"
+    "# `ParameterValue.msg` and `ParameterType.msg`.\n"
+    "ParameterValue value" } },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields3,
+    { "msg",
+    "# Used to determine which of the next *_value fields are set.\n"
+    "# ParameterType.PARAMETER_NOT_SET indicates that the parameter was not set\n"
+    "# (if gotten) or is uninitialized.\n"
+    "# Values are enumerated in `ParameterType.msg`.\n"
+    "\n"
+    "# The type of this parameter, which corresponds to the appropriate field below.\n"
+    "uint8 type\n"
+    "\n"
+    "# \"Variant\" style storage of the parameter value. Only the value corresponding\n"
+    "# the type field will have valid information.\n"
+    "\n"
+    "# Boolean value, can be either true or false.\n"
+    "bool bool_value\n"
+    "\n"
+    "# Integer value ranging from -9,223,372,036,854,775,808 to\n"
+    "# 9,223,372,036,854,775,807.\n"
+    "int64 integer_value\n"
+    "\n"
+    "# A double precision floating point value following IEEE 754.\n"
+    "float64 double_value\n"
+    "\n"
+    "# A textual value with no practical length limit.\n"
+    "string string_value\n"
+    "\n"
+    "# An array of bytes, used for non-textual information.\n"
+    "byte[] byte_array_value\n"
+    "\n"
+    "# An array of boolean values.\n"
+    "bool[] bool_array_value\n"
+    "\n"
+    "# An array of 64-bit integer values.\n"
+    "int64[] integer_array_value\n"
+    "\n"
+    "# An array of 64-bit floating point values.\n"
+    "float64[] double_array_value\n"
+    "\n"
+    "# An array of string values.\n"
+    "string[] string_array_value" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/ParameterEvent", 5, kDescribedFields0 },
+  { "rcl_interfaces/msg/ParameterEvent", 5, kDescribedFields0,
+    { "msg",
+    "# This message contains a parameter event.\n"
+    "# Because the parameter event was an atomic update, a specific parameter name\n"
+    "# can only be in one of the three sets.\n"
+    "\n"
+    "# The time stamp when this parameter event occurred.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Fully qualified ROS path to node.\n"
+    "string node\n"
+    "\n"
+    "# New parameters that have been set for this node.\n"
+    "Parameter[] new_parameters\n"
+    "\n"
+    "# Parameters that have been changed during this event.\n"
+    "Parameter[] changed_parameters\n"
+    "\n"
+    "# Parameters that have been deleted during this event.\n"
+    "Parameter[] deleted_parameters" } },
   3,
   kReferencedDescriptions,
 };

@@ -41,7 +41,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "new_parameters", 145, 0, 0, "rcl_interfaces/msg/ParameterDescriptor", "" },
   { "changed_parameters", 145, 0, 0, "rcl_interfaces/msg/ParameterDescriptor", "" },
@@ -68,12 +69,111 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "integer_range", 97, 1, 0, "rcl_interfaces/msg/IntegerRange", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields1 },
-  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields2 },
-  { "rcl_interfaces/msg/ParameterDescriptor", 8, kDescribedFields3 },
+  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields1,
+    { "msg",
+    "# Represents bounds and a step value for a floating point typed parameter.\n"
+    "\n"
+    "# Start value for valid values, inclusive.\n"
+    "float64 from_value\n"
+    "\n"
+    "# End value for valid values, inclusive.\n"
+    "float64 to_value\n"
+    "\n"
+    "# Size of valid steps between the from and to bound.\n"
+    "# \n"
+    "# Step is considered to be a magnitude, therefore negative values are treated\n"
+    "# the same as positive values, and a step value of zero implies a continuous\n"
+    "# range of values.\n"
+    "#\n"
+    "# Ideally, the step would be less than or equal to the distance between the\n"
+    "# bounds, as well as an even multiple of the distance between the bounds, but\n"
+    "# neither are required.\n"
+    "#\n"
+    "# If the absolute value of the step is larger than or equal to the distance\n"
+    "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
+    "# the range is defined as {from_value: 1.0, to_value: 2.0, step: 5.0} then the\n"
+    "# valid values will be 1.0 and 2.0.\n"
+    "#\n"
+    "# If the step is less than the distance between the bounds, but the distance is\n"
+    "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
+    "# e.g. if the range is defined as {from_value: 2.0, to_value: 5.0, step: 2.0}\n"
+    "# then the valid values will be 2.0, 4.0, and 5.0.\n"
+    "float64 step" } },
+  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields2,
+    { "msg",
+    "# Represents bounds and a step value for an integer typed parameter.\n"
+    "\n"
+    "# Start value for valid values, inclusive.\n"
+    "int64 from_value\n"
+    "\n"
+    "# End value for valid values, inclusive.\n"
+    "int64 to_value\n"
+    "\n"
+    "# Size of valid steps between the from and to bound.\n"
+    "#\n"
+    "# A step value of zero implies a continuous range of values. Ideally, the step\n"
+    "# would be less than or equal to the distance between the bounds, as well as an\n"
+    "# even multiple of the distance between the bounds, but neither are required.\n"
+    "#\n"
+    "# If the absolute value of the step is larger than or equal to the distance\n"
+    "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
+    "# the range is defined as {from_value: 1, to_value: 2, step: 5} then the valid\n"
+    "# values will be 1 and 2.\n"
+    "# \n"
+    "# If the step is less than the distance between the bounds, but the distance is\n"
+    "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
+    "# e.g. if the range is defined as {from_value: 2, to_value: 5, step: 2} then\n"
+    "# the valid values will be 2, 4, and 5.\n"
+    "uint64 step" } },
+  { "rcl_interfaces/msg/ParameterDescriptor", 8, kDescribedFields3,
+    { "msg",
+    "# This is the message to communicate a parameter's descriptor.\n"
+    "\n"
+    "# The name of the parameter.\n"
+    "string name\n"
+    "\n"
+    "# Enum values are defined in the `ParameterType.msg` message.\n"
+    "uint8 type\n"
+    "\n"
+    "# Description of the parameter, visible from introspection tools.\n"
+    "string description\n"
+    "\n"
+    "# Parameter constraints\n"
+    "\n"
+    "# Plain English description of additional constraints which cannot be expressed\n"
+    "# with the available constraints, e.g. \"only prime numbers\".\n"
+    "#\n"
+    "# By convention, this should only be used to clarify constraints which cannot\n"
+    "# be completely expressed with the parameter constraints below.\n"
+    "string additional_constraints\n"
+    "\n"
+    "# If 'true' then the value cannot change after it has been initialized.\n"
+    "bool read_only false\n"
+    "\n"
+    "# If true, the parameter is allowed to change type.\n"
+    "bool dynamic_typing false\n"
+    "\n"
+    "# If any of the following sequences are not empty, then the constraint inside of\n"
+    "# them apply to this parameter.\n"
+    "#\n"
+    "# FloatingPointRange and IntegerRange are mutually exclusive.\n"
+    "\n"
+    "# FloatingPointRange consists of a from_value, a to_value, and a step.\n"
+    "FloatingPointRange[<=1] floating_point_range\n"
+    "\n"
+    "# IntegerRange consists of a from_value, a to_value, and a step.\n"
+    "IntegerRange[<=1] integer_range" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/ParameterEventDescriptors", 3, kDescribedFields0 },
+  { "rcl_interfaces/msg/ParameterEventDescriptors", 3, kDescribedFields0,
+    { "msg",
+    "# This message contains descriptors of a parameter event.\n"
+    "# It was an atomic update.\n"
+    "# A specific parameter name can only be in one of the three sets.\n"
+    "\n"
+    "ParameterDescriptor[] new_parameters\n"
+    "ParameterDescriptor[] changed_parameters\n"
+    "ParameterDescriptor[] deleted_parameters" } },
   3,
   kReferencedDescriptions,
 };

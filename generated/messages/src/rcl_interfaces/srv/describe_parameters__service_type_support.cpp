@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "rcl_interfaces/srv/DescribeParameters_Request", "" },
   { "response_message", 1, 0, 0, "rcl_interfaces/srv/DescribeParameters_Response", "" },
@@ -68,17 +69,154 @@ const wire::TypeDescriptionField kDescribedFields8[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields2 },
-  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields3 },
-  { "rcl_interfaces/msg/ParameterDescriptor", 8, kDescribedFields4 },
-  { "rcl_interfaces/srv/DescribeParameters_Event", 3, kDescribedFields5 },
-  { "rcl_interfaces/srv/DescribeParameters_Request", 1, kDescribedFields6 },
-  { "rcl_interfaces/srv/DescribeParameters_Response", 1, kDescribedFields7 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields2,
+    { "msg",
+    "# Represents bounds and a step value for a floating point typed parameter.\n"
+    "\n"
+    "# Start value for valid values, inclusive.\n"
+    "float64 from_value\n"
+    "\n"
+    "# End value for valid values, inclusive.\n"
+    "float64 to_value\n"
+    "\n"
+    "# Size of valid steps between the from and to bound.\n"
+    "# \n"
+    "# Step is considered to be a magnitude, therefore negative values are treated\n"
+    "# the same as positive values, and a step value of zero implies a continuous\n"
+    "# range of values.\n"
+    "#\n"
+    "# Ideally, the step would be less than or equal to the distance between the\n"
+    "# bounds, as well as an even multiple of the distance between the bounds, but\n"
+    "# neither are required.\n"
+    "#\n"
+    "# If the absolute value of the step is larger than or equal to the distance\n"
+    "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
+    "# the range is defined as {from_value: 1.0, to_value: 2.0, step: 5.0} then the\n"
+    "# valid values will be 1.0 and 2.0.\n"
+    "#\n"
+    "# If the step is less than the distance between the bounds, but the distance is\n"
+    "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
+    "# e.g. if the range is defined as {from_value: 2.0, to_value: 5.0, step: 2.0}\n"
+    "# then the valid values will be 2.0, 4.0, and 5.0.\n"
+    "float64 step" } },
+  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields3,
+    { "msg",
+    "# Represents bounds and a step value for an integer typed parameter.\n"
+    "\n"
+    "# Start value for valid values, inclusive.\n"
+    "int64 from_value\n"
+    "\n"
+    "# End value for valid values, inclusive.\n"
+    "int64 to_value\n"
+    "\n"
+    "# Size of valid steps between the from and to bound.\n"
+    "#\n"
+    "# A step value of zero implies a continuous range of values. Ideally, the step\n"
+    "# would be less than or equal to the distance between the bounds, as well as an\n"
+    "# even multiple of the distance between the bounds, but neither are required.\n"
+    "#\n"
+    "# If the absolute value of the step is larger than or equal to the distance\n"
+    "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
+    "# the range is defined as {from_value: 1, to_value: 2, step: 5} then the valid\n"
+    "# values will be 1 and 2.\n"
+    "# \n"
+    "# If the step is less than the distance between the bounds, but the distance is\n"
+    "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
+    "# e.g. if the range is defined as {from_value: 2, to_value: 5, step: 2} then\n"
+    "# the valid values will be 2, 4, and 5.\n"
+    "uint64 step" } },
+  { "rcl_interfaces/msg/ParameterDescriptor", 8, kDescribedFields4,
+    { "msg",
+    "# This is the message to communicate a parameter's descriptor.\n"
+    "\n"
+    "# The name of the parameter.\n"
+    "string name\n"
+    "\n"
+    "# Enum values are defined in the `ParameterType.msg` message.\n"
+    "uint8 type\n"
+    "\n"
+    "# Description of the parameter, visible from introspection tools.\n"
+    "string description\n"
+    "\n"
+    "# Parameter constraints\n"
+    "\n"
+    "# Plain English description of additional constraints which cannot be expressed\n"
+    "# with the available constraints, e.g. \"only prime numbers\".\n"
+    "#\n"
+    "# By convention, this should only be used to clarify constraints which cannot\n"
+    "# be completely expressed with the parameter constraints below.\n"
+    "string additional_constraints\n"
+    "\n"
+    "# If 'true' then the value cannot change after it has been initialized.\n"
+    "bool read_only false\n"
+    "\n"
+    "# If true, the parameter is allowed to change type.\n"
+    "bool dynamic_typing false\n"
+    "\n"
+    "# If any of the following sequences are not empty, then the constraint inside of\n"
+    "# them apply to this parameter.\n"
+    "#\n"
+    "# FloatingPointRange and IntegerRange are mutually exclusive.\n"
+    "\n"
+    "# FloatingPointRange consists of a from_value, a to_value, and a step.\n"
+    "FloatingPointRange[<=1] floating_point_range\n"
+    "\n"
+    "# IntegerRange consists of a from_value, a to_value, and a step.\n"
+    "IntegerRange[<=1] integer_range" } },
+  { "rcl_interfaces/srv/DescribeParameters_Event", 3, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "rcl_interfaces/srv/DescribeParameters_Request", 1, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "rcl_interfaces/srv/DescribeParameters_Response", 1, kDescribedFields7,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/DescribeParameters", 3, kDescribedFields0 },
+  { "rcl_interfaces/srv/DescribeParameters", 3, kDescribedFields0,
+    { "srv",
+    "# A list of parameters of which to get the descriptor.\n"
+    "string[] names\n"
+    "\n"
+    "---\n"
+    "# A list of the descriptors of all parameters requested in the same order\n"
+    "# as they were requested. This list has the same length as the list of\n"
+    "# parameters requested.\n"
+    "ParameterDescriptor[] descriptors" } },
   8,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "rcl_interfaces/srv/GetParameters_Request", "" },
   { "response_message", 1, 0, 0, "rcl_interfaces/srv/GetParameters_Response", "" },
@@ -60,15 +61,107 @@ const wire::TypeDescriptionField kDescribedFields6[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields2 },
-  { "rcl_interfaces/srv/GetParameters_Event", 3, kDescribedFields3 },
-  { "rcl_interfaces/srv/GetParameters_Request", 1, kDescribedFields4 },
-  { "rcl_interfaces/srv/GetParameters_Response", 1, kDescribedFields5 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields2,
+    { "msg",
+    "# Used to determine which of the next *_value fields are set.\n"
+    "# ParameterType.PARAMETER_NOT_SET indicates that the parameter was not set\n"
+    "# (if gotten) or is uninitialized.\n"
+    "# Values are enumerated in `ParameterType.msg`.\n"
+    "\n"
+    "# The type of this parameter, which corresponds to the appropriate field below.\n"
+    "uint8 type\n"
+    "\n"
+    "# \"Variant\" style storage of the parameter value. Only the value corresponding\n"
+    "# the type field will have valid information.\n"
+    "\n"
+    "# Boolean value, can be either true or false.\n"
+    "bool bool_value\n"
+    "\n"
+    "# Integer value ranging from -9,223,372,036,854,775,808 to\n"
+    "# 9,223,372,036,854,775,807.\n"
+    "int64 integer_value\n"
+    "\n"
+    "# A double precision floating point value following IEEE 754.\n"
+    "float64 double_value\n"
+    "\n"
+    "# A textual value with no practical length limit.\n"
+    "string string_value\n"
+    "\n"
+    "# An array of bytes, used for non-textual information.\n"
+    "byte[] byte_array_value\n"
+    "\n"
+    "# An array of boolean values.\n"
+    "bool[] bool_array_value\n"
+    "\n"
+    "# An array of 64-bit integer values.\n"
+    "int64[] integer_array_value\n"
+    "\n"
+    "# An array of 64-bit floating point values.\n"
+    "float64[] double_array_value\n"
+    "\n"
+    "# An array of string values.\n"
+    "string[] string_array_value" } },
+  { "rcl_interfaces/srv/GetParameters_Event", 3, kDescribedFields3,
+    { "implicit",
+    "" } },
+  { "rcl_interfaces/srv/GetParameters_Request", 1, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "rcl_interfaces/srv/GetParameters_Response", 1, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields6,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/GetParameters", 3, kDescribedFields0 },
+  { "rcl_interfaces/srv/GetParameters", 3, kDescribedFields0,
+    { "srv",
+    "# TODO(wjwwood): Decide on the rules for grouping, nodes, and parameter \"names\"\n"
+    "# in general, then link to that.\n"
+    "#\n"
+    "# For more information about parameters and naming rules, see:\n"
+    "# https://design.ros2.org/articles/ros_parameters.html\n"
+    "# https://github.com/ros2/design/pull/241\n"
+    "\n"
+    "# A list of parameter names to get.\n"
+    "string[] names\n"
+    "\n"
+    "---\n"
+    "# List of values which is the same length and order as the provided names. If a\n"
+    "# parameter was not yet set, the value will have PARAMETER_NOT_SET as the\n"
+    "# type.\n"
+    "ParameterValue[] values" } },
   6,
   kReferencedDescriptions,
 };

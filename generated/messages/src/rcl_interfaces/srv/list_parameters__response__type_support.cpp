@@ -26,7 +26,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "result", 1, 0, 0, "rcl_interfaces/msg/ListParametersResult", "" },
 };
@@ -35,10 +36,19 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "prefixes", 161, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rcl_interfaces/msg/ListParametersResult", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/ListParametersResult", 2, kDescribedFields1,
+    { "msg",
+    "# The resulting parameters under the given prefixes.\n"
+    "string[] names\n"
+    "\n"
+    "# The resulting prefixes under the given prefixes.\n"
+    "# TODO(wjwwood): link to prefix definition and rules.\n"
+    "string[] prefixes" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/ListParameters_Response", 1, kDescribedFields0 },
+  { "rcl_interfaces/srv/ListParameters_Response", 1, kDescribedFields0,
+    { "implicit",
+    "" } },
   1,
   kReferencedDescriptions,
 };

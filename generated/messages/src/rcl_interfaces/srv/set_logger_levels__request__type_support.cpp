@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "levels", 145, 0, 0, "rcl_interfaces/msg/LoggerLevel", "" },
 };
@@ -38,10 +39,27 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "level", 7, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rcl_interfaces/msg/LoggerLevel", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/LoggerLevel", 2, kDescribedFields1,
+    { "msg",
+    "# All available logger levels; these correspond to the enum in rcutils/logger.h\n"
+    "\n"
+    "uint8 LOG_LEVEL_UNKNOWN = 0\n"
+    "uint8 LOG_LEVEL_DEBUG = 10\n"
+    "uint8 LOG_LEVEL_INFO = 20\n"
+    "uint8 LOG_LEVEL_WARN = 30\n"
+    "uint8 LOG_LEVEL_ERROR = 40\n"
+    "uint8 LOG_LEVEL_FATAL = 50\n"
+    "\n"
+    "# The logger name.\n"
+    "string name\n"
+    "\n"
+    "# The logger level\n"
+    "uint32 level" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/SetLoggerLevels_Request", 1, kDescribedFields0 },
+  { "rcl_interfaces/srv/SetLoggerLevels_Request", 1, kDescribedFields0,
+    { "implicit",
+    "" } },
   1,
   kReferencedDescriptions,
 };

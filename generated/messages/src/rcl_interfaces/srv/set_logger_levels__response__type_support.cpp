@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "results", 145, 0, 0, "rcl_interfaces/msg/SetLoggerLevelsResult", "" },
 };
@@ -38,10 +39,18 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "reason", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rcl_interfaces/msg/SetLoggerLevelsResult", 2, kDescribedFields1 },
+  { "rcl_interfaces/msg/SetLoggerLevelsResult", 2, kDescribedFields1,
+    { "msg",
+    "# True when succeed, false when failed.\n"
+    "bool successful\n"
+    "\n"
+    "# Reason why the setting was either successful or a failure.\n"
+    "string reason" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/SetLoggerLevels_Response", 1, kDescribedFields0 },
+  { "rcl_interfaces/srv/SetLoggerLevels_Response", 1, kDescribedFields0,
+    { "implicit",
+    "" } },
   1,
   kReferencedDescriptions,
 };

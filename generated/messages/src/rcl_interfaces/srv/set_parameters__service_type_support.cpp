@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "rcl_interfaces/srv/SetParameters_Request", "" },
   { "response_message", 1, 0, 0, "rcl_interfaces/srv/SetParameters_Response", "" },
@@ -68,17 +69,118 @@ const wire::TypeDescriptionField kDescribedFields8[] = {
   { "sequence_number", 8, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields2 },
-  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields3 },
-  { "rcl_interfaces/msg/SetParametersResult", 2, kDescribedFields4 },
-  { "rcl_interfaces/srv/SetParameters_Event", 3, kDescribedFields5 },
-  { "rcl_interfaces/srv/SetParameters_Request", 1, kDescribedFields6 },
-  { "rcl_interfaces/srv/SetParameters_Response", 1, kDescribedFields7 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields2,
+    { "msg",
+    "# This is the message to communicate a parameter. It is an open struct with an enum in\n"
+    "# the descriptor to select which value is active.\n"
+    "\n"
+    "# The full name of the parameter.\n"
+    "string name\n"
+    "\n"
+    "# The parameter's value which can be one of several types, see\n"
+    "# `ParameterValue.msg` and `ParameterType.msg`.\n"
+    "ParameterValue value" } },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields3,
+    { "msg",
+    "# Used to determine which of the next *_value fields are set.\n"
+    "# ParameterType.PARAMETER_NOT_SET indicates that the parameter was not set\n"
+    "# (if gotten) or is uninitialized.\n"
+    "# Values are enumerated in `ParameterType.msg`.\n"
+    "\n"
+    "# The type of this parameter, which corresponds to the appropriate field below.\n"
+    "uint8 type\n"
+    "\n"
+    "# \"Variant\" style storage of the parameter value. Only the value corresponding\n"
+    "# the type field will have valid information.\n"
+    "\n"
+    "# Boolean value, can be either true or false.\n"
+    "bool bool_value\n"
+    "\n"
+    "# Integer value ranging from -9,223,372,036,854,775,808 to\n"
+    "# 9,223,372,036,854,775,807.\n"
+    "int64 integer_value\n"
+    "\n"
+    "# A double precision floating point value following IEEE 754.\n"
+    "float64 double_value\n"
+    "\n"
+    "# A textual value with no practical length limit.\n"
+    "string string_value\n"
+    "\n"
+    "# An array of bytes, used for non-textual information.\n"
+    "byte[] byte_array_value\n"
+    "\n"
+    "# An array of boolean values.\n"
+    "bool[] bool_array_value\n"
+    "\n"
+    "# An array of 64-bit integer values.\n"
+    "int64[] integer_array_value\n"
+    "\n"
+    "# An array of 64-bit floating point values.\n"
+    "float64[] double_array_value\n"
+    "\n"
+    "# An array of string values.\n"
+    "string[] string_array_value" } },
+  { "rcl_interfaces/msg/SetParametersResult", 2, kDescribedFields4,
+    { "msg",
+    "# A true value of the same index indicates that the parameter was set\n"
+    "# successfully. A false value indicates the change was rejected.\n"
+    "bool successful\n"
+    "\n"
+    "# Reason why the setting was a failure. On success, the contents of this field\n"
+    "# are undefined.  This should only be used for logging and user interfaces.\n"
+    "string reason" } },
+  { "rcl_interfaces/srv/SetParameters_Event", 3, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "rcl_interfaces/srv/SetParameters_Request", 1, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "rcl_interfaces/srv/SetParameters_Response", 1, kDescribedFields7,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/SetParameters", 3, kDescribedFields0 },
+  { "rcl_interfaces/srv/SetParameters", 3, kDescribedFields0,
+    { "srv",
+    "# A list of parameters to set.\n"
+    "Parameter[] parameters\n"
+    "\n"
+    "---\n"
+    "# Indicates whether setting each parameter succeeded or not and why.\n"
+    "SetParametersResult[] results" } },
   8,
   kReferencedDescriptions,
 };

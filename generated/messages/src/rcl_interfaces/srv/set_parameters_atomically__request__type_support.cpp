@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "parameters", 145, 0, 0, "rcl_interfaces/msg/Parameter", "" },
 };
@@ -50,11 +51,62 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "string_array_value", 161, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields1 },
-  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields2 },
+  { "rcl_interfaces/msg/Parameter", 2, kDescribedFields1,
+    { "msg",
+    "# This is the message to communicate a parameter. It is an open struct with an enum in\n"
+    "# the descriptor to select which value is active.\n"
+    "\n"
+    "# The full name of the parameter.\n"
+    "string name\n"
+    "\n"
+    "# The parameter's value which can be one of several types, see\n"
+    "# `ParameterValue.msg` and `ParameterType.msg`.\n"
+    "ParameterValue value" } },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields2,
+    { "msg",
+    "# Used to determine which of the next *_value fields are set.\n"
+    "# ParameterType.PARAMETER_NOT_SET indicates that the parameter was not set\n"
+    "# (if gotten) or is uninitialized.\n"
+    "# Values are enumerated in `ParameterType.msg`.\n"
+    "\n"
+    "# The type of this parameter, which corresponds to the appropriate field below.\n"
+    "uint8 type\n"
+    "\n"
+    "# \"Variant\" style storage of the parameter value. Only the value corresponding\n"
+    "# the type field will have valid information.\n"
+    "\n"
+    "# Boolean value, can be either true or false.\n"
+    "bool bool_value\n"
+    "\n"
+    "# Integer value ranging from -9,223,372,036,854,775,808 to\n"
+    "# 9,223,372,036,854,775,807.\n"
+    "int64 integer_value\n"
+    "\n"
+    "# A double precision floating point value following IEEE 754.\n"
+    "float64 double_value\n"
+    "\n"
+    "# A textual value with no practical length limit.\n"
+    "string string_value\n"
+    "\n"
+    "# An array of bytes, used for non-textual information.\n"
+    "byte[] byte_array_value\n"
+    "\n"
+    "# An array of boolean values.\n"
+    "bool[] bool_array_value\n"
+    "\n"
+    "# An array of 64-bit integer values.\n"
+    "int64[] integer_array_value\n"
+    "\n"
+    "# An array of 64-bit floating point values.\n"
+    "float64[] double_array_value\n"
+    "\n"
+    "# An array of string values.\n"
+    "string[] string_array_value" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/srv/SetParametersAtomically_Request", 1, kDescribedFields0 },
+  { "rcl_interfaces/srv/SetParametersAtomically_Request", 1, kDescribedFields0,
+    { "implicit",
+    "" } },
   2,
   kReferencedDescriptions,
 };

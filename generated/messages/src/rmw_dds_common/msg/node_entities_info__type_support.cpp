@@ -41,7 +41,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "node_namespace", 21, 0, 256, "", "" },
   { "node_name", 21, 0, 256, "", "" },
@@ -52,10 +53,17 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "data", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rmw_dds_common/msg/Gid", 1, kDescribedFields1 },
+  { "rmw_dds_common/msg/Gid", 1, kDescribedFields1,
+    { "msg",
+    "char[16] data" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rmw_dds_common/msg/NodeEntitiesInfo", 4, kDescribedFields0 },
+  { "rmw_dds_common/msg/NodeEntitiesInfo", 4, kDescribedFields0,
+    { "msg",
+    "string<=256 node_namespace\n"
+    "string<=256 node_name\n"
+    "Gid[] reader_gid_seq\n"
+    "Gid[] writer_gid_seq" } },
   1,
   kReferencedDescriptions,
 };

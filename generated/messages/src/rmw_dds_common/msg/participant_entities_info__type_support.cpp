@@ -37,7 +37,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "gid", 1, 0, 0, "rmw_dds_common/msg/Gid", "" },
   { "node_entities_info_seq", 145, 0, 0, "rmw_dds_common/msg/NodeEntitiesInfo", "" },
@@ -52,11 +53,21 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "writer_gid_seq", 145, 0, 0, "rmw_dds_common/msg/Gid", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "rmw_dds_common/msg/Gid", 1, kDescribedFields1 },
-  { "rmw_dds_common/msg/NodeEntitiesInfo", 4, kDescribedFields2 },
+  { "rmw_dds_common/msg/Gid", 1, kDescribedFields1,
+    { "msg",
+    "char[16] data" } },
+  { "rmw_dds_common/msg/NodeEntitiesInfo", 4, kDescribedFields2,
+    { "msg",
+    "string<=256 node_namespace\n"
+    "string<=256 node_name\n"
+    "Gid[] reader_gid_seq\n"
+    "Gid[] writer_gid_seq" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rmw_dds_common/msg/ParticipantEntitiesInfo", 2, kDescribedFields0 },
+  { "rmw_dds_common/msg/ParticipantEntitiesInfo", 2, kDescribedFields0,
+    { "msg",
+    "Gid gid\n"
+    "NodeEntitiesInfo[] node_entities_info_seq" } },
   2,
   kReferencedDescriptions,
 };

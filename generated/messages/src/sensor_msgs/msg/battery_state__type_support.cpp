@@ -103,7 +103,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "voltage", 10, 0, 0, "", "" },
@@ -131,11 +132,85 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/BatteryState", 16, kDescribedFields0 },
+  { "sensor_msgs/msg/BatteryState", 16, kDescribedFields0,
+    { "msg",
+    "\n"
+    "# Constants are chosen to match the enums in the linux kernel\n"
+    "# defined in include/linux/power_supply.h as of version 3.7\n"
+    "# The one difference is for style reasons the constants are\n"
+    "# all uppercase not mixed case.\n"
+    "\n"
+    "# Power supply status constants\n"
+    "uint8 POWER_SUPPLY_STATUS_UNKNOWN = 0\n"
+    "uint8 POWER_SUPPLY_STATUS_CHARGING = 1\n"
+    "uint8 POWER_SUPPLY_STATUS_DISCHARGING = 2\n"
+    "uint8 POWER_SUPPLY_STATUS_NOT_CHARGING = 3\n"
+    "uint8 POWER_SUPPLY_STATUS_FULL = 4\n"
+    "\n"
+    "# Power supply health constants\n"
+    "uint8 POWER_SUPPLY_HEALTH_UNKNOWN = 0\n"
+    "uint8 POWER_SUPPLY_HEALTH_GOOD = 1\n"
+    "uint8 POWER_SUPPLY_HEALTH_OVERHEAT = 2\n"
+    "uint8 POWER_SUPPLY_HEALTH_DEAD = 3\n"
+    "uint8 POWER_SUPPLY_HEALTH_OVERVOLTAGE = 4\n"
+    "uint8 POWER_SUPPLY_HEALTH_UNSPEC_FAILURE = 5\n"
+    "uint8 POWER_SUPPLY_HEALTH_COLD = 6\n"
+    "uint8 POWER_SUPPLY_HEALTH_WATCHDOG_TIMER_EXPIRE = 7\n"
+    "uint8 POWER_SUPPLY_HEALTH_SAFETY_TIMER_EXPIRE = 8\n"
+    "\n"
+    "# Power supply technology (chemistry) constants\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_UNKNOWN = 0 # Unknown battery technology\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_NIMH = 1    # Nickel-Metal Hydride battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_LION = 2    # Lithium-ion battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_LIPO = 3    # Lithium Polymer battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_LIFE = 4    # Lithium Iron Phosphate battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_NICD = 5    # Nickel-Cadmium battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_LIMN = 6    # Lithium Manganese Dioxide battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_TERNARY = 7 # Ternary Lithium battery\n"
+    "uint8 POWER_SUPPLY_TECHNOLOGY_VRLA = 8    # Valve Regulated Lead-Acid battery\n"
+    "\n"
+    "std_msgs/Header  header\n"
+    "float32 voltage          # Voltage in Volts (Mandatory)\n"
+    "float32 temperature      # Temperature in Degrees Celsius (If unmeasured NaN)\n"
+    "float32 current          # Negative when discharging (A)  (If unmeasured NaN)\n"
+    "float32 charge           # Current charge in Ah  (If unmeasured NaN)\n"
+    "float32 capacity         # Capacity in Ah (last full capacity)  (If unmeasured NaN)\n"
+    "float32 design_capacity  # Capacity in Ah (design capacity)  (If unmeasured NaN)\n"
+    "float32 percentage       # Charge percentage on 0 to 1 range  (If unmeasured NaN)\n"
+    "uint8   power_supply_status     # The charging status as reported. Values defined above\n"
+    "uint8   power_supply_health     # The battery health metric. Values defined above\n"
+    "uint8   power_supply_technology # The battery chemistry. Values defined above\n"
+    "bool    present          # True if the battery is present\n"
+    "\n"
+    "float32[] cell_voltage   # An array of individual cell voltages for each cell in the pack\n"
+    "                         # If individual voltages unknown but number of cells known set each to NaN\n"
+    "float32[] cell_temperature # An array of individual cell temperatures for each cell in the pack\n"
+    "                           # If individual temperatures unknown but number of cells known set each to NaN\n"
+    "string location          # The location into which the battery is inserted. (slot number or plug)\n"
+    "string serial_number     # The best approximation of the battery serial number" } },
   2,
   kReferencedDescriptions,
 };

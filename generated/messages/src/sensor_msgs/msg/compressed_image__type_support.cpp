@@ -35,7 +35,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "format", 17, 0, 0, "", "" },
@@ -50,11 +51,72 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/CompressedImage", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/CompressedImage", 3, kDescribedFields0,
+    { "msg",
+    "# This message contains a compressed image.\n"
+    "\n"
+    "std_msgs/Header header # Header timestamp should be acquisition time of image\n"
+    "                             # Header frame_id should be optical frame of camera\n"
+    "                             # origin of frame should be optical center of cameara\n"
+    "                             # +x should point to the right in the image\n"
+    "                             # +y should point down in the image\n"
+    "                             # +z should point into to plane of the image\n"
+    "\n"
+    "string format                # Specifies the format of the data\n"
+    "                             # Acceptable values differ by the image transport used:\n"
+    "                             # - compressed_image_transport:\n"
+    "                             #     ORIG_PIXFMT; CODEC compressed [COMPRESSED_PIXFMT]\n"
+    "                             #   where:\n"
+    "                             #   - ORIG_PIXFMT is pixel format of the raw image, i.e.\n"
+    "                             #     the content of sensor_msgs/Image/encoding with\n"
+    "                             #     values from include/sensor_msgs/image_encodings.h\n"
+    "                             #   - CODEC is one of [jpeg, png, tiff]\n"
+    "                             #   - COMPRESSED_PIXFMT is only appended for color images\n"
+    "                             #     and is the pixel format used by the compression\n"
+    "                             #     algorithm. Valid values for jpeg encoding are:\n"
+    "                             #     [bgr8, rgb8]. Valid values for png encoding are:\n"
+    "                             #     [bgr8, rgb8, bgr16, rgb16].\n"
+    "                             #   If the field is empty or does not correspond to the\n"
+    "                             #   above pattern, the image is treated as bgr8 or mono8\n"
+    "                             #   jpeg image (depending on the number of channels).\n"
+    "                             # - compressed_depth_image_transport:\n"
+    "                             #     ORIG_PIXFMT; compressedDepth CODEC\n"
+    "                             #   where:\n"
+    "                             #   - ORIG_PIXFMT is pixel format of the raw image, i.e.\n"
+    "                             #     the content of sensor_msgs/Image/encoding with\n"
+    "                             #     values from include/sensor_msgs/image_encodings.h\n"
+    "                             #     It is usually one of [16UC1, 32FC1].\n"
+    "                             #   - CODEC is one of [png, rvl]\n"
+    "                             #   If the field is empty or does not correspond to the\n"
+    "                             #   above pattern, the image is treated as png image.\n"
+    "                             # - Other image transports can store whatever values they\n"
+    "                             #   need for successful decoding of the image. Refer to\n"
+    "                             #   documentation of the other transports for details.\n"
+    "\n"
+    "uint8[] data                 # Compressed image buffer" } },
   2,
   kReferencedDescriptions,
 };

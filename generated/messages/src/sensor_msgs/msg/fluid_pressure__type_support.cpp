@@ -32,7 +32,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "fluid_pressure", 11, 0, 0, "", "" },
@@ -47,11 +48,43 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/FluidPressure", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/FluidPressure", 3, kDescribedFields0,
+    { "msg",
+    "# Single pressure reading.  This message is appropriate for measuring the\n"
+    "# pressure inside of a fluid (air, water, etc).  This also includes\n"
+    "# atmospheric or barometric pressure.\n"
+    "#\n"
+    "# This message is not appropriate for force/pressure contact sensors.\n"
+    "\n"
+    "std_msgs/Header header # timestamp of the measurement\n"
+    "                             # frame_id is the location of the pressure sensor\n"
+    "\n"
+    "float64 fluid_pressure       # Absolute pressure reading in Pascals.\n"
+    "\n"
+    "float64 variance             # 0 is interpreted as variance unknown" } },
   2,
   kReferencedDescriptions,
 };

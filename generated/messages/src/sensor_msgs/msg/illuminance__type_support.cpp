@@ -32,7 +32,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "illuminance", 11, 0, 0, "", "" },
@@ -47,11 +48,51 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/Illuminance", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/Illuminance", 3, kDescribedFields0,
+    { "msg",
+    "# Single photometric illuminance measurement.  Light should be assumed to be\n"
+    "# measured along the sensor's x-axis (the area of detection is the y-z plane).\n"
+    "# The illuminance should have a 0 or positive value and be received with\n"
+    "# the sensor's +X axis pointing toward the light source.\n"
+    "#\n"
+    "# Photometric illuminance is the measure of the human eye's sensitivity of the\n"
+    "# intensity of light encountering or passing through a surface.\n"
+    "#\n"
+    "# All other Photometric and Radiometric measurements should not use this message.\n"
+    "# This message cannot represent:\n"
+    "#  - Luminous intensity (candela/light source output)\n"
+    "#  - Luminance (nits/light output per area)\n"
+    "#  - Irradiance (watt/area), etc.\n"
+    "\n"
+    "std_msgs/Header header # timestamp is the time the illuminance was measured\n"
+    "                             # frame_id is the location and direction of the reading\n"
+    "\n"
+    "float64 illuminance          # Measurement of the Photometric Illuminance in Lux.\n"
+    "\n"
+    "float64 variance             # 0 is interpreted as variance unknown" } },
   2,
   kReferencedDescriptions,
 };

@@ -47,7 +47,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "height", 7, 0, 0, "", "" },
@@ -66,11 +67,57 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/Image", 7, kDescribedFields0 },
+  { "sensor_msgs/msg/Image", 7, kDescribedFields0,
+    { "msg",
+    "# This message contains an uncompressed image\n"
+    "# (0, 0) is at top-left corner of image\n"
+    "\n"
+    "std_msgs/Header header # Header timestamp should be acquisition time of image\n"
+    "                             # Header frame_id should be optical frame of camera\n"
+    "                             # origin of frame should be optical center of cameara\n"
+    "                             # +x should point to the right in the image\n"
+    "                             # +y should point down in the image\n"
+    "                             # +z should point into to plane of the image\n"
+    "                             # If the frame_id here and the frame_id of the CameraInfo\n"
+    "                             # message associated with the image conflict\n"
+    "                             # the behavior is undefined\n"
+    "\n"
+    "uint32 height                # image height, that is, number of rows\n"
+    "uint32 width                 # image width, that is, number of columns\n"
+    "\n"
+    "# The legal values for encoding are in file include/sensor_msgs/image_encodings.hpp\n"
+    "# If you want to standardize a new string format, join\n"
+    "# ros-users@lists.ros.org and send an email proposing a new encoding.\n"
+    "\n"
+    "string encoding       # Encoding of pixels -- channel meaning, ordering, size\n"
+    "                      # taken from the list of strings in include/sensor_msgs/image_encodings.hpp\n"
+    "\n"
+    "uint8 is_bigendian    # is this data bigendian?\n"
+    "uint32 step           # Full row length in bytes\n"
+    "uint8[] data          # actual matrix data, size is (step * rows)" } },
   2,
   kReferencedDescriptions,
 };

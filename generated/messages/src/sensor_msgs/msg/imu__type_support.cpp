@@ -63,7 +63,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "orientation", 1, 0, 0, "geometry_msgs/msg/Quaternion", "" },
@@ -93,13 +94,74 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields3 },
-  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields3,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields4,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/Imu", 7, kDescribedFields0 },
+  { "sensor_msgs/msg/Imu", 7, kDescribedFields0,
+    { "msg",
+    "# This is a message to hold data from an IMU (Inertial Measurement Unit)\n"
+    "#\n"
+    "# Accelerations should be in m/s^2 (not in g's), and rotational velocity should be in rad/sec\n"
+    "#\n"
+    "# If the covariance of the measurement is known, it should be filled in (if all you know is the\n"
+    "# variance of each measurement, e.g. from the datasheet, just put those along the diagonal)\n"
+    "# A covariance matrix of all zeros will be interpreted as \"covariance unknown\", and to use the\n"
+    "# data a covariance will have to be assumed or gotten from some other source\n"
+    "#\n"
+    "# If you have no estimate for one of the data elements (e.g. your IMU doesn't produce an\n"
+    "# orientation estimate), please set element 0 of the associated covariance matrix to -1\n"
+    "# If you are interpreting this message, please check for a value of -1 in the first element of each\n"
+    "# covariance matrix, and disregard the associated estimate.\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "geometry_msgs/Quaternion orientation\n"
+    "float64[9] orientation_covariance # Row major about x, y, z axes\n"
+    "\n"
+    "geometry_msgs/Vector3 angular_velocity\n"
+    "float64[9] angular_velocity_covariance # Row major about x, y, z axes\n"
+    "\n"
+    "geometry_msgs/Vector3 linear_acceleration\n"
+    "float64[9] linear_acceleration_covariance # Row major x, y z" } },
   4,
   kReferencedDescriptions,
 };

@@ -50,7 +50,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "name", 161, 0, 0, "", "" },
@@ -67,11 +68,56 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/JointState", 5, kDescribedFields0 },
+  { "sensor_msgs/msg/JointState", 5, kDescribedFields0,
+    { "msg",
+    "# This is a message that holds data to describe the state of a set of torque controlled joints.\n"
+    "#\n"
+    "# The state of each joint (revolute or prismatic) is defined by:\n"
+    "#  * the position of the joint (rad or m),\n"
+    "#  * the velocity of the joint (rad/s or m/s) and\n"
+    "#  * the effort that is applied in the joint (Nm or N).\n"
+    "#\n"
+    "# Each joint is uniquely identified by its name\n"
+    "# The header specifies the time at which the joint states were recorded. All the joint states\n"
+    "# in one message have to be recorded at the same time.\n"
+    "#\n"
+    "# This message consists of a multiple arrays, one for each part of the joint state.\n"
+    "# The goal is to make each of the fields optional. When e.g. your joints have no\n"
+    "# effort associated with them, you can leave the effort array empty.\n"
+    "#\n"
+    "# All arrays in this message should have the same size, or be empty.\n"
+    "# This is the only way to uniquely associate the joint name with the correct\n"
+    "# states.\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "string[] name\n"
+    "float64[] position\n"
+    "float64[] velocity\n"
+    "float64[] effort" } },
   2,
   kReferencedDescriptions,
 };

@@ -38,7 +38,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "axes", 154, 0, 0, "", "" },
@@ -53,11 +54,41 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/Joy", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/Joy", 3, kDescribedFields0,
+    { "msg",
+    "# Reports the state of a joystick's axes and buttons.\n"
+    "\n"
+    "# The timestamp is the time at which data is received from the joystick.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# The axes measurements from a joystick.\n"
+    "float32[] axes\n"
+    "\n"
+    "# The buttons measurements from a joystick.\n"
+    "int32[] buttons" } },
   2,
   kReferencedDescriptions,
 };

@@ -59,7 +59,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "angle_min", 10, 0, 0, "", "" },
@@ -81,11 +82,61 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/LaserScan", 10, kDescribedFields0 },
+  { "sensor_msgs/msg/LaserScan", 10, kDescribedFields0,
+    { "msg",
+    "# Single scan from a planar laser range-finder\n"
+    "#\n"
+    "# If you have another ranging device with different behavior (e.g. a sonar\n"
+    "# array), please find or create a different message, since applications\n"
+    "# will make fairly laser-specific assumptions about this data\n"
+    "\n"
+    "std_msgs/Header header # timestamp in the header is the acquisition time of\n"
+    "                             # the first ray in the scan.\n"
+    "                             #\n"
+    "                             # in frame frame_id, angles are measured around\n"
+    "                             # the positive Z axis (counterclockwise, if Z is up)\n"
+    "                             # with zero angle being forward along the x axis\n"
+    "\n"
+    "float32 angle_min            # start angle of the scan [rad]\n"
+    "float32 angle_max            # end angle of the scan [rad]\n"
+    "float32 angle_increment      # angular distance between measurements [rad]\n"
+    "\n"
+    "float32 time_increment       # time between measurements [seconds] - if your scanner\n"
+    "                             # is moving, this will be used in interpolating position\n"
+    "                             # of 3d points\n"
+    "float32 scan_time            # time between scans [seconds]\n"
+    "\n"
+    "float32 range_min            # minimum range value [m]\n"
+    "float32 range_max            # maximum range value [m]\n"
+    "\n"
+    "float32[] ranges             # range data [m]\n"
+    "                             # (Note: values < range_min or > range_max should be discarded)\n"
+    "float32[] intensities        # intensity data [device-specific units].  If your\n"
+    "                             # device does not provide intensities, please leave\n"
+    "                             # the array empty." } },
   2,
   kReferencedDescriptions,
 };

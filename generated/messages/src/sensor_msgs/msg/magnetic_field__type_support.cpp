@@ -40,7 +40,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "magnetic_field", 1, 0, 0, "geometry_msgs/msg/Vector3", "" },
@@ -60,12 +61,63 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2 },
-  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields2,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields3,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/MagneticField", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/MagneticField", 3, kDescribedFields0,
+    { "msg",
+    "# Measurement of the Magnetic Field vector at a specific location.\n"
+    "#\n"
+    "# If the covariance of the measurement is known, it should be filled in.\n"
+    "# If all you know is the variance of each measurement, e.g. from the datasheet,\n"
+    "# just put those along the diagonal.\n"
+    "# A covariance matrix of all zeros will be interpreted as \"covariance unknown\",\n"
+    "# and to use the data a covariance will have to be assumed or gotten from some\n"
+    "# other source.\n"
+    "\n"
+    "std_msgs/Header header               # timestamp is the time the\n"
+    "                                           # field was measured\n"
+    "                                           # frame_id is the location and orientation\n"
+    "                                           # of the field measurement\n"
+    "\n"
+    "geometry_msgs/Vector3 magnetic_field # x, y, and z components of the\n"
+    "                                           # field vector in Tesla\n"
+    "                                           # If your sensor does not output 3 axes,\n"
+    "                                           # put NaNs in the components not reported.\n"
+    "\n"
+    "float64[9] magnetic_field_covariance       # Row major about x, y, z axes\n"
+    "                                           # 0 is interpreted as variance unknown" } },
   3,
   kReferencedDescriptions,
 };

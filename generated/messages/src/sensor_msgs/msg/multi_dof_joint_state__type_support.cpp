@@ -65,7 +65,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "joint_names", 161, 0, 0, "", "" },
@@ -105,16 +106,94 @@ const wire::TypeDescriptionField kDescribedFields7[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2 },
-  { "geometry_msgs/msg/Transform", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/Twist", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields5 },
-  { "geometry_msgs/msg/Wrench", 2, kDescribedFields6 },
-  { "std_msgs/msg/Header", 2, kDescribedFields7 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Transform", 2, kDescribedFields3,
+    { "msg",
+    "# This represents the transform between two coordinate frames in free space.\n"
+    "\n"
+    "Vector3 translation\n"
+    "Quaternion rotation" } },
+  { "geometry_msgs/msg/Twist", 2, kDescribedFields4,
+    { "msg",
+    "# This expresses velocity in free space broken into its linear and angular parts.\n"
+    "\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields5,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Wrench", 2, kDescribedFields6,
+    { "msg",
+    "# This represents force in free space, separated into its linear and angular parts.\n"
+    "\n"
+    "Vector3  force\n"
+    "Vector3  torque" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields7,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/MultiDOFJointState", 5, kDescribedFields0 },
+  { "sensor_msgs/msg/MultiDOFJointState", 5, kDescribedFields0,
+    { "msg",
+    "# Representation of state for joints with multiple degrees of freedom,\n"
+    "# following the structure of JointState which can only represent a single degree of freedom.\n"
+    "#\n"
+    "# It is assumed that a joint in a system corresponds to a transform that gets applied\n"
+    "# along the kinematic chain. For example, a planar joint (as in URDF) is 3DOF (x, y, yaw)\n"
+    "# and those 3DOF can be expressed as a transformation matrix, and that transformation\n"
+    "# matrix can be converted back to (x, y, yaw)\n"
+    "#\n"
+    "# Each joint is uniquely identified by its name\n"
+    "# The header specifies the time at which the joint states were recorded. All the joint states\n"
+    "# in one message have to be recorded at the same time.\n"
+    "#\n"
+    "# This message consists of a multiple arrays, one for each part of the joint state.\n"
+    "# The goal is to make each of the fields optional. When e.g. your joints have no\n"
+    "# wrench associated with them, you can leave the wrench array empty.\n"
+    "#\n"
+    "# All arrays in this message should have the same size, or be empty.\n"
+    "# This is the only way to uniquely associate the joint name with the correct\n"
+    "# states.\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "string[] joint_names\n"
+    "geometry_msgs/Transform[] transforms\n"
+    "geometry_msgs/Twist[] twist\n"
+    "geometry_msgs/Wrench[] wrench" } },
   7,
   kReferencedDescriptions,
 };

@@ -59,7 +59,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "status", 1, 0, 0, "sensor_msgs/msg/NavSatStatus", "" },
@@ -82,12 +83,102 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "sensor_msgs/msg/NavSatStatus", 2, kDescribedFields2 },
-  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "sensor_msgs/msg/NavSatStatus", 2, kDescribedFields2,
+    { "msg",
+    "# Navigation Satellite fix status for any Global Navigation Satellite System.\n"
+    "#\n"
+    "# Whether to output an augmented fix is determined by both the fix\n"
+    "# type and the last time differential corrections were received.  A\n"
+    "# fix is valid when status >= STATUS_FIX.\n"
+    "\n"
+    "int8 STATUS_UNKNOWN = -2        # status is not yet set\n"
+    "int8 STATUS_NO_FIX =  -1        # unable to fix position\n"
+    "int8 STATUS_FIX =      0        # unaugmented fix\n"
+    "int8 STATUS_SBAS_FIX = 1        # with satellite-based augmentation\n"
+    "int8 STATUS_GBAS_FIX = 2        # with ground-based augmentation\n"
+    "\n"
+    "int8 status -2 # STATUS_UNKNOWN\n"
+    "\n"
+    "# Bits defining which Global Navigation Satellite System signals were\n"
+    "# used by the receiver.\n"
+    "\n"
+    "uint16 SERVICE_UNKNOWN = 0  # Remember service is a bitfield, so checking (service & SERVICE_UNKNOWN) will not work. Use == instead.\n"
+    "uint16 SERVICE_GPS =     1\n"
+    "uint16 SERVICE_GLONASS = 2\n"
+    "uint16 SERVICE_COMPASS = 4      # includes BeiDou.\n"
+    "uint16 SERVICE_GALILEO = 8\n"
+    "\n"
+    "uint16 service" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields3,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/NavSatFix", 7, kDescribedFields0 },
+  { "sensor_msgs/msg/NavSatFix", 7, kDescribedFields0,
+    { "msg",
+    "# Navigation Satellite fix for any Global Navigation Satellite System\n"
+    "#\n"
+    "# Specified using the WGS 84 reference ellipsoid\n"
+    "\n"
+    "# header.stamp specifies the ROS time for this measurement (the\n"
+    "#        corresponding satellite time may be reported using the\n"
+    "#        sensor_msgs/TimeReference message).\n"
+    "#\n"
+    "# header.frame_id is the frame of reference reported by the satellite\n"
+    "#        receiver, usually the location of the antenna.  This is a\n"
+    "#        Euclidean frame relative to the vehicle, not a reference\n"
+    "#        ellipsoid.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Satellite fix status information.\n"
+    "NavSatStatus status\n"
+    "\n"
+    "# Latitude [degrees]. Positive is north of equator; negative is south.\n"
+    "float64 latitude\n"
+    "\n"
+    "# Longitude [degrees]. Positive is east of prime meridian; negative is west.\n"
+    "float64 longitude\n"
+    "\n"
+    "# Altitude [m]. Positive is above the WGS 84 ellipsoid\n"
+    "# (quiet NaN if no altitude is available).\n"
+    "float64 altitude\n"
+    "\n"
+    "# Position covariance [m^2] defined relative to a tangential plane\n"
+    "# through the reported position. The components are East, North, and\n"
+    "# Up (ENU), in row-major order.\n"
+    "#\n"
+    "# Beware: this coordinate system exhibits singularities at the poles.\n"
+    "float64[9] position_covariance\n"
+    "\n"
+    "# If the covariance of the fix is known, fill it in completely. If the\n"
+    "# GPS receiver provides the variance of each measurement, put them\n"
+    "# along the diagonal. If only Dilution of Precision is available,\n"
+    "# estimate an approximate covariance from that.\n"
+    "\n"
+    "uint8 COVARIANCE_TYPE_UNKNOWN = 0\n"
+    "uint8 COVARIANCE_TYPE_APPROXIMATED = 1\n"
+    "uint8 COVARIANCE_TYPE_DIAGONAL_KNOWN = 2\n"
+    "uint8 COVARIANCE_TYPE_KNOWN = 3\n"
+    "\n"
+    "uint8 position_covariance_type" } },
   3,
   kReferencedDescriptions,
 };

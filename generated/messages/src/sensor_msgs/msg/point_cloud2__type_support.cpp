@@ -61,7 +61,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "height", 7, 0, 0, "", "" },
@@ -88,12 +89,75 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "sensor_msgs/msg/PointField", 4, kDescribedFields2 },
-  { "std_msgs/msg/Header", 2, kDescribedFields3 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "sensor_msgs/msg/PointField", 4, kDescribedFields2,
+    { "msg",
+    "# This message holds the description of one point entry in the\n"
+    "# PointCloud2 message format.\n"
+    "uint8 INT8    = 1\n"
+    "uint8 UINT8   = 2\n"
+    "uint8 INT16   = 3\n"
+    "uint8 UINT16  = 4\n"
+    "uint8 INT32   = 5\n"
+    "uint8 UINT32  = 6\n"
+    "uint8 FLOAT32 = 7\n"
+    "uint8 FLOAT64 = 8\n"
+    "\n"
+    "# Common PointField names are x, y, z, intensity, rgb, rgba\n"
+    "string name      # Name of field\n"
+    "uint32 offset    # Offset from start of point struct\n"
+    "uint8  datatype  # Datatype enumeration, see above\n"
+    "uint32 count     # How many elements in the field" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields3,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/PointCloud2", 9, kDescribedFields0 },
+  { "sensor_msgs/msg/PointCloud2", 9, kDescribedFields0,
+    { "msg",
+    "# This message holds a collection of N-dimensional points, which may\n"
+    "# contain additional information such as normals, intensity, etc. The\n"
+    "# point data is stored as a binary blob, its layout described by the\n"
+    "# contents of the \"fields\" array.\n"
+    "#\n"
+    "# The point cloud data may be organized 2d (image-like) or 1d (unordered).\n"
+    "# Point clouds organized as 2d images may be produced by camera depth sensors\n"
+    "# such as stereo or time-of-flight.\n"
+    "\n"
+    "# Time of sensor data acquisition, and the coordinate frame ID (for 3d points).\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# 2D structure of the point cloud. If the cloud is unordered, height is\n"
+    "# 1 and width is the length of the point cloud.\n"
+    "uint32 height\n"
+    "uint32 width\n"
+    "\n"
+    "# Describes the channels and their layout in the binary data blob.\n"
+    "PointField[] fields\n"
+    "\n"
+    "bool    is_bigendian # Is this data bigendian?\n"
+    "uint32  point_step   # Length of a point in bytes\n"
+    "uint32  row_step     # Length of a row in bytes\n"
+    "uint8[] data         # Actual point data, size is (row_step*height)\n"
+    "\n"
+    "bool is_dense        # True if there are no invalid points" } },
   3,
   kReferencedDescriptions,
 };

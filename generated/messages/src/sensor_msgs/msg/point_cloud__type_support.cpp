@@ -48,7 +48,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "points", 145, 0, 0, "geometry_msgs/msg/Point32", "" },
@@ -72,13 +73,87 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point32", 3, kDescribedFields2 },
-  { "sensor_msgs/msg/ChannelFloat32", 2, kDescribedFields3 },
-  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point32", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space(with 32 bits of precision).\n"
+    "# It is recommended to use Point wherever possible instead of Point32.\n"
+    "#\n"
+    "# This recommendation is to promote interoperability.\n"
+    "#\n"
+    "# This message is designed to take up less space when sending\n"
+    "# lots of points at once, as in the case of a PointCloud.\n"
+    "\n"
+    "float32 x\n"
+    "float32 y\n"
+    "float32 z" } },
+  { "sensor_msgs/msg/ChannelFloat32", 2, kDescribedFields3,
+    { "msg",
+    "# This message is used by the PointCloud message to hold optional data\n"
+    "# associated with each point in the cloud. The length of the values\n"
+    "# array should be the same as the length of the points array in the\n"
+    "# PointCloud, and each value should be associated with the corresponding\n"
+    "# point.\n"
+    "#\n"
+    "# Channel names in existing practice include:\n"
+    "#   \"u\", \"v\" - row and column (respectively) in the left stereo image.\n"
+    "#              This is opposite to usual conventions but remains for\n"
+    "#              historical reasons. The newer PointCloud2 message has no\n"
+    "#              such problem.\n"
+    "#   \"rgb\" - For point clouds produced by color stereo cameras. uint8\n"
+    "#           (R,G,B) values packed into the least significant 24 bits,\n"
+    "#           in order.\n"
+    "#   \"intensity\" - laser or pixel intensity.\n"
+    "#   \"distance\"\n"
+    "\n"
+    "# The channel name should give semantics of the channel (e.g.\n"
+    "# \"intensity\" instead of \"value\").\n"
+    "string name\n"
+    "\n"
+    "# The values array should be 1-1 with the elements of the associated\n"
+    "# PointCloud.\n"
+    "float32[] values" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields4,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/PointCloud", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/PointCloud", 3, kDescribedFields0,
+    { "msg",
+    "## THIS MESSAGE IS DEPRECATED AS OF FOXY\n"
+    "## Please use sensor_msgs/PointCloud2\n"
+    "\n"
+    "# This message holds a collection of 3d points, plus optional additional\n"
+    "# information about each point.\n"
+    "\n"
+    "# Time of sensor data acquisition, coordinate frame ID.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Array of 3d points. Each Point32 should be interpreted as a 3d point\n"
+    "# in the frame given in the header.\n"
+    "geometry_msgs/Point32[] points\n"
+    "\n"
+    "# Each channel should have the same number of elements as points array,\n"
+    "# and the data in each channel should correspond 1:1 with each point.\n"
+    "# Channel names in common practice are listed in ChannelFloat32.msg.\n"
+    "ChannelFloat32[] channels" } },
   4,
   kReferencedDescriptions,
 };

@@ -49,7 +49,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "radiation_type", 3, 0, 0, "", "" },
@@ -68,11 +69,73 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "std_msgs/msg/Header", 2, kDescribedFields2 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields2,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/Range", 7, kDescribedFields0 },
+  { "sensor_msgs/msg/Range", 7, kDescribedFields0,
+    { "msg",
+    "# Single range reading from an active ranger that emits energy and reports\n"
+    "# one range reading that is valid along an arc at the distance measured.\n"
+    "# This message is  not appropriate for laser scanners. See the LaserScan\n"
+    "# message if you are working with a laser scanner.\n"
+    "#\n"
+    "# This message also can represent a fixed-distance (binary) ranger.  This\n"
+    "# sensor will have min_range===max_range===distance of detection.\n"
+    "# These sensors follow REP 117 and will output -Inf if the object is detected\n"
+    "# and +Inf if the object is outside of the detection range.\n"
+    "\n"
+    "std_msgs/Header header # timestamp in the header is the time the ranger\n"
+    "                             # returned the distance reading\n"
+    "\n"
+    "# Radiation type enums\n"
+    "# If you want a value added to this list, send an email to the ros-users list\n"
+    "uint8 ULTRASOUND=0\n"
+    "uint8 INFRARED=1\n"
+    "\n"
+    "uint8 radiation_type    # the type of radiation used by the sensor\n"
+    "                        # (sound, IR, etc) [enum]\n"
+    "\n"
+    "float32 field_of_view   # the size of the arc that the distance reading is\n"
+    "                        # valid for [rad]\n"
+    "                        # the object causing the range reading may have\n"
+    "                        # been anywhere within -field_of_view/2 and\n"
+    "                        # field_of_view/2 at the measured range.\n"
+    "                        # 0 angle corresponds to the x-axis of the sensor.\n"
+    "\n"
+    "float32 min_range       # minimum range value [m]\n"
+    "float32 max_range       # maximum range value [m]\n"
+    "                        # Fixed distance rangers require min_range==max_range\n"
+    "\n"
+    "float32 range           # range data [m]\n"
+    "                        # (Note: values < range_min or > range_max should be discarded)\n"
+    "                        # Fixed distance rangers only output -Inf or +Inf.\n"
+    "                        # -Inf represents a detection within fixed distance.\n"
+    "                        # (Detection too close to the sensor to quantify)\n"
+    "                        # +Inf represents no detection within the fixed distance.\n"
+    "                        # (Object out of range)\n"
+    "\n"
+    "float32 variance        # variance of the range sensor\n"
+    "                        # 0 is interpreted as variance unknown" } },
   2,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "sensor_msgs/srv/SetCameraInfo_Request", "" },
   { "response_message", 1, 0, 0, "sensor_msgs/srv/SetCameraInfo_Response", "" },
@@ -73,17 +74,229 @@ const wire::TypeDescriptionField kDescribedFields8[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "sensor_msgs/msg/CameraInfo", 11, kDescribedFields2 },
-  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields3 },
-  { "sensor_msgs/srv/SetCameraInfo_Event", 3, kDescribedFields4 },
-  { "sensor_msgs/srv/SetCameraInfo_Request", 1, kDescribedFields5 },
-  { "sensor_msgs/srv/SetCameraInfo_Response", 2, kDescribedFields6 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7 },
-  { "std_msgs/msg/Header", 2, kDescribedFields8 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "sensor_msgs/msg/CameraInfo", 11, kDescribedFields2,
+    { "msg",
+    "# This message defines meta information for a camera. It should be in a\n"
+    "# camera namespace on topic \"camera_info\" and accompanied by up to five\n"
+    "# image topics named:\n"
+    "#\n"
+    "#   image_raw - raw data from the camera driver, possibly Bayer encoded\n"
+    "#   image            - monochrome, distorted\n"
+    "#   image_color      - color, distorted\n"
+    "#   image_rect       - monochrome, rectified\n"
+    "#   image_rect_color - color, rectified\n"
+    "#\n"
+    "# The image_pipeline contains packages (image_proc, stereo_image_proc)\n"
+    "# for producing the four processed image topics from image_raw and\n"
+    "# camera_info. The meaning of the camera parameters are described in\n"
+    "# detail at http://www.ros.org/wiki/image_pipeline/CameraInfo.\n"
+    "#\n"
+    "# The image_geometry package provides a user-friendly interface to\n"
+    "# common operations using this meta information. If you want to, e.g.,\n"
+    "# project a 3d point into image coordinates, we strongly recommend\n"
+    "# using image_geometry.\n"
+    "#\n"
+    "# If the camera is uncalibrated, the matrices D, K, R, P should be left\n"
+    "# zeroed out. In particular, clients may assume that K[0] == 0.0\n"
+    "# indicates an uncalibrated camera.\n"
+    "\n"
+    "#######################################################################\n"
+    "#                     Image acquisition info                          #\n"
+    "#######################################################################\n"
+    "\n"
+    "# Time of image acquisition, camera coordinate frame ID\n"
+    "std_msgs/Header header # Header timestamp should be acquisition time of image\n"
+    "                             # Header frame_id should be optical frame of camera\n"
+    "                             # origin of frame should be optical center of camera\n"
+    "                             # +x should point to the right in the image\n"
+    "                             # +y should point down in the image\n"
+    "                             # +z should point into the plane of the image\n"
+    "\n"
+    "\n"
+    "#######################################################################\n"
+    "#                      Calibration Parameters                         #\n"
+    "#######################################################################\n"
+    "# These are fixed during camera calibration. Their values will be the #\n"
+    "# same in all messages until the camera is recalibrated. Note that    #\n"
+    "# self-calibrating systems may \"recalibrate\" frequently.              #\n"
+    "#                                                                     #\n"
+    "# The internal parameters can be used to warp a raw (distorted) image #\n"
+    "# to:                                                                 #\n"
+    "#   1. An undistorted image (requires D and K)                        #\n"
+    "#   2. A rectified image (requires D, K, R)                           #\n"
+    "# The projection matrix P projects 3D points into the rectified image.#\n"
+    "#######################################################################\n"
+    "\n"
+    "# The image dimensions with which the camera was calibrated.\n"
+    "# Normally this will be the full camera resolution in pixels.\n"
+    "uint32 height\n"
+    "uint32 width\n"
+    "\n"
+    "# The distortion model used. Supported models are listed in\n"
+    "# sensor_msgs/distortion_models.hpp. For most cameras, \"plumb_bob\" - a\n"
+    "# simple model of radial and tangential distortion - is sufficent.\n"
+    "string distortion_model\n"
+    "\n"
+    "# The distortion parameters, size depending on the distortion model.\n"
+    "# For \"plumb_bob\", the 5 parameters are: (k1, k2, t1, t2, k3).\n"
+    "float64[] d\n"
+    "\n"
+    "# Intrinsic camera matrix for the raw (distorted) images.\n"
+    "#     [fx  0 cx]\n"
+    "# K = [ 0 fy cy]\n"
+    "#     [ 0  0  1]\n"
+    "# Projects 3D points in the camera coordinate frame to 2D pixel\n"
+    "# coordinates using the focal lengths (fx, fy) and principal point\n"
+    "# (cx, cy).\n"
+    "float64[9]  k # 3x3 row-major matrix\n"
+    "\n"
+    "# Rectification matrix (stereo cameras only)\n"
+    "# A rotation matrix aligning the camera coordinate system to the ideal\n"
+    "# stereo image plane so that epipolar lines in both stereo images are\n"
+    "# parallel.\n"
+    "float64[9]  r # 3x3 row-major matrix\n"
+    "\n"
+    "# Projection/camera matrix\n"
+    "#     [fx'  0  cx' Tx]\n"
+    "# P = [ 0  fy' cy' Ty]\n"
+    "#     [ 0   0   1   0]\n"
+    "# By convention, this matrix specifies the intrinsic (camera) matrix\n"
+    "#  of the processed (rectified) image. That is, the left 3x3 portion\n"
+    "#  is the normal camera intrinsic matrix for the rectified image.\n"
+    "# It projects 3D points in the camera coordinate frame to 2D pixel\n"
+    "#  coordinates using the focal lengths (fx', fy') and principal point\n"
+    "#  (cx', cy') - these may differ from the values in K.\n"
+    "# For monocular cameras, Tx = Ty = 0. Normally, monocular cameras will\n"
+    "#  also have R = the identity and P[1:3,1:3] = K.\n"
+    "# For a stereo pair, the fourth column [Tx Ty 0]' is related to the\n"
+    "#  position of the optical center of the second camera in the first\n"
+    "#  camera's frame. We assume Tz = 0 so both cameras are in the same\n"
+    "#  stereo image plane. The first camera always has Tx = Ty = 0. For\n"
+    "#  the right (second) camera of a horizontal stereo pair, Ty = 0 and\n"
+    "#  Tx = -fx' * B, where B is the baseline between the cameras.\n"
+    "# Given a 3D point [X Y Z]', the projection (x, y) of the point onto\n"
+    "#  the rectified image is given by:\n"
+    "#  [u v w]' = P * [X Y Z 1]'\n"
+    "#         x = u / w\n"
+    "#         y = v / w\n"
+    "#  This holds for both images of a stereo pair.\n"
+    "float64[12] p # 3x4 row-major matrix\n"
+    "\n"
+    "\n"
+    "#######################################################################\n"
+    "#                      Operational Parameters                         #\n"
+    "#######################################################################\n"
+    "# These define the image region actually captured by the camera       #\n"
+    "# driver. Although they affect the geometry of the output image, they #\n"
+    "# may be changed freely without recalibrating the camera.             #\n"
+    "#######################################################################\n"
+    "\n"
+    "# Binning refers here to any camera setting which combines rectangular\n"
+    "#  neighborhoods of pixels into larger \"super-pixels.\" It reduces the\n"
+    "#  resolution of the output image to\n"
+    "#  (width / binning_x) x (height / binning_y).\n"
+    "# The default values binning_x = binning_y = 0 is considered the same\n"
+    "#  as binning_x = binning_y = 1 (no subsampling).\n"
+    "uint32 binning_x\n"
+    "uint32 binning_y\n"
+    "\n"
+    "# Region of interest (subwindow of full camera resolution), given in\n"
+    "#  full resolution (unbinned) image coordinates. A particular ROI\n"
+    "#  always denotes the same window of pixels on the camera sensor,\n"
+    "#  regardless of binning settings.\n"
+    "# The default setting of roi (all values 0) is considered the same as\n"
+    "#  full resolution (roi.width = width, roi.height = height).\n"
+    "RegionOfInterest roi" } },
+  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields3,
+    { "msg",
+    "# This message is used to specify a region of interest within an image.\n"
+    "#\n"
+    "# When used to specify the ROI setting of the camera when the image was\n"
+    "# taken, the height and width fields should either match the height and\n"
+    "# width fields for the associated image; or height = width = 0\n"
+    "# indicates that the full resolution image was captured.\n"
+    "\n"
+    "uint32 x_offset  # Leftmost pixel of the ROI\n"
+    "                 # (0 if the ROI includes the left edge of the image)\n"
+    "uint32 y_offset  # Topmost pixel of the ROI\n"
+    "                 # (0 if the ROI includes the top edge of the image)\n"
+    "uint32 height    # Height of ROI\n"
+    "uint32 width     # Width of ROI\n"
+    "\n"
+    "# True if a distinct rectified ROI should be calculated from the \"raw\"\n"
+    "# ROI in this message. Typically this should be False if the full image\n"
+    "# is captured (ROI not used), and True if a subwindow is captured (ROI\n"
+    "# used).\n"
+    "bool do_rectify" } },
+  { "sensor_msgs/srv/SetCameraInfo_Event", 3, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "sensor_msgs/srv/SetCameraInfo_Request", 1, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "sensor_msgs/srv/SetCameraInfo_Response", 2, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields7,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields8,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/srv/SetCameraInfo", 3, kDescribedFields0 },
+  { "sensor_msgs/srv/SetCameraInfo", 3, kDescribedFields0,
+    { "srv",
+    "# This service requests that a camera stores the given CameraInfo as that\n"
+    "# camera's calibration information.\n"
+    "#\n"
+    "# The width and height in the camera_info field should match what the\n"
+    "# camera is currently outputting on its camera_info topic, and the camera\n"
+    "# will assume that the region of the imager that is being referred to is\n"
+    "# the region that the camera is currently capturing.\n"
+    "\n"
+    "sensor_msgs/CameraInfo camera_info # The camera_info to store\n"
+    "---\n"
+    "bool success                             # True if the call succeeded\n"
+    "string status_message                    # Used to give details about success" } },
   8,
   kReferencedDescriptions,
 };

@@ -40,7 +40,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "triangles", 145, 0, 0, "shape_msgs/msg/MeshTriangle", "" },
   { "vertices", 145, 0, 0, "geometry_msgs/msg/Point", "" },
@@ -54,11 +55,28 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "vertex_indices", 55, 3, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Point", 3, kDescribedFields1 },
-  { "shape_msgs/msg/MeshTriangle", 1, kDescribedFields2 },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields1,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "shape_msgs/msg/MeshTriangle", 1, kDescribedFields2,
+    { "msg",
+    "# Definition of a triangle's vertices.\n"
+    "\n"
+    "uint32[3] vertex_indices" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "shape_msgs/msg/Mesh", 2, kDescribedFields0 },
+  { "shape_msgs/msg/Mesh", 2, kDescribedFields0,
+    { "msg",
+    "# Definition of a mesh.\n"
+    "\n"
+    "# List of triangles; the index values refer to positions in vertices[].\n"
+    "MeshTriangle[] triangles\n"
+    "\n"
+    "# The actual vertices that make up the mesh.\n"
+    "geometry_msgs/Point[] vertices" } },
   2,
   kReferencedDescriptions,
 };

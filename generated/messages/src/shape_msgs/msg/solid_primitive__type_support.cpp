@@ -52,7 +52,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type", 3, 0, 0, "", "" },
   { "dimensions", 107, 3, 0, "", "" },
@@ -67,11 +68,78 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "points", 145, 0, 0, "geometry_msgs/msg/Point32", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "geometry_msgs/msg/Point32", 3, kDescribedFields1 },
-  { "geometry_msgs/msg/Polygon", 1, kDescribedFields2 },
+  { "geometry_msgs/msg/Point32", 3, kDescribedFields1,
+    { "msg",
+    "# This contains the position of a point in free space(with 32 bits of precision).\n"
+    "# It is recommended to use Point wherever possible instead of Point32.\n"
+    "#\n"
+    "# This recommendation is to promote interoperability.\n"
+    "#\n"
+    "# This message is designed to take up less space when sending\n"
+    "# lots of points at once, as in the case of a PointCloud.\n"
+    "\n"
+    "float32 x\n"
+    "float32 y\n"
+    "float32 z" } },
+  { "geometry_msgs/msg/Polygon", 1, kDescribedFields2,
+    { "msg",
+    "# A specification of a polygon where the first and last points are assumed to be connected\n"
+    "\n"
+    "Point32[] points" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "shape_msgs/msg/SolidPrimitive", 3, kDescribedFields0 },
+  { "shape_msgs/msg/SolidPrimitive", 3, kDescribedFields0,
+    { "msg",
+    "# Defines box, sphere, cylinder, cone and prism.\n"
+    "# All shapes are defined to have their bounding boxes centered around 0,0,0.\n"
+    "\n"
+    "uint8 BOX=1\n"
+    "uint8 SPHERE=2\n"
+    "uint8 CYLINDER=3\n"
+    "uint8 CONE=4\n"
+    "uint8 PRISM=5\n"
+    "\n"
+    "# The type of the shape\n"
+    "uint8 type\n"
+    "\n"
+    "# The dimensions of the shape\n"
+    "float64[<=3] dimensions  # At no point will dimensions have a length > 3.\n"
+    "\n"
+    "# The meaning of the shape dimensions: each constant defines the index in the 'dimensions' array.\n"
+    "\n"
+    "# For type BOX, the X, Y, and Z dimensions are the length of the corresponding sides of the box.\n"
+    "uint8 BOX_X=0\n"
+    "uint8 BOX_Y=1\n"
+    "uint8 BOX_Z=2\n"
+    "\n"
+    "# For the SPHERE type, only one component is used, and it gives the radius of the sphere.\n"
+    "uint8 SPHERE_RADIUS=0\n"
+    "\n"
+    "# For the CYLINDER and CONE types, the center line is oriented along the Z axis.\n"
+    "# Therefore the CYLINDER_HEIGHT (CONE_HEIGHT) component of dimensions gives the\n"
+    "# height of the cylinder (cone).\n"
+    "# The CYLINDER_RADIUS (CONE_RADIUS) component of dimensions gives the radius of\n"
+    "# the base of the cylinder (cone).\n"
+    "# Cone and cylinder primitives are defined to be circular. The tip of the cone\n"
+    "# is pointing up, along +Z axis.\n"
+    "\n"
+    "uint8 CYLINDER_HEIGHT=0\n"
+    "uint8 CYLINDER_RADIUS=1\n"
+    "\n"
+    "uint8 CONE_HEIGHT=0\n"
+    "uint8 CONE_RADIUS=1\n"
+    "\n"
+    "# For the type PRISM, the center line is oriented along Z axis.\n"
+    "# The PRISM_HEIGHT component of dimensions gives the\n"
+    "# height of the prism.\n"
+    "# The polygon defines the Z axis centered base of the prism.\n"
+    "# The prism is constructed by extruding the base in +Z and -Z\n"
+    "# directions by half of the PRISM_HEIGHT\n"
+    "# Only x and y fields of the points are used in the polygon.\n"
+    "# Points of the polygon are ordered counter-clockwise.\n"
+    "\n"
+    "uint8 PRISM_HEIGHT=0\n"
+    "geometry_msgs/Polygon polygon" } },
   2,
   kReferencedDescriptions,
 };

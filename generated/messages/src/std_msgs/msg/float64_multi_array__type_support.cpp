@@ -32,7 +32,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "layout", 1, 0, 0, "std_msgs/msg/MultiArrayLayout", "" },
   { "data", 155, 0, 0, "", "" },
@@ -47,11 +48,63 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "data_offset", 7, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "std_msgs/msg/MultiArrayDimension", 3, kDescribedFields1 },
-  { "std_msgs/msg/MultiArrayLayout", 2, kDescribedFields2 },
+  { "std_msgs/msg/MultiArrayDimension", 3, kDescribedFields1,
+    { "msg",
+    "# This was originally provided as an example message.\n"
+    "# It is deprecated as of Foxy\n"
+    "# It is recommended to create your own semantically meaningful message.\n"
+    "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+    "\n"
+    "string label   # label of given dimension\n"
+    "uint32 size    # size of given dimension (in type units)\n"
+    "uint32 stride  # stride of given dimension" } },
+  { "std_msgs/msg/MultiArrayLayout", 2, kDescribedFields2,
+    { "msg",
+    "# This was originally provided as an example message.\n"
+    "# It is deprecated as of Foxy\n"
+    "# It is recommended to create your own semantically meaningful message.\n"
+    "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+    "\n"
+    "# The multiarray declares a generic multi-dimensional array of a\n"
+    "# particular data type.  Dimensions are ordered from outer most\n"
+    "# to inner most.\n"
+    "#\n"
+    "# Accessors should ALWAYS be written in terms of dimension stride\n"
+    "# and specified outer-most dimension first.\n"
+    "#\n"
+    "# multiarray(i,j,k) = data[data_offset + dim_stride[1]*i + dim_stride[2]*j + k]\n"
+    "#\n"
+    "# A standard, 3-channel 640x480 image with interleaved color channels\n"
+    "# would be specified as:\n"
+    "#\n"
+    "# dim[0].label  = \"height\"\n"
+    "# dim[0].size   = 480\n"
+    "# dim[0].stride = 3*640*480 = 921600  (note dim[0] stride is just size of image)\n"
+    "# dim[1].label  = \"width\"\n"
+    "# dim[1].size   = 640\n"
+    "# dim[1].stride = 3*640 = 1920\n"
+    "# dim[2].label  = \"channel\"\n"
+    "# dim[2].size   = 3\n"
+    "# dim[2].stride = 3\n"
+    "#\n"
+    "# multiarray(i,j,k) refers to the ith row, jth column, and kth channel.\n"
+    "\n"
+    "MultiArrayDimension[] dim # Array of dimension properties\n"
+    "uint32 data_offset        # padding bytes at front of data" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "std_msgs/msg/Float64MultiArray", 2, kDescribedFields0 },
+  { "std_msgs/msg/Float64MultiArray", 2, kDescribedFields0,
+    { "msg",
+    "# This was originally provided as an example message.\n"
+    "# It is deprecated as of Foxy\n"
+    "# It is recommended to create your own semantically meaningful message.\n"
+    "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+    "\n"
+    "# Please look at the MultiArrayLayout message definition for\n"
+    "# documentation on all multiarrays.\n"
+    "\n"
+    "MultiArrayLayout  layout        # specification of data layout\n"
+    "float64[]         data          # array of data" } },
   2,
   kReferencedDescriptions,
 };

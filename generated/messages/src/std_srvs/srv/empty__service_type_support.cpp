@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "std_srvs/srv/Empty_Request", "" },
   { "response_message", 1, 0, 0, "std_srvs/srv/Empty_Response", "" },
@@ -48,14 +49,53 @@ const wire::TypeDescriptionField kDescribedFields5[] = {
   { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
-  { "std_srvs/srv/Empty_Event", 3, kDescribedFields3 },
-  { "std_srvs/srv/Empty_Request", 1, kDescribedFields4 },
-  { "std_srvs/srv/Empty_Response", 1, kDescribedFields5 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "std_srvs/srv/Empty_Event", 3, kDescribedFields3,
+    { "implicit",
+    "" } },
+  { "std_srvs/srv/Empty_Request", 1, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "std_srvs/srv/Empty_Response", 1, kDescribedFields5,
+    { "implicit",
+    "" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "std_srvs/srv/Empty", 3, kDescribedFields0 },
+  { "std_srvs/srv/Empty", 3, kDescribedFields0,
+    { "srv",
+    "---" } },
   5,
   kReferencedDescriptions,
 };

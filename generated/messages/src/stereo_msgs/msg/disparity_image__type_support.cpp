@@ -57,7 +57,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "image", 1, 0, 0, "sensor_msgs/msg/Image", "" },
@@ -93,13 +94,109 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "sensor_msgs/msg/Image", 7, kDescribedFields2 },
-  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields3 },
-  { "std_msgs/msg/Header", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "sensor_msgs/msg/Image", 7, kDescribedFields2,
+    { "msg",
+    "# This message contains an uncompressed image\n"
+    "# (0, 0) is at top-left corner of image\n"
+    "\n"
+    "std_msgs/Header header # Header timestamp should be acquisition time of image\n"
+    "                             # Header frame_id should be optical frame of camera\n"
+    "                             # origin of frame should be optical center of cameara\n"
+    "                             # +x should point to the right in the image\n"
+    "                             # +y should point down in the image\n"
+    "                             # +z should point into to plane of the image\n"
+    "                             # If the frame_id here and the frame_id of the CameraInfo\n"
+    "                             # message associated with the image conflict\n"
+    "                             # the behavior is undefined\n"
+    "\n"
+    "uint32 height                # image height, that is, number of rows\n"
+    "uint32 width                 # image width, that is, number of columns\n"
+    "\n"
+    "# The legal values for encoding are in file include/sensor_msgs/image_encodings.hpp\n"
+    "# If you want to standardize a new string format, join\n"
+    "# ros-users@lists.ros.org and send an email proposing a new encoding.\n"
+    "\n"
+    "string encoding       # Encoding of pixels -- channel meaning, ordering, size\n"
+    "                      # taken from the list of strings in include/sensor_msgs/image_encodings.hpp\n"
+    "\n"
+    "uint8 is_bigendian    # is this data bigendian?\n"
+    "uint32 step           # Full row length in bytes\n"
+    "uint8[] data          # actual matrix data, size is (step * rows)" } },
+  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields3,
+    { "msg",
+    "# This message is used to specify a region of interest within an image.\n"
+    "#\n"
+    "# When used to specify the ROI setting of the camera when the image was\n"
+    "# taken, the height and width fields should either match the height and\n"
+    "# width fields for the associated image; or height = width = 0\n"
+    "# indicates that the full resolution image was captured.\n"
+    "\n"
+    "uint32 x_offset  # Leftmost pixel of the ROI\n"
+    "                 # (0 if the ROI includes the left edge of the image)\n"
+    "uint32 y_offset  # Topmost pixel of the ROI\n"
+    "                 # (0 if the ROI includes the top edge of the image)\n"
+    "uint32 height    # Height of ROI\n"
+    "uint32 width     # Width of ROI\n"
+    "\n"
+    "# True if a distinct rectified ROI should be calculated from the \"raw\"\n"
+    "# ROI in this message. Typically this should be False if the full image\n"
+    "# is captured (ROI not used), and True if a subwindow is captured (ROI\n"
+    "# used).\n"
+    "bool do_rectify" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields4,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "stereo_msgs/msg/DisparityImage", 8, kDescribedFields0 },
+  { "stereo_msgs/msg/DisparityImage", 8, kDescribedFields0,
+    { "msg",
+    "# Separate header for compatibility with current TimeSynchronizer.\n"
+    "# Likely to be removed in a later release, use image.header instead.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Floating point disparity image. The disparities are pre-adjusted for any\n"
+    "# x-offset between the principal points of the two cameras (in the case\n"
+    "# that they are verged). That is: d = x_l - x_r - (cx_l - cx_r)\n"
+    "sensor_msgs/Image image\n"
+    "\n"
+    "# Stereo geometry. For disparity d, the depth from the camera is Z = fT/d.\n"
+    "float32 f # Focal length, pixels\n"
+    "float32 t # Baseline, world units\n"
+    "\n"
+    "# Subwindow of (potentially) valid disparity values.\n"
+    "sensor_msgs/RegionOfInterest valid_window\n"
+    "\n"
+    "# The range of disparities searched.\n"
+    "# In the disparity image, any disparity less than min_disparity is invalid.\n"
+    "# The disparity search range defines the horopter, or 3D volume that the\n"
+    "# stereo algorithm can \"see\". Points with Z outside of:\n"
+    "#     Z_min = fT / max_disparity\n"
+    "#     Z_max = fT / min_disparity\n"
+    "# could not be found.\n"
+    "float32 min_disparity\n"
+    "float32 max_disparity\n"
+    "\n"
+    "# Smallest allowed disparity increment. The smallest achievable depth range\n"
+    "# resolution is delta_Z = (Z^2/fT)*delta_d.\n"
+    "float32 delta_d" } },
   4,
   kReferencedDescriptions,
 };

@@ -53,7 +53,8 @@ const wire::MessageTypeSupport* status_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "goal", 1, 0, 0, "test_msgs/action/Fibonacci_Goal", "" },
   { "result", 1, 0, 0, "test_msgs/action/Fibonacci_Result", "" },
@@ -124,24 +125,95 @@ const wire::TypeDescriptionField kDescribedFields15[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
-  { "test_msgs/action/Fibonacci_Feedback", 1, kDescribedFields3 },
-  { "test_msgs/action/Fibonacci_FeedbackMessage", 2, kDescribedFields4 },
-  { "test_msgs/action/Fibonacci_GetResult", 3, kDescribedFields5 },
-  { "test_msgs/action/Fibonacci_GetResult_Event", 3, kDescribedFields6 },
-  { "test_msgs/action/Fibonacci_GetResult_Request", 1, kDescribedFields7 },
-  { "test_msgs/action/Fibonacci_GetResult_Response", 2, kDescribedFields8 },
-  { "test_msgs/action/Fibonacci_Goal", 1, kDescribedFields9 },
-  { "test_msgs/action/Fibonacci_Result", 1, kDescribedFields10 },
-  { "test_msgs/action/Fibonacci_SendGoal", 3, kDescribedFields11 },
-  { "test_msgs/action/Fibonacci_SendGoal_Event", 3, kDescribedFields12 },
-  { "test_msgs/action/Fibonacci_SendGoal_Request", 2, kDescribedFields13 },
-  { "test_msgs/action/Fibonacci_SendGoal_Response", 2, kDescribedFields14 },
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields15 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "test_msgs/action/Fibonacci_Feedback", 1, kDescribedFields3,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_FeedbackMessage", 2, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_GetResult", 3, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_GetResult_Event", 3, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_GetResult_Request", 1, kDescribedFields7,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_GetResult_Response", 2, kDescribedFields8,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_Goal", 1, kDescribedFields9,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_Result", 1, kDescribedFields10,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_SendGoal", 3, kDescribedFields11,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_SendGoal_Event", 3, kDescribedFields12,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_SendGoal_Request", 2, kDescribedFields13,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/Fibonacci_SendGoal_Response", 2, kDescribedFields14,
+    { "implicit",
+    "" } },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields15,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/action/Fibonacci", 6, kDescribedFields0 },
+  { "test_msgs/action/Fibonacci", 6, kDescribedFields0,
+    { "action",
+    "#goal definition\n"
+    "int32 order\n"
+    "---\n"
+    "#result definition\n"
+    "int32[] sequence\n"
+    "---\n"
+    "#feedback\n"
+    "int32[] sequence" } },
   15,
   kReferencedDescriptions,
 };

@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "goal_id", 1, 0, 0, "unique_identifier_msgs/msg/UUID", "" },
   { "goal", 1, 0, 0, "test_msgs/action/Fibonacci_Goal", "" },
@@ -46,11 +47,22 @@ const wire::TypeDescriptionField kDescribedFields2[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "test_msgs/action/Fibonacci_Goal", 1, kDescribedFields1 },
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields2 },
+  { "test_msgs/action/Fibonacci_Goal", 1, kDescribedFields1,
+    { "implicit",
+    "" } },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields2,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/action/Fibonacci_SendGoal_Request", 2, kDescribedFields0 },
+  { "test_msgs/action/Fibonacci_SendGoal_Request", 2, kDescribedFields0,
+    { "implicit",
+    "" } },
   2,
   kReferencedDescriptions,
 };

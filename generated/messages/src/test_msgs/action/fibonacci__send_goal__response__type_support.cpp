@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "accepted", 15, 0, 0, "", "" },
   { "stamp", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
@@ -39,10 +40,21 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "nanosec", 7, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/action/Fibonacci_SendGoal_Response", 2, kDescribedFields0 },
+  { "test_msgs/action/Fibonacci_SendGoal_Response", 2, kDescribedFields0,
+    { "implicit",
+    "" } },
   1,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "test_msgs/action/NestedMessage_GetResult_Request", "" },
   { "response_message", 1, 0, 0, "test_msgs/action/NestedMessage_GetResult_Response", "" },
@@ -80,19 +81,94 @@ const wire::TypeDescriptionField kDescribedFields10[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields3 },
-  { "test_msgs/action/NestedMessage_GetResult_Event", 3, kDescribedFields4 },
-  { "test_msgs/action/NestedMessage_GetResult_Request", 1, kDescribedFields5 },
-  { "test_msgs/action/NestedMessage_GetResult_Response", 2, kDescribedFields6 },
-  { "test_msgs/action/NestedMessage_Result", 3, kDescribedFields7 },
-  { "test_msgs/msg/BasicTypes", 13, kDescribedFields8 },
-  { "test_msgs/msg/Builtins", 2, kDescribedFields9 },
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields10 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields3,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "test_msgs/action/NestedMessage_GetResult_Event", 3, kDescribedFields4,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/NestedMessage_GetResult_Request", 1, kDescribedFields5,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/NestedMessage_GetResult_Response", 2, kDescribedFields6,
+    { "implicit",
+    "" } },
+  { "test_msgs/action/NestedMessage_Result", 3, kDescribedFields7,
+    { "implicit",
+    "" } },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields8,
+    { "msg",
+    "bool bool_value\n"
+    "byte byte_value\n"
+    "char char_value\n"
+    "float32 float32_value\n"
+    "float64 float64_value\n"
+    "int8 int8_value\n"
+    "uint8 uint8_value\n"
+    "int16 int16_value\n"
+    "uint16 uint16_value\n"
+    "int32 int32_value\n"
+    "uint32 uint32_value\n"
+    "int64 int64_value\n"
+    "uint64 uint64_value" } },
+  { "test_msgs/msg/Builtins", 2, kDescribedFields9,
+    { "msg",
+    "builtin_interfaces/Duration duration_value\n"
+    "builtin_interfaces/Time time_value" } },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields10,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/action/NestedMessage_GetResult", 3, kDescribedFields0 },
+  { "test_msgs/action/NestedMessage_GetResult", 3, kDescribedFields0,
+    { "implicit",
+    "" } },
   10,
   kReferencedDescriptions,
 };

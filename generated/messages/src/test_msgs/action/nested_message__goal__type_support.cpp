@@ -42,7 +42,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "nested_field_no_pkg", 1, 0, 0, "test_msgs/msg/Builtins", "" },
   { "nested_field", 1, 0, 0, "test_msgs/msg/BasicTypes", "" },
@@ -76,13 +77,51 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "time_value", 1, 0, 0, "builtin_interfaces/msg/Time", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "test_msgs/msg/BasicTypes", 13, kDescribedFields3 },
-  { "test_msgs/msg/Builtins", 2, kDescribedFields4 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields3,
+    { "msg",
+    "bool bool_value\n"
+    "byte byte_value\n"
+    "char char_value\n"
+    "float32 float32_value\n"
+    "float64 float64_value\n"
+    "int8 int8_value\n"
+    "uint8 uint8_value\n"
+    "int16 int16_value\n"
+    "uint16 uint16_value\n"
+    "int32 int32_value\n"
+    "uint32 uint32_value\n"
+    "int64 int64_value\n"
+    "uint64 uint64_value" } },
+  { "test_msgs/msg/Builtins", 2, kDescribedFields4,
+    { "msg",
+    "builtin_interfaces/Duration duration_value\n"
+    "builtin_interfaces/Time time_value" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/action/NestedMessage_Goal", 3, kDescribedFields0 },
+  { "test_msgs/action/NestedMessage_Goal", 3, kDescribedFields0,
+    { "implicit",
+    "" } },
   4,
   kReferencedDescriptions,
 };

@@ -87,7 +87,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "array_of_arrays", 49, 3, 0, "test_msgs/msg/Arrays", "" },
   { "array_of_bounded_sequences", 49, 3, 0, "test_msgs/msg/BoundedSequences", "" },
@@ -235,15 +236,173 @@ const wire::TypeDescriptionField kDescribedFields6[] = {
   { "alignment_check", 6, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "test_msgs/msg/Arrays", 32, kDescribedFields1 },
-  { "test_msgs/msg/BasicTypes", 13, kDescribedFields2 },
-  { "test_msgs/msg/BoundedSequences", 32, kDescribedFields3 },
-  { "test_msgs/msg/Constants", 1, kDescribedFields4 },
-  { "test_msgs/msg/Defaults", 13, kDescribedFields5 },
-  { "test_msgs/msg/UnboundedSequences", 32, kDescribedFields6 },
+  { "test_msgs/msg/Arrays", 32, kDescribedFields1,
+    { "msg",
+    "# Arrays of different types\n"
+    "bool[3] bool_values\n"
+    "byte[3] byte_values\n"
+    "char[3] char_values\n"
+    "float32[3] float32_values\n"
+    "float64[3] float64_values\n"
+    "int8[3] int8_values\n"
+    "uint8[3] uint8_values\n"
+    "int16[3] int16_values\n"
+    "uint16[3] uint16_values\n"
+    "int32[3] int32_values\n"
+    "uint32[3] uint32_values\n"
+    "int64[3] int64_values\n"
+    "uint64[3] uint64_values\n"
+    "string[3] string_values\n"
+    "BasicTypes[3] basic_types_values\n"
+    "Constants[3] constants_values\n"
+    "Defaults[3] defaults_values\n"
+    "bool[3] bool_values_default [false, true, false]\n"
+    "byte[3] byte_values_default [0, 1, 255]\n"
+    "char[3] char_values_default [0, 1, 127]\n"
+    "float32[3] float32_values_default [1.125, 0.0, -1.125]\n"
+    "float64[3] float64_values_default [3.1415, 0.0, -3.1415]\n"
+    "int8[3] int8_values_default [0, 127, -128]\n"
+    "uint8[3] uint8_values_default [0, 1, 255]\n"
+    "int16[3] int16_values_default [0, 32767, -32768]\n"
+    "uint16[3] uint16_values_default [0, 1, 65535]\n"
+    "int32[3] int32_values_default [0, 2147483647, -2147483648]\n"
+    "uint32[3] uint32_values_default [0, 1, 4294967295]\n"
+    "int64[3] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+    "uint64[3] uint64_values_default [0, 1, 18446744073709551615]\n"
+    "string[3] string_values_default [\"\", \"max value\", \"min value\"]\n"
+    "# Regression test: check alignment of basic field after an array field is correct\n"
+    "int32 alignment_check" } },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields2,
+    { "msg",
+    "bool bool_value\n"
+    "byte byte_value\n"
+    "char char_value\n"
+    "float32 float32_value\n"
+    "float64 float64_value\n"
+    "int8 int8_value\n"
+    "uint8 uint8_value\n"
+    "int16 int16_value\n"
+    "uint16 uint16_value\n"
+    "int32 int32_value\n"
+    "uint32 uint32_value\n"
+    "int64 int64_value\n"
+    "uint64 uint64_value" } },
+  { "test_msgs/msg/BoundedSequences", 32, kDescribedFields3,
+    { "msg",
+    "# Bounded sequences of different types\n"
+    "bool[<=3] bool_values\n"
+    "byte[<=3] byte_values\n"
+    "char[<=3] char_values\n"
+    "float32[<=3] float32_values\n"
+    "float64[<=3] float64_values\n"
+    "int8[<=3] int8_values\n"
+    "uint8[<=3] uint8_values\n"
+    "int16[<=3] int16_values\n"
+    "uint16[<=3] uint16_values\n"
+    "int32[<=3] int32_values\n"
+    "uint32[<=3] uint32_values\n"
+    "int64[<=3] int64_values\n"
+    "uint64[<=3] uint64_values\n"
+    "string[<=3] string_values\n"
+    "BasicTypes[<=3] basic_types_values\n"
+    "Constants[<=3] constants_values\n"
+    "Defaults[<=3] defaults_values\n"
+    "bool[<=3] bool_values_default [false, true, false]\n"
+    "byte[<=3] byte_values_default [0, 1, 255]\n"
+    "char[<=3] char_values_default [0, 1, 127]\n"
+    "float32[<=3] float32_values_default [1.125, 0.0, -1.125]\n"
+    "float64[<=3] float64_values_default [3.1415, 0.0, -3.1415]\n"
+    "int8[<=3] int8_values_default [0, 127, -128]\n"
+    "uint8[<=3] uint8_values_default [0, 1, 255]\n"
+    "int16[<=3] int16_values_default [0, 32767, -32768]\n"
+    "uint16[<=3] uint16_values_default [0, 1, 65535]\n"
+    "int32[<=3] int32_values_default [0, 2147483647, -2147483648]\n"
+    "uint32[<=3] uint32_values_default [0, 1, 4294967295]\n"
+    "int64[<=3] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+    "uint64[<=3] uint64_values_default [0, 1, 18446744073709551615]\n"
+    "string[<=3] string_values_default [\"\", \"max value\", \"min value\"]\n"
+    "# Regression test: check alignment of basic field after a sequence field is correct\n"
+    "int32 alignment_check" } },
+  { "test_msgs/msg/Constants", 1, kDescribedFields4,
+    { "msg",
+    "bool BOOL_CONST=true\n"
+    "byte BYTE_CONST=50\n"
+    "char CHAR_CONST=100\n"
+    "float32 FLOAT32_CONST=1.125\n"
+    "float64 FLOAT64_CONST=1.125\n"
+    "int8 INT8_CONST=-50\n"
+    "uint8 UINT8_CONST=200\n"
+    "int16 INT16_CONST=-1000\n"
+    "uint16 UINT16_CONST=2000\n"
+    "int32 INT32_CONST=-30000\n"
+    "uint32 UINT32_CONST=60000\n"
+    "int64 INT64_CONST=-40000000\n"
+    "uint64 UINT64_CONST=50000000" } },
+  { "test_msgs/msg/Defaults", 13, kDescribedFields5,
+    { "msg",
+    "bool bool_value true\n"
+    "byte byte_value 50\n"
+    "char char_value 100\n"
+    "float32 float32_value 1.125\n"
+    "float64 float64_value 1.125\n"
+    "int8 int8_value -50\n"
+    "uint8 uint8_value 200\n"
+    "int16 int16_value -1000\n"
+    "uint16 uint16_value 2000\n"
+    "int32 int32_value -30000\n"
+    "uint32 uint32_value 60000\n"
+    "int64 int64_value -40000000\n"
+    "uint64 uint64_value 50000000" } },
+  { "test_msgs/msg/UnboundedSequences", 32, kDescribedFields6,
+    { "msg",
+    "# Unbounded sequences of different types\n"
+    "bool[] bool_values\n"
+    "byte[] byte_values\n"
+    "char[] char_values\n"
+    "float32[] float32_values\n"
+    "float64[] float64_values\n"
+    "int8[] int8_values\n"
+    "uint8[] uint8_values\n"
+    "int16[] int16_values\n"
+    "uint16[] uint16_values\n"
+    "int32[] int32_values\n"
+    "uint32[] uint32_values\n"
+    "int64[] int64_values\n"
+    "uint64[] uint64_values\n"
+    "string[] string_values\n"
+    "BasicTypes[] basic_types_values\n"
+    "Constants[] constants_values\n"
+    "Defaults[] defaults_values\n"
+    "bool[] bool_values_default [false, true, false]\n"
+    "byte[] byte_values_default [0, 1, 255]\n"
+    "char[] char_values_default [0, 1, 127]\n"
+    "float32[] float32_values_default [1.125, 0.0, -1.125]\n"
+    "float64[] float64_values_default [3.1415, 0.0, -3.1415]\n"
+    "int8[] int8_values_default [0, 127, -128]\n"
+    "uint8[] uint8_values_default [0, 1, 255]\n"
+    "int16[] int16_values_default [0, 32767, -32768]\n"
+    "uint16[] uint16_values_default [0, 1, 65535]\n"
+    "int32[] int32_values_default [0, 2147483647, -2147483648]\n"
+    "uint32[] uint32_values_default [0, 1, 4294967295]\n"
+    "int64[] int64_values_default [0, 9223372036854775807, -9223372036854775808]\n"
+    "uint64[] uint64_values_default [0, 1, 18446744073709551615]\n"
+    "string[] string_values_default [\"\", \"max value\", \"min value\"]\n"
+    "# Regression test: check alignment of basic field after a sequence field is correct\n"
+    "int32 alignment_check" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/MultiNested", 9, kDescribedFields0 },
+  { "test_msgs/msg/MultiNested", 9, kDescribedFields0,
+    { "msg",
+    "# Mulitple levels of nested messages\n"
+    "Arrays[3] array_of_arrays\n"
+    "BoundedSequences[3] array_of_bounded_sequences\n"
+    "UnboundedSequences[3] array_of_unbounded_sequences\n"
+    "Arrays[<=3] bounded_sequence_of_arrays\n"
+    "BoundedSequences[<=3] bounded_sequence_of_bounded_sequences\n"
+    "UnboundedSequences[<=3] bounded_sequence_of_unbounded_sequences\n"
+    "Arrays[] unbounded_sequence_of_arrays\n"
+    "BoundedSequences[] unbounded_sequence_of_bounded_sequences\n"
+    "UnboundedSequences[] unbounded_sequence_of_unbounded_sequences" } },
   6,
   kReferencedDescriptions,
 };

@@ -26,7 +26,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "basic_types_value", 1, 0, 0, "test_msgs/msg/BasicTypes", "" },
 };
@@ -46,10 +47,26 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "uint64_value", 9, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "test_msgs/msg/BasicTypes", 13, kDescribedFields1 },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields1,
+    { "msg",
+    "bool bool_value\n"
+    "byte byte_value\n"
+    "char char_value\n"
+    "float32 float32_value\n"
+    "float64 float64_value\n"
+    "int8 int8_value\n"
+    "uint8 uint8_value\n"
+    "int16 int16_value\n"
+    "uint16 uint16_value\n"
+    "int32 int32_value\n"
+    "uint32 uint32_value\n"
+    "int64 int64_value\n"
+    "uint64 uint64_value" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/Nested", 1, kDescribedFields0 },
+  { "test_msgs/msg/Nested", 1, kDescribedFields0,
+    { "msg",
+    "BasicTypes basic_types_value" } },
   1,
   kReferencedDescriptions,
 };

@@ -219,7 +219,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bool_values", 63, 3, 0, "", "" },
   { "byte_values", 64, 3, 0, "", "" },
@@ -287,12 +288,56 @@ const wire::TypeDescriptionField kDescribedFields3[] = {
   { "uint64_value", 9, 0, 0, "", "50000000" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "test_msgs/msg/BasicTypes", 13, kDescribedFields1 },
-  { "test_msgs/msg/Constants", 1, kDescribedFields2 },
-  { "test_msgs/msg/Defaults", 13, kDescribedFields3 },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields1,
+    { "msg",
+    "bool bool_value\n"
+    "byte byte_value\n"
+    "char char_value\n"
+    "float32 float32_value\n"
+    "float64 float64_value\n"
+    "int8 int8_value\n"
+    "uint8 uint8_value\n"
+    "int16 int16_value\n"
+    "uint16 uint16_value\n"
+    "int32 int32_value\n"
+    "uint32 uint32_value\n"
+    "int64 int64_value\n"
+    "uint64 uint64_value" } },
+  { "test_msgs/msg/Constants", 1, kDescribedFields2,
+    { "msg",
+    "bool BOOL_CONST=true\n"
+    "byte BYTE_CONST=50\n"
+    "char CHAR_CONST=100\n"
+    "float32 FLOAT32_CONST=1.125\n"
+    "float64 FLOAT64_CONST=1.125\n"
+    "int8 INT8_CONST=-50\n"
+    "uint8 UINT8_CONST=200\n"
+    "int16 INT16_CONST=-1000\n"
+    "uint16 UINT16_CONST=2000\n"
+    "int32 INT32_CONST=-30000\n"
+    "uint32 UINT32_CONST=60000\n"
+    "int64 INT64_CONST=-40000000\n"
+    "uint64 UINT64_CONST=50000000" } },
+  { "test_msgs/msg/Defaults", 13, kDescribedFields3,
+    { "msg",
+    "bool bool_value true\n"
+    "byte byte_value 50\n"
+    "char char_value 100\n"
+    "float32 float32_value 1.125\n"
+    "float64 float64_value 1.125\n"
+    "int8 int8_value -50\n"
+    "uint8 uint8_value 200\n"
+    "int16 int16_value -1000\n"
+    "uint16 uint16_value 2000\n"
+    "int32 int32_value -30000\n"
+    "uint32 uint32_value 60000\n"
+    "int64 int64_value -40000000\n"
+    "uint64 uint64_value 50000000" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/srv/Arrays_Request", 31, kDescribedFields0 },
+  { "test_msgs/srv/Arrays_Request", 31, kDescribedFields0,
+    { "implicit",
+    "" } },
   3,
   kReferencedDescriptions,
 };

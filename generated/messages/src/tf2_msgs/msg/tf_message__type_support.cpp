@@ -29,7 +29,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "transforms", 145, 0, 0, "geometry_msgs/msg/TransformStamped", "" },
 };
@@ -62,15 +63,79 @@ const wire::TypeDescriptionField kDescribedFields6[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2 },
-  { "geometry_msgs/msg/Transform", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/TransformStamped", 3, kDescribedFields4 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields5 },
-  { "std_msgs/msg/Header", 2, kDescribedFields6 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Transform", 2, kDescribedFields3,
+    { "msg",
+    "# This represents the transform between two coordinate frames in free space.\n"
+    "\n"
+    "Vector3 translation\n"
+    "Quaternion rotation" } },
+  { "geometry_msgs/msg/TransformStamped", 3, kDescribedFields4,
+    { "msg",
+    "# This expresses a transform from coordinate frame header.frame_id\n"
+    "# to the coordinate frame child_frame_id at the time of header.stamp\n"
+    "#\n"
+    "# This message is mostly used by the\n"
+    "# <a href=\"https://docs.ros.org/en/rolling/p/tf2/\">tf2</a> package.\n"
+    "# See its documentation for more information.\n"
+    "#\n"
+    "# The child_frame_id is necessary in addition to the frame_id\n"
+    "# in the Header to communicate the full reference for the transform\n"
+    "# in a self contained message.\n"
+    "\n"
+    "# The frame id in the header is used as the reference frame of this transform.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# The frame id of the child frame to which this transform points.\n"
+    "string child_frame_id\n"
+    "\n"
+    "# Translation and rotation in 3-dimensions of child_frame_id from header.frame_id.\n"
+    "Transform transform" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields5,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields6,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "tf2_msgs/msg/TFMessage", 1, kDescribedFields0 },
+  { "tf2_msgs/msg/TFMessage", 1, kDescribedFields0,
+    { "msg",
+    "# A batch of transforms (/tf, /tf_static).\n"
+    "geometry_msgs/TransformStamped[] transforms" } },
   6,
   kReferencedDescriptions,
 };

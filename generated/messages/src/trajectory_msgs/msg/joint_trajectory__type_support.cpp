@@ -43,7 +43,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "joint_names", 161, 0, 0, "", "" },
@@ -69,13 +70,81 @@ const wire::TypeDescriptionField kDescribedFields4[] = {
   { "time_from_start", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "std_msgs/msg/Header", 2, kDescribedFields3 },
-  { "trajectory_msgs/msg/JointTrajectoryPoint", 5, kDescribedFields4 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields3,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
+  { "trajectory_msgs/msg/JointTrajectoryPoint", 5, kDescribedFields4,
+    { "msg",
+    "# Each trajectory point specifies either positions[, velocities[, accelerations]]\n"
+    "# or positions[, effort] for the trajectory to be executed.\n"
+    "# All specified values are in the same order as the joint names in JointTrajectory.msg.\n"
+    "\n"
+    "# Single DOF joint positions for each joint relative to their \"0\" position.\n"
+    "# The units depend on the specific joint type: radians for revolute or\n"
+    "# continuous joints, and meters for prismatic joints.\n"
+    "float64[] positions\n"
+    "\n"
+    "# The rate of change in position of each joint. Units are joint type dependent.\n"
+    "# Radians/second for revolute or continuous joints, and meters/second for\n"
+    "# prismatic joints.\n"
+    "float64[] velocities\n"
+    "\n"
+    "# Rate of change in velocity of each joint. Units are joint type dependent.\n"
+    "# Radians/second^2 for revolute or continuous joints, and meters/second^2 for\n"
+    "# prismatic joints.\n"
+    "float64[] accelerations\n"
+    "\n"
+    "# The torque or the force to be applied at each joint. For revolute/continuous\n"
+    "# joints effort denotes a torque in newton-meters. For prismatic joints, effort\n"
+    "# denotes a force in newtons.\n"
+    "float64[] effort\n"
+    "\n"
+    "# Desired time from the trajectory start to arrive at this trajectory point.\n"
+    "builtin_interfaces/Duration time_from_start" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "trajectory_msgs/msg/JointTrajectory", 3, kDescribedFields0 },
+  { "trajectory_msgs/msg/JointTrajectory", 3, kDescribedFields0,
+    { "msg",
+    "# The header is used to specify the coordinate frame and the reference time for\n"
+    "# the trajectory durations\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# The names of the active joints in each trajectory point. These names are\n"
+    "# ordered and must correspond to the values in each trajectory point.\n"
+    "string[] joint_names\n"
+    "\n"
+    "# Array of trajectory points, which describe the positions, velocities,\n"
+    "# accelerations and/or efforts of the joints at each time point.\n"
+    "JointTrajectoryPoint[] points" } },
   4,
   kReferencedDescriptions,
 };

@@ -50,7 +50,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "positions", 155, 0, 0, "", "" },
   { "velocities", 155, 0, 0, "", "" },
@@ -63,10 +64,47 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "nanosec", 7, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "trajectory_msgs/msg/JointTrajectoryPoint", 5, kDescribedFields0 },
+  { "trajectory_msgs/msg/JointTrajectoryPoint", 5, kDescribedFields0,
+    { "msg",
+    "# Each trajectory point specifies either positions[, velocities[, accelerations]]\n"
+    "# or positions[, effort] for the trajectory to be executed.\n"
+    "# All specified values are in the same order as the joint names in JointTrajectory.msg.\n"
+    "\n"
+    "# Single DOF joint positions for each joint relative to their \"0\" position.\n"
+    "# The units depend on the specific joint type: radians for revolute or\n"
+    "# continuous joints, and meters for prismatic joints.\n"
+    "float64[] positions\n"
+    "\n"
+    "# The rate of change in position of each joint. Units are joint type dependent.\n"
+    "# Radians/second for revolute or continuous joints, and meters/second for\n"
+    "# prismatic joints.\n"
+    "float64[] velocities\n"
+    "\n"
+    "# Rate of change in velocity of each joint. Units are joint type dependent.\n"
+    "# Radians/second^2 for revolute or continuous joints, and meters/second^2 for\n"
+    "# prismatic joints.\n"
+    "float64[] accelerations\n"
+    "\n"
+    "# The torque or the force to be applied at each joint. For revolute/continuous\n"
+    "# joints effort denotes a torque in newton-meters. For prismatic joints, effort\n"
+    "# denotes a force in newtons.\n"
+    "float64[] effort\n"
+    "\n"
+    "# Desired time from the trajectory start to arrive at this trajectory point.\n"
+    "builtin_interfaces/Duration time_from_start" } },
   1,
   kReferencedDescriptions,
 };

@@ -43,7 +43,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "joint_names", 161, 0, 0, "", "" },
@@ -87,17 +88,96 @@ const wire::TypeDescriptionField kDescribedFields8[] = {
   { "time_from_start", 1, 0, 0, "builtin_interfaces/msg/Duration", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields3 },
-  { "geometry_msgs/msg/Transform", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/Twist", 2, kDescribedFields5 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields6 },
-  { "std_msgs/msg/Header", 2, kDescribedFields7 },
-  { "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint", 4, kDescribedFields8 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields3,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Transform", 2, kDescribedFields4,
+    { "msg",
+    "# This represents the transform between two coordinate frames in free space.\n"
+    "\n"
+    "Vector3 translation\n"
+    "Quaternion rotation" } },
+  { "geometry_msgs/msg/Twist", 2, kDescribedFields5,
+    { "msg",
+    "# This expresses velocity in free space broken into its linear and angular parts.\n"
+    "\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields6,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields7,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
+  { "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint", 4, kDescribedFields8,
+    { "msg",
+    "# Each multi-dof joint can specify a transform (up to 6 DOF).\n"
+    "geometry_msgs/Transform[] transforms\n"
+    "\n"
+    "# There can be a velocity specified for the origin of the joint.\n"
+    "geometry_msgs/Twist[] velocities\n"
+    "\n"
+    "# There can be an acceleration specified for the origin of the joint.\n"
+    "geometry_msgs/Twist[] accelerations\n"
+    "\n"
+    "# Desired time from the trajectory start to arrive at this trajectory point.\n"
+    "builtin_interfaces/Duration time_from_start" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "trajectory_msgs/msg/MultiDOFJointTrajectory", 3, kDescribedFields0 },
+  { "trajectory_msgs/msg/MultiDOFJointTrajectory", 3, kDescribedFields0,
+    { "msg",
+    "# The header is used to specify the coordinate frame and the reference time for the trajectory durations\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# A representation of a multi-dof joint trajectory (each point is a transformation)\n"
+    "# Each point along the trajectory will include an array of positions/velocities/accelerations\n"
+    "# that has the same length as the array of joint names, and has the same order of joints as \n"
+    "# the joint names array.\n"
+    "\n"
+    "string[] joint_names\n"
+    "MultiDOFJointTrajectoryPoint[] points" } },
   8,
   kReferencedDescriptions,
 };

@@ -54,7 +54,8 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "transforms", 145, 0, 0, "geometry_msgs/msg/Transform", "" },
   { "velocities", 145, 0, 0, "geometry_msgs/msg/Twist", "" },
@@ -85,14 +86,63 @@ const wire::TypeDescriptionField kDescribedFields5[] = {
   { "z", 11, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2 },
-  { "geometry_msgs/msg/Transform", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/Twist", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields5 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields2,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Transform", 2, kDescribedFields3,
+    { "msg",
+    "# This represents the transform between two coordinate frames in free space.\n"
+    "\n"
+    "Vector3 translation\n"
+    "Quaternion rotation" } },
+  { "geometry_msgs/msg/Twist", 2, kDescribedFields4,
+    { "msg",
+    "# This expresses velocity in free space broken into its linear and angular parts.\n"
+    "\n"
+    "Vector3  linear\n"
+    "Vector3  angular" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields5,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint", 4, kDescribedFields0 },
+  { "trajectory_msgs/msg/MultiDOFJointTrajectoryPoint", 4, kDescribedFields0,
+    { "msg",
+    "# Each multi-dof joint can specify a transform (up to 6 DOF).\n"
+    "geometry_msgs/Transform[] transforms\n"
+    "\n"
+    "# There can be a velocity specified for the origin of the joint.\n"
+    "geometry_msgs/Twist[] velocities\n"
+    "\n"
+    "# There can be an acceleration specified for the origin of the joint.\n"
+    "geometry_msgs/Twist[] accelerations\n"
+    "\n"
+    "# Desired time from the trajectory start to arrive at this trajectory point.\n"
+    "builtin_interfaces/Duration time_from_start" } },
   5,
   kReferencedDescriptions,
 };

@@ -27,14 +27,17 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type_name", 17, 0, 0, "", "" },
   { "type_hash", 17, 0, 0, "", "" },
   { "include_type_sources", 15, 0, 0, "", "True" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "type_description_interfaces/srv/GetTypeDescription_Request", 3, kDescribedFields0 },
+  { "type_description_interfaces/srv/GetTypeDescription_Request", 3, kDescribedFields0,
+    { "implicit",
+    "" } },
   0,
   nullptr,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "type_description_interfaces/srv/GetTypeDescription_Request", "" },
   { "response_message", 1, 0, 0, "type_description_interfaces/srv/GetTypeDescription_Response", "" },
@@ -82,20 +83,295 @@ const wire::TypeDescriptionField kDescribedFields11[] = {
   { "extra_information", 145, 0, 0, "type_description_interfaces/msg/KeyValue", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2 },
-  { "type_description_interfaces/msg/Field", 3, kDescribedFields3 },
-  { "type_description_interfaces/msg/FieldType", 4, kDescribedFields4 },
-  { "type_description_interfaces/msg/IndividualTypeDescription", 2, kDescribedFields5 },
-  { "type_description_interfaces/msg/KeyValue", 2, kDescribedFields6 },
-  { "type_description_interfaces/msg/TypeDescription", 2, kDescribedFields7 },
-  { "type_description_interfaces/msg/TypeSource", 3, kDescribedFields8 },
-  { "type_description_interfaces/srv/GetTypeDescription_Event", 3, kDescribedFields9 },
-  { "type_description_interfaces/srv/GetTypeDescription_Request", 3, kDescribedFields10 },
-  { "type_description_interfaces/srv/GetTypeDescription_Response", 5, kDescribedFields11 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields2,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "type_description_interfaces/msg/Field", 3, kDescribedFields3,
+    { "msg",
+    "# Represents a single field in a type.\n"
+    "\n"
+    "# Name of the field.\n"
+    "string name\n"
+    "# Type of the field, including details about the type like length, nested name, etc.\n"
+    "FieldType type\n"
+    "# Literal default value of the field as a string, as it appeared in the original\n"
+    "# message description file, whether that be .msg/.srv/.action or .idl.\n"
+    "string default_value" } },
+  { "type_description_interfaces/msg/FieldType", 4, kDescribedFields4,
+    { "msg",
+    "# Represents the type of a field and related meta-data.\n"
+    "\n"
+    "# A constant for each type supported according to:\n"
+    "#   http://design.ros2.org/articles/legacy_interface_definition.html\n"
+    "# and:\n"
+    "#   http://design.ros2.org/articles/idl_interface_definition.html\n"
+    "# Order is loosely coupled to the order of appearance in the IDL 4.2 spec:\n"
+    "#  https://www.omg.org/spec/IDL/4.2\n"
+    "\n"
+    "# Layout of constants across the 0-255 decimal values in the uint8:\n"
+    "#\n"
+    "# - 000    : Reserved for \"not set\"\n"
+    "# - 001-048: Primitive types, strings, and reserved space for future primitive types\n"
+    "# - 049-096: Fixed sized array of primitive and string types\n"
+    "# - 097-144: Bounded Sequences of primitive and string types\n"
+    "# - 145-192: Unbounded Sequences of primitive and string types\n"
+    "# - 193-255: Reserved space for future array/sequence-like types\n"
+    "\n"
+    "uint8 FIELD_TYPE_NOT_SET = 0\n"
+    "\n"
+    "# Nested type defined in other .msg/.idl files.\n"
+    "uint8 FIELD_TYPE_NESTED_TYPE = 1\n"
+    "\n"
+    "# Integer Types\n"
+    "uint8 FIELD_TYPE_INT8 = 2\n"
+    "uint8 FIELD_TYPE_UINT8 = 3\n"
+    "uint8 FIELD_TYPE_INT16 = 4\n"
+    "uint8 FIELD_TYPE_UINT16 = 5\n"
+    "uint8 FIELD_TYPE_INT32 = 6\n"
+    "uint8 FIELD_TYPE_UINT32 = 7\n"
+    "uint8 FIELD_TYPE_INT64 = 8\n"
+    "uint8 FIELD_TYPE_UINT64 = 9\n"
+    "\n"
+    "# Floating-Point Types\n"
+    "uint8 FIELD_TYPE_FLOAT = 10\n"
+    "uint8 FIELD_TYPE_DOUBLE = 11\n"
+    "uint8 FIELD_TYPE_LONG_DOUBLE = 12\n"
+    "\n"
+    "# Char and WChar Types\n"
+    "uint8 FIELD_TYPE_CHAR = 13\n"
+    "uint8 FIELD_TYPE_WCHAR = 14\n"
+    "\n"
+    "# Boolean Type\n"
+    "uint8 FIELD_TYPE_BOOLEAN = 15\n"
+    "\n"
+    "# Byte/Octet Type\n"
+    "uint8 FIELD_TYPE_BYTE = 16\n"
+    "\n"
+    "# String Types\n"
+    "uint8 FIELD_TYPE_STRING = 17\n"
+    "uint8 FIELD_TYPE_WSTRING = 18\n"
+    "\n"
+    "# Fixed String Types\n"
+    "uint8 FIELD_TYPE_FIXED_STRING = 19\n"
+    "uint8 FIELD_TYPE_FIXED_WSTRING = 20\n"
+    "\n"
+    "# Bounded String Types\n"
+    "uint8 FIELD_TYPE_BOUNDED_STRING = 21\n"
+    "uint8 FIELD_TYPE_BOUNDED_WSTRING = 22\n"
+    "\n"
+    "# Fixed Sized Array Types\n"
+    "uint8 FIELD_TYPE_NESTED_TYPE_ARRAY = 49\n"
+    "uint8 FIELD_TYPE_INT8_ARRAY = 50\n"
+    "uint8 FIELD_TYPE_UINT8_ARRAY = 51\n"
+    "uint8 FIELD_TYPE_INT16_ARRAY = 52\n"
+    "uint8 FIELD_TYPE_UINT16_ARRAY = 53\n"
+    "uint8 FIELD_TYPE_INT32_ARRAY = 54\n"
+    "uint8 FIELD_TYPE_UINT32_ARRAY = 55\n"
+    "uint8 FIELD_TYPE_INT64_ARRAY = 56\n"
+    "uint8 FIELD_TYPE_UINT64_ARRAY = 57\n"
+    "uint8 FIELD_TYPE_FLOAT_ARRAY = 58\n"
+    "uint8 FIELD_TYPE_DOUBLE_ARRAY = 59\n"
+    "uint8 FIELD_TYPE_LONG_DOUBLE_ARRAY = 60\n"
+    "uint8 FIELD_TYPE_CHAR_ARRAY = 61\n"
+    "uint8 FIELD_TYPE_WCHAR_ARRAY = 62\n"
+    "uint8 FIELD_TYPE_BOOLEAN_ARRAY = 63\n"
+    "uint8 FIELD_TYPE_BYTE_ARRAY = 64\n"
+    "uint8 FIELD_TYPE_STRING_ARRAY = 65\n"
+    "uint8 FIELD_TYPE_WSTRING_ARRAY = 66\n"
+    "uint8 FIELD_TYPE_FIXED_STRING_ARRAY = 67\n"
+    "uint8 FIELD_TYPE_FIXED_WSTRING_ARRAY = 68\n"
+    "uint8 FIELD_TYPE_BOUNDED_STRING_ARRAY = 69\n"
+    "uint8 FIELD_TYPE_BOUNDED_WSTRING_ARRAY = 70\n"
+    "\n"
+    "# Bounded Sequence Types\n"
+    "uint8 FIELD_TYPE_NESTED_TYPE_BOUNDED_SEQUENCE = 97\n"
+    "uint8 FIELD_TYPE_INT8_BOUNDED_SEQUENCE = 98\n"
+    "uint8 FIELD_TYPE_UINT8_BOUNDED_SEQUENCE = 99\n"
+    "uint8 FIELD_TYPE_INT16_BOUNDED_SEQUENCE = 100\n"
+    "uint8 FIELD_TYPE_UINT16_BOUNDED_SEQUENCE = 101\n"
+    "uint8 FIELD_TYPE_INT32_BOUNDED_SEQUENCE = 102\n"
+    "uint8 FIELD_TYPE_UINT32_BOUNDED_SEQUENCE = 103\n"
+    "uint8 FIELD_TYPE_INT64_BOUNDED_SEQUENCE = 104\n"
+    "uint8 FIELD_TYPE_UINT64_BOUNDED_SEQUENCE = 105\n"
+    "uint8 FIELD_TYPE_FLOAT_BOUNDED_SEQUENCE = 106\n"
+    "uint8 FIELD_TYPE_DOUBLE_BOUNDED_SEQUENCE = 107\n"
+    "uint8 FIELD_TYPE_LONG_DOUBLE_BOUNDED_SEQUENCE = 108\n"
+    "uint8 FIELD_TYPE_CHAR_BOUNDED_SEQUENCE = 109\n"
+    "uint8 FIELD_TYPE_WCHAR_BOUNDED_SEQUENCE = 110\n"
+    "uint8 FIELD_TYPE_BOOLEAN_BOUNDED_SEQUENCE = 111\n"
+    "uint8 FIELD_TYPE_BYTE_BOUNDED_SEQUENCE = 112\n"
+    "uint8 FIELD_TYPE_STRING_BOUNDED_SEQUENCE = 113\n"
+    "uint8 FIELD_TYPE_WSTRING_BOUNDED_SEQUENCE = 114\n"
+    "uint8 FIELD_TYPE_FIXED_STRING_BOUNDED_SEQUENCE = 115\n"
+    "uint8 FIELD_TYPE_FIXED_WSTRING_BOUNDED_SEQUENCE = 116\n"
+    "uint8 FIELD_TYPE_BOUNDED_STRING_BOUNDED_SEQUENCE = 117\n"
+    "uint8 FIELD_TYPE_BOUNDED_WSTRING_BOUNDED_SEQUENCE = 118\n"
+    "\n"
+    "# Unbounded Sequence Types\n"
+    "uint8 FIELD_TYPE_NESTED_TYPE_UNBOUNDED_SEQUENCE = 145\n"
+    "uint8 FIELD_TYPE_INT8_UNBOUNDED_SEQUENCE = 146\n"
+    "uint8 FIELD_TYPE_UINT8_UNBOUNDED_SEQUENCE = 147\n"
+    "uint8 FIELD_TYPE_INT16_UNBOUNDED_SEQUENCE = 148\n"
+    "uint8 FIELD_TYPE_UINT16_UNBOUNDED_SEQUENCE = 149\n"
+    "uint8 FIELD_TYPE_INT32_UNBOUNDED_SEQUENCE = 150\n"
+    "uint8 FIELD_TYPE_UINT32_UNBOUNDED_SEQUENCE = 151\n"
+    "uint8 FIELD_TYPE_INT64_UNBOUNDED_SEQUENCE = 152\n"
+    "uint8 FIELD_TYPE_UINT64_UNBOUNDED_SEQUENCE = 153\n"
+    "uint8 FIELD_TYPE_FLOAT_UNBOUNDED_SEQUENCE = 154\n"
+    "uint8 FIELD_TYPE_DOUBLE_UNBOUNDED_SEQUENCE = 155\n"
+    "uint8 FIELD_TYPE_LONG_DOUBLE_UNBOUNDED_SEQUENCE = 156\n"
+    "uint8 FIELD_TYPE_CHAR_UNBOUNDED_SEQUENCE = 157\n"
+    "uint8 FIELD_TYPE_WCHAR_UNBOUNDED_SEQUENCE = 158\n"
+    "uint8 FIELD_TYPE_BOOLEAN_UNBOUNDED_SEQUENCE = 159\n"
+    "uint8 FIELD_TYPE_BYTE_UNBOUNDED_SEQUENCE = 160\n"
+    "uint8 FIELD_TYPE_STRING_UNBOUNDED_SEQUENCE = 161\n"
+    "uint8 FIELD_TYPE_WSTRING_UNBOUNDED_SEQUENCE = 162\n"
+    "uint8 FIELD_TYPE_FIXED_STRING_UNBOUNDED_SEQUENCE = 163\n"
+    "uint8 FIELD_TYPE_FIXED_WSTRING_UNBOUNDED_SEQUENCE = 164\n"
+    "uint8 FIELD_TYPE_BOUNDED_STRING_UNBOUNDED_SEQUENCE = 165\n"
+    "uint8 FIELD_TYPE_BOUNDED_WSTRING_UNBOUNDED_SEQUENCE = 166\n"
+    "\n"
+    "# Identifying number for the type of the field, using one of the above constants.\n"
+    "uint8 type_id 0\n"
+    "\n"
+    "# Only used when the type is an array or a bounded sequence.\n"
+    "# In the case of an array, this is the fixed capacity of the array.\n"
+    "# In the case of a bounded sequence, this is the maximum capacity of the sequence.\n"
+    "# In all other cases this field is unused.\n"
+    "uint64 capacity\n"
+    "\n"
+    "# Only used when the type is a fixed or bounded string/wstring, or a array/sequence of those.\n"
+    "# In the case of a fixed string/wstring, it is the fixed length of the string.\n"
+    "# In the case of a bounded string/wstring, it is the maximum capacity of the string.\n"
+    "# In the case of an array/sequence of fixed string/wstring, it is the fixed length of the strings.\n"
+    "# In the case of an array/sequence of bounded string/wstring, it is the maximum capacity of the strings.\n"
+    "# It is not currently possible to have different string capacities per element in the array/sequence.\n"
+    "uint64 string_capacity\n"
+    "\n"
+    "# Only used when the type is a nested type or array/sequence of nested types.\n"
+    "# This is limited to 255 characters.\n"
+    "# TODO(wjwwood): this 255 character limit was chosen due to this being the limit\n"
+    "#   for DDSI-RTPS based middlewares, which is the most commonly used right now.\n"
+    "#   We lack a ROS 2 specific limit in our design documents, but we should update\n"
+    "#   this and/or link to the design doc when that is available.\n"
+    "string<=255 nested_type_name" } },
+  { "type_description_interfaces/msg/IndividualTypeDescription", 2, kDescribedFields5,
+    { "msg",
+    "# Represents a single type, without the types it references, if any.\n"
+    "\n"
+    "# Name of the type.\n"
+    "# This is limited to 255 characters.\n"
+    "# TODO(wjwwood): this 255 character limit was chosen due to this being the limit\n"
+    "#   for DDSI-RTPS based middlewares, which is the most commonly used right now.\n"
+    "#   We lack a ROS 2 specific limit in our design documents, but we should update\n"
+    "#   this and/or link to the design doc when that is available.\n"
+    "string<=255 type_name\n"
+    "# Fields of the type.\n"
+    "Field[] fields" } },
+  { "type_description_interfaces/msg/KeyValue", 2, kDescribedFields6,
+    { "msg",
+    "# Represents an arbitrary key-value pair for application-specific information.\n"
+    "\n"
+    "string key\n"
+    "string value" } },
+  { "type_description_interfaces/msg/TypeDescription", 2, kDescribedFields7,
+    { "msg",
+    "# Represents a complete type description, including the type itself as well as the types it references.\n"
+    "\n"
+    "# Description of the type.\n"
+    "IndividualTypeDescription type_description\n"
+    "# Descriptions of all referenced types, recursively.\n"
+    "IndividualTypeDescription[] referenced_type_descriptions" } },
+  { "type_description_interfaces/msg/TypeSource", 3, kDescribedFields8,
+    { "msg",
+    "# Represents the original source of a ROS 2 interface definition.\n"
+    "\n"
+    "# ROS interface type name, in PACKAGE/NAMESPACE/TYPENAME format.\n"
+    "string type_name\n"
+    "\n"
+    "# The type of the original source file, typically matching the file extension.\n"
+    "# Well-known encodings: \"idl\", \"msg\", \"srv\", \"action\", \"dynamic\", \"implicit\".\n"
+    "# \"dynamic\" specifies a type created programmatically by a user, thus having no source.\n"
+    "# \"implicit\" specifies a type created automatically as a subtype of a\n"
+    "# complex type (service or action) - such as the request message for a service.\n"
+    "# Implicit types will have no contents, the full source will be available on the parent srv/action.\n"
+    "string encoding\n"
+    "\n"
+    "# Dumped contents of the interface definition source file.\n"
+    "# If `encoding` is \"dynamic\" or \"implicit\", this field will be empty.\n"
+    "string raw_file_contents" } },
+  { "type_description_interfaces/srv/GetTypeDescription_Event", 3, kDescribedFields9,
+    { "implicit",
+    "" } },
+  { "type_description_interfaces/srv/GetTypeDescription_Request", 3, kDescribedFields10,
+    { "implicit",
+    "" } },
+  { "type_description_interfaces/srv/GetTypeDescription_Response", 5, kDescribedFields11,
+    { "implicit",
+    "" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "type_description_interfaces/srv/GetTypeDescription", 3, kDescribedFields0 },
+  { "type_description_interfaces/srv/GetTypeDescription", 3, kDescribedFields0,
+    { "srv",
+    "# ROS interface type name, in PACKAGE/NAMESPACE/TYPENAME format.\n"
+    "string type_name\n"
+    "\n"
+    "# REP-2011 RIHS hash string.\n"
+    "string type_hash\n"
+    "\n"
+    "# Whether to return the original idl/msg/etc. source file(s) in the response.\n"
+    "bool include_type_sources true\n"
+    "---\n"
+    "# True if the type description information is available and populated in the response.\n"
+    "# If false, all other fields except `failure_reason` are considered undefined.\n"
+    "bool successful\n"
+    "# If `successful` is false, contains a reason for failure.\n"
+    "# If `successful` is true, this is left empty.\n"
+    "string failure_reason\n"
+    "\n"
+    "# The parsed type description which can be used programmatically.\n"
+    "TypeDescription type_description\n"
+    "\n"
+    "# A list containing the interface definition source text of the requested type,\n"
+    "# plus all types it recursively depends on.\n"
+    "# Each source text is a copy of the original contents of the\n"
+    "# .msg, .srv, .action, .idl, or other file if it exists, including comments and whitespace.\n"
+    "# Sources can be matched with IndividualTypeDescriptions by their `type_name`.\n"
+    "# The `encoding` field of each entry informs how to interpret its contents.\n"
+    "TypeSource[] type_sources\n"
+    "\n"
+    "# Key-value pairs of extra information.\n"
+    "KeyValue[] extra_information" } },
   11,
   kReferencedDescriptions,
 };

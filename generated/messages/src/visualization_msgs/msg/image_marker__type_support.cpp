@@ -93,7 +93,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "ns", 17, 0, 0, "", "" },
@@ -133,14 +134,90 @@ const wire::TypeDescriptionField kDescribedFields5[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields3 },
-  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields4 },
-  { "std_msgs/msg/Header", 2, kDescribedFields5 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields3,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields4,
+    { "msg",
+    "float32 r\n"
+    "float32 g\n"
+    "float32 b\n"
+    "float32 a" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields5,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "visualization_msgs/msg/ImageMarker", 13, kDescribedFields0 },
+  { "visualization_msgs/msg/ImageMarker", 13, kDescribedFields0,
+    { "msg",
+    "int32 CIRCLE=0\n"
+    "int32 LINE_STRIP=1\n"
+    "int32 LINE_LIST=2\n"
+    "int32 POLYGON=3\n"
+    "int32 POINTS=4\n"
+    "\n"
+    "int32 ADD=0\n"
+    "int32 REMOVE=1\n"
+    "\n"
+    "std_msgs/Header header\n"
+    "# Namespace which is used with the id to form a unique id.\n"
+    "string ns\n"
+    "# Unique id within the namespace.\n"
+    "int32 id\n"
+    "# One of the above types, e.g. CIRCLE, LINE_STRIP, etc.\n"
+    "int32 type\n"
+    "# Either ADD or REMOVE.\n"
+    "int32 action\n"
+    "# Two-dimensional coordinate position, in pixel-coordinates.\n"
+    "geometry_msgs/Point position\n"
+    "# The scale of the object, e.g. the diameter for a CIRCLE.\n"
+    "float32 scale\n"
+    "# The outline color of the marker.\n"
+    "std_msgs/ColorRGBA outline_color\n"
+    "# Whether or not to fill in the shape with color.\n"
+    "uint8 filled\n"
+    "# Fill color; in the range: [0.0-1.0]\n"
+    "std_msgs/ColorRGBA fill_color\n"
+    "# How long the object should last before being automatically deleted.\n"
+    "# 0 indicates forever.\n"
+    "builtin_interfaces/Duration lifetime\n"
+    "\n"
+    "# Coordinates in 2D in pixel coords. Used for LINE_STRIP, LINE_LIST, POINTS, etc.\n"
+    "geometry_msgs/Point[] points\n"
+    "# The color for each line, point, etc. in the points field.\n"
+    "std_msgs/ColorRGBA[] outline_colors" } },
   5,
   kReferencedDescriptions,
 };

@@ -69,7 +69,8 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "header", 1, 0, 0, "std_msgs/msg/Header", "" },
   { "client_id", 17, 0, 0, "", "" },
@@ -105,14 +106,93 @@ const wire::TypeDescriptionField kDescribedFields5[] = {
   { "frame_id", 17, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields1 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields2 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields3 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields4 },
-  { "std_msgs/msg/Header", 2, kDescribedFields5 },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields1,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields2,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields3,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields4,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields5,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "visualization_msgs/msg/InteractiveMarkerFeedback", 9, kDescribedFields0 },
+  { "visualization_msgs/msg/InteractiveMarkerFeedback", 9, kDescribedFields0,
+    { "msg",
+    "# Time/frame info.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Identifying string. Must be unique in the topic namespace.\n"
+    "string client_id\n"
+    "\n"
+    "# Feedback message sent back from the GUI, e.g.\n"
+    "# when the status of an interactive marker was modified by the user.\n"
+    "\n"
+    "# Specifies which interactive marker and control this message refers to\n"
+    "string marker_name\n"
+    "string control_name\n"
+    "\n"
+    "# Type of the event\n"
+    "# KEEP_ALIVE: sent while dragging to keep up control of the marker\n"
+    "# MENU_SELECT: a menu entry has been selected\n"
+    "# BUTTON_CLICK: a button control has been clicked\n"
+    "# POSE_UPDATE: the pose has been changed using one of the controls\n"
+    "uint8 KEEP_ALIVE = 0\n"
+    "uint8 POSE_UPDATE = 1\n"
+    "uint8 MENU_SELECT = 2\n"
+    "uint8 BUTTON_CLICK = 3\n"
+    "\n"
+    "uint8 MOUSE_DOWN = 4\n"
+    "uint8 MOUSE_UP = 5\n"
+    "\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Current pose of the marker\n"
+    "# Note: Has to be valid for all feedback types.\n"
+    "geometry_msgs/Pose pose\n"
+    "\n"
+    "# Contains the ID of the selected menu entry\n"
+    "# Only valid for MENU_SELECT events.\n"
+    "uint32 menu_entry_id\n"
+    "\n"
+    "# If event_type is BUTTON_CLICK, MOUSE_DOWN, or MOUSE_UP, mouse_point\n"
+    "# may contain the 3 dimensional position of the event on the\n"
+    "# control.  If it does, mouse_point_valid will be true.  mouse_point\n"
+    "# will be relative to the frame listed in the header.\n"
+    "geometry_msgs/Point mouse_point\n"
+    "bool mouse_point_valid" } },
   5,
   kReferencedDescriptions,
 };

@@ -20,7 +20,8 @@ const wire::MessageTypeSupport* response_type()
 }
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "request_message", 1, 0, 0, "visualization_msgs/srv/GetInteractiveMarkers_Request", "" },
   { "response_message", 1, 0, 0, "visualization_msgs/srv/GetInteractiveMarkers_Response", "" },
@@ -143,28 +144,425 @@ const wire::TypeDescriptionField kDescribedFields19[] = {
   { "markers", 145, 0, 0, "visualization_msgs/msg/InteractiveMarker", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1 },
-  { "builtin_interfaces/msg/Time", 2, kDescribedFields2 },
-  { "geometry_msgs/msg/Point", 3, kDescribedFields3 },
-  { "geometry_msgs/msg/Pose", 2, kDescribedFields4 },
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5 },
-  { "geometry_msgs/msg/Vector3", 3, kDescribedFields6 },
-  { "sensor_msgs/msg/CompressedImage", 3, kDescribedFields7 },
-  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8 },
-  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields9 },
-  { "std_msgs/msg/Header", 2, kDescribedFields10 },
-  { "visualization_msgs/msg/InteractiveMarker", 7, kDescribedFields11 },
-  { "visualization_msgs/msg/InteractiveMarkerControl", 8, kDescribedFields12 },
-  { "visualization_msgs/msg/Marker", 19, kDescribedFields13 },
-  { "visualization_msgs/msg/MenuEntry", 5, kDescribedFields14 },
-  { "visualization_msgs/msg/MeshFile", 2, kDescribedFields15 },
-  { "visualization_msgs/msg/UVCoordinate", 2, kDescribedFields16 },
-  { "visualization_msgs/srv/GetInteractiveMarkers_Event", 3, kDescribedFields17 },
-  { "visualization_msgs/srv/GetInteractiveMarkers_Request", 1, kDescribedFields18 },
-  { "visualization_msgs/srv/GetInteractiveMarkers_Response", 2, kDescribedFields19 },
+  { "builtin_interfaces/msg/Duration", 2, kDescribedFields1,
+    { "msg",
+    "# Duration defines a period between two time points.\n"
+    "# Messages of this datatype are of ROS Time following this design:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# Seconds component, range is valid over any possible int32 value.\n"
+    "int32 sec\n"
+    "\n"
+    "# Nanoseconds component in the range of [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "builtin_interfaces/msg/Time", 2, kDescribedFields2,
+    { "msg",
+    "# This message communicates ROS Time defined here:\n"
+    "# https://design.ros2.org/articles/clock_and_time.html\n"
+    "\n"
+    "# The seconds component, valid over all int32 values.\n"
+    "int32 sec\n"
+    "\n"
+    "# The nanoseconds component, valid in the range [0, 1e9).\n"
+    "uint32 nanosec" } },
+  { "geometry_msgs/msg/Point", 3, kDescribedFields3,
+    { "msg",
+    "# This contains the position of a point in free space\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "geometry_msgs/msg/Pose", 2, kDescribedFields4,
+    { "msg",
+    "# A representation of pose in free space, composed of position and orientation.\n"
+    "\n"
+    "Point position\n"
+    "Quaternion orientation" } },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields5,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1" } },
+  { "geometry_msgs/msg/Vector3", 3, kDescribedFields6,
+    { "msg",
+    "# This represents a vector in free space.\n"
+    "\n"
+    "# This is semantically different than a point.\n"
+    "# A vector is always anchored at the origin.\n"
+    "# When a transform is applied to a vector, only the rotational component is applied.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z" } },
+  { "sensor_msgs/msg/CompressedImage", 3, kDescribedFields7,
+    { "msg",
+    "# This message contains a compressed image.\n"
+    "\n"
+    "std_msgs/Header header # Header timestamp should be acquisition time of image\n"
+    "                             # Header frame_id should be optical frame of camera\n"
+    "                             # origin of frame should be optical center of cameara\n"
+    "                             # +x should point to the right in the image\n"
+    "                             # +y should point down in the image\n"
+    "                             # +z should point into to plane of the image\n"
+    "\n"
+    "string format                # Specifies the format of the data\n"
+    "                             # Acceptable values differ by the image transport used:\n"
+    "                             # - compressed_image_transport:\n"
+    "                             #     ORIG_PIXFMT; CODEC compressed [COMPRESSED_PIXFMT]\n"
+    "                             #   where:\n"
+    "                             #   - ORIG_PIXFMT is pixel format of the raw image, i.e.\n"
+    "                             #     the content of sensor_msgs/Image/encoding with\n"
+    "                             #     values from include/sensor_msgs/image_encodings.h\n"
+    "                             #   - CODEC is one of [jpeg, png, tiff]\n"
+    "                             #   - COMPRESSED_PIXFMT is only appended for color images\n"
+    "                             #     and is the pixel format used by the compression\n"
+    "                             #     algorithm. Valid values for jpeg encoding are:\n"
+    "                             #     [bgr8, rgb8]. Valid values for png encoding are:\n"
+    "                             #     [bgr8, rgb8, bgr16, rgb16].\n"
+    "                             #   If the field is empty or does not correspond to the\n"
+    "                             #   above pattern, the image is treated as bgr8 or mono8\n"
+    "                             #   jpeg image (depending on the number of channels).\n"
+    "                             # - compressed_depth_image_transport:\n"
+    "                             #     ORIG_PIXFMT; compressedDepth CODEC\n"
+    "                             #   where:\n"
+    "                             #   - ORIG_PIXFMT is pixel format of the raw image, i.e.\n"
+    "                             #     the content of sensor_msgs/Image/encoding with\n"
+    "                             #     values from include/sensor_msgs/image_encodings.h\n"
+    "                             #     It is usually one of [16UC1, 32FC1].\n"
+    "                             #   - CODEC is one of [png, rvl]\n"
+    "                             #   If the field is empty or does not correspond to the\n"
+    "                             #   above pattern, the image is treated as png image.\n"
+    "                             # - Other image transports can store whatever values they\n"
+    "                             #   need for successful decoding of the image. Refer to\n"
+    "                             #   documentation of the other transports for details.\n"
+    "\n"
+    "uint8[] data                 # Compressed image buffer" } },
+  { "service_msgs/msg/ServiceEventInfo", 4, kDescribedFields8,
+    { "msg",
+    "uint8 REQUEST_SENT = 0\n"
+    "uint8 REQUEST_RECEIVED = 1\n"
+    "uint8 RESPONSE_SENT = 2\n"
+    "uint8 RESPONSE_RECEIVED = 3\n"
+    "\n"
+    "# The type of event this message represents\n"
+    "uint8 event_type\n"
+    "\n"
+    "# Timestamp for when the event occurred (sent or received time)\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Unique identifier for the client that sent the service request\n"
+    "# Note, this is only unique for the current session.\n"
+    "# The size here has to match the size of rmw_dds_common/msg/Gid,\n"
+    "# but unfortunately we cannot use that message directly due to a\n"
+    "# circular dependency.\n"
+    "char[16] client_gid\n"
+    "\n"
+    "# Sequence number for the request\n"
+    "# Combined with the client ID, this creates a unique ID for the service transaction\n"
+    "int64 sequence_number" } },
+  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields9,
+    { "msg",
+    "float32 r\n"
+    "float32 g\n"
+    "float32 b\n"
+    "float32 a" } },
+  { "std_msgs/msg/Header", 2, kDescribedFields10,
+    { "msg",
+    "# Standard metadata for higher-level stamped data types.\n"
+    "# This is generally used to communicate timestamped data\n"
+    "# in a particular coordinate frame.\n"
+    "\n"
+    "# Two-integer timestamp that is expressed as seconds and nanoseconds.\n"
+    "builtin_interfaces/Time stamp\n"
+    "\n"
+    "# Transform frame with which this data is associated.\n"
+    "string frame_id" } },
+  { "visualization_msgs/msg/InteractiveMarker", 7, kDescribedFields11,
+    { "msg",
+    "# Time/frame info.\n"
+    "# If header.time is set to 0, the marker will be retransformed into\n"
+    "# its frame on each timestep. You will receive the pose feedback\n"
+    "# in the same frame.\n"
+    "# Otherwise, you might receive feedback in a different frame.\n"
+    "# For rviz, this will be the current 'fixed frame' set by the user.\n"
+    "std_msgs/Header header\n"
+    "\n"
+    "# Initial pose. Also, defines the pivot point for rotations.\n"
+    "geometry_msgs/Pose pose\n"
+    "\n"
+    "# Identifying string. Must be globally unique in\n"
+    "# the topic that this message is sent through.\n"
+    "string name\n"
+    "\n"
+    "# Short description (< 40 characters).\n"
+    "string description\n"
+    "\n"
+    "# Scale to be used for default controls (default=1).\n"
+    "float32 scale\n"
+    "\n"
+    "# All menu and submenu entries associated with this marker.\n"
+    "MenuEntry[] menu_entries\n"
+    "\n"
+    "# List of controls displayed for this marker.\n"
+    "InteractiveMarkerControl[] controls" } },
+  { "visualization_msgs/msg/InteractiveMarkerControl", 8, kDescribedFields12,
+    { "msg",
+    "# Represents a control that is to be displayed together with an interactive marker\n"
+    "\n"
+    "# Identifying string for this control.\n"
+    "# You need to assign a unique value to this to receive feedback from the GUI\n"
+    "# on what actions the user performs on this control (e.g. a button click).\n"
+    "string name\n"
+    "\n"
+    "\n"
+    "# Defines the local coordinate frame (relative to the pose of the parent\n"
+    "# interactive marker) in which is being rotated and translated.\n"
+    "# Default: Identity\n"
+    "geometry_msgs/Quaternion orientation\n"
+    "\n"
+    "\n"
+    "# Orientation mode: controls how orientation changes.\n"
+    "# INHERIT: Follow orientation of interactive marker\n"
+    "# FIXED: Keep orientation fixed at initial state\n"
+    "# VIEW_FACING: Align y-z plane with screen (x: forward, y:left, z:up).\n"
+    "uint8 INHERIT = 0\n"
+    "uint8 FIXED = 1\n"
+    "uint8 VIEW_FACING = 2\n"
+    "\n"
+    "uint8 orientation_mode\n"
+    "\n"
+    "# Interaction mode for this control\n"
+    "#\n"
+    "# NONE: This control is only meant for visualization; no context menu.\n"
+    "# MENU: Like NONE, but right-click menu is active.\n"
+    "# BUTTON: Element can be left-clicked.\n"
+    "# MOVE_AXIS: Translate along local x-axis.\n"
+    "# MOVE_PLANE: Translate in local y-z plane.\n"
+    "# ROTATE_AXIS: Rotate around local x-axis.\n"
+    "# MOVE_ROTATE: Combines MOVE_PLANE and ROTATE_AXIS.\n"
+    "uint8 NONE = 0\n"
+    "uint8 MENU = 1\n"
+    "uint8 BUTTON = 2\n"
+    "uint8 MOVE_AXIS = 3\n"
+    "uint8 MOVE_PLANE = 4\n"
+    "uint8 ROTATE_AXIS = 5\n"
+    "uint8 MOVE_ROTATE = 6\n"
+    "# \"3D\" interaction modes work with the mouse+SHIFT+CTRL or with 3D cursors.\n"
+    "# MOVE_3D: Translate freely in 3D space.\n"
+    "# ROTATE_3D: Rotate freely in 3D space about the origin of parent frame.\n"
+    "# MOVE_ROTATE_3D: Full 6-DOF freedom of translation and rotation about the cursor origin.\n"
+    "uint8 MOVE_3D = 7\n"
+    "uint8 ROTATE_3D = 8\n"
+    "uint8 MOVE_ROTATE_3D = 9\n"
+    "\n"
+    "uint8 interaction_mode\n"
+    "\n"
+    "\n"
+    "# If true, the contained markers will also be visible\n"
+    "# when the gui is not in interactive mode.\n"
+    "bool always_visible\n"
+    "\n"
+    "\n"
+    "# Markers to be displayed as custom visual representation.\n"
+    "# Leave this empty to use the default control handles.\n"
+    "#\n"
+    "# Note:\n"
+    "# - The markers can be defined in an arbitrary coordinate frame,\n"
+    "#   but will be transformed into the local frame of the interactive marker.\n"
+    "# - If the header of a marker is empty, its pose will be interpreted as\n"
+    "#   relative to the pose of the parent interactive marker.\n"
+    "Marker[] markers\n"
+    "\n"
+    "\n"
+    "# In VIEW_FACING mode, set this to true if you don't want the markers\n"
+    "# to be aligned with the camera view point. The markers will show up\n"
+    "# as in INHERIT mode.\n"
+    "bool independent_marker_orientation\n"
+    "\n"
+    "\n"
+    "# Short description (< 40 characters) of what this control does,\n"
+    "# e.g. \"Move the robot\".\n"
+    "# Default: A generic description based on the interaction mode\n"
+    "string description" } },
+  { "visualization_msgs/msg/Marker", 19, kDescribedFields13,
+    { "msg",
+    "# See:\n"
+    "#  - http://www.ros.org/wiki/rviz/DisplayTypes/Marker\n"
+    "#  - http://www.ros.org/wiki/rviz/Tutorials/Markers%3A%20Basic%20Shapes\n"
+    "#\n"
+    "# for more information on using this message with rviz.\n"
+    "\n"
+    "int32 ARROW=0\n"
+    "int32 CUBE=1\n"
+    "int32 SPHERE=2\n"
+    "int32 CYLINDER=3\n"
+    "int32 LINE_STRIP=4\n"
+    "int32 LINE_LIST=5\n"
+    "int32 CUBE_LIST=6\n"
+    "int32 SPHERE_LIST=7\n"
+    "int32 POINTS=8\n"
+    "int32 TEXT_VIEW_FACING=9\n"
+    "int32 MESH_RESOURCE=10\n"
+    "int32 TRIANGLE_LIST=11\n"
+    "int32 ARROW_STRIP=12\n"
+    "\n"
+    "int32 ADD=0\n"
+    "int32 MODIFY=0\n"
+    "int32 DELETE=2\n"
+    "int32 DELETEALL=3\n"
+    "\n"
+    "# Header for timestamp and frame id.\n"
+    "std_msgs/Header header\n"
+    "# Namespace in which to place the object.\n"
+    "# Used in conjunction with id to create a unique name for the object.\n"
+    "string ns\n"
+    "# Object ID used in conjunction with the namespace for manipulating and deleting the object later.\n"
+    "int32 id\n"
+    "# Type of object.\n"
+    "int32 type\n"
+    "# Action to take; one of:\n"
+    "#  - 0 add/modify an object\n"
+    "#  - 1 (deprecated)\n"
+    "#  - 2 deletes an object (with the given ns and id)\n"
+    "#  - 3 deletes all objects (or those with the given ns if any)\n"
+    "int32 action\n"
+    "# Pose of the object with respect the frame_id specified in the header.\n"
+    "geometry_msgs/Pose pose\n"
+    "# Scale of the object; 1,1,1 means default (usually 1 meter square).\n"
+    "geometry_msgs/Vector3 scale\n"
+    "# Color of the object; in the range: [0.0-1.0]\n"
+    "std_msgs/ColorRGBA color\n"
+    "# How long the object should last before being automatically deleted.\n"
+    "# 0 indicates forever.\n"
+    "builtin_interfaces/Duration lifetime\n"
+    "# If this marker should be frame-locked, i.e. retransformed into its frame every timestep.\n"
+    "bool frame_locked\n"
+    "\n"
+    "# Only used if the type specified has some use for them (eg. POINTS, LINE_STRIP, ARROW_STRIP, etc.)\n"
+    "geometry_msgs/Point[] points\n"
+    "# Only used if the type specified has some use for them (eg. POINTS, LINE_STRIP, etc.)\n"
+    "# The number of colors provided must either be 0 or equal to the number of points provided.\n"
+    "# NOTE: alpha is not yet used\n"
+    "std_msgs/ColorRGBA[] colors\n"
+    "\n"
+    "# Texture resource is a special URI that can either reference a texture file in\n"
+    "# a format acceptable to (resource retriever)[https://docs.ros.org/en/rolling/p/resource_retriever/]\n"
+    "# or an embedded texture via a string matching the format:\n"
+    "#   \"embedded://texture_name\"\n"
+    "string texture_resource\n"
+    "# An image to be loaded into the rendering engine as the texture for this marker.\n"
+    "# This will be used iff texture_resource is set to embedded.\n"
+    "sensor_msgs/CompressedImage texture\n"
+    "# Location of each vertex within the texture; in the range: [0.0-1.0]\n"
+    "UVCoordinate[] uv_coordinates\n"
+    "\n"
+    "# Only used for text markers\n"
+    "string text\n"
+    "\n"
+    "# Only used for MESH_RESOURCE markers.\n"
+    "# Similar to texture_resource, mesh_resource uses resource retriever to load a mesh.\n"
+    "# Optionally, a mesh file can be sent in-message via the mesh_file field. If doing so,\n"
+    "# use the following format for mesh_resource:\n"
+    "#   \"embedded://mesh_name\"\n"
+    "string mesh_resource\n"
+    "MeshFile mesh_file\n"
+    "bool mesh_use_embedded_materials" } },
+  { "visualization_msgs/msg/MenuEntry", 5, kDescribedFields14,
+    { "msg",
+    "# MenuEntry message.\n"
+    "#\n"
+    "# Each InteractiveMarker message has an array of MenuEntry messages.\n"
+    "# A collection of MenuEntries together describe a\n"
+    "# menu/submenu/subsubmenu/etc tree, though they are stored in a flat\n"
+    "# array.  The tree structure is represented by giving each menu entry\n"
+    "# an ID number and a \"parent_id\" field.  Top-level entries are the\n"
+    "# ones with parent_id = 0.  Menu entries are ordered within their\n"
+    "# level the same way they are ordered in the containing array.  Parent\n"
+    "# entries must appear before their children.\n"
+    "#\n"
+    "# Example:\n"
+    "# - id = 3\n"
+    "#   parent_id = 0\n"
+    "#   title = \"fun\"\n"
+    "# - id = 2\n"
+    "#   parent_id = 0\n"
+    "#   title = \"robot\"\n"
+    "# - id = 4\n"
+    "#   parent_id = 2\n"
+    "#   title = \"pr2\"\n"
+    "# - id = 5\n"
+    "#   parent_id = 2\n"
+    "#   title = \"turtle\"\n"
+    "#\n"
+    "# Gives a menu tree like this:\n"
+    "#  - fun\n"
+    "#  - robot\n"
+    "#    - pr2\n"
+    "#    - turtle\n"
+    "\n"
+    "# ID is a number for each menu entry.  Must be unique within the\n"
+    "# control, and should never be 0.\n"
+    "uint32 id\n"
+    "\n"
+    "# ID of the parent of this menu entry, if it is a submenu.  If this\n"
+    "# menu entry is a top-level entry, set parent_id to 0.\n"
+    "uint32 parent_id\n"
+    "\n"
+    "# menu / entry title\n"
+    "string title\n"
+    "\n"
+    "# Arguments to command indicated by command_type (below)\n"
+    "string command\n"
+    "\n"
+    "# Command_type stores the type of response desired when this menu\n"
+    "# entry is clicked.\n"
+    "# FEEDBACK: send an InteractiveMarkerFeedback message with menu_entry_id set to this entry's id.\n"
+    "# ROSRUN: execute \"rosrun\" with arguments given in the command field (above).\n"
+    "# ROSLAUNCH: execute \"roslaunch\" with arguments given in the command field (above).\n"
+    "uint8 FEEDBACK=0\n"
+    "uint8 ROSRUN=1\n"
+    "uint8 ROSLAUNCH=2\n"
+    "uint8 command_type" } },
+  { "visualization_msgs/msg/MeshFile", 2, kDescribedFields15,
+    { "msg",
+    "# Used to send raw mesh files.\n"
+    "\n"
+    "# The filename is used for both debug purposes and to provide a file extension\n"
+    "# for whatever parser is used.\n"
+    "string filename\n"
+    "\n"
+    "# This stores the raw text of the mesh file.\n"
+    "uint8[] data" } },
+  { "visualization_msgs/msg/UVCoordinate", 2, kDescribedFields16,
+    { "msg",
+    "# Location of the pixel as a ratio of the width of a 2D texture.\n"
+    "# Values should be in range: [0.0-1.0].\n"
+    "float32 u\n"
+    "float32 v" } },
+  { "visualization_msgs/srv/GetInteractiveMarkers_Event", 3, kDescribedFields17,
+    { "implicit",
+    "" } },
+  { "visualization_msgs/srv/GetInteractiveMarkers_Request", 1, kDescribedFields18,
+    { "implicit",
+    "" } },
+  { "visualization_msgs/srv/GetInteractiveMarkers_Response", 2, kDescribedFields19,
+    { "implicit",
+    "" } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "visualization_msgs/srv/GetInteractiveMarkers", 3, kDescribedFields0 },
+  { "visualization_msgs/srv/GetInteractiveMarkers", 3, kDescribedFields0,
+    { "srv",
+    "---\n"
+    "# Sequence number.\n"
+    "# Set to the sequence number of the latest update message\n"
+    "# at the time the server received the request.\n"
+    "# Clients use this to detect if any updates were missed.\n"
+    "uint64 sequence_number\n"
+    "\n"
+    "# All interactive markers provided by the server.\n"
+    "InteractiveMarker[] markers" } },
   19,
   kReferencedDescriptions,
 };
