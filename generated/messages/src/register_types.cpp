@@ -156,7 +156,6 @@
 #include "ros2vtk/sensor_msgs/srv/set_camera_info.hpp"
 #include "ros2vtk/sensor_msgs/srv/set_camera_info__request.hpp"
 #include "ros2vtk/sensor_msgs/srv/set_camera_info__response.hpp"
-#include "ros2vtk/service_msgs/msg/service_event_info.hpp"
 #include "ros2vtk/shape_msgs/msg/mesh.hpp"
 #include "ros2vtk/shape_msgs/msg/mesh_triangle.hpp"
 #include "ros2vtk/shape_msgs/msg/plane.hpp"
@@ -416,7 +415,6 @@ extern "C" void ros2vtk_register_ros2vtkMessages_types()
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::msg::TimeReference::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::srv::SetCameraInfo_Request::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::sensor_msgs::srv::SetCameraInfo_Response::type_support());
-  ::ros2vtk::wire::register_message_type(&::ros2vtk::service_msgs::msg::ServiceEventInfo::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::Mesh::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::MeshTriangle::type_support());
   ::ros2vtk::wire::register_message_type(&::ros2vtk::shape_msgs::msg::Plane::type_support());
