@@ -225,10 +225,16 @@ def source_constants(sources) -> dict:
         spec = parse_message_string(package, name, source.raw_file_contents)
         metaclass = type(getattr(importlib.import_module(f'{package}.msg'), name))
         result[source.type_name] = {
-            'parsed': {c.name: c.value for c in spec.constants},
-            'rclpy': dict(getattr(metaclass, f'_{metaclass.__name__}__constants')),
+            'parsed': {c.name: plain_constant(c.value) for c in spec.constants},
+            'rclpy': {name: plain_constant(value) for name, value in
+                      getattr(metaclass, f'_{metaclass.__name__}__constants').items()},
         }
     return result
+
+
+def plain_constant(value):
+    """A constant as JSON holds it: rclpy keeps a byte constant as bytes (b'\\n'), its integer."""
+    return value[0] if isinstance(value, bytes) else value
 
 
 def cmd_describe(args: argparse.Namespace) -> int:

@@ -126,7 +126,14 @@ TEST(TypeDescriptionRequest, KnownMessageTypeAsRosidlDescribesIt)
   ASSERT_EQ(header.fields.size(), 2u);
   EXPECT_EQ(header.fields[1].name, "frame_id");
   EXPECT_EQ(header.fields[1].type.type_id, 17); // FIELD_TYPE_STRING
-  EXPECT_TRUE(response.type_sources.empty());
+  // Asked with include_type_sources (the request's default): the type's and each referenced
+  // type's .msg text, as rcl answers.
+  ASSERT_EQ(response.type_sources.size(), 6u);
+  for (const auto& source : response.type_sources)
+  {
+    EXPECT_EQ(source.encoding, "msg") << source.type_name;
+    EXPECT_FALSE(source.raw_file_contents.empty()) << source.type_name;
+  }
   EXPECT_TRUE(response.extra_information.empty());
 }
 

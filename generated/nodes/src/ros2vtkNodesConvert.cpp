@@ -1273,6 +1273,14 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::MarkerArray& messag
       marker.points.push_back(point.y);
       marker.points.push_back(point.z);
     }
+    marker.colors.reserve(4 * element.colors.size());
+    for (const auto& rgba : element.colors)
+    {
+      marker.colors.push_back(rgba.r);
+      marker.colors.push_back(rgba.g);
+      marker.colors.push_back(rgba.b);
+      marker.colors.push_back(rgba.a);
+    }
     marker.text = element.text;
     marker.mesh_resource = element.mesh_resource;
     marker.mesh_use_embedded_materials = element.mesh_use_embedded_materials;
