@@ -206,15 +206,30 @@ def cpp_text_literal(text: str, indent: str) -> str:
     return ("\n" + indent).join(literal(line) for line in lines)
 
 
-def description_view(description: dict, sources: List[dict]) -> dict:
+def description_view(description: dict, sources: List[dict],
+                     table: Optional[Dict[str, Message]] = None) -> dict:
     """A TypeDescription (typehash.message_description / service_description) and the type
     sources served with it (typehash.description_sources) as the templates write them into a
-    constant table: C++ literals, the type first, then the referenced types in order."""
-    def individual(item: dict, source: dict) -> dict:
+    constant table: C++ literals, the type first, then the referenced types in order. A
+    referenced .msg type of `table` (a generated type) is not written again: its entry names the
+    type whose own table holds the text ("defined_by", a function returning its type support),
+    so each interface file is in the generated code once."""
+    table = table or {}
+
+    def individual(item: dict, source: dict, own: bool) -> dict:
+        name = item["type_name"]
+        owner = table.get(name) if not own and source["encoding"] == "msg" else None
+        defined_by = None if owner is None else {
+            "function": "source_of_" + name.replace("/", "__"),
+            "cpp_type": "::" + naming.cpp_qualified_name(owner),
+            "header": naming.message_header(owner),
+        }
         return {
-            "type_name": cpp_string_literal(item["type_name"]),
+            "type_name": cpp_string_literal(name),
             "encoding": cpp_string_literal(source["encoding"]),
-            "raw_file_contents": cpp_text_literal(source["raw_file_contents"], "    "),
+            "raw_file_contents": ("nullptr" if defined_by else
+                                  cpp_text_literal(source["raw_file_contents"], "    ")),
+            "defined_by": defined_by,
             "fields": [{
                 "name": cpp_string_literal(f["name"]),
                 "type_id": f["type"]["type_id"],
@@ -224,16 +239,18 @@ def description_view(description: dict, sources: List[dict]) -> dict:
                 "default_value": cpp_string_literal(f["default_value"]),
             } for f in item["fields"]],
         }
-    referenced = description["referenced_type_descriptions"]
-    return {"type": individual(description["type_description"], sources[0]),
-            "referenced": [individual(item, source) for item, source in zip(referenced, sources[1:])]}
+    referenced = [individual(item, source, False) for item, source in
+                  zip(description["referenced_type_descriptions"], sources[1:])]
+    return {"type": individual(description["type_description"], sources[0], True),
+            "referenced": referenced,
+            "includes": sorted({r["defined_by"]["header"] for r in referenced if r["defined_by"]})}
 
 
 def described(description: dict, item: Union[Message, Service, Action],
               table: Dict[str, Message]) -> dict:
     """description_view of `item`'s description with the sources served with it."""
     return description_view(description, typehash.description_sources(
-        description, typehash.own_source(item), table))
+        description, typehash.own_source(item), table), table)
 
 
 def message_view(message: Message, table: Dict[str, Message]) -> dict:

@@ -55,13 +55,21 @@ void to_message(
   }
 }
 
+/// The TypeSource of one described type: its entry's text, or the text of the generated type
+/// the entry names (TypeSourceTable::defined_by).
 void add_type_source(
   const IndividualTypeDescriptionTable& table, std::vector<tdi::msg::TypeSource>& sources)
 {
+  const TypeSourceTable* from = &table.source;
+  const MessageTypeSupport* owner = from->defined_by ? from->defined_by() : nullptr;
+  if (owner && owner->description)
+  {
+    from = &owner->description->type.source;
+  }
   tdi::msg::TypeSource source;
   source.type_name = table.type_name;
-  source.encoding = table.source.encoding ? table.source.encoding : "";
-  source.raw_file_contents = table.source.raw_file_contents ? table.source.raw_file_contents : "";
+  source.encoding = from->encoding ? from->encoding : "";
+  source.raw_file_contents = from->raw_file_contents ? from->raw_file_contents : "";
   sources.push_back(std::move(source));
 }
 

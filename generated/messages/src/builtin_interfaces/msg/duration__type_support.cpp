@@ -25,7 +25,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "sec", 6, 0, 0, "", "" },
   { "nanosec", 7, 0, 0, "", "" },
@@ -41,7 +42,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "int32 sec\n"
     "\n"
     "# Nanoseconds component in the range of [0, 1e9).\n"
-    "uint32 nanosec" } },
+    "uint32 nanosec", nullptr } },
   0,
   nullptr,
 };

@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x", 10, 0, 0, "", "" },
   { "y", 10, 0, 0, "", "" },
@@ -47,7 +48,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "\n"
     "float32 x\n"
     "float32 y\n"
-    "float32 z" } },
+    "float32 z", nullptr } },
   0,
   nullptr,
 };

@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x", 11, 0, 0, "", "" },
   { "y", 11, 0, 0, "", "" },
@@ -40,7 +41,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "# This contains the position of a point in free space\n"
     "float64 x\n"
     "float64 y\n"
-    "float64 z" } },
+    "float64 z", nullptr } },
   0,
   nullptr,
 };

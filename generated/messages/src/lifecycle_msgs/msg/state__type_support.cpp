@@ -39,7 +39,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "id", 3, 0, 0, "", "" },
   { "label", 17, 0, 0, "", "" },
@@ -103,7 +104,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "uint8 id\n"
     "\n"
     "# A text label of the state.\n"
-    "string label" } },
+    "string label", nullptr } },
   0,
   nullptr,
 };

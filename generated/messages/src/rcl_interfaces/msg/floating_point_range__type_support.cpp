@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "from_value", 11, 0, 0, "", "" },
   { "to_value", 11, 0, 0, "", "" },
@@ -64,7 +65,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
     "# e.g. if the range is defined as {from_value: 2.0, to_value: 5.0, step: 2.0}\n"
     "# then the valid values will be 2.0, 4.0, and 5.0.\n"
-    "float64 step" } },
+    "float64 step", nullptr } },
   0,
   nullptr,
 };

@@ -34,7 +34,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "name", 17, 0, 0, "", "" },
   { "level", 7, 0, 0, "", "" },
@@ -55,7 +56,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "string name\n"
     "\n"
     "# The logger level\n"
-    "uint32 level" } },
+    "uint32 level", nullptr } },
   0,
   nullptr,
 };

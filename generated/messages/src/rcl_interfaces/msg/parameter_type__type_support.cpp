@@ -35,7 +35,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
 };
@@ -55,7 +56,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "uint8 PARAMETER_BOOL_ARRAY=6\n"
     "uint8 PARAMETER_INTEGER_ARRAY=7\n"
     "uint8 PARAMETER_DOUBLE_ARRAY=8\n"
-    "uint8 PARAMETER_STRING_ARRAY=9" } },
+    "uint8 PARAMETER_STRING_ARRAY=9", nullptr } },
   0,
   nullptr,
 };

@@ -64,7 +64,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type", 3, 0, 0, "", "" },
   { "bool_value", 15, 0, 0, "", "" },
@@ -117,7 +118,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "float64[] double_array_value\n"
     "\n"
     "# An array of string values.\n"
-    "string[] string_array_value" } },
+    "string[] string_array_value", nullptr } },
   0,
   nullptr,
 };

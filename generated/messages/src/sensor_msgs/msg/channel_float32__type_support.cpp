@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "name", 17, 0, 0, "", "" },
   { "values", 154, 0, 0, "", "" },
@@ -59,7 +60,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "\n"
     "# The values array should be 1-1 with the elements of the associated\n"
     "# PointCloud.\n"
-    "float32[] values" } },
+    "float32[] values", nullptr } },
   0,
   nullptr,
 };

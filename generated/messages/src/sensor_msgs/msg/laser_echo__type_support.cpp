@@ -25,7 +25,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "echoes", 154, 0, 0, "", "" },
 };
@@ -36,7 +37,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "# to be used separately.\n"
     "\n"
     "float32[] echoes  # Multiple values of ranges or intensities.\n"
-    "                  # Each array represents data from the same angle increment." } },
+    "                  # Each array represents data from the same angle increment.", nullptr } },
   0,
   nullptr,
 };

@@ -38,7 +38,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "status", 2, 0, 0, "", "-2" },
   { "service", 5, 0, 0, "", "" },
@@ -69,7 +70,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "uint16 SERVICE_COMPASS = 4      # includes BeiDou.\n"
     "uint16 SERVICE_GALILEO = 8\n"
     "\n"
-    "uint16 service" } },
+    "uint16 service", nullptr } },
   0,
   nullptr,
 };

@@ -42,7 +42,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "name", 17, 0, 0, "", "" },
   { "offset", 7, 0, 0, "", "" },
@@ -67,7 +68,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "string name      # Name of field\n"
     "uint32 offset    # Offset from start of point struct\n"
     "uint8  datatype  # Datatype enumeration, see above\n"
-    "uint32 count     # How many elements in the field" } },
+    "uint32 count     # How many elements in the field", nullptr } },
   0,
   nullptr,
 };

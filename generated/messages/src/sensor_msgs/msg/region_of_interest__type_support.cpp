@@ -34,7 +34,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x_offset", 7, 0, 0, "", "" },
   { "y_offset", 7, 0, 0, "", "" },
@@ -63,7 +64,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "# ROI in this message. Typically this should be False if the full image\n"
     "# is captured (ROI not used), and True if a subwindow is captured (ROI\n"
     "# used).\n"
-    "bool do_rectify" } },
+    "bool do_rectify", nullptr } },
   0,
   nullptr,
 };

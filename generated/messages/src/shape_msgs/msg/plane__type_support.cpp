@@ -25,7 +25,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "coef", 59, 4, 0, "", "" },
 };
@@ -38,7 +39,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "# b := coef[1]\n"
     "# c := coef[2]\n"
     "# d := coef[3]\n"
-    "float64[4] coef" } },
+    "float64[4] coef", nullptr } },
   0,
   nullptr,
 };

@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "label", 17, 0, 0, "", "" },
   { "size", 7, 0, 0, "", "" },
@@ -44,7 +45,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "\n"
     "string label   # label of given dimension\n"
     "uint32 size    # size of given dimension (in type units)\n"
-    "uint32 stride  # stride of given dimension" } },
+    "uint32 stride  # stride of given dimension", nullptr } },
   0,
   nullptr,
 };

@@ -58,7 +58,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bool_value", 15, 0, 0, "", "" },
   { "byte_value", 16, 0, 0, "", "" },
@@ -89,7 +90,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "int32 int32_value\n"
     "uint32 uint32_value\n"
     "int64 int64_value\n"
-    "uint64 uint64_value" } },
+    "uint64 uint64_value", nullptr } },
   0,
   nullptr,
 };

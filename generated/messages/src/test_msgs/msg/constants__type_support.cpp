@@ -38,7 +38,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
 };
@@ -57,7 +58,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "int32 INT32_CONST=-30000\n"
     "uint32 UINT32_CONST=60000\n"
     "int64 INT64_CONST=-40000000\n"
-    "uint64 UINT64_CONST=50000000" } },
+    "uint64 UINT64_CONST=50000000", nullptr } },
   0,
   nullptr,
 };

@@ -58,7 +58,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bool_value", 15, 0, 0, "", "True" },
   { "byte_value", 16, 0, 0, "", "50" },
@@ -89,7 +90,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "int32 int32_value -30000\n"
     "uint32 uint32_value 60000\n"
     "int64 int64_value -40000000\n"
-    "uint64 uint64_value 50000000" } },
+    "uint64 uint64_value 50000000", nullptr } },
   0,
   nullptr,
 };

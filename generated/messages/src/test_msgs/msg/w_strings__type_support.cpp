@@ -49,7 +49,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "wstring_value", 18, 0, 0, "", "" },
   { "wstring_value_default1", 18, 0, 0, "", "Hello world!" },
@@ -71,7 +72,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "#wstring<=22 bounded_wstring_value_default1 \"Hello world!\"\n"
     "wstring[3] array_of_wstrings\n"
     "wstring[<=3] bounded_sequence_of_wstrings\n"
-    "wstring[] unbounded_sequence_of_wstrings" } },
+    "wstring[] unbounded_sequence_of_wstrings", nullptr } },
   0,
   nullptr,
 };

@@ -123,7 +123,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type_id", 3, 0, 0, "", "0" },
   { "capacity", 9, 0, 0, "", "" },
@@ -288,7 +289,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "#   for DDSI-RTPS based middlewares, which is the most commonly used right now.\n"
     "#   We lack a ROS 2 specific limit in our design documents, but we should update\n"
     "#   this and/or link to the design doc when that is available.\n"
-    "string<=255 nested_type_name" } },
+    "string<=255 nested_type_name", nullptr } },
   0,
   nullptr,
 };

@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type_name", 17, 0, 0, "", "" },
   { "encoding", 17, 0, 0, "", "" },
@@ -52,7 +53,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "\n"
     "# Dumped contents of the interface definition source file.\n"
     "# If `encoding` is \"dynamic\" or \"implicit\", this field will be empty.\n"
-    "string raw_file_contents" } },
+    "string raw_file_contents", nullptr } },
   0,
   nullptr,
 };

@@ -40,7 +40,8 @@ const wire::ConstantInfo kConstants[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "id", 7, 0, 0, "", "" },
   { "parent_id", 7, 0, 0, "", "" },
@@ -104,7 +105,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "uint8 FEEDBACK=0\n"
     "uint8 ROSRUN=1\n"
     "uint8 ROSLAUNCH=2\n"
-    "uint8 command_type" } },
+    "uint8 command_type", nullptr } },
   0,
   nullptr,
 };

@@ -28,7 +28,8 @@ const wire::FieldInfo kFields[] = {
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
 // rosidl_generator_type_description makes it, each type with its source (TypeSource) as
-// rosidl_generator_c embeds it; the table below carries its RIHS01 hash.
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "filename", 17, 0, 0, "", "" },
   { "data", 147, 0, 0, "", "" },
@@ -43,7 +44,7 @@ const wire::TypeDescriptionTable kTypeDescription = {
     "string filename\n"
     "\n"
     "# This stores the raw text of the mesh file.\n"
-    "uint8[] data" } },
+    "uint8[] data", nullptr } },
   0,
   nullptr,
 };

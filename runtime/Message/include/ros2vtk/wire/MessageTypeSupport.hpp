@@ -107,6 +107,9 @@ struct TypeSourceTable
 {
   const char* encoding;          ///< "msg", "srv", "action"; "implicit" for synthesized types
   const char* raw_file_contents; ///< the file's lines joined by '\n' ("" when implicit)
+  /// Set instead of raw_file_contents in a referenced type's entry when that type is generated:
+  /// its own table's source is the text (each interface file is in the generated code once).
+  const MessageTypeSupport* (*defined_by)();
 };
 
 /// One type of a description (type_description_interfaces/msg/IndividualTypeDescription),
