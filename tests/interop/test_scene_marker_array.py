@@ -30,6 +30,20 @@ def close(a, b, tol=1e-6):
     assert len(a) == len(b) and all(math.isclose(x, y, abs_tol=tol) for x, y in zip(a, b)), (a, b)
 
 
+def draw_one_marker_array(ros, topic: str, markers: list) -> dict:
+    """What our MarkerArray subscriber on `topic` draws (marker_array_runner.py's snapshot) from
+    an rclpy publisher repeating one MarkerArray of `markers`."""
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
+                      '--seconds', '20'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    peer = ros.peer('pub', topic, 'visualization_msgs/msg/MarkerArray', json.dumps({'markers': markers}),
+                    '--count', '-1', '--rate', '5')
+    code, out, err = ros.finish(ours, timeout=30)
+    ros.stop(peer)
+    assert code == 0, err
+    return json.loads(out.splitlines()[-1])['snapshots'][0]
+
+
 def test_rclpy_marker_array_add_delete_deleteall(ros):
     topic = '/scene_in/marker_array'
     ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '3',
@@ -96,16 +110,7 @@ def test_rclpy_list_markers_line_list_cube_list_sphere_list(ros):
                marker('b_cubes', CUBE_LIST, [(0, 0, 0), (1, 2, 3)], (0.0, 1.0, 0.0)),
                marker('c_spheres', SPHERE_LIST, [(-1, 0, 0), (1, 0, 0), (0, 0, 2)], (0.0, 0.0, 1.0)),
                marker('d_odd', LINE_LIST, [(0, 0, 0), (1, 0, 0), (0, 1, 0)], (1.0, 1.0, 0.0))]
-    topic = '/scene_in/marker_lists'
-    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
-                      '--seconds', '20'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
-    ros.wait_ready(ours)
-    peer = ros.peer('pub', topic, 'visualization_msgs/msg/MarkerArray', json.dumps({'markers': markers}),
-                    '--count', '-1', '--rate', '5')
-    code, out, err = ros.finish(ours, timeout=30)
-    ros.stop(peer)
-    assert code == 0, err
-    drawn = json.loads(out.splitlines()[-1])['snapshots'][0]
+    drawn = draw_one_marker_array(ros, '/scene_in/marker_lists', markers)
     assert drawn['markers'] == 3 and drawn['colors'] == [RED, GREEN, BLUE], drawn
     assert drawn['error'] == ("marker (ns 'd_odd', id 1): marker_to_poly_data: a line list needs an even "
                               "number of points (pairs), not 3"), drawn
@@ -262,16 +267,7 @@ def test_rclpy_per_point_colours_and_two_point_arrows(ros):
         marker('g_arrow', ARROW, [(0, 0, 3), (0, -1, 3)], scale=(0.1, 0.2, 0.0)),
         marker('h_arrow_one_point', ARROW, [(0, 0, 4)], scale=(0.1, 0.2, 0.3)),
     ]
-    topic = '/scene_in/marker_colours'
-    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
-                      '--seconds', '20'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
-    ros.wait_ready(ours)
-    peer = ros.peer('pub', topic, 'visualization_msgs/msg/MarkerArray', json.dumps({'markers': markers}),
-                    '--count', '-1', '--rate', '5')
-    code, out, err = ros.finish(ours, timeout=30)
-    ros.stop(peer)
-    assert code == 0, err
-    drawn = json.loads(out.splitlines()[-1])['snapshots'][0]
+    drawn = draw_one_marker_array(ros, '/scene_in/marker_colours', markers)
     assert drawn['error'] == ("marker (ns 'h_arrow_one_point', id 1): marker_to_poly_data: an arrow marker "
                               "takes two points (start and end) or none, not 1"), drawn
     assert drawn['markers'] == 7, drawn
