@@ -193,13 +193,43 @@ def field_view(item: Field, owner: str, table: Dict[str, Message]) -> dict:
     }
 
 
-def description_view(description: dict) -> dict:
-    """A TypeDescription (typehash.message_description / service_description) as the
-    templates write it into a constant table: C++ literals, the type first, then the
-    referenced types in order."""
-    def individual(item: dict) -> dict:
+def cpp_text_literal(text: str, indent: str) -> str:
+    """`text` as adjacent C++ string literals, one per line of the text (a long .msg file stays
+    readable in the generated code); "" for no text."""
+    lines = text.splitlines(keepends=True)
+    if not lines:
+        return '""'
+    def literal(line: str) -> str:
+        if line.endswith("\n"):
+            return cpp_string_literal(line[:-1])[:-1] + '\\n"'
+        return cpp_string_literal(line)
+    return ("\n" + indent).join(literal(line) for line in lines)
+
+
+def description_view(description: dict, sources: List[dict],
+                     table: Optional[Dict[str, Message]] = None) -> dict:
+    """A TypeDescription (typehash.message_description / service_description) and the type
+    sources served with it (typehash.description_sources) as the templates write them into a
+    constant table: C++ literals, the type first, then the referenced types in order. A
+    referenced .msg type of `table` (a generated type) is not written again: its entry names the
+    type whose own table holds the text ("defined_by", a function returning its type support),
+    so each interface file is in the generated code once."""
+    table = table or {}
+
+    def individual(item: dict, source: dict, own: bool) -> dict:
+        name = item["type_name"]
+        owner = table.get(name) if not own and source["encoding"] == "msg" else None
+        defined_by = None if owner is None else {
+            "function": "source_of_" + name.replace("/", "__"),
+            "cpp_type": "::" + naming.cpp_qualified_name(owner),
+            "header": naming.message_header(owner),
+        }
         return {
-            "type_name": cpp_string_literal(item["type_name"]),
+            "type_name": cpp_string_literal(name),
+            "encoding": cpp_string_literal(source["encoding"]),
+            "raw_file_contents": ("nullptr" if defined_by else
+                                  cpp_text_literal(source["raw_file_contents"], "    ")),
+            "defined_by": defined_by,
             "fields": [{
                 "name": cpp_string_literal(f["name"]),
                 "type_id": f["type"]["type_id"],
@@ -209,8 +239,18 @@ def description_view(description: dict) -> dict:
                 "default_value": cpp_string_literal(f["default_value"]),
             } for f in item["fields"]],
         }
-    return {"type": individual(description["type_description"]),
-            "referenced": [individual(item) for item in description["referenced_type_descriptions"]]}
+    referenced = [individual(item, source, False) for item, source in
+                  zip(description["referenced_type_descriptions"], sources[1:])]
+    return {"type": individual(description["type_description"], sources[0], True),
+            "referenced": referenced,
+            "includes": sorted({r["defined_by"]["header"] for r in referenced if r["defined_by"]})}
+
+
+def described(description: dict, item: Union[Message, Service, Action],
+              table: Dict[str, Message]) -> dict:
+    """description_view of `item`'s description with the sources served with it."""
+    return description_view(description, typehash.description_sources(
+        description, typehash.own_source(item), table), table)
 
 
 def message_view(message: Message, table: Dict[str, Message]) -> dict:
@@ -239,7 +279,7 @@ def message_view(message: Message, table: Dict[str, Message]) -> dict:
         "ros_type": message.ros_type,
         "dds_type_name": naming.dds_type_name(message),
         "type_hash": typehash.type_hash(message, table),
-        "description": description_view(typehash.message_description(message, table)),
+        "description": described(typehash.message_description(message, table), message, table),
         "namespace": naming.cpp_namespace(message.package, message.kind),
         "qualified": qualified,
         "header": header,
@@ -390,7 +430,7 @@ def _service_artefacts(service: Service, table: Dict[str, Message]) -> List[Arte
         "name": service.name,
         "ros_type": service.ros_type,
         "type_hash": typehash.type_hash(service, table),
-        "description": description_view(typehash.service_description(service, table)),
+        "description": described(typehash.service_description(service, table), service, table),
         "namespace": naming.cpp_namespace(service.package, service.kind),
         "header": header,
         "guard": naming.include_guard(header),
@@ -412,7 +452,7 @@ def _action_artefacts(action: Action, table: Dict[str, Message]) -> List[Artefac
         "name": action.name,
         "ros_type": action.ros_type,
         "type_hash": typehash.type_hash(action, table),
-        "description": description_view(typehash.action_description(action, table)),
+        "description": described(typehash.action_description(action, table), action, table),
         "namespace": naming.cpp_namespace(action.package, "action"),
         "header": header,
         "guard": naming.include_guard(header),

@@ -88,6 +88,9 @@ class Message:
     constants: Tuple[Constant, ...]
     spec: str  # spec path as shown in banners: `<pkg>/<kind>/<File>`
     source: str = field(default="", compare=False)  # path as given, for error messages
+    # The .msg file's text (what a node serves as its TypeSource); "" for the halves of a .srv
+    # and the types a .action synthesizes, which rosidl calls "implicit".
+    text: str = field(default="", compare=False)
 
     @property
     def ros_type(self) -> str:
@@ -107,6 +110,7 @@ class Service:
     spec: str
     source: str = field(default="", compare=False)
     kind: str = "srv"  # "action" for X_SendGoal / X_GetResult of an action
+    text: str = field(default="", compare=False)  # the .srv file's text ("" for an action's)
 
     @property
     def ros_type(self) -> str:
@@ -129,6 +133,7 @@ class Action:
     feedback_message: Message
     spec: str
     source: str = field(default="", compare=False)
+    text: str = field(default="", compare=False)  # the .action file's text
 
     @property
     def ros_type(self) -> str:

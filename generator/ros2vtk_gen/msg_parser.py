@@ -294,7 +294,8 @@ def parse_message_text(text: str, package: str, name: str, *, kind: str = "msg",
         _remember(seen, item_name, at)
         fields.append(Field(item_name, element, container, size, default, number))
     display = spec if spec is not None else f"{package}/{kind}/{name}.{kind}"
-    return Message(package, kind, name, tuple(fields), tuple(constants), display, path)
+    return Message(package, kind, name, tuple(fields), tuple(constants), display, path,
+                   text=text if lines is None else "")
 
 
 def _remember(seen: Dict[str, int], name: str, at: _Located) -> None:
@@ -321,7 +322,7 @@ def parse_service_text(text: str, package: str, name: str, *, path: str = "<stri
                                  spec=display, lines=numbered[:cut - 1])
     response = parse_message_text("", package, f"{name}_Response", kind="srv", path=path,
                                   spec=display, lines=numbered[cut:])
-    return Service(package, name, request, response, display, path)
+    return Service(package, name, request, response, display, path, text=text)
 
 
 # The fixed types every action's synthesized types nest (rosidl_adapter action.idl.em).
@@ -369,7 +370,7 @@ def parse_action_text(text: str, package: str, name: str, *, path: str = "<strin
                          display, path, kind="action")
     feedback_message = synthesized("FeedbackMessage", [goal_id, Field("feedback", own("Feedback"))])
     return Action(package, name, goal, result, feedback, send_goal, get_result, feedback_message,
-                  display, path)
+                  display, path, text=text)
 
 
 SPEC_KINDS = ("msg", "srv", "action")

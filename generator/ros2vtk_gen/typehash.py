@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from typing import Dict, List, Optional, Union
 
 from .model import ARRAY, BOUNDED_SEQUENCE, SEQUENCE, Action, Field, Message, Service, Value
@@ -174,6 +175,56 @@ def action_description(action: Action, table: Dict[str, Message]) -> dict:
     return {"type_description": {"type_name": action.ros_type, "fields": [
                 _plain_field(name, FIELD_TYPE_NESTED, nested=nested) for name, nested in members]},
             "referenced_type_descriptions": [references[name] for name in sorted(references)]}
+
+
+IMPLICIT = "implicit"
+
+
+def type_source(encoding: str, text: str) -> dict:
+    """One TypeSource as rosidl_generator_c embeds it (full__description.c.em): the file's
+    lines joined by '\\n', so without the file's last newline; "implicit" types (the halves of
+    a .srv, what a .action synthesizes) have no text."""
+    return {"encoding": encoding, "raw_file_contents": "\n".join(text.splitlines())}
+
+
+def own_source(item: Union[Message, Service, Action]) -> dict:
+    """The TypeSource of a spec's own type: its file for a .msg, .srv or .action, "implicit"
+    for the messages and services rosidl synthesizes from a .srv or .action."""
+    if isinstance(item, Action):
+        return type_source("action", item.text)
+    if isinstance(item, Service):
+        return type_source("srv", item.text) if item.kind == "srv" else type_source(IMPLICIT, "")
+    return type_source("msg", item.text) if item.kind == "msg" else type_source(IMPLICIT, "")
+
+
+# The .msg files of the fixed types above that no spec set has to give (fixed_specs/ holds
+# service_msgs/msg/ServiceEventInfo.msg as the ROS 2 wheels install it).
+_FIXED_SPECS_DIR = os.path.join(os.path.dirname(__file__), "fixed_specs")
+
+
+def _fixed_text(ros_type: str) -> str:
+    package, kind, name = ros_type.split("/")
+    path = os.path.join(_FIXED_SPECS_DIR, package, kind, name + "." + kind)
+    if not os.path.exists(path):
+        return ""
+    with open(path, encoding="utf-8") as handle:
+        return handle.read()
+
+
+def description_sources(description: dict, own: dict, table: Dict[str, Message]) -> List[dict]:
+    """The type_sources rcl serves for `description` when asked (include_type_sources): the
+    type's own source (`own`), then one per referenced type in the description's order; a
+    referenced pkg/msg/ type's is its .msg file (from `table`, else from fixed_specs/ for the
+    fixed types every service references), a pkg/srv/ or pkg/action/ type's is implicit (a
+    service or action only references the types it synthesizes there)."""
+    sources = [own]
+    for individual in description["referenced_type_descriptions"]:
+        name = individual["type_name"]
+        if name.split("/")[1] == "msg":
+            sources.append(type_source("msg", table[name].text if name in table else _fixed_text(name)))
+        else:
+            sources.append(type_source(IMPLICIT, ""))
+    return sources
 
 
 def _without_defaults(individual: dict) -> dict:

@@ -367,3 +367,145 @@ TEST(MarkerSet, MeshResourceMarkersAreReadByTheProcessLoader)
   EXPECT_EQ(kept.size(), 0u);
   set_mesh_resource_loader(nullptr);
 }
+
+namespace {
+
+/// The RGBA bytes of point `i` of the poly data's "Color" array.
+std::vector<int> point_color(vtkPolyData* poly_data, vtkIdType i)
+{
+  auto* color = vtkUnsignedCharArray::SafeDownCast(poly_data->GetPointData()->GetArray("Color"));
+  std::vector<int> rgba;
+  for (int c = 0; color && c < 4; ++c)
+  {
+    rgba.push_back(color->GetValue(4 * i + c));
+  }
+  return rgba;
+}
+
+Marker listed(MarkerShape shape, std::vector<double> points, std::vector<double> colors)
+{
+  Marker marker;
+  marker.shape = shape;
+  marker.scale[0] = marker.scale[1] = marker.scale[2] = 0.1;
+  marker.color[0] = 1.0;
+  marker.color[1] = 1.0;
+  marker.color[2] = 0.0; // yellow when colors do not apply
+  marker.points = std::move(points);
+  marker.colors = std::move(colors);
+  return marker;
+}
+
+} // namespace
+
+// RViz colours point i with colors[i] when there are as many colours as points
+// (points_marker.cpp, line_marker_base.cpp); otherwise every point has `color`.
+TEST(Marker, ColorsAsManyAsPointsColourEachPoint)
+{
+  const std::vector<double> points = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  const std::vector<double> colors = { 1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0.5 };
+  for (MarkerShape shape : { MarkerShape::Points, MarkerShape::LineStrip })
+  {
+    vtkNew<vtkPolyData> out;
+    std::string error;
+    ASSERT_TRUE(marker_to_poly_data(listed(shape, points, colors), 1000.0, out, &error)) << error;
+    ASSERT_EQ(out->GetNumberOfPoints(), 3);
+    EXPECT_EQ(point_color(out, 0), (std::vector<int>{ 255, 0, 0, 255 }));
+    EXPECT_EQ(point_color(out, 1), (std::vector<int>{ 0, 255, 0, 255 }));
+    EXPECT_EQ(point_color(out, 2), (std::vector<int>{ 0, 0, 255, 128 }));
+  }
+  vtkNew<vtkPolyData> out;
+  std::string error;
+  const std::vector<double> two = { 1, 0, 0, 1, 0, 1, 0, 1 };
+  ASSERT_TRUE(marker_to_poly_data(listed(MarkerShape::Points, points, two), 1000.0, out, &error));
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(point_color(out, i), (std::vector<int>{ 255, 255, 0, 255 })) << i;
+  }
+}
+
+TEST(Marker, CubeListColoursEachCubeWithItsPointsColour)
+{
+  Marker cubes = listed(MarkerShape::CubeList, { 0, 0, 0, 2, 0, 0 }, { 1, 0, 0, 1, 0, 0, 1, 1 });
+  vtkNew<vtkPolyData> out;
+  std::string error;
+  ASSERT_TRUE(marker_to_poly_data(cubes, 1000.0, out, &error)) << error;
+  ASSERT_EQ(out->GetNumberOfPoints(), 48);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    const bool first = out->GetPoint(i)[0] < 1000.0;
+    EXPECT_EQ(point_color(out, i),
+      first ? (std::vector<int>{ 255, 0, 0, 255 }) : (std::vector<int>{ 0, 0, 255, 255 }))
+      << i;
+  }
+}
+
+// triangle_list_marker.cpp: points in threes scaled by scale, a colour per vertex or per
+// triangle with its alpha times color.a.
+TEST(Marker, TriangleListScaledAndColouredPerTriangle)
+{
+  Marker triangles =
+    listed(MarkerShape::TriangleList, { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, { 0, 1, 0, 1 });
+  triangles.scale[0] = 2.0;
+  triangles.scale[1] = 3.0;
+  triangles.scale[2] = 1.0;
+  triangles.color[3] = 0.5;
+  vtkNew<vtkPolyData> out;
+  std::string error;
+  ASSERT_TRUE(marker_to_poly_data(triangles, 1000.0, out, &error)) << error;
+  ASSERT_EQ(out->GetNumberOfPolys(), 1);
+  EXPECT_DOUBLE_EQ(out->GetPoint(1)[0], 2000.0);
+  EXPECT_DOUBLE_EQ(out->GetPoint(2)[1], 3000.0);
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(point_color(out, i), (std::vector<int>{ 0, 255, 0, 128 })) << i;
+  }
+  triangles.points.resize(6);
+  EXPECT_FALSE(marker_to_poly_data(triangles, 1000.0, out, &error));
+  EXPECT_NE(error.find("in threes"), std::string::npos) << error;
+}
+
+// arrow_marker.cpp setArrowFromPoints: from points[0] to points[1], shaft diameter scale.x,
+// head diameter scale.y, head length scale.z (23% of the length when 0); one point is refused.
+TEST(Marker, ArrowFromTwoPointsGoesFromTheFirstToTheSecond)
+{
+  Marker arrow = listed(MarkerShape::Arrow, { 0, 0, 1, 0, 2, 1 }, {});
+  arrow.scale[0] = 0.1;
+  arrow.scale[1] = 0.2;
+  arrow.scale[2] = 0.0;
+  vtkNew<vtkPolyData> out;
+  std::string error;
+  ASSERT_TRUE(marker_to_poly_data(arrow, 1000.0, out, &error)) << error;
+  double b[6];
+  out->GetBounds(b);
+  const double expected[6] = { -100.0, 100.0, 0.0, 2000.0, 900.0, 1100.0 };
+  for (int i = 0; i < 6; ++i)
+  {
+    EXPECT_NEAR(b[i], expected[i], 1e-3) << i;
+  }
+  double head_start = 1e9;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    const double* p = out->GetPoint(i);
+    if (std::hypot(p[0], p[2] - 1000.0) > 75.0) // head (100 mm), not shaft (50 mm)
+    {
+      head_start = std::min(head_start, p[1]);
+    }
+  }
+  EXPECT_NEAR(head_start, 2000.0 * (1.0 - 0.23), 1e-3);
+
+  arrow.points.resize(3);
+  EXPECT_FALSE(marker_to_poly_data(arrow, 1000.0, out, &error));
+  EXPECT_NE(error.find("two points (start and end) or none, not 1"), std::string::npos) << error;
+  arrow.points = { 0, 0, 0, 0, 0, 0 };
+  EXPECT_FALSE(marker_to_poly_data(arrow, 1000.0, out, &error));
+  EXPECT_NE(error.find("same point"), std::string::npos) << error;
+}
+
+TEST(Marker, ANonFiniteColourIsRefused)
+{
+  Marker points = listed(MarkerShape::Points, { 0, 0, 0 }, { 1, std::nan(""), 0, 1 });
+  vtkNew<vtkPolyData> out;
+  std::string error;
+  EXPECT_FALSE(marker_to_poly_data(points, 1000.0, out, &error));
+  EXPECT_NE(error.find("NaN"), std::string::npos) << error;
+}

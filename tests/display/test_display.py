@@ -466,6 +466,39 @@ def test_marker_array_shows_filled_shapes_in_their_colours(ros2vtk, logic, vtk, 
 
 
 
+def test_marker_per_point_colours_and_a_two_point_arrow_are_drawn(ros2vtk, logic, vtk, peers):
+    """RViz's per-point colours and point-to-point arrow, as drawn: a CUBE_LIST of two 40 mm
+    cubes at x -50 and +50 mm whose `colors` are red and blue (its `color` yellow, unused), and a
+    green ARROW from (-60, 60) to (60, 60) mm (shaft 10 mm, head 20 mm wide and long) whose pose
+    is the origin: green along y 60 mm, none at its pose."""
+    view = View(vtk)
+    view.top_down(half_height=150)
+    dm = make_display(ros2vtk, logic, view)
+    subscriber = logic.GetDefaultROS2Node().CreateAndAddSubscriberNode('MarkerArray', '/display_colours')
+    cubes = dict(marker('colours', 1, 6, 0.0, (1.0, 1.0, 0.0, 1.0)),
+                 points=[{'x': -0.05, 'y': 0.0, 'z': 0.0}, {'x': 0.05, 'y': 0.0, 'z': 0.0}],
+                 colors=[{'r': 1.0, 'g': 0.0, 'b': 0.0, 'a': 1.0}, {'r': 0.0, 'g': 0.0, 'b': 1.0, 'a': 1.0}])
+    arrow = dict(marker('colours', 2, 0, 0.0, (0.0, 1.0, 0.0, 1.0)),
+                 points=[{'x': -0.06, 'y': 0.06, 'z': 0.0}, {'x': 0.06, 'y': 0.06, 'z': 0.0}],
+                 scale={'x': 0.01, 'y': 0.02, 'z': 0.02})
+    peers('pub', '/display_colours', 'visualization_msgs/MarkerArray', json.dumps({'markers': [cubes, arrow]}),
+          '--count', '-1', '--rate', '5')
+    assert spin_until(logic, lambda: subscriber.GetNumberOfMessages() > 0, 20.0)
+    dm.Update()
+    rgb = view.pixels('marker_per_point_colours')
+    assert not mask(rgb, 'yellow').any()
+    for kind, x, y in (('red', -50.0, 0.0), ('blue', 50.0, 0.0), ('green', -40.0, 60.0), ('green', 45.0, 60.0)):
+        col, row = (int(round(v)) for v in view.display_point(x, y, 0))
+        assert mask(rgb, kind)[row - 1:row + 2, col - 1:col + 2].all(), (kind, x, y)
+    green = mask(rgb, 'green')
+    col, row = (int(round(v)) for v in view.display_point(0, 20.0, 0))
+    assert not green[row - 3:row + 4, col - 3:col + 4].any()  # nothing drawn from the pose
+    # The arrow spans x -60..60 mm (about 1 px per mm), no more.
+    cols = np.nonzero(green.any(axis=0))[0]
+    left, right = (view.display_point(x, 60.0, 0)[0] for x in (-60.0, 60.0))
+    assert abs(cols.min() - left) <= 3 and abs(cols.max() - right) <= 3, (cols.min(), cols.max(), left, right)
+
+
 def _wait_drawn(logic, dm, view, name, done, seconds=10.0):
     """Spins, updates the display and renders until done(pixels) holds; the last pixels."""
     import time

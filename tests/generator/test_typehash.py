@@ -7,8 +7,8 @@ import pytest
 from conftest import FIXTURES, MSG_SPECS, SHIPPED_PACKAGES
 from ros2vtk_gen.msg_parser import parse_spec_file, resolve
 from ros2vtk_gen.model import Action, Service
-from ros2vtk_gen.typehash import (action_description, default_value_text, hashable_description, message_description, service_description,
-                                  type_hash)
+from ros2vtk_gen.typehash import (action_description, default_value_text, description_sources, hashable_description,
+                                  message_description, own_source, service_description, type_hash)
 
 EXPECTED = {
     "builtin_interfaces/msg/Time":
@@ -360,3 +360,26 @@ def test_action_description_as_rosidl_synthesizes_it(table, actions):
         "test_msgs/action/Fibonacci_SendGoal_Event",
         "test_msgs/action/Fibonacci_SendGoal_Request",
         "test_msgs/action/Fibonacci_SendGoal_Response", "unique_identifier_msgs/msg/UUID"]
+
+
+def test_service_sources_as_rcl_serves_them(table, services):
+    """The type_sources served with SetBool's description (what rclpy's node answered, checked
+    by tests/interop/test_introspection.py): the .srv file, then per referenced type in order its
+    .msg file or 'implicit' for what the .srv synthesizes; texts without the last newline."""
+    service = services["std_srvs/srv/SetBool"]
+    description = service_description(service, table)
+    sources = description_sources(description, own_source(service), table)
+    assert [s["encoding"] for s in sources] == ["srv", "msg", "msg", "implicit", "implicit", "implicit"]
+    with open(os.path.join(MSG_SPECS, "std_srvs", "srv", "SetBool.srv"), encoding="utf-8") as handle:
+        text = handle.read()
+    assert text.endswith("\n") and sources[0]["raw_file_contents"] == text[:-1]
+    assert sources[2]["raw_file_contents"].startswith("uint8 REQUEST_SENT = 0\n")
+    assert all(s["raw_file_contents"] == "" for s in sources[3:])
+
+
+def test_an_actions_own_source_and_its_synthesized_types(table):
+    action = parse_spec_file(os.path.join(MSG_SPECS, "test_msgs", "action", "Fibonacci.action"))
+    assert own_source(action)["encoding"] == "action"
+    assert own_source(action)["raw_file_contents"].startswith("#goal definition\nint32 order\n---")
+    assert own_source(action.goal) == {"encoding": "implicit", "raw_file_contents": ""}
+    assert own_source(action.send_goal) == {"encoding": "implicit", "raw_file_contents": ""}

@@ -21,12 +21,14 @@
         well-formed hash of no type and with a malformed one. Prints one JSON object
         {node: {"available": bool, "services": [names], "types": {TYPE: response},
         "unknown": response, "malformed": response}}; a response is the message as plain JSON
-        plus "asked_hash" (the hash sent) and "rclpy_hash": rosidl's calculate_type_hash of the
-        description it carries.
+        plus "asked_hash" (the hash sent), "rclpy_hash": rosidl's calculate_type_hash of the
+        description it carries, and "sources_asked": the type_sources of the same request with
+        include_type_sources true and "source_constants" (see source_constants()).
 """
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import os
 import sys
@@ -36,6 +38,7 @@ import rclpy
 from rclpy.action import (ActionClient, ActionServer, get_action_client_names_and_types_by_node,
                           get_action_server_names_and_types_by_node)
 from geometry_msgs.msg import PoseStamped
+from rosidl_adapter.parser import parse_message_string
 from rosidl_generator_type_description import calculate_type_hash
 from sensor_msgs.msg import Image
 from std_msgs.msg import String
@@ -184,18 +187,54 @@ def plain(value):
     return value
 
 
-def call(node, client, type_name: str, type_hash: str, wait: float) -> dict:
+def ask(node, client, type_name: str, type_hash: str, wait: float, sources: bool):
     request = GetTypeDescription.Request(type_name=type_name, type_hash=type_hash,
-                                         include_type_sources=False)
+                                         include_type_sources=sources)
     future = client.call_async(request)
     rclpy.spin_until_future_complete(node, future, timeout_sec=wait)
-    if not future.done():
+    return future.result() if future.done() else None
+
+
+def call(node, client, type_name: str, type_hash: str, wait: float) -> dict:
+    """The response without type sources, plus under "sources_asked" the type_sources of a
+    second request with include_type_sources true."""
+    result = ask(node, client, type_name, type_hash, wait, sources=False)
+    if result is None:
         return {'error': 'no response'}
-    response = plain(future.result())
+    response = plain(result)
     response['asked_hash'] = type_hash
     if response['successful']:
         response['rclpy_hash'] = calculate_type_hash(response['type_description'])
+    with_sources = ask(node, client, type_name, type_hash, wait, sources=True)
+    response['sources_asked'] = plain(with_sources.type_sources) if with_sources else 'no response'
+    if with_sources:
+        response['source_constants'] = source_constants(with_sources.type_sources)
     return response
+
+
+def source_constants(sources) -> dict:
+    """What a ROS 2 tool that lacks the types learns of their constants from the sources:
+    {type_name: {"parsed": {NAME: value}, "rclpy": {NAME: value}}} for every "msg" source,
+    "parsed" by rosidl_adapter's .msg parser (what rosidl reads .msg files with), "rclpy" the
+    constants of rclpy's own class of the type (its metaclass's table), for comparison."""
+    result = {}
+    for source in sources:
+        if source.encoding != 'msg':
+            continue
+        package, _, name = source.type_name.split('/')
+        spec = parse_message_string(package, name, source.raw_file_contents)
+        metaclass = type(getattr(importlib.import_module(f'{package}.msg'), name))
+        result[source.type_name] = {
+            'parsed': {c.name: plain_constant(c.value) for c in spec.constants},
+            'rclpy': {name: plain_constant(value) for name, value in
+                      getattr(metaclass, f'_{metaclass.__name__}__constants').items()},
+        }
+    return result
+
+
+def plain_constant(value):
+    """A constant as JSON holds it: rclpy keeps a byte constant as bytes (b'\\n'), its integer."""
+    return value[0] if isinstance(value, bytes) else value
 
 
 def cmd_describe(args: argparse.Namespace) -> int:

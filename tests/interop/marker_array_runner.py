@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Our side of tests/interop/test_scene_marker_array.py: a MarkerArray subscriber node (the
 VTK-wrapped API) on TOPIC; after each spin that brought messages it records what
-GetLastMessage() draws (markers kept, points, each marker's colour, bounds in mm). Prints
+GetLastMessage() draws (markers kept, points, each marker's colour, bounds in mm, and each
+marker's points with their colours). Prints
 {"ready": true}, then one JSON object with the snapshots once COUNT messages arrived (or S seconds)
 and, with --linger L, what it draws after L more seconds of spins without messages ("after").
 --type Marker subscribes a plain Marker topic instead; --fixed-frame F sets the subscriber's fixed
@@ -30,10 +31,11 @@ def snapshot(sub) -> dict:
         return {'count': sub.GetNumberOfMessages(), 'drawn': None, 'error': sub.GetLastConversionError()}
     index = drawn.GetCellData().GetArray('MarkerIndex')
     color = drawn.GetPointData().GetScalars()
-    colors, bounds, lines = {}, {}, {}
+    colors, bounds, lines, point_ids = {}, {}, {}, {}
     for cell in range(drawn.GetNumberOfCells()):
         marker = int(index.GetValue(cell))
         ids = drawn.GetCell(cell).GetPointIds()
+        point_ids.setdefault(marker, set()).update(ids.GetId(i) for i in range(ids.GetNumberOfIds()))
         if marker not in colors:
             colors[marker] = [int(color.GetComponent(ids.GetId(0), c)) for c in range(4)]
         if drawn.GetCellType(cell) in (3, 4):  # VTK_LINE, VTK_POLY_LINE
@@ -51,6 +53,9 @@ def snapshot(sub) -> dict:
             'lines': drawn.GetNumberOfLines(), 'bounds': list(drawn.GetBounds()),
             'scalars': color.GetName() if color else None, 'error': sub.GetLastConversionError(),
             'labels': labels(drawn),
+            # each marker's points in id order: x, y, z (mm) and the RGBA of its "Color" tuple
+            'marker_points': [[[*drawn.GetPoint(i), *(int(color.GetComponent(i, c)) for c in range(4))]
+                               for i in sorted(point_ids[k])] for k in sorted(colors)],
             'centres': [[0.5 * (b[2 * a] + b[2 * a + 1]) for a in range(3)]
                         for b in (bounds[k] for k in sorted(bounds))],
             'frame_status': sub.GetFrameStatus() if hasattr(sub, 'GetFrameStatus') else ''}

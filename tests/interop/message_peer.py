@@ -30,11 +30,19 @@ INT_RANGES = {
 
 
 def message_class(type_name: str) -> type:
+    """rclpy's class of a message type; also the halves of a service (pkg/srv/X_Request) and
+    the messages of an action (pkg/action/X_Goal: rclpy keeps them on the action's class, and
+    X_FeedbackMessage on its Impl)."""
     parts = type_name.split('/')
     if len(parts) == 2:
         parts = [parts[0], 'msg', parts[1]]
     package, kind, name = parts
-    return getattr(importlib.import_module(f'{package}.{kind}'), name)
+    module = importlib.import_module(f'{package}.{kind}')
+    if hasattr(module, name):
+        return getattr(module, name)
+    base, _, suffix = name.partition('_')
+    owner = getattr(module, base)
+    return getattr(owner, suffix) if hasattr(owner, suffix) else getattr(owner.Impl, suffix)
 
 
 def basic_value(type_name: str) -> tuple[Any, Any]:

@@ -409,6 +409,8 @@ def cmd_serve(args, logic, node) -> int:
 def cmd_robot(args, logic, node) -> int:
     """A robot node from a robot_state_publisher's parameter or topic; prints its state once
     loaded, then a snapshot of every link's world matrix (mm) every --every seconds."""
+    if args.scene_fixed_frame:
+        logic.GetScene().SetFixedFrame(args.scene_fixed_frame)
     if args.source == 'parameter':
         robot = node.CreateAndAddRobotNode(args.name, args.rsp_node, 'robot_description', '', args.tf_prefix)
     elif args.source == 'file':
@@ -547,6 +549,8 @@ def main() -> int:
     robot.add_argument('--joint-states-quiet', type=float, default=0.0,
                        help='stop once joint states came and then none for this many seconds')
     robot.add_argument('--base-y', type=float, default=0.0, help='mm: place the robot with its base transform')
+    robot.add_argument('--scene-fixed-frame', default='',
+                       help="vtkROS2Scene::SetFixedFrame, used by a robot without its own fixed frame")
     args = parser.parse_args()
     logic = ros2vtk.vtkROS2Logic()
     node = logic.GetDefaultROS2Node()

@@ -20,10 +20,11 @@ our answer must be rclpy's refusal.
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
-from conftest import BUILD, HERE, VENV_PYTHON, Ros, _domains
+from conftest import BUILD, HERE, REPO, VENV_PYTHON, Ros, _domains
 
 OURS = '/slicer'
 QUIET = '/slicer_quiet'  # ours, created with start_type_description_service false
@@ -204,6 +205,60 @@ def test_our_type_description_equals_rclpys(graph, ros_type):
     assert ours['extra_information'] == theirs['extra_information']
 
 
+@pytest.mark.parametrize('ros_type', DESCRIBED)
+def test_our_type_sources_equal_rclpys(graph, ros_type):
+    """Asked with include_type_sources, rclpy's node answers the interface file of the type and
+    of each type it references, in the description's order (TypeSource: encoding "msg", "srv"
+    or "action" with the file's text, "implicit" and no text for what a .srv or .action
+    synthesizes); ours answers the same, from the files our generator read."""
+    descriptions = graph['descriptions']
+    theirs = descriptions[RCLPY]['types'][ros_type]
+    ours = descriptions[OURS]['types'][ros_type]
+    names = [theirs['type_description']['type_description']['type_name']] + [
+        t['type_name'] for t in theirs['type_description']['referenced_type_descriptions']]
+    assert [s['type_name'] for s in theirs['sources_asked']] == names
+    own = theirs['sources_asked'][0]
+    assert own['encoding'] == 'implicit' or own['raw_file_contents'], own  # rclpy serves text
+    # Where the peer's distribution installs another text of an interface file than the one we
+    # ship (Jazzy's builtin_interfaces Time.msg and Duration.msg comments; none on Kilted), only
+    # that entry's text may differ.
+    other_text = {name for name in names if peer_file_differs(name)}
+    assert other_text <= {'builtin_interfaces/msg/Time', 'builtin_interfaces/msg/Duration'}, other_text
+    assert [{**s, 'raw_file_contents': None} if s['type_name'] in other_text else s for s in ours['sources_asked']] \
+        == [{**s, 'raw_file_contents': None} if s['type_name'] in other_text else s for s in theirs['sources_asked']]
+
+
+def peer_file_differs(ros_type: str) -> bool:
+    """True when the peer's venv installs `ros_type`'s interface file with another text than
+    the one our generator read (msg_specs/, or the generator's fixed_specs/)."""
+    package, kind, name = ros_type.split('/')
+    relative = Path(package) / kind / f'{name}.{kind}'
+    theirs = VENV_PYTHON.parents[1] / 'share' / relative
+    ours = next((p for p in (REPO / 'msg_specs' / relative,
+                             REPO / 'generator' / 'ros2vtk_gen' / 'fixed_specs' / relative) if p.exists()), None)
+    return theirs.exists() and ours is not None and theirs.read_text() != ours.read_text()
+
+
+# Types in use whose sources carry constants: their own (Log's levels) or a referenced type's
+# (GoalStatus's STATUS_* in GoalStatusArray, ParameterType's in ParameterEvent's values).
+WITH_CONSTANTS = {
+    'rcl_interfaces/msg/Log': 'rcl_interfaces/msg/Log',
+    'action_msgs/msg/GoalStatusArray': 'action_msgs/msg/GoalStatus',
+    'test_msgs/action/Fibonacci': 'service_msgs/msg/ServiceEventInfo',
+}
+
+
+@pytest.mark.parametrize('ros_type', sorted(WITH_CONSTANTS))
+def test_constants_read_from_our_type_sources_are_rclpys(graph, ros_type):
+    """A tool lacking the types reads their constants from the sources we serve: rosidl's .msg
+    parser (run by the rclpy process on our answer) finds every constant of rclpy's class of
+    each type, with its value."""
+    constants = graph['descriptions'][OURS]['types'][ros_type]['source_constants']
+    assert constants[WITH_CONSTANTS[ros_type]]['rclpy'], constants  # the type has some
+    for type_name, found in constants.items():
+        assert found['parsed'] == found['rclpy'], type_name
+
+
 @pytest.mark.parametrize('ros_type', NOT_SERVED)
 def test_types_rclpy_does_not_serve_we_do_not_either(graph, ros_type):
     """A type only nested in (or synthesized beside) the types in use is refused by rclpy's
@@ -215,6 +270,7 @@ def test_types_rclpy_does_not_serve_we_do_not_either(graph, ros_type):
     assert ours['successful'] is False, ours['type_description']['type_description']['type_name']
     assert ours['failure_reason'] == theirs['failure_reason']
     assert ours['type_description'] == theirs['type_description']
+    assert ours['sources_asked'] == theirs['sources_asked'] == []
 
 
 def test_array_default_values_are_written_as_rclpy_writes_them(graph):

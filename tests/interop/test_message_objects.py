@@ -120,14 +120,9 @@ print(json.dumps({'refused_wrong_type': refused, 'sent': publisher.GetNumberOfMe
 '''
 
 
-def test_constants_are_rclpys(ros):
-    """A type's constants through the wrapped API (GetNumberOfConstants, GetConstantName,
-    GetConstant) are rclpy's, by name, order and value: every primitive kind (test_msgs
-    Constants), rcl_interfaces/msg/ParameterType (the app's parameter form takes its type ids
-    there), Log's byte levels, PointField's datatypes; a type without constants has none, and
-    an unknown name is an error naming the type."""
-    types = ['rcl_interfaces/msg/ParameterType', 'rcl_interfaces/msg/Log', 'sensor_msgs/msg/PointField',
-             'std_msgs/msg/String'] + (['test_msgs/msg/Constants'] if 'test_msgs/msg/Constants' in TYPES else [])
+def ours_and_rclpys_constants(ros, types: list[str]) -> tuple[dict, list, list]:
+    """({type: rclpy's [[name, value]]}, our [[name, text]] per type, and our answer for an
+    unknown constant of ParameterType: [value, error])."""
     peer = subprocess.run([str(VENV_PYTHON), str(HERE / 'message_peer.py'), 'constants', *types],
                           capture_output=True, text=True, timeout=60, env=ros.env)
     assert peer.returncode == 0, peer.stderr
@@ -145,7 +140,10 @@ def test_constants_are_rclpys(ros):
     assert ours.returncode == 0, ours.stderr
     *lines, unknown = [json.loads(line) for line in ours.stdout.splitlines()]
     assert len(lines) == len(types)
+    return theirs, lines, unknown
 
+
+def assert_same_constants(types: list[str], theirs: dict, lines: list) -> None:
     def same(text: str, value) -> bool:  # our value as the .msg file writes it; rclpy's as Python
         if isinstance(value, bool):
             return text.lower() in ('true', '1') if value else text.lower() in ('false', '0')
@@ -156,9 +154,34 @@ def test_constants_are_rclpys(ros):
         assert [n for n, _ in constants] == [n for n, _ in theirs[name]], name
         assert all(same(text, value) for (_, text), (_, value) in zip(constants, theirs[name])), \
             (name, constants, theirs[name])
+
+
+def test_constants_are_rclpys(ros):
+    """A type's constants through the wrapped API (GetNumberOfConstants, GetConstantName,
+    GetConstant) are rclpy's, by name, order and value: every primitive kind (test_msgs
+    Constants), rcl_interfaces/msg/ParameterType (the app's parameter form takes its type ids
+    there), Log's byte levels, PointField's datatypes; a type without constants has none, and
+    an unknown name is an error naming the type."""
+    types = ['rcl_interfaces/msg/ParameterType', 'rcl_interfaces/msg/Log', 'sensor_msgs/msg/PointField',
+             'std_msgs/msg/String'] + (['test_msgs/msg/Constants'] if 'test_msgs/msg/Constants' in TYPES else [])
+    theirs, lines, unknown = ours_and_rclpys_constants(ros, types)
+    assert_same_constants(types, theirs, lines)
     assert theirs['std_msgs/msg/String'] == []
     assert unknown[0] == '' and "rcl_interfaces/msg/ParameterType has no constant 'PARAMETER_NOPE'" in unknown[1]
     print(f'constants of {len(types)} types as rclpy has them, e.g. ParameterType {lines[0]}')
+
+
+def test_service_and_action_constants_are_rclpys(ros):
+    """The constants of a .srv's request and response (CancelGoal's ERROR_*, LoadMap's RESULT_*,
+    ListParameters' DEPTH_RECURSIVE) and of an action's goal, result and feedback are rclpy's
+    class attributes, by name, order and value; the halves without constants have none."""
+    types = ['action_msgs/srv/CancelGoal_Request', 'action_msgs/srv/CancelGoal_Response',
+             'nav_msgs/srv/LoadMap_Response', 'rcl_interfaces/srv/ListParameters_Request',
+             'test_msgs/action/Fibonacci_Goal', 'test_msgs/action/Fibonacci_Result',
+             'test_msgs/action/Fibonacci_Feedback']
+    theirs, lines, _ = ours_and_rclpys_constants(ros, types)
+    assert [len(theirs[t]) for t in types] == [0, 4, 5, 1, 0, 0, 0], theirs  # rclpy's, for the record
+    assert_same_constants(types, theirs, lines)
 
 
 def test_rclpy_stamp_and_child_frame_reach_our_typed_object(ros):

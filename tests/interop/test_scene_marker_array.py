@@ -30,6 +30,20 @@ def close(a, b, tol=1e-6):
     assert len(a) == len(b) and all(math.isclose(x, y, abs_tol=tol) for x, y in zip(a, b)), (a, b)
 
 
+def draw_one_marker_array(ros, topic: str, markers: list) -> dict:
+    """What our MarkerArray subscriber on `topic` draws (marker_array_runner.py's snapshot) from
+    an rclpy publisher repeating one MarkerArray of `markers`."""
+    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
+                      '--seconds', '20'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
+    ros.wait_ready(ours)
+    peer = ros.peer('pub', topic, 'visualization_msgs/msg/MarkerArray', json.dumps({'markers': markers}),
+                    '--count', '-1', '--rate', '5')
+    code, out, err = ros.finish(ours, timeout=30)
+    ros.stop(peer)
+    assert code == 0, err
+    return json.loads(out.splitlines()[-1])['snapshots'][0]
+
+
 def test_rclpy_marker_array_add_delete_deleteall(ros):
     topic = '/scene_in/marker_array'
     ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '3',
@@ -96,16 +110,7 @@ def test_rclpy_list_markers_line_list_cube_list_sphere_list(ros):
                marker('b_cubes', CUBE_LIST, [(0, 0, 0), (1, 2, 3)], (0.0, 1.0, 0.0)),
                marker('c_spheres', SPHERE_LIST, [(-1, 0, 0), (1, 0, 0), (0, 0, 2)], (0.0, 0.0, 1.0)),
                marker('d_odd', LINE_LIST, [(0, 0, 0), (1, 0, 0), (0, 1, 0)], (1.0, 1.0, 0.0))]
-    topic = '/scene_in/marker_lists'
-    ours = ros.start(['/usr/bin/python3', str(HERE / 'marker_array_runner.py'), topic, '--count', '1',
-                      '--seconds', '20'], dict(ros.env, PYTHONPATH=str(BUILD / 'python')))
-    ros.wait_ready(ours)
-    peer = ros.peer('pub', topic, 'visualization_msgs/msg/MarkerArray', json.dumps({'markers': markers}),
-                    '--count', '-1', '--rate', '5')
-    code, out, err = ros.finish(ours, timeout=30)
-    ros.stop(peer)
-    assert code == 0, err
-    drawn = json.loads(out.splitlines()[-1])['snapshots'][0]
+    drawn = draw_one_marker_array(ros, '/scene_in/marker_lists', markers)
     assert drawn['markers'] == 3 and drawn['colors'] == [RED, GREEN, BLUE], drawn
     assert drawn['error'] == ("marker (ns 'd_odd', id 1): marker_to_poly_data: a line list needs an even "
                               "number of points (pairs), not 3"), drawn
@@ -232,3 +237,65 @@ def test_rclpy_stamped_tf_history_places_markers_at_their_stamps_in_the_scenes_f
     status = drawn['frame_status']
     assert status.startswith("marker (ns 's', id 3): dropped: its stamp is older than the tf history"), drawn
     assert 'No transform from [fs] to [world]' in status and 'extrapolation into the past' in status, drawn
+
+
+def test_rclpy_per_point_colours_and_two_point_arrows(ros):
+    """RViz's per-point colours and point-to-point arrows from one rclpy MarkerArray (markers at
+    the origin pose): POINTS and LINE_STRIP with as many `colors` as points colour each point with
+    its own (points_marker.cpp, line_marker_base.cpp), a CUBE_LIST each cube with its point's, a
+    TRIANGLE_LIST with one colour per triangle each triangle (its alpha times color.a,
+    triangle_list_marker.cpp); a LINE_LIST whose colors count differs from its points keeps
+    `color`. An ARROW with two points goes from the first to the second (arrow_marker.cpp): shaft
+    diameter scale.x, head diameter scale.y, head length scale.z, or 23% of the length when it is
+    0; with one point it is refused. Expected values are the published ones, in mm and bytes."""
+    def marker(ns, kind, points, color=(1.0, 1.0, 1.0, 1.0), colors=(), scale=(0.05, 0.05, 0.05)):
+        return {'header': {'frame_id': 'base'}, 'ns': ns, 'id': 1, 'type': kind, 'action': 0,
+                'pose': {'orientation': {'w': 1.0}}, 'scale': dict(zip('xyz', scale)),
+                'color': dict(zip('rgba', color)), 'colors': [dict(zip('rgba', c)) for c in colors],
+                'points': [{'x': float(x), 'y': float(y), 'z': float(z)} for x, y, z in points]}
+    ARROW, LINE_STRIP, LINE_LIST, CUBE_LIST, POINTS, TRIANGLE_LIST = 0, 4, 5, 6, 8, 11
+    r, g, b = (1.0, 0.0, 0.0, 1.0), (0.0, 1.0, 0.0, 1.0), (0.0, 0.0, 1.0, 1.0)
+    markers = [
+        marker('a_points', POINTS, [(0, 0, 0), (1, 0, 0), (0, 1, 0)], colors=[r, g, b]),
+        marker('b_strip', LINE_STRIP, [(0, 0, 1), (1, 0, 1), (1, 1, 1)],
+               colors=[(1.0, 1.0, 0.0, 1.0), (0.0, 1.0, 1.0, 1.0), (1.0, 0.0, 1.0, 0.5)]),
+        marker('c_cubes', CUBE_LIST, [(0, 0, -1), (2, 0, -1)], colors=[r, b], scale=(0.1, 0.1, 0.1)),
+        marker('d_lines', LINE_LIST, [(0, 0, 0), (0, 0, 1)], color=(1.0, 1.0, 0.0, 1.0), colors=[r]),
+        marker('e_triangles', TRIANGLE_LIST, [(0, 0, 5), (1, 0, 5), (0, 1, 5), (0, 0, 6), (1, 0, 6), (0, 1, 6)],
+               color=(1.0, 1.0, 1.0, 0.5), colors=[r, g], scale=(1.0, 1.0, 1.0)),
+        marker('f_arrow', ARROW, [(0, 0, 2), (1, 0, 2)], color=(0.5, 0.5, 0.5, 1.0), scale=(0.1, 0.2, 0.3)),
+        marker('g_arrow', ARROW, [(0, 0, 3), (0, -1, 3)], scale=(0.1, 0.2, 0.0)),
+        marker('h_arrow_one_point', ARROW, [(0, 0, 4)], scale=(0.1, 0.2, 0.3)),
+    ]
+    drawn = draw_one_marker_array(ros, '/scene_in/marker_colours', markers)
+    assert drawn['error'] == ("marker (ns 'h_arrow_one_point', id 1): marker_to_poly_data: an arrow marker "
+                              "takes two points (start and end) or none, not 1"), drawn
+    assert drawn['markers'] == 7, drawn
+    points, strip, cubes, lines, triangles, arrow, arrow_down = drawn['marker_points']
+
+    assert points == [[0, 0, 0, 255, 0, 0, 255], [1000, 0, 0, 0, 255, 0, 255], [0, 1000, 0, 0, 0, 255, 255]]
+    assert strip == [[0, 0, 1000, 255, 255, 0, 255], [1000, 0, 1000, 0, 255, 255, 255],
+                     [1000, 1000, 1000, 255, 0, 255, 128]]
+    # Each 100 mm cube in its point's colour: red about x 0, blue about x 2000.
+    assert len(cubes) == 2 * CUBE_POINTS
+    assert {tuple(p[3:]) for p in cubes if p[0] < 1000} == {(255, 0, 0, 255)}
+    assert {tuple(p[3:]) for p in cubes if p[0] > 1000} == {(0, 0, 255, 255)}
+    # One colour for two points: not per point, the marker's yellow.
+    assert lines == [[0, 0, 0, 255, 255, 0, 255], [0, 0, 1000, 255, 255, 0, 255]]
+    # One colour per triangle, alpha 1 x color.a 0.5 (128 of 255).
+    assert triangles == [[0, 0, 5000, 255, 0, 0, 128], [1000, 0, 5000, 255, 0, 0, 128], [0, 1000, 5000, 255, 0, 0, 128],
+                         [0, 0, 6000, 0, 255, 0, 128], [1000, 0, 6000, 0, 255, 0, 128], [0, 1000, 6000, 0, 255, 0, 128]]
+
+    # (0, 0, 2) -> (1, 0, 2) m: from x 0 to 1000 mm, head 200 mm wide, its base 300 mm from the tip,
+    # shaft 100 mm wide; all grey.
+    f_bounds, g_bounds = drawn['marker_bounds'][5], drawn['marker_bounds'][6]
+    close(f_bounds, [0, 1000, -100, 100, 1900, 2100], tol=1e-3)
+    shaft = [p for p in arrow if math.hypot(p[1], p[2] - 2000) < 75]  # shaft 50, head 100 mm from the axis
+    head = [p for p in arrow if math.hypot(p[1], p[2] - 2000) > 75]
+    assert head and min(p[0] for p in head) == pytest.approx(700, abs=1e-3)
+    assert max(math.hypot(p[1], p[2] - 2000) for p in shaft) == pytest.approx(50, abs=1e-3)
+    assert {tuple(p[3:]) for p in arrow} == {(128, 128, 128, 255)}
+    # (0, 0, 3) -> (0, -1, 3) m, scale.z 0: along -y, head 23% of the length (230 mm).
+    close(g_bounds, [-100, 100, -1000, 0, 2900, 3100], tol=1e-3)
+    head = [p for p in arrow_down if math.hypot(p[0], p[2] - 3000) > 75]
+    assert max(p[1] for p in head) == pytest.approx(-770, abs=1e-3)

@@ -5,6 +5,7 @@ forward kinematics to 1e-6 m."""
 from __future__ import annotations
 
 import json
+import math
 import os
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
@@ -111,6 +112,49 @@ def test_namespaced_robot_with_tf_prefix(ros):
     for config in expected:
         best = min(matches(snapshot['links'], config['links']) for snapshot in snapshots)
         assert best < TOLERANCE_MM, f"configuration {config['config']} never matched (best {best})"
+
+
+def test_robot_without_a_fixed_frame_is_placed_in_the_scenes_fixed_frame(ros):
+    """As RViz's global Fixed Frame places a RobotModel: our robot has no fixed frame of its own,
+    the scene's is 'world', and an rclpy static broadcaster puts the root link in world (0.5,
+    -0.25, 0.1) m turned a quarter about z. Every link's world matrix is then that transform times
+    yourdfpy's pose of the link in the root link's frame (rsp_peer.py), through each
+    configuration."""
+    hold = 2.5
+    world_to_root = {'t': [0.5, -0.25, 0.1], 'q': [0.0, 0.0, math.sqrt(0.5), math.sqrt(0.5)]}
+    rsp = start_rsp(ros, ARM, '--configs', '2', '--hold', str(hold))
+    ready = json.loads(rsp.stdout.readline())
+    assert ready.get('ready'), ready
+    static = ros.tf_peer('tf_pub', 'world', ready['root'], json.dumps(world_to_root), '--static',
+                         '--seconds', '40')
+    ours = start_scene_robot(ros, '--seconds', '30', 'robot', 'arm', '--source', 'topic', '--follow',
+                             str(2 * hold + 1.0), '--mesh-path', str(ARM_PACKAGE), '--mesh-base-folder',
+                             str(ARM.parent), '--scene-fixed-frame', 'world')
+    code, out, err = ros.finish(ours, timeout=2 * hold + 60)
+    rsp_code, rsp_out, rsp_err = ros.finish(rsp, timeout=30)
+    ros.stop(static)
+    assert code == 0, err
+    assert rsp_code == 0, rsp_err
+    lines = [json.loads(line) for line in out.splitlines()]
+    state, snapshots = lines[1], lines[2:]
+    assert state['state'] == 'loaded', state
+    # A quarter turn about z: x -> y, y -> -x.
+    rotation = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    offset = world_to_root['t']
+    expected = []
+    for line in rsp_out.splitlines():
+        config = json.loads(line)
+        if 'config' not in config:
+            continue
+        placed = {}
+        for link, rows in config['links'].items():
+            placed[link] = [[sum(rotation[i][k] * rows[k][j] for k in range(3)) for j in range(3)]
+                            + [sum(rotation[i][k] * rows[k][3] for k in range(3)) + offset[i]] for i in range(3)]
+        expected.append(placed)
+    assert len(expected) == 2
+    for index, config in enumerate(expected):
+        best = min(matches(snapshot['links'], config) for snapshot in snapshots)
+        assert best < TOLERANCE_MM, f'configuration {index} never matched in world (best {best})'
 
 
 def test_example_robot_data_ur5_with_collada_meshes(ros):

@@ -173,7 +173,7 @@ def test_marker_array_kind_reads_each_marker_and_names_its_state(table):
     assert {name: role.path for name, role in rule.element_roles.items()} == {
         "ns": "ns", "id": "id", "action": "action", "type": "type", "position": "pose.position",
         "orientation": "pose.orientation", "scale": "scale", "color": "color", "points": "points",
-        "lifetime": "lifetime", "text": "text", "mesh_resource": "mesh_resource",
+        "colors": "colors", "lifetime": "lifetime", "text": "text", "mesh_resource": "mesh_resource",
         "mesh_use_embedded_materials": "mesh_use_embedded_materials",
         "frame_id": "header.frame_id", "stamp": "header.stamp", "frame_locked": "frame_locked"}
     assert sorted(rule.scaled_roles) == ["points", "position", "scale"]

@@ -126,7 +126,14 @@ TEST(TypeDescriptionRequest, KnownMessageTypeAsRosidlDescribesIt)
   ASSERT_EQ(header.fields.size(), 2u);
   EXPECT_EQ(header.fields[1].name, "frame_id");
   EXPECT_EQ(header.fields[1].type.type_id, 17); // FIELD_TYPE_STRING
-  EXPECT_TRUE(response.type_sources.empty());
+  // Asked with include_type_sources (the request's default): the type's and each referenced
+  // type's .msg text, as rcl answers.
+  ASSERT_EQ(response.type_sources.size(), 6u);
+  for (const auto& source : response.type_sources)
+  {
+    EXPECT_EQ(source.encoding, "msg") << source.type_name;
+    EXPECT_FALSE(source.raw_file_contents.empty()) << source.type_name;
+  }
   EXPECT_TRUE(response.extra_information.empty());
 }
 
@@ -149,6 +156,48 @@ TEST(TypeDescriptionRequest, KnownServiceTypeWithItsSynthesizedEvent)
   ASSERT_EQ(event.fields.size(), 3u);
   EXPECT_EQ(event.fields[1].type.type_id, 97); // FIELD_TYPE_NESTED_TYPE_BOUNDED_SEQUENCE
   EXPECT_EQ(event.fields[1].type.capacity, 1u);
+}
+
+// What rclpy's node answered for SetBool with include_type_sources (Kilted): the .srv text
+// (172 characters, no last newline), then per referenced type its .msg text or "implicit".
+TEST(TypeDescriptionRequest, TypeSourcesOnlyWhenAskedAndInTheDescriptionsOrder)
+{
+  wire::NodeTypeCache types;
+  const auto& set_bool = ros2vtk::std_srvs::srv::SetBool::type_support();
+  auto held = types.add(set_bool.type_hash, set_bool.description);
+  tdi::srv::GetTypeDescription_Request request;
+  request.type_name = "std_srvs/srv/SetBool";
+  request.type_hash = kSetBoolHash;
+  request.include_type_sources = false;
+  tdi::srv::GetTypeDescription_Response response;
+  wire::answer_type_description_request(types, request, response);
+  ASSERT_TRUE(response.successful);
+  EXPECT_TRUE(response.type_sources.empty());
+
+  request.include_type_sources = true;
+  wire::answer_type_description_request(types, request, response);
+  ASSERT_TRUE(response.successful);
+  std::vector<std::string> names, encodings;
+  for (const auto& source : response.type_sources)
+  {
+    names.push_back(source.type_name);
+    encodings.push_back(source.encoding);
+  }
+  EXPECT_EQ(names,
+    (std::vector<std::string>{ "std_srvs/srv/SetBool", "builtin_interfaces/msg/Time",
+      "service_msgs/msg/ServiceEventInfo", "std_srvs/srv/SetBool_Event",
+      "std_srvs/srv/SetBool_Request", "std_srvs/srv/SetBool_Response" }));
+  EXPECT_EQ(encodings,
+    (std::vector<std::string>{ "srv", "msg", "msg", "implicit", "implicit", "implicit" }));
+  const std::string& own = response.type_sources[0].raw_file_contents;
+  EXPECT_EQ(own.size(), 172u);
+  EXPECT_EQ(own.rfind("bool data # e.g. for hardware enabling / disabling\n---\n", 0), 0u) << own;
+  EXPECT_EQ(response.type_sources[1].raw_file_contents.size(), 244u); // Time.msg
+  EXPECT_EQ(response.type_sources[2].raw_file_contents.size(), 691u); // ServiceEventInfo.msg
+  for (size_t i = 3; i < response.type_sources.size(); ++i)
+  {
+    EXPECT_EQ(response.type_sources[i].raw_file_contents, "") << names[i];
+  }
 }
 
 TEST(TypeDescriptionRequest, UnknownTypeFailsAsRcl)

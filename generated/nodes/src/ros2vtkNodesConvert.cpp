@@ -1118,6 +1118,7 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::Marker& message, st
       case ::ros2vtk::visualization_msgs::msg::Marker::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
       case ::ros2vtk::visualization_msgs::msg::Marker::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
       case ::ros2vtk::visualization_msgs::msg::Marker::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::TRIANGLE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::TriangleList; break;
       default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
     }
     marker.position[0] = message.pose.position.x;
@@ -1140,6 +1141,14 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::Marker& message, st
       marker.points.push_back(point.x);
       marker.points.push_back(point.y);
       marker.points.push_back(point.z);
+    }
+    marker.colors.reserve(4 * message.colors.size());
+    for (const auto& rgba : message.colors)
+    {
+      marker.colors.push_back(rgba.r);
+      marker.colors.push_back(rgba.g);
+      marker.colors.push_back(rgba.b);
+      marker.colors.push_back(rgba.a);
     }
     marker.text = message.text;
     marker.mesh_resource = message.mesh_resource;
@@ -1240,6 +1249,7 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::MarkerArray& messag
       case Element::POINTS: marker.shape = ::ros2vtk::convert::MarkerShape::Points; break;
       case Element::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
       case Element::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
+      case Element::TRIANGLE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::TriangleList; break;
       default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
     }
     marker.position[0] = element.pose.position.x;
@@ -1262,6 +1272,14 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::MarkerArray& messag
       marker.points.push_back(point.x);
       marker.points.push_back(point.y);
       marker.points.push_back(point.z);
+    }
+    marker.colors.reserve(4 * element.colors.size());
+    for (const auto& rgba : element.colors)
+    {
+      marker.colors.push_back(rgba.r);
+      marker.colors.push_back(rgba.g);
+      marker.colors.push_back(rgba.b);
+      marker.colors.push_back(rgba.a);
     }
     marker.text = element.text;
     marker.mesh_resource = element.mesh_resource;

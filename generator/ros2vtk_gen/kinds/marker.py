@@ -1,11 +1,13 @@
 """Kind `marker`: visualization_msgs/Marker-like fields (a type, a pose, a scale, a colour and a
 list of points) <-> a vtkPolyData drawn with VTK's shape sources. The template maps the
 message's ARROW, CUBE, SPHERE, CYLINDER, LINE_STRIP and POINTS constants onto the helper's
-shapes (LINE_LIST, CUBE_LIST, SPHERE_LIST, TEXT_VIEW_FACING and MESH_RESOURCE too when the
+shapes (LINE_LIST, CUBE_LIST, SPHERE_LIST, TRIANGLE_LIST, TEXT_VIEW_FACING and MESH_RESOURCE too when the
 message defines them: a lab's own Marker-like type may not; TEXT_VIEW_FACING needs the optional
 `text` role and becomes a label in the poly data's field data, MESH_RESOURCE the optional
 `mesh_resource` role, the file read by the loader the Scene module installs); other types are refused with a reason. Positions, sizes and points
-are lengths.
+are lengths. The optional role `colors` gives each point its own colour as RViz does (as many
+colours as points; a triangle list also one per triangle); an ARROW with two points goes from
+the first to the second.
 
 Kept markers (optional roles `ns`, `id` and `action`, all three): the subscriber keeps the
 topic's markers by (ns, id) as RViz does, in a ros2vtk::convert::MarkerSet (ADD/MODIFY replace,
@@ -18,6 +20,8 @@ from ..errors import MAPPING_BAD_FIELD
 from .base import QUATERNION, XYZ_FLOAT64, Kind, prim, struct
 
 COLOR = struct(r=prim("float32"), g=prim("float32"), b=prim("float32"), a=prim("float32"))
+COLORS = struct(sequence=True, r=prim("float32"), g=prim("float32"), b=prim("float32"),
+                a=prim("float32"))
 POINTS = struct(sequence=True, x=prim("float64"), y=prim("float64"), z=prim("float64"))
 DURATION = struct(sec=prim("int32"), nanosec=prim("uint32"))  # builtin_interfaces/Duration
 TIME = struct(sec=prim("int32"), nanosec=prim("uint32"))  # builtin_interfaces/Time
@@ -33,13 +37,15 @@ FRAME_ROLES = (("frame_id", prim("string")), ("stamp", TIME), ("frame_locked", p
 SHAPES = (("ARROW", "Arrow"), ("CUBE", "Cube"), ("SPHERE", "Sphere"), ("CYLINDER", "Cylinder"),
           ("LINE_STRIP", "LineStrip"), ("LINE_LIST", "LineList"), ("CUBE_LIST", "CubeList"),
           ("SPHERE_LIST", "SphereList"), ("POINTS", "Points"), ("TEXT_VIEW_FACING", "Text"),
-          ("MESH_RESOURCE", "MeshResource"))
+          ("MESH_RESOURCE", "MeshResource"), ("TRIANGLE_LIST", "TriangleList"))
 
 # Roles a Marker-like type may lack (a rule leaves them out): the text of TEXT_VIEW_FACING, the
 # mesh of MESH_RESOURCE (a URI and whether the file's own colours are used) and, for kept
 # markers, the lifetime.
 MESH_ROLES = (("text", prim("string")), ("mesh_resource", prim("string")),
               ("mesh_use_embedded_materials", prim("bool")))
+# Per-point colours (RViz uses them instead of `color` when there are as many as points).
+COLOR_ROLES = (("colors", COLORS),)
 
 
 def shapes_of(message) -> list:
@@ -84,9 +90,10 @@ def _check(vtk_type, roles, table, fail):
 
 KIND = Kind(name="marker", vtk_types=("vtkPolyData",),
             roles=(("type", prim("int32")), ("position", XYZ_FLOAT64), ("orientation", QUATERNION),
-                   ("scale", XYZ_FLOAT64), ("color", COLOR), ("points", POINTS)) + MESH_ROLES
-            + KEY_ROLES + FRAME_ROLES,
-            optional_roles=tuple(name for name, _ in MESH_ROLES + KEY_ROLES + FRAME_ROLES),
+                   ("scale", XYZ_FLOAT64), ("color", COLOR), ("points", POINTS)) + COLOR_ROLES
+            + MESH_ROLES + KEY_ROLES + FRAME_ROLES,
+            optional_roles=tuple(name for name, _ in COLOR_ROLES + MESH_ROLES + KEY_ROLES
+                                 + FRAME_ROLES),
             scalable=("position", "scale", "points"),
             check=_check,
             view=_view)

@@ -95,6 +95,52 @@ void solid_shape(MarkerShape shape, double sx, double sy, double sz, vtkPolyData
   out->DeepCopy(stretch->GetOutput());
 }
 
+/// An arrow from `from` to `to` (scene units) as RViz's ArrowMarker::setArrowFromPoints draws a
+/// marker with two points (rviz_default_plugins/.../markers/arrow_marker.cpp): shaft diameter
+/// scale.x, head diameter scale.y, head length scale.z clamped to the distance, or 23% of the
+/// distance when scale.z is 0. False when the two points are one.
+bool arrow_from_points(const double from[3], const double to[3], double shaft_diameter,
+  double head_diameter, double head_length, vtkPolyData* out)
+{
+  double direction[3] = { to[0] - from[0], to[1] - from[1], to[2] - from[2] };
+  const double distance = vtkMath::Norm(direction);
+  if (!(distance > 0))
+  {
+    return false;
+  }
+  const double head =
+    head_length != 0.0 ? std::max(0.0, std::min(head_length, distance)) : 0.23 * distance;
+  // vtkArrowSource draws a unit arrow along +x; sizes are fractions of the distance.
+  vtkNew<vtkArrowSource> arrow;
+  arrow->SetTipLength(head / distance);
+  arrow->SetTipRadius(0.5 * head_diameter / distance);
+  arrow->SetShaftRadius(0.5 * shaft_diameter / distance);
+  arrow->SetTipResolution(24);
+  arrow->SetShaftResolution(24);
+  vtkNew<vtkTransform> place;
+  place->Translate(from);
+  vtkMath::Normalize(direction);
+  const double x[3] = { 1, 0, 0 };
+  double axis[3];
+  vtkMath::Cross(x, direction, axis);
+  const double angle = std::atan2(vtkMath::Norm(axis), vtkMath::Dot(x, direction));
+  if (vtkMath::Norm(axis) > 1e-12)
+  {
+    place->RotateWXYZ(vtkMath::DegreesFromRadians(angle), axis);
+  }
+  else if (angle > 1.0) // pointing along -x: any perpendicular axis turns it round
+  {
+    place->RotateZ(180.0);
+  }
+  place->Scale(distance, distance, distance);
+  vtkNew<vtkTransformPolyDataFilter> move;
+  move->SetInputConnection(arrow->GetOutputPort());
+  move->SetTransform(place);
+  move->Update();
+  out->DeepCopy(move->GetOutput());
+  return true;
+}
+
 /// The RGBA bytes of a colour in 0..1.
 void color_bytes(const double color[4], unsigned char rgba[4])
 {
@@ -103,6 +149,50 @@ void color_bytes(const double color[4], unsigned char rgba[4])
     const double v = std::min(1.0, std::max(0.0, color[c]));
     rgba[c] = static_cast<unsigned char>(std::lround(v * 255.0));
   }
+}
+
+/// The "Color" array of a marker's `count` drawn points. RViz colours point i with colors[i]
+/// when a POINTS, LINE_STRIP, LINE_LIST, CUBE_LIST or SPHERE_LIST marker has as many colours as
+/// points (points_marker.cpp addPointsFromMessage, line_marker_base.cpp has_per_point_color_),
+/// and a TRIANGLE_LIST vertex i with colors[i] (as many as points) or triangle i / 3 with
+/// colors[i / 3] (one per triangle), its alpha times color.a (triangle_list_marker.cpp);
+/// otherwise every point has `color`. `per_point`: drawn points per marker point (the points of
+/// one cube or sphere of a list, 1 otherwise).
+vtkSmartPointer<vtkUnsignedCharArray> marker_colors(
+  const Marker& marker, vtkIdType count, vtkIdType per_point)
+{
+  auto color = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  color->SetName("Color");
+  color->SetNumberOfComponents(4);
+  color->SetNumberOfTuples(count);
+  const size_t points = marker.points.size() / 3, colors = marker.colors.size() / 4;
+  const bool listed = marker.shape == MarkerShape::Points ||
+    marker.shape == MarkerShape::LineStrip || marker.shape == MarkerShape::LineList ||
+    marker.shape == MarkerShape::CubeList || marker.shape == MarkerShape::SphereList;
+  const bool triangles = marker.shape == MarkerShape::TriangleList;
+  const bool per_vertex = points > 0 && colors == points && (listed || triangles);
+  const bool per_face = triangles && points > 0 && !per_vertex && colors == points / 3;
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double rgba[4] = { marker.color[0], marker.color[1], marker.color[2], marker.color[3] };
+    const size_t point = static_cast<size_t>(i / std::max<vtkIdType>(1, per_point));
+    if (per_vertex || per_face)
+    {
+      const size_t index = per_vertex ? point : point / 3;
+      for (int c = 0; c < 4; ++c)
+      {
+        rgba[c] = marker.colors[4 * index + c];
+      }
+      if (triangles)
+      {
+        rgba[3] *= marker.color[3];
+      }
+    }
+    unsigned char bytes[4];
+    color_bytes(rgba, bytes);
+    color->SetTypedTuple(i, bytes);
+  }
+  return color;
 }
 
 /// The label arrays of `poly_data` (created empty when missing).
@@ -231,9 +321,10 @@ bool marker_to_poly_data(
     return false;
   }
   if (!detail::all_finite(marker.position, 3) || !detail::all_finite(marker.orientation, 4) ||
-    !detail::all_finite(marker.scale, 3) || !detail::all_finite(marker.color, 4))
+    !detail::all_finite(marker.scale, 3) || !detail::all_finite(marker.color, 4) ||
+    !detail::all_finite(marker.colors.data(), static_cast<int>(marker.colors.size())))
   {
-    return fail(error, where, "the pose, scale or colour has a NaN or infinite value");
+    return fail(error, where, "the pose, scale or colours have a NaN or infinite value");
   }
   const double* q = marker.orientation;
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -260,10 +351,28 @@ bool marker_to_poly_data(
     poly_data->Modified();
     return true;
   }
-  const bool solid = marker.shape == MarkerShape::Arrow || marker.shape == MarkerShape::Cube ||
-    marker.shape == MarkerShape::Sphere || marker.shape == MarkerShape::Cylinder ||
-    marker.shape == MarkerShape::CubeList || marker.shape == MarkerShape::SphereList ||
-    marker.shape == MarkerShape::MeshResource;
+  // An arrow with two points goes from the first to the second (RViz's ArrowMarker): its scale
+  // is shaft and head diameters and a head length that may be 0; with one point RViz draws
+  // nothing and says why.
+  const size_t point_count = marker.points.size() / 3;
+  const bool arrow_from_two_points = marker.shape == MarkerShape::Arrow && point_count == 2;
+  if (marker.shape == MarkerShape::Arrow && point_count != 0 && point_count != 2)
+  {
+    return fail(error, where,
+      "an arrow marker takes two points (start and end) or none, not " +
+        std::to_string(point_count));
+  }
+  if (arrow_from_two_points &&
+    !(marker.scale[0] > 0 && marker.scale[1] > 0 && marker.scale[2] >= 0))
+  {
+    return fail(error, where,
+      "an arrow marker with two points needs positive scale.x and scale.y (shaft and head "
+      "diameters) and a scale.z (head length) of 0 or more");
+  }
+  const bool solid = (marker.shape == MarkerShape::Arrow && !arrow_from_two_points) ||
+    marker.shape == MarkerShape::Cube || marker.shape == MarkerShape::Sphere ||
+    marker.shape == MarkerShape::Cylinder || marker.shape == MarkerShape::CubeList ||
+    marker.shape == MarkerShape::SphereList || marker.shape == MarkerShape::MeshResource;
   if (solid && (marker.scale[0] <= 0 || marker.scale[1] <= 0 || marker.scale[2] <= 0))
   {
     return fail(error, where, "a solid marker needs a positive scale on x, y and z");
@@ -273,6 +382,7 @@ bool marker_to_poly_data(
 
   vtkNew<vtkPolyData> shape;   // in the marker's frame, scene units
   bool embeddedColors = false; // a mesh keeps its file's colours
+  vtkIdType per_point = 1;     // drawn points per marker point (marker_colors)
   switch (marker.shape)
   {
     case MarkerShape::MeshResource:
@@ -284,12 +394,59 @@ bool marker_to_poly_data(
       }
       break;
     }
+    case MarkerShape::Arrow:
+      if (arrow_from_two_points)
+      {
+        if (!detail::all_finite(marker.points.data(), 6))
+        {
+          return fail(error, where, "the points have a NaN or infinite coordinate");
+        }
+        const double from[3] = { marker.points[0] * length_scale, marker.points[1] * length_scale,
+          marker.points[2] * length_scale };
+        const double to[3] = { marker.points[3] * length_scale, marker.points[4] * length_scale,
+          marker.points[5] * length_scale };
+        if (!arrow_from_points(from, to, sx, sy, sz, shape))
+        {
+          return fail(error, where, "the two points of an arrow marker are the same point");
+        }
+        break;
+      }
+      solid_shape(marker.shape, sx, sy, sz, shape);
+      break;
     case MarkerShape::Cube:
     case MarkerShape::Sphere:
     case MarkerShape::Cylinder:
-    case MarkerShape::Arrow:
       solid_shape(marker.shape, sx, sy, sz, shape);
       break;
+    case MarkerShape::TriangleList:
+    {
+      // RViz scales the triangles' scene node by scale (triangle_list_marker.cpp); it draws
+      // nothing for no points or a count not divisible by 3.
+      if (point_count == 0 || point_count % 3 != 0)
+      {
+        return fail(error, where,
+          "a triangle list needs its points in threes (a positive multiple of 3), not " +
+            std::to_string(point_count));
+      }
+      std::vector<double> scaled(marker.points);
+      for (size_t i = 0; i < scaled.size(); ++i)
+      {
+        scaled[i] *= marker.scale[i % 3];
+      }
+      if (!xyz_to_polyline(scaled, length_scale, shape, error))
+      {
+        return false;
+      }
+      vtkNew<vtkCellArray> triangles;
+      for (vtkIdType i = 0; i + 2 < shape->GetNumberOfPoints(); i += 3)
+      {
+        const vtkIdType corners[3] = { i, i + 1, i + 2 };
+        triangles->InsertNextCell(3, corners);
+      }
+      shape->SetLines(nullptr);
+      shape->SetPolys(triangles);
+      break;
+    }
     case MarkerShape::CubeList:
     case MarkerShape::SphereList:
     {
@@ -302,6 +459,7 @@ bool marker_to_poly_data(
       vtkNew<vtkPolyData> unit;
       solid_shape(marker.shape == MarkerShape::CubeList ? MarkerShape::Cube : MarkerShape::Sphere,
         sx, sy, sz, unit);
+      per_point = unit->GetNumberOfPoints();
       vtkNew<vtkAppendPolyData> all;
       for (size_t i = 0; i + 2 < marker.points.size(); i += 3)
       {
@@ -368,7 +526,7 @@ bool marker_to_poly_data(
       return fail(error, where,
         "this marker type is not supported (supported: arrow, cube, "
         "sphere, cylinder, line strip, line list, cube list, sphere "
-        "list, points, mesh resource)");
+        "list, points, triangle list, text, mesh resource)");
   }
 
   vtkNew<vtkTransform> pose;
@@ -395,17 +553,8 @@ bool marker_to_poly_data(
     poly_data->Modified();
     return true;
   }
-  vtkNew<vtkUnsignedCharArray> color;
-  color->SetName("Color");
-  color->SetNumberOfComponents(4);
-  const vtkIdType count = place->GetOutput()->GetNumberOfPoints();
-  color->SetNumberOfTuples(count);
-  unsigned char rgba[4];
-  color_bytes(marker.color, rgba);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    color->SetTypedTuple(i, rgba);
-  }
+  vtkSmartPointer<vtkUnsignedCharArray> color =
+    marker_colors(marker, place->GetOutput()->GetNumberOfPoints(), per_point);
   poly_data->DeepCopy(place->GetOutput());
   poly_data->GetPointData()->SetScalars(color);
   poly_data->Modified();

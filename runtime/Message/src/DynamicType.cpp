@@ -1239,8 +1239,12 @@ void fill_description_table(DynamicType& type, const TypeDescriptionData& closur
   }
   for (size_t i = 0; i < type.described.size(); ++i)
   {
-    type.described_tables.push_back({ type.described[i].type_name.c_str(),
-      static_cast<uint32_t>(type.described_fields[i].size()), type.described_fields[i].data() });
+    const IndividualDescription& individual = type.described[i];
+    const char* encoding =
+      individual.source_encoding.empty() ? "dynamic" : individual.source_encoding.c_str();
+    type.described_tables.push_back({ individual.type_name.c_str(),
+      static_cast<uint32_t>(type.described_fields[i].size()), type.described_fields[i].data(),
+      { encoding, individual.source_contents.c_str(), nullptr } });
   }
   type.description_table.type = type.described_tables[0];
   type.description_table.referenced_count = static_cast<uint32_t>(type.described_tables.size() - 1);

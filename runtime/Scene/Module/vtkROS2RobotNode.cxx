@@ -172,10 +172,17 @@ public:
     return *this->Loader;
   }
 
-  std::string EffectiveFixedFrame() const
+  /// The frame the links are looked up from: this robot's own, else the scene's (as RViz's
+  /// global Fixed Frame places a RobotModel), else the root link.
+  std::string EffectiveFixedFrame(const vtkROS2Scene* scene) const
   {
-    return this->FixedFrame.empty() ? this->TfPrefix + this->Visuals.root_link : this->FixedFrame;
+    if (!this->FixedFrame.empty())
+      return this->FixedFrame;
+    if (scene && scene->GetFixedFrame()[0] != '\0')
+      return scene->GetFixedFrame();
+    return this->TfPrefix + this->Visuals.root_link;
   }
+  std::string LoadedFixedFrame; // EffectiveFixedFrame() of the last load
 };
 
 vtkStandardNewMacro(vtkROS2RobotNode);
@@ -685,7 +692,7 @@ int vtkROS2RobotNode::UpdateLinkPoses()
     }
   }
   const bool changed = internals.JointStates.Update(
-    rosNode, links, internals.EffectiveFixedFrame(), internals.TfPrefix);
+    rosNode, links, internals.EffectiveFixedFrame(this->Scene), internals.TfPrefix);
   for (const std::string& warning : internals.JointStates.TakeWarnings())
   {
     vtkWarningMacro("robot '" << internals.RobotName << "': " << warning);
@@ -810,6 +817,9 @@ bool vtkROS2RobotNode::ReadDescriptionFile(std::string& description)
 int vtkROS2RobotNode::CheckForNewDescription()
 {
   vtkInternals& internals = *this->Internals;
+  // The scene's fixed frame, used when the robot has none, may have changed since the load.
+  internals.FramesChanged = internals.FramesChanged ||
+    (internals.Loaded && internals.EffectiveFixedFrame(this->Scene) != internals.LoadedFixedFrame);
   if (internals.FramesChanged && internals.Loaded)
   {
     // New prefix or fixed frame: rebuild the nodes from the description already parsed.
@@ -948,7 +958,8 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
 
   // Link nodes of the previous load (or of a restored scene) are kept for links that are still
   // there with the same frames; the others go before any new lookup is made.
-  const std::string fixedFrame = internals.EffectiveFixedFrame();
+  const std::string fixedFrame = internals.EffectiveFixedFrame(scene);
+  internals.LoadedFixedFrame = fixedFrame;
   std::set<std::string> links;
   for (const ros2vtk::robot::LinkVisuals& link : internals.Visuals.links)
   {

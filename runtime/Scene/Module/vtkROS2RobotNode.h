@@ -68,8 +68,10 @@ public:
   /// is read again, meshes too: e.g. after editing them).
   void Reload();
 
-  /// The frame links are looked up from. Empty (default): the root link, with the tf prefix.
-  /// Changing it after a load rebuilds the lookups on the next spin.
+  /// The frame links are looked up from. Empty (default): the scene's fixed frame
+  /// (vtkROS2Scene::SetFixedFrame, as RViz's global Fixed Frame places a RobotModel), or the
+  /// root link with the tf prefix when the scene has none. Changing it (or the scene's, when
+  /// used) after a load rebuilds the lookups on the next spin.
   void SetFixedFrame(const char* frame);
   const char* GetFixedFrame() const;
   /// Prepended to every link name to form its tf frame (robot_state_publisher's frame_prefix,

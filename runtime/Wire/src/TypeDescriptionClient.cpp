@@ -20,27 +20,30 @@ namespace tdi = ::ros2vtk::type_description_interfaces;
 
 namespace {
 
-/// The constants of each described type whose .msg source the peer sent (encoding "msg"; .srv
-/// and .action sources are not split into their messages here, so those types get none). A
-/// source that does not parse leaves its type without constants: the type is still usable.
-void add_source_constants(
-  const std::vector<tdi::msg::TypeSource>& sources, TypeDescriptionData& description)
+/// Keeps each described type's source the peer sent (so our node serves it on), and reads the
+/// constants of the .msg ones (encoding "msg"; .srv and .action sources are not split into
+/// their messages here, so those types get none). A source that does not parse leaves its type
+/// without constants: the type is still usable.
+void add_sources(const std::vector<tdi::msg::TypeSource>& sources, TypeDescriptionData& description)
 {
   for (const tdi::msg::TypeSource& source : sources)
   {
-    if (source.encoding != "msg")
-    {
-      continue;
-    }
     IndividualDescription* target =
       source.type_name == description.type.type_name ? &description.type : nullptr;
     for (IndividualDescription& referenced : description.referenced)
     {
       target = referenced.type_name == source.type_name ? &referenced : target;
     }
+    if (!target)
+    {
+      continue;
+    }
+    target->source_encoding = source.encoding;
+    target->source_contents = source.raw_file_contents;
     std::vector<DescriptionConstant> constants;
     std::string error;
-    if (target && parse_msg_constants(source.raw_file_contents, &constants, &error))
+    if (source.encoding == "msg" &&
+      parse_msg_constants(source.raw_file_contents, &constants, &error))
     {
       target->constants = std::move(constants);
     }
@@ -237,7 +240,7 @@ RuntimeTypeResolver::State RuntimeTypeResolver::poll()
     }
     std::string error;
     TypeDescriptionData description = from_message(response.type_description);
-    add_source_constants(response.type_sources, description);
+    add_sources(response.type_sources, description);
     const MessageTypeSupport* built = build_dynamic_message_type(description, type_hash_, &error);
     client_.reset();
     if (!built)

@@ -55,6 +55,24 @@ void to_message(
   }
 }
 
+/// The TypeSource of one described type: its entry's text, or the text of the generated type
+/// the entry names (TypeSourceTable::defined_by).
+void add_type_source(
+  const IndividualTypeDescriptionTable& table, std::vector<tdi::msg::TypeSource>& sources)
+{
+  const TypeSourceTable* from = &table.source;
+  const MessageTypeSupport* owner = from->defined_by ? from->defined_by() : nullptr;
+  if (owner && owner->description)
+  {
+    from = &owner->description->type.source;
+  }
+  tdi::msg::TypeSource source;
+  source.type_name = table.type_name;
+  source.encoding = from->encoding ? from->encoding : "";
+  source.raw_file_contents = from->raw_file_contents ? from->raw_file_contents : "";
+  sources.push_back(std::move(source));
+}
+
 } // namespace
 
 void to_message(const TypeDescriptionTable& table, tdi::msg::TypeDescription& message)
@@ -120,8 +138,15 @@ void answer_type_description_request(const NodeTypeCache& types,
     return;
   }
   to_message(*description, response.type_description);
-  // include_type_sources: rcl copies the type support's sources (the .msg/.srv text); our
-  // generated tables keep none, so type_sources stays empty either way.
+  if (request.include_type_sources)
+  {
+    // As rcl: the type's own source, then one per referenced type, in the description's order.
+    add_type_source(description->type, response.type_sources);
+    for (uint32_t i = 0; i < description->referenced_count; ++i)
+    {
+      add_type_source(description->referenced[i], response.type_sources);
+    }
+  }
   response.successful = true;
 }
 

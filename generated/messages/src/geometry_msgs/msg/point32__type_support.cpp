@@ -27,14 +27,28 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x", 10, 0, 0, "", "" },
   { "y", 10, 0, 0, "", "" },
   { "z", 10, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Point32", 3, kDescribedFields0 },
+  { "geometry_msgs/msg/Point32", 3, kDescribedFields0,
+    { "msg",
+    "# This contains the position of a point in free space(with 32 bits of precision).\n"
+    "# It is recommended to use Point wherever possible instead of Point32.\n"
+    "#\n"
+    "# This recommendation is to promote interoperability.\n"
+    "#\n"
+    "# This message is designed to take up less space when sending\n"
+    "# lots of points at once, as in the case of a PointCloud.\n"
+    "\n"
+    "float32 x\n"
+    "float32 y\n"
+    "float32 z", nullptr } },
   0,
   nullptr,
 };

@@ -27,14 +27,27 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x", 11, 0, 0, "", "" },
   { "y", 11, 0, 0, "", "" },
   { "theta", 11, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Pose2D", 3, kDescribedFields0 },
+  { "geometry_msgs/msg/Pose2D", 3, kDescribedFields0,
+    { "msg",
+    "# Deprecated as of Foxy and will potentially be removed in any following release.\n"
+    "# Please use the full 3D pose.\n"
+    "\n"
+    "# In general our recommendation is to use a full 3D representation of everything and for 2D specific applications make the appropriate projections into the plane for their calculations but optimally will preserve the 3D information during processing.\n"
+    "\n"
+    "# If we have parallel copies of 2D datatypes every UI and other pipeline will end up needing to have dual interfaces to plot everything. And you will end up with not being able to use 3D tools for 2D use cases even if they're completely valid, as you'd have to reimplement it with different inputs and outputs. It's not particularly hard to plot the 2D pose or compute the yaw error for the Pose message and there are already tools and libraries that can do this for you.# This expresses a position and orientation on a 2D manifold.\n"
+    "\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 theta", nullptr } },
   0,
   nullptr,
 };

@@ -30,7 +30,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x", 11, 0, 0, "", "0.0" },
   { "y", 11, 0, 0, "", "0.0" },
@@ -38,7 +40,14 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "w", 11, 0, 0, "", "1.0" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields0 },
+  { "geometry_msgs/msg/Quaternion", 4, kDescribedFields0,
+    { "msg",
+    "# This represents an orientation in free space in quaternion form.\n"
+    "\n"
+    "float64 x 0\n"
+    "float64 y 0\n"
+    "float64 z 0\n"
+    "float64 w 1", nullptr } },
   0,
   nullptr,
 };

@@ -38,13 +38,73 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "id", 3, 0, 0, "", "" },
   { "label", 17, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "lifecycle_msgs/msg/State", 2, kDescribedFields0 },
+  { "lifecycle_msgs/msg/State", 2, kDescribedFields0,
+    { "msg",
+    "# Primary state definitions as depicted in:\n"
+    "# http://design.ros2.org/articles/node_lifecycle.html\n"
+    "\n"
+    "# These are the primary states. State changes can only be requested when the\n"
+    "# node is in one of these states.\n"
+    "\n"
+    "# Indicates state has not yet been set.\n"
+    "uint8 PRIMARY_STATE_UNKNOWN = 0\n"
+    "\n"
+    "# This is the life cycle state the node is in immediately after being\n"
+    "# instantiated.\n"
+    "uint8 PRIMARY_STATE_UNCONFIGURED = 1\n"
+    "\n"
+    "# This state represents a node that is not currently performing any processing.\n"
+    "uint8 PRIMARY_STATE_INACTIVE = 2\n"
+    "\n"
+    "# This is the main state of the node's life cycle. While in this state, the node\n"
+    "# performs any processing, responds to service requests, reads and processes\n"
+    "# data, produces output, etc.\n"
+    "uint8 PRIMARY_STATE_ACTIVE = 3\n"
+    "\n"
+    "# The finalized state is the state in which the node ends immediately before\n"
+    "# being destroyed.\n"
+    "uint8 PRIMARY_STATE_FINALIZED = 4\n"
+    "\n"
+    "# Temporary intermediate states. When a transition is requested, the node\n"
+    "# changes its state into one of these states.\n"
+    "\n"
+    "# In this transition state the node's onConfigure callback will be called to\n"
+    "# allow the node to load its configuration and conduct any required setup.\n"
+    "uint8 TRANSITION_STATE_CONFIGURING = 10\n"
+    "\n"
+    "# In this transition state the node's callback onCleanup will be called to clear\n"
+    "# all state and return the node to a functionally equivalent state as when\n"
+    "# first created.\n"
+    "uint8 TRANSITION_STATE_CLEANINGUP = 11\n"
+    "\n"
+    "# In this transition state the callback onShutdown will be executed to do any\n"
+    "# cleanup necessary before destruction.\n"
+    "uint8 TRANSITION_STATE_SHUTTINGDOWN = 12\n"
+    "\n"
+    "# In this transition state the callback onActivate will be executed to do any\n"
+    "# final preparations to start executing.\n"
+    "uint8 TRANSITION_STATE_ACTIVATING = 13\n"
+    "\n"
+    "# In this transition state the callback onDeactivate will be executed to do any\n"
+    "# cleanup to start executing, and reverse the onActivate changes.\n"
+    "uint8 TRANSITION_STATE_DEACTIVATING = 14\n"
+    "\n"
+    "# This transition state is where any error may be cleaned up.\n"
+    "uint8 TRANSITION_STATE_ERRORPROCESSING = 15\n"
+    "\n"
+    "# The state id value from the above definitions.\n"
+    "uint8 id\n"
+    "\n"
+    "# A text label of the state.\n"
+    "string label", nullptr } },
   0,
   nullptr,
 };

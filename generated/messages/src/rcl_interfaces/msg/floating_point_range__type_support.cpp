@@ -27,14 +27,45 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "from_value", 11, 0, 0, "", "" },
   { "to_value", 11, 0, 0, "", "" },
   { "step", 11, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields0 },
+  { "rcl_interfaces/msg/FloatingPointRange", 3, kDescribedFields0,
+    { "msg",
+    "# Represents bounds and a step value for a floating point typed parameter.\n"
+    "\n"
+    "# Start value for valid values, inclusive.\n"
+    "float64 from_value\n"
+    "\n"
+    "# End value for valid values, inclusive.\n"
+    "float64 to_value\n"
+    "\n"
+    "# Size of valid steps between the from and to bound.\n"
+    "# \n"
+    "# Step is considered to be a magnitude, therefore negative values are treated\n"
+    "# the same as positive values, and a step value of zero implies a continuous\n"
+    "# range of values.\n"
+    "#\n"
+    "# Ideally, the step would be less than or equal to the distance between the\n"
+    "# bounds, as well as an even multiple of the distance between the bounds, but\n"
+    "# neither are required.\n"
+    "#\n"
+    "# If the absolute value of the step is larger than or equal to the distance\n"
+    "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
+    "# the range is defined as {from_value: 1.0, to_value: 2.0, step: 5.0} then the\n"
+    "# valid values will be 1.0 and 2.0.\n"
+    "#\n"
+    "# If the step is less than the distance between the bounds, but the distance is\n"
+    "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
+    "# e.g. if the range is defined as {from_value: 2.0, to_value: 5.0, step: 2.0}\n"
+    "# then the valid values will be 2.0, 4.0, and 5.0.\n"
+    "float64 step", nullptr } },
   0,
   nullptr,
 };

@@ -27,14 +27,41 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "from_value", 8, 0, 0, "", "" },
   { "to_value", 8, 0, 0, "", "" },
   { "step", 9, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields0 },
+  { "rcl_interfaces/msg/IntegerRange", 3, kDescribedFields0,
+    { "msg",
+    "# Represents bounds and a step value for an integer typed parameter.\n"
+    "\n"
+    "# Start value for valid values, inclusive.\n"
+    "int64 from_value\n"
+    "\n"
+    "# End value for valid values, inclusive.\n"
+    "int64 to_value\n"
+    "\n"
+    "# Size of valid steps between the from and to bound.\n"
+    "#\n"
+    "# A step value of zero implies a continuous range of values. Ideally, the step\n"
+    "# would be less than or equal to the distance between the bounds, as well as an\n"
+    "# even multiple of the distance between the bounds, but neither are required.\n"
+    "#\n"
+    "# If the absolute value of the step is larger than or equal to the distance\n"
+    "# between the two bounds, then the bounds will be the only valid values. e.g. if\n"
+    "# the range is defined as {from_value: 1, to_value: 2, step: 5} then the valid\n"
+    "# values will be 1 and 2.\n"
+    "# \n"
+    "# If the step is less than the distance between the bounds, but the distance is\n"
+    "# not a multiple of the step, then the \"to\" bound will always be a valid value,\n"
+    "# e.g. if the range is defined as {from_value: 2, to_value: 5, step: 2} then\n"
+    "# the valid values will be 2, 4, and 5.\n"
+    "uint64 step", nullptr } },
   0,
   nullptr,
 };

@@ -30,13 +30,22 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "names", 161, 0, 0, "", "" },
   { "prefixes", 161, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/ListParametersResult", 2, kDescribedFields0 },
+  { "rcl_interfaces/msg/ListParametersResult", 2, kDescribedFields0,
+    { "msg",
+    "# The resulting parameters under the given prefixes.\n"
+    "string[] names\n"
+    "\n"
+    "# The resulting prefixes under the given prefixes.\n"
+    "# TODO(wjwwood): link to prefix definition and rules.\n"
+    "string[] prefixes", nullptr } },
   0,
   nullptr,
 };

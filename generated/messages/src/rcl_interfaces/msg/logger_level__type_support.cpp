@@ -33,13 +33,30 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "name", 17, 0, 0, "", "" },
   { "level", 7, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/LoggerLevel", 2, kDescribedFields0 },
+  { "rcl_interfaces/msg/LoggerLevel", 2, kDescribedFields0,
+    { "msg",
+    "# All available logger levels; these correspond to the enum in rcutils/logger.h\n"
+    "\n"
+    "uint8 LOG_LEVEL_UNKNOWN = 0\n"
+    "uint8 LOG_LEVEL_DEBUG = 10\n"
+    "uint8 LOG_LEVEL_INFO = 20\n"
+    "uint8 LOG_LEVEL_WARN = 30\n"
+    "uint8 LOG_LEVEL_ERROR = 40\n"
+    "uint8 LOG_LEVEL_FATAL = 50\n"
+    "\n"
+    "# The logger name.\n"
+    "string name\n"
+    "\n"
+    "# The logger level\n"
+    "uint32 level", nullptr } },
   0,
   nullptr,
 };

@@ -34,12 +34,29 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/ParameterType", 1, kDescribedFields0 },
+  { "rcl_interfaces/msg/ParameterType", 1, kDescribedFields0,
+    { "msg",
+    "# These types correspond to the value that is set in the ParameterValue message.\n"
+    "\n"
+    "# Default value, which implies this is not a valid parameter.\n"
+    "uint8 PARAMETER_NOT_SET=0\n"
+    "\n"
+    "uint8 PARAMETER_BOOL=1\n"
+    "uint8 PARAMETER_INTEGER=2\n"
+    "uint8 PARAMETER_DOUBLE=3\n"
+    "uint8 PARAMETER_STRING=4\n"
+    "uint8 PARAMETER_BYTE_ARRAY=5\n"
+    "uint8 PARAMETER_BOOL_ARRAY=6\n"
+    "uint8 PARAMETER_INTEGER_ARRAY=7\n"
+    "uint8 PARAMETER_DOUBLE_ARRAY=8\n"
+    "uint8 PARAMETER_STRING_ARRAY=9", nullptr } },
   0,
   nullptr,
 };

@@ -63,7 +63,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type", 3, 0, 0, "", "" },
   { "bool_value", 15, 0, 0, "", "" },
@@ -77,7 +79,46 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "string_array_value", 161, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields0 },
+  { "rcl_interfaces/msg/ParameterValue", 10, kDescribedFields0,
+    { "msg",
+    "# Used to determine which of the next *_value fields are set.\n"
+    "# ParameterType.PARAMETER_NOT_SET indicates that the parameter was not set\n"
+    "# (if gotten) or is uninitialized.\n"
+    "# Values are enumerated in `ParameterType.msg`.\n"
+    "\n"
+    "# The type of this parameter, which corresponds to the appropriate field below.\n"
+    "uint8 type\n"
+    "\n"
+    "# \"Variant\" style storage of the parameter value. Only the value corresponding\n"
+    "# the type field will have valid information.\n"
+    "\n"
+    "# Boolean value, can be either true or false.\n"
+    "bool bool_value\n"
+    "\n"
+    "# Integer value ranging from -9,223,372,036,854,775,808 to\n"
+    "# 9,223,372,036,854,775,807.\n"
+    "int64 integer_value\n"
+    "\n"
+    "# A double precision floating point value following IEEE 754.\n"
+    "float64 double_value\n"
+    "\n"
+    "# A textual value with no practical length limit.\n"
+    "string string_value\n"
+    "\n"
+    "# An array of bytes, used for non-textual information.\n"
+    "byte[] byte_array_value\n"
+    "\n"
+    "# An array of boolean values.\n"
+    "bool[] bool_array_value\n"
+    "\n"
+    "# An array of 64-bit integer values.\n"
+    "int64[] integer_array_value\n"
+    "\n"
+    "# An array of 64-bit floating point values.\n"
+    "float64[] double_array_value\n"
+    "\n"
+    "# An array of string values.\n"
+    "string[] string_array_value", nullptr } },
   0,
   nullptr,
 };

@@ -27,13 +27,40 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "name", 17, 0, 0, "", "" },
   { "values", 154, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/ChannelFloat32", 2, kDescribedFields0 },
+  { "sensor_msgs/msg/ChannelFloat32", 2, kDescribedFields0,
+    { "msg",
+    "# This message is used by the PointCloud message to hold optional data\n"
+    "# associated with each point in the cloud. The length of the values\n"
+    "# array should be the same as the length of the points array in the\n"
+    "# PointCloud, and each value should be associated with the corresponding\n"
+    "# point.\n"
+    "#\n"
+    "# Channel names in existing practice include:\n"
+    "#   \"u\", \"v\" - row and column (respectively) in the left stereo image.\n"
+    "#              This is opposite to usual conventions but remains for\n"
+    "#              historical reasons. The newer PointCloud2 message has no\n"
+    "#              such problem.\n"
+    "#   \"rgb\" - For point clouds produced by color stereo cameras. uint8\n"
+    "#           (R,G,B) values packed into the least significant 24 bits,\n"
+    "#           in order.\n"
+    "#   \"intensity\" - laser or pixel intensity.\n"
+    "#   \"distance\"\n"
+    "\n"
+    "# The channel name should give semantics of the channel (e.g.\n"
+    "# \"intensity\" instead of \"value\").\n"
+    "string name\n"
+    "\n"
+    "# The values array should be 1-1 with the elements of the associated\n"
+    "# PointCloud.\n"
+    "float32[] values", nullptr } },
   0,
   nullptr,
 };

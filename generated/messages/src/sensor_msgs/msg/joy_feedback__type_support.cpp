@@ -33,14 +33,31 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type", 3, 0, 0, "", "" },
   { "id", 3, 0, 0, "", "" },
   { "intensity", 10, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/JoyFeedback", 3, kDescribedFields0 },
+  { "sensor_msgs/msg/JoyFeedback", 3, kDescribedFields0,
+    { "msg",
+    "# Declare of the type of feedback\n"
+    "uint8 TYPE_LED    = 0\n"
+    "uint8 TYPE_RUMBLE = 1\n"
+    "uint8 TYPE_BUZZER = 2\n"
+    "\n"
+    "uint8 type\n"
+    "\n"
+    "# This will hold an id number for each type of each feedback.\n"
+    "# Example, the first led would be id=0, the second would be id=1\n"
+    "uint8 id\n"
+    "\n"
+    "# Intensity of the feedback, from 0.0 to 1.0, inclusive.  If device is\n"
+    "# actually binary, driver should treat 0<=x<0.5 as off, 0.5<=x<=1 as on.\n"
+    "float32 intensity", nullptr } },
   0,
   nullptr,
 };

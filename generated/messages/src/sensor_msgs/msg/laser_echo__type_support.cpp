@@ -24,12 +24,20 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "echoes", 154, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/LaserEcho", 1, kDescribedFields0 },
+  { "sensor_msgs/msg/LaserEcho", 1, kDescribedFields0,
+    { "msg",
+    "# This message is a submessage of MultiEchoLaserScan and is not intended\n"
+    "# to be used separately.\n"
+    "\n"
+    "float32[] echoes  # Multiple values of ranges or intensities.\n"
+    "                  # Each array represents data from the same angle increment.", nullptr } },
   0,
   nullptr,
 };

@@ -37,13 +37,40 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "status", 2, 0, 0, "", "-2" },
   { "service", 5, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/NavSatStatus", 2, kDescribedFields0 },
+  { "sensor_msgs/msg/NavSatStatus", 2, kDescribedFields0,
+    { "msg",
+    "# Navigation Satellite fix status for any Global Navigation Satellite System.\n"
+    "#\n"
+    "# Whether to output an augmented fix is determined by both the fix\n"
+    "# type and the last time differential corrections were received.  A\n"
+    "# fix is valid when status >= STATUS_FIX.\n"
+    "\n"
+    "int8 STATUS_UNKNOWN = -2        # status is not yet set\n"
+    "int8 STATUS_NO_FIX =  -1        # unable to fix position\n"
+    "int8 STATUS_FIX =      0        # unaugmented fix\n"
+    "int8 STATUS_SBAS_FIX = 1        # with satellite-based augmentation\n"
+    "int8 STATUS_GBAS_FIX = 2        # with ground-based augmentation\n"
+    "\n"
+    "int8 status -2 # STATUS_UNKNOWN\n"
+    "\n"
+    "# Bits defining which Global Navigation Satellite System signals were\n"
+    "# used by the receiver.\n"
+    "\n"
+    "uint16 SERVICE_UNKNOWN = 0  # Remember service is a bitfield, so checking (service & SERVICE_UNKNOWN) will not work. Use == instead.\n"
+    "uint16 SERVICE_GPS =     1\n"
+    "uint16 SERVICE_GLONASS = 2\n"
+    "uint16 SERVICE_COMPASS = 4      # includes BeiDou.\n"
+    "uint16 SERVICE_GALILEO = 8\n"
+    "\n"
+    "uint16 service", nullptr } },
   0,
   nullptr,
 };

@@ -41,7 +41,9 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "name", 17, 0, 0, "", "" },
   { "offset", 7, 0, 0, "", "" },
@@ -49,7 +51,24 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "count", 7, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/PointField", 4, kDescribedFields0 },
+  { "sensor_msgs/msg/PointField", 4, kDescribedFields0,
+    { "msg",
+    "# This message holds the description of one point entry in the\n"
+    "# PointCloud2 message format.\n"
+    "uint8 INT8    = 1\n"
+    "uint8 UINT8   = 2\n"
+    "uint8 INT16   = 3\n"
+    "uint8 UINT16  = 4\n"
+    "uint8 INT32   = 5\n"
+    "uint8 UINT32  = 6\n"
+    "uint8 FLOAT32 = 7\n"
+    "uint8 FLOAT64 = 8\n"
+    "\n"
+    "# Common PointField names are x, y, z, intensity, rgb, rgba\n"
+    "string name      # Name of field\n"
+    "uint32 offset    # Offset from start of point struct\n"
+    "uint8  datatype  # Datatype enumeration, see above\n"
+    "uint32 count     # How many elements in the field", nullptr } },
   0,
   nullptr,
 };

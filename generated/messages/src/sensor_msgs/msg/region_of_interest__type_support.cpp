@@ -33,7 +33,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "x_offset", 7, 0, 0, "", "" },
   { "y_offset", 7, 0, 0, "", "" },
@@ -42,7 +44,27 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "do_rectify", 15, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields0 },
+  { "sensor_msgs/msg/RegionOfInterest", 5, kDescribedFields0,
+    { "msg",
+    "# This message is used to specify a region of interest within an image.\n"
+    "#\n"
+    "# When used to specify the ROI setting of the camera when the image was\n"
+    "# taken, the height and width fields should either match the height and\n"
+    "# width fields for the associated image; or height = width = 0\n"
+    "# indicates that the full resolution image was captured.\n"
+    "\n"
+    "uint32 x_offset  # Leftmost pixel of the ROI\n"
+    "                 # (0 if the ROI includes the left edge of the image)\n"
+    "uint32 y_offset  # Topmost pixel of the ROI\n"
+    "                 # (0 if the ROI includes the top edge of the image)\n"
+    "uint32 height    # Height of ROI\n"
+    "uint32 width     # Width of ROI\n"
+    "\n"
+    "# True if a distinct rectified ROI should be calculated from the \"raw\"\n"
+    "# ROI in this message. Typically this should be False if the full image\n"
+    "# is captured (ROI not used), and True if a subwindow is captured (ROI\n"
+    "# used).\n"
+    "bool do_rectify", nullptr } },
   0,
   nullptr,
 };

@@ -24,12 +24,22 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "coef", 59, 4, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "shape_msgs/msg/Plane", 1, kDescribedFields0 },
+  { "shape_msgs/msg/Plane", 1, kDescribedFields0,
+    { "msg",
+    "# Representation of a plane, using the plane equation ax + by + cz + d = 0.\n"
+    "#\n"
+    "# a := coef[0]\n"
+    "# b := coef[1]\n"
+    "# c := coef[2]\n"
+    "# d := coef[3]\n"
+    "float64[4] coef", nullptr } },
   0,
   nullptr,
 };

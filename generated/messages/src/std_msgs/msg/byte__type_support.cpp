@@ -21,12 +21,21 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "data", 16, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "std_msgs/msg/Byte", 1, kDescribedFields0 },
+  { "std_msgs/msg/Byte", 1, kDescribedFields0,
+    { "msg",
+    "# This was originally provided as an example message.\n"
+    "# It is deprecated as of Foxy\n"
+    "# It is recommended to create your own semantically meaningful message.\n"
+    "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+    "\n"
+    "byte data", nullptr } },
   0,
   nullptr,
 };

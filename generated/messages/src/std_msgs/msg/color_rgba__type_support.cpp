@@ -30,7 +30,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "r", 10, 0, 0, "", "" },
   { "g", 10, 0, 0, "", "" },
@@ -38,7 +40,12 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "a", 10, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields0 },
+  { "std_msgs/msg/ColorRGBA", 4, kDescribedFields0,
+    { "msg",
+    "float32 r\n"
+    "float32 g\n"
+    "float32 b\n"
+    "float32 a", nullptr } },
   0,
   nullptr,
 };

@@ -27,14 +27,25 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "label", 17, 0, 0, "", "" },
   { "size", 7, 0, 0, "", "" },
   { "stride", 7, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "std_msgs/msg/MultiArrayDimension", 3, kDescribedFields0 },
+  { "std_msgs/msg/MultiArrayDimension", 3, kDescribedFields0,
+    { "msg",
+    "# This was originally provided as an example message.\n"
+    "# It is deprecated as of Foxy\n"
+    "# It is recommended to create your own semantically meaningful message.\n"
+    "# However if you would like to continue using this please use the equivalent in example_msgs.\n"
+    "\n"
+    "string label   # label of given dimension\n"
+    "uint32 size    # size of given dimension (in type units)\n"
+    "uint32 stride  # stride of given dimension", nullptr } },
   0,
   nullptr,
 };

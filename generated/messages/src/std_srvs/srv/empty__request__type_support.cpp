@@ -21,12 +21,16 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "std_srvs/srv/Empty_Request", 1, kDescribedFields0 },
+  { "std_srvs/srv/Empty_Request", 1, kDescribedFields0,
+    { "implicit",
+    "", nullptr } },
   0,
   nullptr,
 };

@@ -29,7 +29,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "status", 2, 0, 0, "", "" },
   { "result", 1, 0, 0, "test_msgs/action/Fibonacci_Result", "" },
@@ -38,10 +40,14 @@ const wire::TypeDescriptionField kDescribedFields1[] = {
   { "sequence", 150, 0, 0, "", "" },
 };
 const wire::IndividualTypeDescriptionTable kReferencedDescriptions[] = {
-  { "test_msgs/action/Fibonacci_Result", 1, kDescribedFields1 },
+  { "test_msgs/action/Fibonacci_Result", 1, kDescribedFields1,
+    { "implicit",
+    "", nullptr } },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/action/Fibonacci_GetResult_Response", 2, kDescribedFields0 },
+  { "test_msgs/action/Fibonacci_GetResult_Response", 2, kDescribedFields0,
+    { "implicit",
+    "", nullptr } },
   1,
   kReferencedDescriptions,
 };

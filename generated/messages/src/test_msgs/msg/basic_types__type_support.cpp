@@ -57,7 +57,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bool_value", 15, 0, 0, "", "" },
   { "byte_value", 16, 0, 0, "", "" },
@@ -74,7 +76,21 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "uint64_value", 9, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/BasicTypes", 13, kDescribedFields0 },
+  { "test_msgs/msg/BasicTypes", 13, kDescribedFields0,
+    { "msg",
+    "bool bool_value\n"
+    "byte byte_value\n"
+    "char char_value\n"
+    "float32 float32_value\n"
+    "float64 float64_value\n"
+    "int8 int8_value\n"
+    "uint8 uint8_value\n"
+    "int16 int16_value\n"
+    "uint16 uint16_value\n"
+    "int32 int32_value\n"
+    "uint32 uint32_value\n"
+    "int64 int64_value\n"
+    "uint64 uint64_value", nullptr } },
   0,
   nullptr,
 };

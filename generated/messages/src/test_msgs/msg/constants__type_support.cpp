@@ -37,12 +37,28 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "structure_needs_at_least_one_member", 3, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/Constants", 1, kDescribedFields0 },
+  { "test_msgs/msg/Constants", 1, kDescribedFields0,
+    { "msg",
+    "bool BOOL_CONST=true\n"
+    "byte BYTE_CONST=50\n"
+    "char CHAR_CONST=100\n"
+    "float32 FLOAT32_CONST=1.125\n"
+    "float64 FLOAT64_CONST=1.125\n"
+    "int8 INT8_CONST=-50\n"
+    "uint8 UINT8_CONST=200\n"
+    "int16 INT16_CONST=-1000\n"
+    "uint16 UINT16_CONST=2000\n"
+    "int32 INT32_CONST=-30000\n"
+    "uint32 UINT32_CONST=60000\n"
+    "int64 INT64_CONST=-40000000\n"
+    "uint64 UINT64_CONST=50000000", nullptr } },
   0,
   nullptr,
 };

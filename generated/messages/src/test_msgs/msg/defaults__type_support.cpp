@@ -57,7 +57,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bool_value", 15, 0, 0, "", "True" },
   { "byte_value", 16, 0, 0, "", "50" },
@@ -74,7 +76,21 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "uint64_value", 9, 0, 0, "", "50000000" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/Defaults", 13, kDescribedFields0 },
+  { "test_msgs/msg/Defaults", 13, kDescribedFields0,
+    { "msg",
+    "bool bool_value true\n"
+    "byte byte_value 50\n"
+    "char char_value 100\n"
+    "float32 float32_value 1.125\n"
+    "float64 float64_value 1.125\n"
+    "int8 int8_value -50\n"
+    "uint8 uint8_value 200\n"
+    "int16 int16_value -1000\n"
+    "uint16 uint16_value 2000\n"
+    "int32 int32_value -30000\n"
+    "uint32 uint32_value 60000\n"
+    "int64 int64_value -40000000\n"
+    "uint64 uint64_value 50000000", nullptr } },
   0,
   nullptr,
 };

@@ -58,7 +58,9 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "string_value", 17, 0, 0, "", "" },
   { "string_value_default1", 17, 0, 0, "", "Hello world!" },
@@ -74,7 +76,21 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bounded_string_value_default5", 21, 0, 22, "", "Hello\"world!" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/Strings", 12, kDescribedFields0 },
+  { "test_msgs/msg/Strings", 12, kDescribedFields0,
+    { "msg",
+    "string string_value\n"
+    "string string_value_default1 \"Hello world!\"\n"
+    "string string_value_default2 \"Hello'world!\"\n"
+    "string string_value_default3 'Hello\"world!'\n"
+    "string string_value_default4 'Hello\\'world!'\n"
+    "string string_value_default5 \"Hello\\\"world!\"\n"
+    "string STRING_CONST=\"Hello world!\"\n"
+    "string<=22 bounded_string_value\n"
+    "string<=22 bounded_string_value_default1 \"Hello world!\"\n"
+    "string<=22 bounded_string_value_default2 \"Hello'world!\"\n"
+    "string<=22 bounded_string_value_default3 'Hello\"world!'\n"
+    "string<=22 bounded_string_value_default4 'Hello\\'world!'\n"
+    "string<=22 bounded_string_value_default5 \"Hello\\\"world!\"", nullptr } },
   0,
   nullptr,
 };

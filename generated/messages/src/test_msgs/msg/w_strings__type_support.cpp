@@ -48,7 +48,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "wstring_value", 18, 0, 0, "", "" },
   { "wstring_value_default1", 18, 0, 0, "", "Hello world!" },
@@ -59,7 +61,18 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "unbounded_sequence_of_wstrings", 162, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/msg/WStrings", 7, kDescribedFields0 },
+  { "test_msgs/msg/WStrings", 7, kDescribedFields0,
+    { "msg",
+    "wstring wstring_value\n"
+    "wstring wstring_value_default1 \"Hello world!\"\n"
+    "wstring wstring_value_default2 \"Hell\303\266 w\303\266rld!\"\n"
+    "wstring wstring_value_default3 \"\343\203\217\343\203\255\343\203\274\343\203\257\343\203\274\343\203\253\343\203\211\"\n"
+    "#wstring WSTRING_CONST=\"Hello world!\"\n"
+    "#wstring<=22 bounded_wstring_value\n"
+    "#wstring<=22 bounded_wstring_value_default1 \"Hello world!\"\n"
+    "wstring[3] array_of_wstrings\n"
+    "wstring[<=3] bounded_sequence_of_wstrings\n"
+    "wstring[] unbounded_sequence_of_wstrings", nullptr } },
   0,
   nullptr,
 };

@@ -60,7 +60,9 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "bool_value", 15, 0, 0, "", "" },
   { "byte_value", 16, 0, 0, "", "" },
@@ -78,7 +80,9 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "string_value", 17, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "test_msgs/srv/BasicTypes_Response", 14, kDescribedFields0 },
+  { "test_msgs/srv/BasicTypes_Response", 14, kDescribedFields0,
+    { "implicit",
+    "", nullptr } },
   0,
   nullptr,
 };

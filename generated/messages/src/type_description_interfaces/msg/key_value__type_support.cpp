@@ -24,13 +24,20 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "key", 17, 0, 0, "", "" },
   { "value", 17, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "type_description_interfaces/msg/KeyValue", 2, kDescribedFields0 },
+  { "type_description_interfaces/msg/KeyValue", 2, kDescribedFields0,
+    { "msg",
+    "# Represents an arbitrary key-value pair for application-specific information.\n"
+    "\n"
+    "string key\n"
+    "string value", nullptr } },
   0,
   nullptr,
 };

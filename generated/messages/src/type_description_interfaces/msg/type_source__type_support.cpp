@@ -27,14 +27,33 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "type_name", 17, 0, 0, "", "" },
   { "encoding", 17, 0, 0, "", "" },
   { "raw_file_contents", 17, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "type_description_interfaces/msg/TypeSource", 3, kDescribedFields0 },
+  { "type_description_interfaces/msg/TypeSource", 3, kDescribedFields0,
+    { "msg",
+    "# Represents the original source of a ROS 2 interface definition.\n"
+    "\n"
+    "# ROS interface type name, in PACKAGE/NAMESPACE/TYPENAME format.\n"
+    "string type_name\n"
+    "\n"
+    "# The type of the original source file, typically matching the file extension.\n"
+    "# Well-known encodings: \"idl\", \"msg\", \"srv\", \"action\", \"dynamic\", \"implicit\".\n"
+    "# \"dynamic\" specifies a type created programmatically by a user, thus having no source.\n"
+    "# \"implicit\" specifies a type created automatically as a subtype of a\n"
+    "# complex type (service or action) - such as the request message for a service.\n"
+    "# Implicit types will have no contents, the full source will be available on the parent srv/action.\n"
+    "string encoding\n"
+    "\n"
+    "# Dumped contents of the interface definition source file.\n"
+    "# If `encoding` is \"dynamic\" or \"implicit\", this field will be empty.\n"
+    "string raw_file_contents", nullptr } },
   0,
   nullptr,
 };

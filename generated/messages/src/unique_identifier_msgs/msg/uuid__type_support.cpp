@@ -24,12 +24,21 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "uuid", 51, 16, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields0 },
+  { "unique_identifier_msgs/msg/UUID", 1, kDescribedFields0,
+    { "msg",
+    "# A universally unique identifier (UUID).\n"
+    "#\n"
+    "#  http://en.wikipedia.org/wiki/Universally_unique_identifier\n"
+    "#  http://tools.ietf.org/html/rfc4122.html\n"
+    "\n"
+    "uint8[16] uuid", nullptr } },
   0,
   nullptr,
 };

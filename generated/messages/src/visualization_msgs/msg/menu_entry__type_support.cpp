@@ -39,7 +39,9 @@ const wire::ConstantInfo kConstants[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "id", 7, 0, 0, "", "" },
   { "parent_id", 7, 0, 0, "", "" },
@@ -48,7 +50,62 @@ const wire::TypeDescriptionField kDescribedFields0[] = {
   { "command_type", 3, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "visualization_msgs/msg/MenuEntry", 5, kDescribedFields0 },
+  { "visualization_msgs/msg/MenuEntry", 5, kDescribedFields0,
+    { "msg",
+    "# MenuEntry message.\n"
+    "#\n"
+    "# Each InteractiveMarker message has an array of MenuEntry messages.\n"
+    "# A collection of MenuEntries together describe a\n"
+    "# menu/submenu/subsubmenu/etc tree, though they are stored in a flat\n"
+    "# array.  The tree structure is represented by giving each menu entry\n"
+    "# an ID number and a \"parent_id\" field.  Top-level entries are the\n"
+    "# ones with parent_id = 0.  Menu entries are ordered within their\n"
+    "# level the same way they are ordered in the containing array.  Parent\n"
+    "# entries must appear before their children.\n"
+    "#\n"
+    "# Example:\n"
+    "# - id = 3\n"
+    "#   parent_id = 0\n"
+    "#   title = \"fun\"\n"
+    "# - id = 2\n"
+    "#   parent_id = 0\n"
+    "#   title = \"robot\"\n"
+    "# - id = 4\n"
+    "#   parent_id = 2\n"
+    "#   title = \"pr2\"\n"
+    "# - id = 5\n"
+    "#   parent_id = 2\n"
+    "#   title = \"turtle\"\n"
+    "#\n"
+    "# Gives a menu tree like this:\n"
+    "#  - fun\n"
+    "#  - robot\n"
+    "#    - pr2\n"
+    "#    - turtle\n"
+    "\n"
+    "# ID is a number for each menu entry.  Must be unique within the\n"
+    "# control, and should never be 0.\n"
+    "uint32 id\n"
+    "\n"
+    "# ID of the parent of this menu entry, if it is a submenu.  If this\n"
+    "# menu entry is a top-level entry, set parent_id to 0.\n"
+    "uint32 parent_id\n"
+    "\n"
+    "# menu / entry title\n"
+    "string title\n"
+    "\n"
+    "# Arguments to command indicated by command_type (below)\n"
+    "string command\n"
+    "\n"
+    "# Command_type stores the type of response desired when this menu\n"
+    "# entry is clicked.\n"
+    "# FEEDBACK: send an InteractiveMarkerFeedback message with menu_entry_id set to this entry's id.\n"
+    "# ROSRUN: execute \"rosrun\" with arguments given in the command field (above).\n"
+    "# ROSLAUNCH: execute \"roslaunch\" with arguments given in the command field (above).\n"
+    "uint8 FEEDBACK=0\n"
+    "uint8 ROSRUN=1\n"
+    "uint8 ROSLAUNCH=2\n"
+    "uint8 command_type", nullptr } },
   0,
   nullptr,
 };

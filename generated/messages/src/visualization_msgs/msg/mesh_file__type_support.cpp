@@ -27,13 +27,24 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "filename", 17, 0, 0, "", "" },
   { "data", 147, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "visualization_msgs/msg/MeshFile", 2, kDescribedFields0 },
+  { "visualization_msgs/msg/MeshFile", 2, kDescribedFields0,
+    { "msg",
+    "# Used to send raw mesh files.\n"
+    "\n"
+    "# The filename is used for both debug purposes and to provide a file extension\n"
+    "# for whatever parser is used.\n"
+    "string filename\n"
+    "\n"
+    "# This stores the raw text of the mesh file.\n"
+    "uint8[] data", nullptr } },
   0,
   nullptr,
 };

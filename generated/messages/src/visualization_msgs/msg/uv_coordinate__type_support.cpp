@@ -24,13 +24,20 @@ const wire::FieldInfo kFields[] = {
 };
 
 // REP 2011 type description (the type, then the types it references sorted by name), as
-// rosidl_generator_type_description makes it; the table below carries its RIHS01 hash.
+// rosidl_generator_type_description makes it, each type with its source (TypeSource) as
+// rosidl_generator_c embeds it (a generated type's text is in its own table, named by the
+// source_of_ functions above); the table below carries its RIHS01 hash.
 const wire::TypeDescriptionField kDescribedFields0[] = {
   { "u", 10, 0, 0, "", "" },
   { "v", 10, 0, 0, "", "" },
 };
 const wire::TypeDescriptionTable kTypeDescription = {
-  { "visualization_msgs/msg/UVCoordinate", 2, kDescribedFields0 },
+  { "visualization_msgs/msg/UVCoordinate", 2, kDescribedFields0,
+    { "msg",
+    "# Location of the pixel as a ratio of the width of a 2D texture.\n"
+    "# Values should be in range: [0.0-1.0].\n"
+    "float32 u\n"
+    "float32 v", nullptr } },
   0,
   nullptr,
 };

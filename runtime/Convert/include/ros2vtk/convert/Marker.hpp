@@ -21,7 +21,9 @@ namespace convert {
 
 enum class MarkerShape
 {
-  Arrow,        ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z
+  Arrow,        ///< along +x: length scale.x, shaft diameter scale.y, head diameter scale.z;
+                ///< with two `points`, from the first to the second: shaft diameter scale.x,
+                ///< head diameter scale.y, head length scale.z (0: 23% of the length)
   Cube,         ///< side lengths scale.x, y, z
   Sphere,       ///< diameters scale.x, y, z
   Cylinder,     ///< along +z: diameters scale.x, y, height scale.z
@@ -30,6 +32,7 @@ enum class MarkerShape
   LineList,     ///< `points` in pairs, each pair one line segment (an odd count is refused)
   CubeList,     ///< a cube of side lengths scale.x, y, z centred on each of `points`
   SphereList,   ///< a sphere of diameters scale.x, y, z centred on each of `points`
+  TriangleList, ///< `points` in threes, each a triangle, the points scaled by scale.x, y, z
   Text,         ///< `text` centred on the position, facing the viewer, capitals scale.z high:
                 ///< no geometry, a label (the Label* field arrays below) the display draws
   MeshResource, ///< the mesh file at `mesh_resource` (read by the MeshResourceLoader), scaled
@@ -60,6 +63,9 @@ struct Marker
   double scale[3] = { 1, 1, 1 };
   double color[4] = { 1, 1, 1, 1 }; ///< r, g, b, a in 0..1
   std::vector<double> points;       ///< flat x0 y0 z0 x1 ..., in the marker's frame
+  /// Flat r0 g0 b0 a0 r1 ... in 0..1: one colour per point (instead of `color`) when there are
+  /// as many as points; a TriangleList also takes one per triangle (RViz's rules, Marker.cpp).
+  std::vector<double> colors;
   /// Seconds a kept marker is shown after it was added (MarkerSet); 0 (or less) is forever.
   double lifetime = 0;
   std::string text;                         ///< Text: what is written

@@ -59,6 +59,11 @@ struct IndividualDescription
   /// Not part of the description (nor of its hash): from the type's .msg source when the peer
   /// sent it; a built type offers them as the generated tables do (MessageTypeSupport::constants).
   std::vector<DescriptionConstant> constants;
+  /// The type's source as the peer sent it (TypeSource encoding and raw_file_contents), served
+  /// again by our node; an empty encoding when none came (served as "dynamic", REP 2011's
+  /// word for a type without a source file).
+  std::string source_encoding;
+  std::string source_contents;
 };
 
 /// type_description_interfaces/msg/TypeDescription.

@@ -100,12 +100,26 @@ struct TypeDescriptionField
   const char* default_value;    ///< as rosidl writes it ("1.0", "True"), "" when none
 };
 
-/// One type of a description (type_description_interfaces/msg/IndividualTypeDescription).
+/// Where a type was defined (type_description_interfaces/msg/TypeSource, without its name):
+/// what ~/get_type_description serves with include_type_sources, as rosidl_generator_c embeds
+/// it, so that a tool lacking the type reads its constants and comments from our node too.
+struct TypeSourceTable
+{
+  const char* encoding;          ///< "msg", "srv", "action"; "implicit" for synthesized types
+  const char* raw_file_contents; ///< the file's lines joined by '\n' ("" when implicit)
+  /// Set instead of raw_file_contents in a referenced type's entry when that type is generated:
+  /// its own table's source is the text (each interface file is in the generated code once).
+  const MessageTypeSupport* (*defined_by)();
+};
+
+/// One type of a description (type_description_interfaces/msg/IndividualTypeDescription),
+/// with its source.
 struct IndividualTypeDescriptionTable
 {
   const char* type_name;
   uint32_t field_count;
   const TypeDescriptionField* fields;
+  TypeSourceTable source;
 };
 
 /// A type's full description (type_description_interfaces/msg/TypeDescription): the type and

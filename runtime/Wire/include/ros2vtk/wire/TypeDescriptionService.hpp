@@ -30,8 +30,9 @@ TypeDescriptionData from_message(
 /// Fills `response` for `request` from `types`, as
 /// rcl_node_type_description_service_handle_request: the type is looked up by its hash alone; an
 /// unparsable hash answers "Failed to parse type hash", a hash no endpoint of the node uses "Type
-/// not currently in use by this node". type_sources stay empty: the generator keeps no .msg text
-/// (see docs/wire-interop.md).
+/// not currently in use by this node". With include_type_sources, type_sources holds the type's
+/// source and each referenced type's, in the description's order, as rcl copies them from the
+/// type support (the generated tables embed the interface files' text).
 void answer_type_description_request(const NodeTypeCache& types,
   const ::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Request& request,
   ::ros2vtk::type_description_interfaces::srv::GetTypeDescription_Response& response);
