@@ -182,6 +182,18 @@ public:
       return scene->GetFixedFrame();
     return this->TfPrefix + this->Visuals.root_link;
   }
+  /// EffectiveFixedFrame(scene) == frame, without building the string: asked at every spin.
+  bool IsEffectiveFixedFrame(const vtkROS2Scene* scene, const std::string& frame) const
+  {
+    if (!this->FixedFrame.empty())
+      return frame == this->FixedFrame;
+    if (scene && scene->GetFixedFrame()[0] != '\0')
+      return frame == scene->GetFixedFrame();
+    const std::string& root = this->Visuals.root_link;
+    return frame.size() == this->TfPrefix.size() + root.size() &&
+      frame.compare(0, this->TfPrefix.size(), this->TfPrefix) == 0 &&
+      frame.compare(this->TfPrefix.size(), std::string::npos, root) == 0;
+  }
   std::string LoadedFixedFrame; // EffectiveFixedFrame() of the last load
 };
 
@@ -650,6 +662,7 @@ const char* vtkROS2RobotNode::GetLastJointStateError() const
 //------------------------------------------------------------------------------
 int vtkROS2RobotNode::OnROS2NodeSpin(vtkROS2NodeNode*)
 {
+  // First: a changed fixed frame reloads here, so UpdateLinkPoses' LoadedFixedFrame is current.
   const int loaded = this->CheckForNewDescription();
   return loaded + this->UpdateLinkPoses();
 }
@@ -692,7 +705,7 @@ int vtkROS2RobotNode::UpdateLinkPoses()
     }
   }
   const bool changed = internals.JointStates.Update(
-    rosNode, links, internals.EffectiveFixedFrame(this->Scene), internals.TfPrefix);
+    rosNode, links, internals.LoadedFixedFrame, internals.TfPrefix); // current: see OnROS2NodeSpin
   for (const std::string& warning : internals.JointStates.TakeWarnings())
   {
     vtkWarningMacro("robot '" << internals.RobotName << "': " << warning);
@@ -819,7 +832,7 @@ int vtkROS2RobotNode::CheckForNewDescription()
   vtkInternals& internals = *this->Internals;
   // The scene's fixed frame, used when the robot has none, may have changed since the load.
   internals.FramesChanged = internals.FramesChanged ||
-    (internals.Loaded && internals.EffectiveFixedFrame(this->Scene) != internals.LoadedFixedFrame);
+    (internals.Loaded && !internals.IsEffectiveFixedFrame(this->Scene, internals.LoadedFixedFrame));
   if (internals.FramesChanged && internals.Loaded)
   {
     // New prefix or fixed frame: rebuild the nodes from the description already parsed.
