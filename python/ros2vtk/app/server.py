@@ -546,8 +546,8 @@ class App:
         name = volumes.volume_name(path.strip())
         node = volumes.add_volume_node(self.scene, image, file_to_world, name)
         self.display.Update()
-        self._frame_view(now=True)  # the volume in view beside the robots (again once the panes
-        self.render()  # have taken their share of the page: the view's new shape)
+        self._frame_view()  # the volume in view beside the robots (again once the panes have taken
+        self.render()  # their share of the page: the view's new shape), unless the user moved the camera
         dims, spacing = image.GetDimensions(), image.GetSpacing()
         self.state.slice_source = node.GetID()
         self._show_slice_source(node.GetID())
@@ -664,10 +664,14 @@ class App:
             self.view_handler.schedule_render()
 
     def _frame_view(self, now: bool = False) -> None:
-        """Frames the 3D view now, or when what it shows asks for it (ViewFraming.update); one
-        terminal line each time, so a camera that moves by itself can be told from a user's."""
+        """Frames the 3D view now, or when what it shows asks for it and the user has not moved
+        the camera (ViewFraming.update); one terminal line each time, so a camera that moves by
+        itself can be told from a user's, and one when the user takes the camera."""
+        held = self.framing.user_camera
         if self.framing.frame() if now else self.framing.update():
             print(f'[app] 3D view framed: {self.framing.describe()}', flush=True)
+        elif self.framing.user_camera and not held:
+            print('[app] 3D view: camera moved by the user, kept until "Reset view"', flush=True)
 
     async def _spin_loop(self):
         period = 1.0 / max(self.logic.GetSpinRate(), 1.0)
