@@ -37,7 +37,10 @@ try:
         shots = {o: d.find_element(By.ID, f'slice_{o}').screenshot_as_png for o in ('axial', 'sagittal', 'coronal')}
         cuts = {o: t.orange_pixels(p) for o, p in shots.items()}
         tumour = t.phantom_pixels(shots['sagittal'])['tumour']
-        if all(c >= 10 for c in cuts.values()) and tumour > 800 and t.phantom_pixels(shots['coronal'])['tumour'] > 300:
+        # The tip in the tumour: tumour grey in all three panes (the sagittal alone also passed with the
+        # tip in the air above the phantom, the tumour at the pane's bottom edge).
+        if all(c >= 10 for c in cuts.values()) and tumour > 800 and all(
+                t.phantom_pixels(shots[o])['tumour'] > 300 for o in ('axial', 'coronal')):
             d.save_screenshot(OUT); print(f'{OUT}: needle pixels {cuts}, tumour pixels (sagittal) {tumour}'); break
         time.sleep(0.3)
     else:

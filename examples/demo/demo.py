@@ -226,6 +226,16 @@ def display_box(renderer, bounds):
 
 # The 2D panes of the window mode, top to bottom, with Slicer's view colours (red, yellow, green).
 SLICE_PANES = (('axial', (0.95, 0.35, 0.35)), ('sagittal', (0.95, 0.85, 0.3)), ('coronal', (0.45, 0.8, 0.4)))
+PANE_NORMAL_AXIS = {'axial': 2, 'sagittal': 0, 'coronal': 1}
+TIP_FIELD_OF_VIEW = 80.0  # mm from a pane's centre to its top around the tip: the needle's way in the tissue
+
+
+def plane_through(bounds, point, axis: int) -> list:
+    """The centre of a box (xmin, xmax, ...) moved along `axis` to `point`'s coordinate, kept
+    within the box."""
+    centre = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
+    centre[axis] = min(max(point[axis], bounds[2 * axis]), bounds[2 * axis + 1])
+    return centre
 VIEW_WIDTH = 0.7  # of the window, for the 3D view; the panes share the rest
 
 
@@ -271,7 +281,7 @@ class Viewer:
                 view.SetOrientation(orientation)
                 view.SetVolumeNode(volume)
                 view.SetWindowLevel(400.0, 40.0)
-                view.SetFieldOfView(80.0)  # 16 cm tall around the tip: the needle's way in the tissue
+                view.SetFieldOfView(TIP_FIELD_OF_VIEW)
                 label = vtk.vtkTextActor()
                 label.SetInput(orientation)
                 label.GetTextProperty().SetColor(*colour)
@@ -285,13 +295,22 @@ class Viewer:
                 view.SetSliceCenter(*centre)
 
     def follow_tip(self) -> None:
-        """The 3D slices and the 2D panes through the needle tip while it is inside the phantom."""
+        """The 3D slices and the 2D panes through the needle tip while it is inside the phantom
+        (the panes centred on it, 16 cm tall); outside, each pane shows the whole phantom cut by
+        the plane at the tip's coordinate (kept within the phantom), as Slicer's slice views
+        driven by a tool: the needle approaching above the phantom in the sagittal and coronal
+        panes, not black panes centred on a tip in the air."""
         if self.tip is None:
             return
         self.phantom.follow(self.tip)
-        if self.phantom.tip_inside:
-            for view in self.slice_views.values():
+        bounds = self.phantom.world_bounds()
+        for orientation, view in self.slice_views.items():
+            if self.phantom.tip_inside:
+                view.SetFieldOfView(TIP_FIELD_OF_VIEW)
                 view.SetSliceCenter(*self.tip)
+            else:
+                view.SetFieldOfView(0.0)  # the whole phantom
+                view.SetSliceCenter(*plane_through(bounds, self.tip, PANE_NORMAL_AXIS[orientation]))
 
     def update(self) -> None:
         """Model nodes of the scene -> actors with their world matrices."""
@@ -575,8 +594,10 @@ def run_app(demo: Demo, args, duration: float) -> int:
                 phantom.set_visible(demo.placement.placed)
             if demo.tip is not None and demo.placement.placed:
                 phantom.follow(demo.tip)
-                if phantom.tip_inside and app.slices is not None:
-                    app.slices.follow(*demo.tip)  # planes through the tip, panes centred on it, as in --window
+                if app.slices is not None and phantom.tip_inside:  # as in --window: centred on the tip
+                    app.slices.follow(*demo.tip, half_height=TIP_FIELD_OF_VIEW)
+                elif app.slices is not None:  # the whole phantom, cut at the tip's coordinates
+                    app.slices.set_point(*demo.tip)
             now = time.monotonic()
             if wait and not app.browsers.seen and now >= frames['next']:
                 frames['next'] = now + 1.0 / args.frames_per_second

@@ -3,7 +3,11 @@ RViz 2's views behave): the camera frames the robots' workspaces (`vtkROS2RobotN
 GetWorkspaceSphere`: the robot in every joint position within its limits) together with the bounds
 of everything else drawn, and frames again only when something is added or removed, a robot is
 (re)loaded or its base moves, something drawn leaves the framed region, or the view's shape
-changes. Used by the app's 3D view and by the demo's --window view."""
+changes. Once the user has moved the camera (rotated, zoomed, panned), the camera is theirs: no
+automatic framing at all, not even for a robot or volume added later (Slicer's 3D view keeps the
+user's camera too; its "Center view" button brings new data into view), until `frame()` (the
+view's "Reset view"), which also turns automatic framing back on. Used by the app's 3D view and by
+the demo's --window view."""
 from __future__ import annotations
 
 import math
@@ -56,6 +60,14 @@ def visible_bounds(renderer):
     return bounds if bounds[0] <= bounds[1] else None
 
 
+def camera_state(camera) -> tuple:
+    """What places a camera (position, focal point, view up, view angle, parallel scale and
+    projection): a change of any is a moved camera; the clipping range, reset before each frame,
+    is not part of it."""
+    return (*camera.GetPosition(), *camera.GetFocalPoint(), *camera.GetViewUp(), camera.GetViewAngle(),
+            camera.GetParallelScale(), float(camera.GetParallelProjection()))
+
+
 def frame_sphere(renderer, sphere: Sphere) -> None:
     """Sphere whole in the view and filling its smaller side, seen along VIEW_DIRECTION, z up."""
     camera = renderer.GetActiveCamera()
@@ -73,9 +85,10 @@ def frame_sphere(renderer, sphere: Sphere) -> None:
 
 class ViewFraming:
     """Keeps `renderer`'s camera framed on the scene's robots' workspaces and what is drawn.
-    `frame()` frames now (the view's "Reset view"); `update()`, called after each spin, frames
-    again only when needed (see the module's text) and says whether it did."""
-
+    `frame()` frames now (the view's "Reset view") and turns automatic framing on; `update()`,
+    called after each spin, frames again only when needed (see the module's text) and says
+    whether it did; never once the camera differs from where framing left it (`user_camera`:
+    the user moved it)."""
 
     def __init__(self, scene, renderer):
         self.scene, self.renderer = scene, renderer
@@ -84,6 +97,8 @@ class ViewFraming:
         self.key = None  # what was drawn then: props visible, robot loads
         self.aspect = 0.0
         self.frames = 0  # how many times it framed (for tests and the terminal)
+        self.framed_camera = None  # camera_state() as the last framing left it
+        self.user_camera = False  # the user moved the camera since: no automatic framing
 
     def frame(self) -> bool:
         """Frames the robots' workspaces and everything drawn now; False when there is nothing."""
@@ -95,13 +110,24 @@ class ViewFraming:
         if bounds is not None:
             sphere = enclosing_sphere(sphere, box_sphere(bounds))
         self.key, self.aspect = self._key(), self.renderer.GetTiledAspectRatio()
+        self.user_camera = False
         if sphere is None:
-            self.sphere = None
+            self.sphere = self.framed_camera = None
             return False
         self.sphere = sphere
         frame_sphere(self.renderer, sphere)
+        self.framed_camera = camera_state(self.renderer.GetActiveCamera())
         self.frames += 1
         return True
+
+    def camera_moved_by_user(self) -> bool:
+        """Whether the camera was moved since the last framing (by the user's mouse, or a script);
+        stays True until `frame()`."""
+        if not self.user_camera and self.framed_camera is not None:
+            now = camera_state(self.renderer.GetActiveCamera())
+            scale = max(self.sphere[3], 1.0) if self.sphere is not None else 1.0
+            self.user_camera = any(abs(a - b) > 1e-6 * scale for a, b in zip(now, self.framed_camera))
+        return self.user_camera
 
     def describe(self) -> str:
         """What the camera frames now, in one line."""
@@ -114,7 +140,10 @@ class ViewFraming:
 
     def update(self) -> bool:
         """Frames again when something was added or removed, a robot was loaded or moved its base,
-        something drawn left the framed region, or the view changed shape."""
+        something drawn left the framed region, or the view changed shape; never after the user
+        moved the camera (until `frame()`)."""
+        if self.camera_moved_by_user():
+            return False
         if self.sphere is None or self.key != self._key() or self._shape_changed() or \
                 self._robots_moved() or self._outside():
             return self.frame()

@@ -10,6 +10,7 @@ in <build>/test-artifacts/app/:
   9. closing a tab leaves no traceback in the server's terminal;
   10. a volume file opened from the Volumes section -> the slice panes show it, with the robot's cut;
       the 3D view, smaller now, streams at its new size (the robot whole, nothing cropped);
+  10e-f. Slicer's window/level presets; a camera the user moved is kept until "Reset view";
   11. array parameters (integer[], string[], double[]) set from the form -> the rclpy node holds them.
 """
 from __future__ import annotations
@@ -425,7 +426,7 @@ def test_9_a_closed_tab_and_the_browser_leave_no_traceback_in_the_terminal(world
 
 def write_sphere_volume(path: Path) -> None:
     """A 48^3 MetaImage of 5 mm voxels centred on the orange cylinder on the arm's base (120, 120,
-    125 mm; it does not move): a bright sphere (1000, radius 60 mm) in a dark block (0), written with
+    125 mm RAS; it does not move): a bright sphere (1000, radius 60 mm) in a dark block (0), written with
     numpy and VTK's writer. The panes' planes go through the centre, so each cuts the cylinder."""
     import numpy as np
     import vtk
@@ -436,7 +437,9 @@ def write_sphere_volume(path: Path) -> None:
     image = vtk.vtkImageData()
     image.SetDimensions(n, n, n)
     image.SetSpacing(spacing, spacing, spacing)
-    image.SetOrigin(*(c - (n - 1) / 2 * spacing for c in (120.0, 120.0, 125.0)))
+    # A MetaImage's coordinates are LPS (the app reads them as ITK and Slicer do): the centre's
+    # x and y are written negated. (The sphere is symmetric: the flip of its axes shows nowhere.)
+    image.SetOrigin(*(c - (n - 1) / 2 * spacing for c in (-120.0, -120.0, 125.0)))
     image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(voxels.ravel(), deep=True, array_type=vtk.VTK_SHORT))
     writer = vtk.vtkMetaImageWriter()
     writer.SetFileName(str(path))
@@ -524,6 +527,16 @@ def view_fit(driver) -> dict:
         "        drawn: [drawn.width, drawn.height], ratio: window.devicePixelRatio};")
 
 
+def view_streamed_at_its_size(driver, fits: list | None = None) -> bool:
+    """Whether the image streamed into the 3D view has its element's size (device pixels, within
+    1 px) and is drawn within it; each look is appended to `fits`."""
+    fit = view_fit(driver)
+    if fits is not None:
+        fits.append(fit)
+    (w, h), (iw, ih), (_, dh) = fit['element'], fit['streamed'], fit['drawn']
+    return abs(iw - int(w * fit['ratio'])) <= 1 and abs(ih - int(h * fit['ratio'])) <= 1 and dh <= h + 1
+
+
 def test_10b_the_3d_view_follows_its_smaller_size_once_the_slice_panes_appear(world):
     """The slice panes took the lower third of the page (test 10): the 3D view's render window
     follows its element's new size (trame-rca reports it; the app's loop, kept free by rendering
@@ -533,14 +546,9 @@ def test_10b_the_3d_view_follows_its_smaller_size_once_the_slice_panes_appear(wo
     driver = world['driver']
     assert driver.find_elements(By.ID, 'slice_panes'), 'test 10 opened no volume'
     fits = []
-
-    def streamed_at_the_element_size():
-        fit = view_fit(driver)
-        fits.append(fit)
-        (w, h), (iw, ih), (_, dh) = fit['element'], fit['streamed'], fit['drawn']
-        return abs(iw - int(w * fit['ratio'])) <= 1 and abs(ih - int(h * fit['ratio'])) <= 1 and dh <= h + 1
     try:
-        wait_for('the streamed image at the 3D view\'s size', streamed_at_the_element_size, seconds=30)
+        wait_for('the streamed image at the 3D view\'s size', lambda: view_streamed_at_its_size(driver, fits),
+                 seconds=30)
     finally:
         print(f'3D view element, streamed and drawn sizes: first {fits[:1]}, last {fits[-1:]}')
     view = view_png(driver)
@@ -604,6 +612,107 @@ def test_10d_window_and_level_of_the_volume_from_the_panel(world):
     back = wait_for('the white disc back in every pane', lambda: (lambda d: all(
         v['white_fraction'] > 0.04 and min(v['centre']) > 200 for v in d.values()) and d)(discs()), seconds=30)
     print(f'panes at level 5000: {dark}; at the scalar range: {back}')
+
+
+def grey_levels(png: bytes) -> dict:
+    """How many pixels of a slice pane are grey (r, g and b within 8 of each other) at each
+    level from 10 to 245 (the pane's black background and the sphere's white left out)."""
+    image = Image.open(io.BytesIO(png)).convert('RGB')
+    levels = {}
+    for r, g, b in image.get_flattened_data():
+        if max(r, g, b) - min(r, g, b) <= 8 and 10 <= g <= 245:
+            levels[g] = levels.get(g, 0) + 1
+    return levels
+
+
+def block_grey(png: bytes) -> tuple[int, float]:
+    """The commonest grey level of a slice pane (the sphere volume's block, 0 in the file) and the
+    fraction of the pane at that level +-6; (0, 0.0) when no grey is seen (a black block)."""
+    levels = grey_levels(png)
+    if not levels:
+        return 0, 0.0
+    image = Image.open(io.BytesIO(png))
+    mode = max(levels, key=levels.get)
+    near = sum(n for level, n in levels.items() if abs(level - mode) <= 6)
+    return mode, near / (image.width * image.height)
+
+
+def test_10e_window_level_presets_of_slicer(world):
+    """The Volumes section's presets (Slicer's VolumeDisplayPresets.json) set the chosen volume's
+    window and level: the sphere volume's block (value 0) is drawn at the grey the numbers
+    predict, 255 x (0 - (level - window / 2)) / window; 'auto' (the scalar range 0..1000) draws it
+    black again. The fields show the preset's numbers."""
+    driver = world['driver']
+    panes = ('axial', 'sagittal', 'coronal')
+    expected = {'CT-Abdomen': (350, 40), 'CT-Bone': (1000, 400), 'CT-Lung': (1400, -500)}
+    seen = {}
+    for name, (window, level) in expected.items():
+        click(driver, f'volume_preset_{name.lower().replace("-", "_")}')
+        wait_for_message(driver, f'sphere: window {window}, level {level} ({name})')
+        grey = round(255 * (0 - (level - window / 2)) / window)
+
+        def block_at_the_predicted_grey(grey=grey):
+            shots = {o: driver.find_element(By.ID, f'slice_{o}').screenshot_as_png for o in panes}
+            seen[name] = {o: block_grey(png) for o, png in shots.items()}
+            return all(abs(mode - grey) <= 6 and fraction > 0.15 for mode, fraction in seen[name].values())
+        try:
+            wait_for(f'the block at grey {grey} in every pane ({name})', block_at_the_predicted_grey, seconds=30)
+        finally:
+            print(f'{name} W{window}/L{level}: block predicted {grey}, seen (grey, fraction) {seen.get(name)}')
+        assert driver.find_element(By.ID, 'volume_window').get_attribute('value') == str(window)
+        assert driver.find_element(By.ID, 'volume_level').get_attribute('value') == str(level)
+        step_shot(driver, f'10e-preset-{name}')
+    click(driver, 'volume_preset_auto')
+    wait_for_message(driver, 'sphere: window/level from its scalar range')
+    wait_for('the block black again (auto: 0 at the bottom of 0..1000)', lambda: all(
+        block_grey(driver.find_element(By.ID, f'slice_{o}').screenshot_as_png)[1] < 0.05 for o in panes), seconds=30)
+    assert driver.find_element(By.ID, 'volume_window').get_attribute('value') == ''
+
+
+def framing_lines(log: Path) -> list[str]:
+    return [line for line in log.read_text(errors='replace').splitlines() if '[app] 3D view framed' in line]
+
+
+def test_10f_a_camera_the_user_moved_is_kept_until_reset_view(world):
+    """A drag in the 3D view (Selenium's pointer actions, through trame-rca to the render window's
+    interactor) rotates the camera; from then on nothing frames the view by itself: neither the
+    view's new shape (the browser window narrowed) nor a volume opened (both framed it before).
+    "Reset view" frames it at once, and framing is automatic again (the window's width restored:
+    framed once more)."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    driver = world['driver']
+    log = ARTIFACTS / 'server.log'
+    view = driver.find_element(By.ID, 'view')
+    driver.execute_script('arguments[0].scrollIntoView({block: "center"})', view)
+    before = view_png(driver)
+    ActionChains(driver).move_to_element(view).click_and_hold().move_by_offset(60, 20).pause(0.3) \
+        .move_by_offset(60, 20).pause(0.3).release().perform()
+    wait_for('the server seeing the user\'s camera', lambda: 'camera moved by the user' in log.read_text(), seconds=20)
+    framed = len(framing_lines(log))
+    (ARTIFACTS / '10f-dragged.png').write_bytes(view_png(driver))
+    size = driver.get_window_size()
+    driver.set_window_size(size['width'] - 300, size['height'])
+    wait_for('the streamed image at the view\'s new size', lambda: view_streamed_at_its_size(driver), seconds=30)
+    second = ARTIFACTS / 'sphere2.mha'
+    write_sphere_volume(second)
+    type_into(driver, 'volume_file', str(second))
+    click(driver, 'volume_open')
+    wait_for_message(driver, 'Volume sphere2 opened')
+    time.sleep(2)  # several spins and frames: time for a framing, had there been one
+    (ARTIFACTS / '10f-kept.png').write_bytes(view_png(driver))
+    after_changes = framing_lines(log)
+    assert len(after_changes) == framed, f'framed while the user held the camera: {after_changes[framed:]}'
+    click(driver, 'volume_remove')
+    wait_for_message(driver, 'Volume sphere2 removed')
+    click(driver, 'reset_view')
+    wait_for('"Reset view" framing the view', lambda: len(framing_lines(log)) == framed + 1, seconds=20)
+    driver.set_window_size(size['width'], size['height'])
+    wait_for('automatic framing again (the view\'s shape changed back)', lambda: len(framing_lines(log)) >= framed + 2,
+             seconds=30)
+    step_shot(driver, '10f-reset-view')
+    print(f'framings: {framed} before the drag, {len(after_changes)} after the resize and the volume, '
+          f'then Reset view and the resize back: {len(framing_lines(log))}; view changed by the drag: '
+          f'{before != view_png(driver)}')
 
 
 def read_json_line(process, seconds: float = 60.0):

@@ -2,7 +2,7 @@
 ignore a file's direction, the app applies it. Each file here is written as header text by hand
 (and numpy bytes for the voxels), never by a writer of ours: one bright voxel at a known index,
 whose world position is computed here from the header's numbers (origin + direction x spacing x
-index; a NRRD in LPS space turned into RAS as Slicer does) and compared with where the scene puts
+index; a NRRD in LPS space, and every MetaImage, turned into RAS as Slicer does) and compared with where the scene puts
 it (the volume node's image and its file-to-world transform node). A 2D slice view through that
 point shows the voxel at the pane's centre."""
 from __future__ import annotations
@@ -92,8 +92,39 @@ def test_metaimage_transform_matrix(tmp_path):
                     'ElementDataFile = rotated.raw\n')
     world, *_ = where_the_scene_puts_the_bright_voxel(path)
     i, j, k = BRIGHT
-    expected = (5 + j * 3 * -1, 6 + i * 2, 7 + k * 4)
+    lps = (5 + j * 3 * -1, 6 + i * 2, 7 + k * 4)
+    expected = (-lps[0], -lps[1], lps[2])  # RAS: a MetaImage's coordinates are LPS (ITK, Slicer)
     assert numpy.allclose(world, expected), world
+
+
+def write_plain_metaimage(path: Path, extra: str = '') -> None:
+    """An axis-aligned MetaImage (no TransformMatrix), Offset (5, 6, 7), spacing (2, 3, 4)."""
+    (path.parent / 'plain.raw').write_bytes(voxels())
+    path.write_text('ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n'
+                    f'{extra}Offset = 5 6 7\nElementSpacing = 2 3 4\n'
+                    f'DimSize = {DIMS[0]} {DIMS[1]} {DIMS[2]}\nElementType = MET_UCHAR\n'
+                    'ElementDataFile = plain.raw\n')
+
+
+def test_an_axis_aligned_metaimage_is_lps_too(tmp_path):
+    """No TransformMatrix: the axes are LPS's, so the voxel lands at x and y negated (RAS), as
+    Slicer places the same file."""
+    path = tmp_path / 'plain.mhd'
+    write_plain_metaimage(path)
+    world, node, _ = where_the_scene_puts_the_bright_voxel(path)
+    i, j, k = BRIGHT
+    assert numpy.allclose(world, (-(5 + i * 2), -(6 + j * 3), 7 + k * 4)), world
+    assert node.GetParentTransformNode() is not None
+
+
+def test_a_metaimages_anatomical_orientation_is_ignored_as_itk_does(tmp_path):
+    """ITK (so Slicer) reads a MetaImage as LPS whatever its AnatomicalOrientation field says
+    (InsightSoftwareConsortium/ITK#1017): a file saying RAS lands where the plain one does."""
+    path = tmp_path / 'says_ras.mhd'
+    write_plain_metaimage(path, 'AnatomicalOrientation = RAS\n')
+    world, *_ = where_the_scene_puts_the_bright_voxel(path)
+    i, j, k = BRIGHT
+    assert numpy.allclose(world, (-(5 + i * 2), -(6 + j * 3), 7 + k * 4)), world
 
 
 def test_axis_aligned_files_keep_their_origin_and_no_transform(tmp_path):

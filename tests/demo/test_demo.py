@@ -149,6 +149,17 @@ def test_demo_shows_the_needle_reaching_into_the_phantom():
             assert abs(info['slice_planes_mm'][name] - info['tip_mm'][axis]) <= info['voxel_mm'][axis], (frame.name, info)
             assert math.dist(info['slice_view_centres_mm'][name], info['tip_mm']) <= info['voxel_mm'][axis], (frame.name, info)
             assert info['slice_view_cuts'][name] >= 1, (frame.name, name, info['slice_view_cuts'])
+    # The needle approaching, outside the phantom's box: each pane shows the whole phantom cut at
+    # the tip's coordinate (kept within the box), as Slicer's slice views driven by a tool: its
+    # centre is the box's, moved along the pane's normal to the tip (not where the tip last was).
+    approaching = [f for f in placed if not inside(infos[f]['tip_mm'], infos[f]['phantom_bounds_mm'])]
+    for frame in approaching:
+        info, box = infos[frame], infos[frame]['phantom_bounds_mm']
+        for axis, name in enumerate(('sagittal', 'coronal', 'axial')):
+            expected = [(box[2 * i] + box[2 * i + 1]) / 2 for i in range(3)]
+            expected[axis] = min(max(info['tip_mm'][axis], box[2 * axis]), box[2 * axis + 1])
+            assert math.dist(info['slice_view_centres_mm'][name], expected) <= info['voxel_mm'][axis], (frame.name, info)
+    print(f'{len(at_tip)} frames with the tip inside the phantom, {len(approaching)} with it outside')
     # On the picture: the tip's projection inside the phantom's projected box, grey tissue there.
     info = infos[at_tip[0]]
     x0, y0, x1, y1 = info['phantom_display_box']

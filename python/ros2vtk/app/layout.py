@@ -223,7 +223,13 @@ def _parameters(v3, html, ctrl):
             html.Div('{{ remote_param_result }}', classes='text-caption', id='remote_param_result')
 
 
+def preset_id(name: str) -> str:
+    """The element id of a window/level preset's button ('CT-Bone' -> 'volume_preset_ct_bone')."""
+    return 'volume_preset_' + name.lower().replace('-', '_')
+
+
 def _volumes(v3, html, ctrl):
+    from .volumes import WINDOW_LEVEL_PRESETS
     with v3.VExpansionPanel(title='Volumes'):
         with v3.VExpansionPanelText():
             v3.VTextField(label='volume file on the server (.nrrd .nhdr .mha .mhd .nii .nii.gz)',
@@ -240,6 +246,11 @@ def _volumes(v3, html, ctrl):
             v3.VBtn('Set window/level', click=(ctrl.set_window_level, "[{slice_source: slice_source, "
                     "volume_window: volume_window, volume_level: volume_level}]"), size='small',
                     v_if='slice_source', id='volume_window_level')
+            # Slicer's Volumes module presets, plus 'auto' (the volume's scalar range): one click each.
+            with html.Div(classes='d-flex flex-wrap ga-1 mt-1', v_if='slice_source', id='volume_presets'):
+                for name in ('auto', *WINDOW_LEVEL_PRESETS):
+                    v3.VBtn(name, click=(ctrl.set_window_preset, f"['{name}', {{slice_source: slice_source}}]"),
+                            size='x-small', variant='tonal', id=preset_id(name))
             v3.VBtn('Remove volume', click=ctrl.remove_volume, size='small', color='error', variant='tonal',
                     v_if='slice_source', id='volume_remove')
 

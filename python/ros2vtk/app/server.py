@@ -285,6 +285,7 @@ class App:
         c.open_volume = self.open_volume
         c.remove_volume = self.remove_volume
         c.set_window_level = self.set_window_level
+        c.set_window_preset = self.set_window_preset
         c.save_scene = self.save_scene
         c.load_scene = self.load_scene
         c.reset_camera = self.reset_camera
@@ -546,8 +547,8 @@ class App:
         name = volumes.volume_name(path.strip())
         node = volumes.add_volume_node(self.scene, image, file_to_world, name)
         self.display.Update()
-        self._frame_view(now=True)  # the volume in view beside the robots (again once the panes
-        self.render()  # have taken their share of the page: the view's new shape)
+        self._frame_view()  # the volume in view beside the robots (again once the panes have taken
+        self.render()  # their share of the page: the view's new shape), unless the user moved the camera
         dims, spacing = image.GetDimensions(), image.GetSpacing()
         self.state.slice_source = node.GetID()
         self._show_slice_source(node.GetID())
@@ -556,8 +557,8 @@ class App:
 
     def remove_volume(self):
         """Removes the volume node the slice panes show (a subscriber stays: remove it in Topics)."""
-        node = self.scene.GetNodeByID(self.state.slice_source) if self.state.slice_source else None
-        if node is None or not node.IsA('vtkROS2VolumeNode'):
+        node = self._chosen_volume()
+        if node is None:
             return self._report(False, '', 'Remove volume: choose a volume in the list')
         name = node.GetName()
         volumes.remove_volume_node(self.scene, node)
@@ -565,13 +566,18 @@ class App:
         self._show_slice_source('')
         return self._report(True, f'Volume {name} removed', '')
 
+    def _chosen_volume(self):
+        """The volume node chosen in the Volumes section's list, or None."""
+        node = self.scene.GetNodeByID(self.state.slice_source) if self.state.slice_source else None
+        return node if node is not None and node.IsA('vtkROS2VolumeNode') else None
+
     def set_window_level(self, form=None):
         """The chosen volume's window and level (vtkROS2VolumeNode.SetWindow/SetLevel), used by the
         3D view's rendering and the slice panes; a window of 0 or left empty: its scalar range."""
         self._apply(form)
         s = self.state
-        node = self.scene.GetNodeByID(s.slice_source) if s.slice_source else None
-        if node is None or not node.IsA('vtkROS2VolumeNode'):
+        node = self._chosen_volume()
+        if node is None:
             return self._report(False, '', 'Window/level: choose a volume in the list')
         text_window, text_level = str(s.volume_window or '').strip(), str(s.volume_level or '').strip()
         try:
@@ -584,14 +590,34 @@ class App:
         if not (math.isfinite(window) and math.isfinite(level)):
             vtk.vtkOutputWindow.GetInstance().DisplayErrorText('window and level are finite numbers\n')
             return self._report(False, '', 'Window/level not set')
+        return self._window_level(node, window, level)
+
+    def set_window_preset(self, name: str, form=None):
+        """One of Slicer's window/level presets (volumes.WINDOW_LEVEL_PRESETS) on the chosen
+        volume, or 'auto': its scalar range. The window and level fields show the numbers."""
+        self._apply(form)
+        s = self.state
+        node = self._chosen_volume()
+        if node is None:
+            return self._report(False, '', 'Window/level: choose a volume in the list')
+        if name != 'auto' and name not in volumes.WINDOW_LEVEL_PRESETS:
+            vtk.vtkOutputWindow.GetInstance().DisplayErrorText(f'no window/level preset {name!r}\n')
+            return self._report(False, '', 'Window/level not set')
+        window, level = volumes.WINDOW_LEVEL_PRESETS.get(name, (0.0, 0.0))
+        s.volume_window, s.volume_level = (f'{window:g}', f'{level:g}') if window > 0 else ('', '')
+        return self._window_level(node, window, level, name)
+
+    def _window_level(self, node, window: float, level: float, preset: str = ''):
+        """Sets a volume node's window and level (window <= 0: its scalar range) and shows it."""
         node.SetWindow(max(window, 0.0))
         node.SetLevel(level)
         node.Modified()
         self.display.Update()
         self.render()
         self.next_slices = 0.0  # the panes at the next spin
+        named = f' ({preset})' if preset and preset != 'auto' else ''
         if window > 0:
-            return self._report(True, f'{node.GetName()}: window {window:g}, level {level:g}', '')
+            return self._report(True, f'{node.GetName()}: window {window:g}, level {level:g}{named}', '')
         return self._report(True, f'{node.GetName()}: window/level from its scalar range', '')
 
     def _show_slice_source(self, slice_source='', **_):
@@ -664,10 +690,14 @@ class App:
             self.view_handler.schedule_render()
 
     def _frame_view(self, now: bool = False) -> None:
-        """Frames the 3D view now, or when what it shows asks for it (ViewFraming.update); one
-        terminal line each time, so a camera that moves by itself can be told from a user's."""
+        """Frames the 3D view now, or when what it shows asks for it and the user has not moved
+        the camera (ViewFraming.update); one terminal line each time, so a camera that moves by
+        itself can be told from a user's, and one when the user takes the camera."""
+        held = self.framing.user_camera
         if self.framing.frame() if now else self.framing.update():
             print(f'[app] 3D view framed: {self.framing.describe()}', flush=True)
+        elif self.framing.user_camera and not held:
+            print('[app] 3D view: camera moved by the user, kept until "Reset view"', flush=True)
 
     async def _spin_loop(self):
         period = 1.0 / max(self.logic.GetSpinRate(), 1.0)

@@ -8,8 +8,9 @@ vtkMetaImageReader), NIfTI (.nii, .nii.gz: vtkNIFTIImageReader). The image keeps
 and spacing (mm); a NIfTI file's sform (else qform) matrix, which maps its voxels to RAS mm,
 becomes a transform node above the volume node. VTK 9.1's NRRD and MetaImage readers ignore the
 file's direction, so it is read from the header here (NRRD `space directions`, MetaImage
-`TransformMatrix`): when the axes are rotated, or a NRRD file's `space` is left-posterior-superior
-(turned into RAS as Slicer does: x and y negated), the image is read with origin 0 and the file's
+`TransformMatrix`): when the axes are rotated, or the file's coordinates are left-posterior-
+superior (a NRRD whose `space` says so; every MetaImage, as ITK and Slicer read them), turned into
+RAS as Slicer does (x and y negated), the image is read with origin 0 and the file's
 voxel-to-world matrix (direction x spacing, origin) becomes that transform node.
 """
 from __future__ import annotations
@@ -18,6 +19,13 @@ import math
 import os
 
 import vtk
+
+# Window/level presets of Slicer's Volumes module (window, level), as Slicer lists them:
+# Slicer/Slicer Modules/Loadable/Volumes/Resources/VolumeDisplayPresets.json. (Its PET and DTI
+# presets also switch to a rainbow colour table, which the grey slice panes do not have; Slicer
+# has no MR preset: an MRI is shown with its automatic window, 'auto' here.)
+WINDOW_LEVEL_PRESETS = {'CT-Bone': (1000.0, 400.0), 'CT-Air': (1000.0, -426.0), 'CT-Brain': (100.0, 50.0),
+                        'CT-Abdomen': (350.0, 40.0), 'CT-Lung': (1400.0, -500.0)}
 
 READERS = {'.nrrd': 'vtkNrrdReader', '.nhdr': 'vtkNrrdReader', '.mha': 'vtkMetaImageReader',
            '.mhd': 'vtkMetaImageReader', '.nii': 'vtkNIFTIImageReader', '.nii.gz': 'vtkNIFTIImageReader'}
@@ -117,8 +125,9 @@ NRRD_LPS = ('left-posterior-superior', 'lps')
 def _header_placement(path: str, reader_class: str, spacing):
     """The spacing and the matrix from (index x spacing) to world mm that a NRRD or MetaImage
     header gives (columns: each axis's unit direction; last column: the origin; a NRRD in LPS
-    space turned into RAS as Slicer does), or None when its axes are the world's (the image's
-    origin and spacing then say it all). ValueError for a direction that is no 3 x 3 matrix."""
+    space, and every MetaImage, turned into RAS as Slicer does), or None when its axes are the
+    world's (the image's origin and spacing then say it all). ValueError for a direction that is
+    no 3 x 3 matrix."""
     if reader_class == 'vtkNrrdReader':
         fields = _header_fields(path, ':')
         if 'space directions' not in fields:
@@ -130,13 +139,13 @@ def _header_placement(path: str, reader_class: str, spacing):
     elif reader_class == 'vtkMetaImageReader':
         fields = _header_fields(path, '=')
         text = fields.get('transformmatrix') or fields.get('rotation') or fields.get('orientation')
-        if text is None:
-            return None
-        values = _numbers(text)
+        values = _numbers(text) if text is not None else [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
         # MetaIO lists each axis's direction in turn (ITK's MetaImageIO: axis i = values[3i:3i+3]).
         columns = [[v * spacing[i] for v in values[3 * i:3 * i + 3]] for i in range(len(values) // 3)]
         origin = _numbers(fields.get('offset') or fields.get('position') or fields.get('origin') or '0 0 0')
-        flip = False
+        # ITK, and so Slicer, takes every MetaImage's coordinates as LPS, whatever its
+        # AnatomicalOrientation says (ITK ignores that field: InsightSoftwareConsortium/ITK#1017).
+        flip = True
     else:
         return None
     if len(columns) != 3 or any(len(c) != 3 for c in columns) or len(origin) != 3 or \

@@ -25,12 +25,18 @@ WakeUp::~WakeUp()
 
 void WakeUp::notify()
 {
+  notifying_.fetch_add(1);
   const uint64_t one = 1;
   // A full counter (EAGAIN) still leaves the fd readable, which is all we need.
   const ssize_t written = write(fd_, &one, sizeof(one));
   (void)written;
-  // After the write: a clear() that misses this flag leaves the fd readable for the next one.
-  pending_.store(true, std::memory_order_release);
+  if (after_write_for_test_)
+  {
+    after_write_for_test_();
+  }
+  // After the write: a clear() that misses this flag sees notifying_ and reads anyway.
+  pending_.store(true);
+  notifying_.fetch_sub(1);
   std::function<void()> callback;
   {
     std::lock_guard<std::mutex> lock(callback_mutex_);
@@ -44,7 +50,10 @@ void WakeUp::notify()
 
 void WakeUp::clear()
 {
-  if (!pending_.exchange(false, std::memory_order_acq_rel))
+  // Either flag or a notify() in progress: read. Whatever that notify wrote is then read here,
+  // or its flag, set after its write, makes the next clear() read it.
+  const bool flagged = pending_.exchange(false);
+  if (!flagged && notifying_.load() == 0)
   {
     return;
   }

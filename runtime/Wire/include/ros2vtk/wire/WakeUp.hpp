@@ -32,10 +32,17 @@ public:
   void set_callback(std::function<void()> callback);
 
 private:
+  friend struct WakeUpTestProbe; // tests pause a notify() between its write and its flag
+
   int fd_ = -1;
   // Set after each write, so clear() reads the eventfd only when something was written: the
   // spinner calls clear() on every spin, and a syscall per spin per node is most of an idle spin.
   std::atomic<bool> pending_{ false };
+  // notify() calls between their start and their flag: clear() reads then too. Without it, a
+  // notifier descheduled after its write left the eventfd readable and unflagged, so every poll
+  // woke the spinner and every spin skipped the read: ~2500 empty spins/s on a loaded machine.
+  std::atomic<int> notifying_{ 0 };
+  std::function<void()> after_write_for_test_;
   std::mutex callback_mutex_;
   std::function<void()> callback_;
 };

@@ -1,0 +1,87 @@
+// WakeUp: the eventfd a DDS thread raises and the spinner clears. A notify() interrupted between
+// its write and its flag (a DDS thread descheduled there on a loaded machine) must not leave
+// the descriptor readable after clear(): every poll would wake the spinner and every spin would
+// skip the read, a busy loop until that thread runs again.
+#include "ros2vtk/wire/WakeUp.hpp"
+
+#include <gtest/gtest.h>
+
+#include <poll.h>
+
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+namespace ros2vtk {
+namespace wire {
+
+// Pauses notify() right after its write (the friend of WakeUp).
+struct WakeUpTestProbe
+{
+  static void PauseAfterWrite(WakeUp& wake, std::function<void()> pause)
+  {
+    wake.after_write_for_test_ = std::move(pause);
+  }
+};
+
+} // namespace wire
+} // namespace ros2vtk
+
+namespace {
+using ros2vtk::wire::WakeUp;
+
+bool Readable(const WakeUp& wake)
+{
+  pollfd descriptor{ wake.fd(), POLLIN, 0 };
+  return ::poll(&descriptor, 1, 0) == 1 && (descriptor.revents & POLLIN);
+}
+
+TEST(WakeUp, NotifyMakesReadableAndClearDrains)
+{
+  WakeUp wake;
+  ASSERT_GE(wake.fd(), 0);
+  EXPECT_FALSE(Readable(wake));
+  wake.notify();
+  wake.notify();
+  EXPECT_TRUE(Readable(wake));
+  wake.clear();
+  EXPECT_FALSE(Readable(wake));
+  wake.clear(); // nothing pending: nothing to read, still not readable
+  EXPECT_FALSE(Readable(wake));
+}
+
+TEST(WakeUp, AClearDuringANotifysWindowLeavesNothingReadable)
+{
+  WakeUp wake;
+  std::mutex mutex;
+  std::condition_variable changed;
+  bool written = false, resume = false;
+  ros2vtk::wire::WakeUpTestProbe::PauseAfterWrite(wake, [&] {
+    std::unique_lock<std::mutex> lock(mutex);
+    written = true;
+    changed.notify_all();
+    changed.wait(lock, [&] { return resume; });
+  });
+  std::thread notifier([&] { wake.notify(); });
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    changed.wait(lock, [&] { return written; });
+  }
+  // The notifier has written but not flagged yet: the spinner wakes and clears.
+  EXPECT_TRUE(Readable(wake));
+  wake.clear();
+  EXPECT_FALSE(Readable(wake)) << "readable after clear(): the spinner would wake again at once";
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    resume = true;
+  }
+  changed.notify_all();
+  notifier.join();
+  // The late flag costs one read at most; the descriptor stays quiet.
+  wake.clear();
+  EXPECT_FALSE(Readable(wake));
+  wake.notify();
+  EXPECT_TRUE(Readable(wake)) << "a later notify still wakes";
+}
+
+} // namespace
