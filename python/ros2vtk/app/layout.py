@@ -114,7 +114,7 @@ def _robots(v3, html, ctrl):
             v3.VTextField(label='URDF file on the server', v_model=('robot_file',), density='compact',
                           v_if="robot_source == 'file'", id='robot_file', classes='mt-2')
             with html.Div(classes='d-flex ga-2'):
-                v3.VTextField(label='fixed frame (empty: the root link)', v_model=('robot_fixed_frame',),
+                v3.VTextField(label="fixed frame (empty: the scene's, else the root link)", v_model=('robot_fixed_frame',),
                               density='compact', id='robot_fixed_frame')
                 v3.VTextField(label='tf prefix', v_model=('robot_tf_prefix',), density='compact', id='robot_tf_prefix')
             v3.VTextField(label='mesh base folder (for relative mesh paths)', v_model=('robot_mesh_base',),
