@@ -356,8 +356,9 @@ def test_rclpy_marker_to_our_poly_data(ros, name, fields, bounds, extra):
 def test_unsupported_marker_type_is_refused_with_a_reason(ros):
     ours = ros.scene('--seconds', '20', 'sub', 'Marker', '/scene_in/marker_text', '--count', '3', '--linger', '1')
     ros.wait_ready(ours)
-    # TRIANGLE_LIST (11): not drawn (TEXT_VIEW_FACING and MESH_RESOURCE are: tests/display).
-    message = {'header': HEADER, 'type': 11, 'pose': MARKER_POSE, 'scale': {'x': 1.0, 'y': 1.0, 'z': 1.0}}
+    # ARROW_STRIP (12): not drawn (every other type is: tests/display, test_scene_marker_array.py).
+    message = {'header': HEADER, 'type': 12, 'pose': MARKER_POSE, 'scale': {'x': 0.1, 'y': 0.1, 'z': 0.1},
+               'points': [{'x': 0.0}, {'x': 1.0}, {'y': 1.0}]}
     peer = ros.peer('pub', '/scene_in/marker_text', 'visualization_msgs/msg/Marker', json.dumps(message),
                     '--count', '3', '--rate', '20')
     code, out, err = ros.finish(ours)
