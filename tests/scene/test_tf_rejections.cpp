@@ -47,8 +47,22 @@ protected:
   void SetUp() override { vtkOutputWindow::SetInstance(this->Output); }
   void TearDown() override { vtkOutputWindow::SetInstance(nullptr); }
 
+  /// A second ROS node of this->Logic, `name`, with a generic tf2_msgs/TFMessage publisher on
+  /// /tf (nullptr when either cannot be made).
+  vtkROS2PublisherGenericNode* AddTfSender(const char* name)
+  {
+    this->Logic->GetScene()->AddNode(this->Sender);
+    this->Logic->GetScene()->AddNode(this->TfPublisher);
+    const bool made = this->Sender->Create(name) &&
+      this->TfPublisher->SetROSType("tf2_msgs/msg/TFMessage") &&
+      this->TfPublisher->AddToROS2Node(this->Sender->GetID(), "/tf");
+    return made ? this->TfPublisher.GetPointer() : nullptr;
+  }
+
   vtkNew<ros2vtk_test::CapturingOutputWindow> Output;
   vtkNew<vtkROS2Logic> Logic;
+  vtkNew<vtkROS2NodeNode> Sender;
+  vtkNew<vtkROS2PublisherGenericNode> TfPublisher;
 };
 } // namespace
 
@@ -59,13 +73,8 @@ TEST_F(Tf2RejectionsTest, ManyBadTransformsAreWarnedAtOnceThenAtMostOnceASecond)
   // The tf listener starts with the node's first lookup.
   ASSERT_NE(receiver->CreateAndAddTf2LookupNode("world", "tool"), nullptr) << this->Output->Errors;
 
-  vtkNew<vtkROS2NodeNode> sender;
-  this->Logic->GetScene()->AddNode(sender);
-  ASSERT_TRUE(sender->Create("bad_tf_sender"));
-  vtkNew<vtkROS2PublisherGenericNode> tf;
-  this->Logic->GetScene()->AddNode(tf);
-  ASSERT_TRUE(tf->SetROSType("tf2_msgs/msg/TFMessage"));
-  ASSERT_TRUE(tf->AddToROS2Node(sender->GetID(), "/tf")) << this->Output->Errors;
+  vtkROS2PublisherGenericNode* tf = this->AddTfSender("bad_tf_sender");
+  ASSERT_NE(tf, nullptr) << this->Output->Errors;
   // frame_id == child_frame_id: tf2 refuses it (TF_SELF_TRANSFORM), whatever the stamp.
   const char* bad = "{transforms: [{header: {frame_id: world}, child_frame_id: world, "
                     "transform: {rotation: {w: 1.0}}}]}";
@@ -126,13 +135,8 @@ TEST_F(Tf2RejectionsTest, TransformsReachTheBufferWithoutASpin)
   ros2vtk::tf2::BufferCore* buffer = receiver->GetTf2Buffer();
   ASSERT_NE(buffer, nullptr);
 
-  vtkNew<vtkROS2NodeNode> sender;
-  this->Logic->GetScene()->AddNode(sender);
-  ASSERT_TRUE(sender->Create("good_tf_sender"));
-  vtkNew<vtkROS2PublisherGenericNode> tf;
-  this->Logic->GetScene()->AddNode(tf);
-  ASSERT_TRUE(tf->SetROSType("tf2_msgs/msg/TFMessage"));
-  ASSERT_TRUE(tf->AddToROS2Node(sender->GetID(), "/tf")) << this->Output->Errors;
+  vtkROS2PublisherGenericNode* tf = this->AddTfSender("good_tf_sender");
+  ASSERT_NE(tf, nullptr) << this->Output->Errors;
   const char* good = "{transforms: [{header: {stamp: {sec: 5}, frame_id: world}, "
                      "child_frame_id: tool, transform: {translation: {x: 0.25}, "
                      "rotation: {w: 1.0}}}]}";
