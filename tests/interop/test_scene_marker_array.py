@@ -299,3 +299,37 @@ def test_rclpy_per_point_colours_and_two_point_arrows(ros):
     close(g_bounds, [-100, 100, -1000, 0, 2900, 3100], tol=1e-3)
     head = [p for p in arrow_down if math.hypot(p[0], p[2] - 3000) > 75]
     assert max(p[1] for p in head) == pytest.approx(-770, abs=1e-3)
+
+
+def test_rclpy_arrow_strip_is_an_arrow_from_each_point_to_the_next(ros):
+    """An ARROW_STRIP (12) from rclpy is drawn as RViz's ArrowStripMarker draws it
+    (arrow_strip_marker.cpp): one arrow from each point to the next, each sized as a two-point
+    ARROW (shaft diameter scale.x, head diameter scale.y, head length scale.z), all in `color`;
+    one point is refused. Expected values are the published ones, in mm and bytes."""
+    def marker(ns, kind, points, scale=(0.1, 0.2, 0.3)):
+        return {'header': {'frame_id': 'base'}, 'ns': ns, 'id': 1, 'type': kind, 'action': 0,
+                'pose': {'orientation': {'w': 1.0}}, 'scale': dict(zip('xyz', scale)),
+                'color': {'r': 0.0, 'g': 1.0, 'b': 0.0, 'a': 1.0},
+                'points': [{'x': float(x), 'y': float(y), 'z': float(z)} for x, y, z in points]}
+    ARROW, ARROW_STRIP = 0, 12
+    markers = [
+        marker('a_arrow', ARROW, [(0, 0, 0), (1, 0, 0)]),
+        marker('b_strip', ARROW_STRIP, [(0, 0, 1), (1, 0, 1), (1, 1, 1)]),
+        marker('c_strip_one_point', ARROW_STRIP, [(0, 0, 2)]),
+    ]
+    drawn = draw_one_marker_array(ros, '/scene_in/marker_arrow_strip', markers)
+    assert drawn['error'] == ("marker (ns 'c_strip_one_point', id 1): marker_to_poly_data: an arrow strip "
+                              "needs two points or more, not 1"), drawn
+    assert drawn['markers'] == 2, drawn
+    arrow, strip = drawn['marker_points']
+    # Two arrows, each drawn like the single one: (0, 0, 1) -> (1, 0, 1) along x, then
+    # (1, 0, 1) -> (1, 1, 1) along y; heads 200 mm wide, so 100 mm beyond each axis.
+    assert len(strip) == 2 * len(arrow)
+    close(drawn['marker_bounds'][1], [0, 1100, -100, 1000, 900, 1100], tol=1e-3)
+    first, second = strip[:len(arrow)], strip[len(arrow):]
+    assert sorted((round(x), round(y), round(z - 1000)) for x, y, z, *_ in first) == \
+        sorted((round(x), round(y), round(z)) for x, y, z, *_ in arrow)
+    # The second arrow is the first turned 90 degrees about z and moved to (1000, 0): x -> y.
+    assert sorted((round(y), round(1000 - x), round(z - 1000)) for x, y, z, *_ in second) == \
+        sorted((round(x), round(y), round(z)) for x, y, z, *_ in arrow)
+    assert {tuple(p[3:]) for p in strip} == {(0, 255, 0, 255)}

@@ -187,7 +187,7 @@ def test_generic_publish_object_and_value_reach_the_typed_publish_or_say_why_not
 
 def test_marker_array_subscriber_keeps_markers_and_names_what_it_cannot_draw(logic):
     """The MarkerArray subscriber (kind marker_array) folds every message into the markers it
-    keeps: an ARROW_STRIP marker (not drawn) is left out and named, the cube and a TEXT label
+    keeps: a marker of a type Marker does not define (42, not drawn) is left out and named, the cube and a TEXT label
     stay; metres when not scaling; our
     MarkerArray publisher's ADD (ns '', id 0) is one more kept marker."""
     import yaml
@@ -201,7 +201,7 @@ def test_marker_array_subscriber_keeps_markers_and_names_what_it_cannot_draw(log
     connect(logic, pub, sub)
     cube = {'ns': 'a', 'id': 1, 'type': 1, 'action': 0, 'pose': {'position': {'x': 1.0}, 'orientation': {'w': 1.0}},
             'scale': {'x': 0.1, 'y': 0.1, 'z': 0.1}, 'color': {'r': 1.0, 'a': 1.0}}
-    arrows = {'ns': 'a', 'id': 2, 'type': 12, 'action': 0, 'pose': {'orientation': {'w': 1.0}},  # ARROW_STRIP
+    arrows = {'ns': 'a', 'id': 2, 'type': 42, 'action': 0, 'pose': {'orientation': {'w': 1.0}},  # no such type
               'scale': {'x': 0.1, 'y': 0.1, 'z': 0.1}, 'points': [{'x': 0.0}, {'x': 1.0}, {'y': 1.0}]}
     text = {'ns': 'b', 'id': 1, 'type': 9, 'action': 0, 'pose': {'orientation': {'w': 1.0}},
             'scale': {'z': 0.1}, 'text': 'label'}

@@ -1119,6 +1119,7 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::Marker& message, st
       case ::ros2vtk::visualization_msgs::msg::Marker::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
       case ::ros2vtk::visualization_msgs::msg::Marker::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
       case ::ros2vtk::visualization_msgs::msg::Marker::TRIANGLE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::TriangleList; break;
+      case ::ros2vtk::visualization_msgs::msg::Marker::ARROW_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::ArrowStrip; break;
       default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
     }
     marker.position[0] = message.pose.position.x;
@@ -1250,6 +1251,7 @@ void ROS2ToMarkers(const ::ros2vtk::visualization_msgs::msg::MarkerArray& messag
       case Element::TEXT_VIEW_FACING: marker.shape = ::ros2vtk::convert::MarkerShape::Text; break;
       case Element::MESH_RESOURCE: marker.shape = ::ros2vtk::convert::MarkerShape::MeshResource; break;
       case Element::TRIANGLE_LIST: marker.shape = ::ros2vtk::convert::MarkerShape::TriangleList; break;
+      case Element::ARROW_STRIP: marker.shape = ::ros2vtk::convert::MarkerShape::ArrowStrip; break;
       default: marker.shape = ::ros2vtk::convert::MarkerShape::Unsupported; break;
     }
     marker.position[0] = element.pose.position.x;

@@ -1,7 +1,7 @@
 """Kind `marker`: visualization_msgs/Marker-like fields (a type, a pose, a scale, a colour and a
 list of points) <-> a vtkPolyData drawn with VTK's shape sources. The template maps the
 message's ARROW, CUBE, SPHERE, CYLINDER, LINE_STRIP and POINTS constants onto the helper's
-shapes (LINE_LIST, CUBE_LIST, SPHERE_LIST, TRIANGLE_LIST, TEXT_VIEW_FACING and MESH_RESOURCE too when the
+shapes (LINE_LIST, CUBE_LIST, SPHERE_LIST, TRIANGLE_LIST, ARROW_STRIP, TEXT_VIEW_FACING and MESH_RESOURCE too when the
 message defines them: a lab's own Marker-like type may not; TEXT_VIEW_FACING needs the optional
 `text` role and becomes a label in the poly data's field data, MESH_RESOURCE the optional
 `mesh_resource` role, the file read by the loader the Scene module installs); other types are refused with a reason. Positions, sizes and points
@@ -37,7 +37,8 @@ FRAME_ROLES = (("frame_id", prim("string")), ("stamp", TIME), ("frame_locked", p
 SHAPES = (("ARROW", "Arrow"), ("CUBE", "Cube"), ("SPHERE", "Sphere"), ("CYLINDER", "Cylinder"),
           ("LINE_STRIP", "LineStrip"), ("LINE_LIST", "LineList"), ("CUBE_LIST", "CubeList"),
           ("SPHERE_LIST", "SphereList"), ("POINTS", "Points"), ("TEXT_VIEW_FACING", "Text"),
-          ("MESH_RESOURCE", "MeshResource"), ("TRIANGLE_LIST", "TriangleList"))
+          ("MESH_RESOURCE", "MeshResource"), ("TRIANGLE_LIST", "TriangleList"),
+          ("ARROW_STRIP", "ArrowStrip"))
 
 # Roles a Marker-like type may lack (a rule leaves them out): the text of TEXT_VIEW_FACING, the
 # mesh of MESH_RESOURCE (a URI and whether the file's own colours are used) and, for kept

@@ -369,6 +369,13 @@ bool marker_to_poly_data(
       "an arrow marker with two points needs positive scale.x and scale.y (shaft and head "
       "diameters) and a scale.z (head length) of 0 or more");
   }
+  if (marker.shape == MarkerShape::ArrowStrip &&
+    !(marker.scale[0] > 0 && marker.scale[1] > 0 && marker.scale[2] >= 0))
+  {
+    return fail(error, where,
+      "an arrow strip needs positive scale.x and scale.y (shaft and head diameters) and a "
+      "scale.z (head length) of 0 or more");
+  }
   const bool solid = (marker.shape == MarkerShape::Arrow && !arrow_from_two_points) ||
     marker.shape == MarkerShape::Cube || marker.shape == MarkerShape::Sphere ||
     marker.shape == MarkerShape::Cylinder || marker.shape == MarkerShape::CubeList ||
@@ -418,6 +425,39 @@ bool marker_to_poly_data(
     case MarkerShape::Cylinder:
       solid_shape(marker.shape, sx, sy, sz, shape);
       break;
+    case MarkerShape::ArrowStrip:
+    {
+      // RViz's ArrowStripMarker (rviz_default_plugins/.../markers/arrow_strip_marker.cpp): one
+      // arrow from each point to the next, sized as a two-point arrow, all in the marker's
+      // colour; fewer than two points draw nothing ("Too few points to define an arrow strip").
+      if (point_count < 2)
+      {
+        return fail(error, where,
+          "an arrow strip needs two points or more, not " + std::to_string(point_count));
+      }
+      if (!detail::all_finite(marker.points.data(), static_cast<int>(marker.points.size())))
+      {
+        return fail(error, where, "the points have a NaN or infinite coordinate");
+      }
+      vtkNew<vtkAppendPolyData> strip;
+      for (size_t i = 0; i + 1 < point_count; ++i)
+      {
+        const double* p = marker.points.data() + 3 * i;
+        const double from[3] = { p[0] * length_scale, p[1] * length_scale, p[2] * length_scale };
+        const double to[3] = { p[3] * length_scale, p[4] * length_scale, p[5] * length_scale };
+        vtkNew<vtkPolyData> arrow;
+        if (!arrow_from_points(from, to, sx, sy, sz, arrow))
+        {
+          return fail(error, where,
+            "points " + std::to_string(i) + " and " + std::to_string(i + 1) +
+              " of an arrow strip are the same point");
+        }
+        strip->AddInputData(arrow);
+      }
+      strip->Update();
+      shape->ShallowCopy(strip->GetOutput());
+      break;
+    }
     case MarkerShape::TriangleList:
     {
       // RViz scales the triangles' scene node by scale (triangle_list_marker.cpp); it draws
@@ -526,7 +566,7 @@ bool marker_to_poly_data(
       return fail(error, where,
         "this marker type is not supported (supported: arrow, cube, "
         "sphere, cylinder, line strip, line list, cube list, sphere "
-        "list, points, triangle list, text, mesh resource)");
+        "list, points, triangle list, text, mesh resource, arrow strip)");
   }
 
   vtkNew<vtkTransform> pose;

@@ -37,6 +37,8 @@ enum class MarkerShape
                 ///< no geometry, a label (the Label* field arrays below) the display draws
   MeshResource, ///< the mesh file at `mesh_resource` (read by the MeshResourceLoader), scaled
                 ///< by scale.x, y, z
+  ArrowStrip,   ///< an arrow from each of `points` to the next (two or more), each sized as a
+                ///< two-point Arrow, all in `color`
   Unsupported,
 };
 
