@@ -10,7 +10,12 @@
 // --robots 0 spins the ROS node alone (nothing to take, nothing to update): the floor of one
 // Spin() on this machine at this rate, which the robot rows are read against.
 //
-//   bench_spin --robots N [--spins 1000] [--rate 50] [--wait 30]
+// --between busy waits for the next spin in a loop reading the clock instead of sleeping: the
+// same spins with the same messages, but the core never idles between them, so the caches and
+// TLBs are as warm as the spin's own work leaves them. Read beside the sleeping rows, it says
+// how much of a spin is this machine's wake-up from idle rather than instructions.
+//
+//   bench_spin --robots N [--spins 1000] [--rate 50] [--wait 30] [--between sleep|busy]
 //
 // Prints one JSON object: spin_ms (per spin), messages (per spin), links, tracked, ...
 #include "BenchCommon.hpp"
@@ -39,6 +44,7 @@ struct Options
   int spins = 1000;
   double rate = 50.0;
   double wait = 30.0;
+  bool busy = false; ///< --between busy
 };
 
 bool parse(int argc, char** argv, Options& o)
@@ -55,6 +61,8 @@ bool parse(int argc, char** argv, Options& o)
       o.rate = std::atof(value);
     else if (arg == "--wait")
       o.wait = std::atof(value);
+    else if (arg == "--between" && (std::string(value) == "sleep" || std::string(value) == "busy"))
+      o.busy = std::string(value) == "busy";
     else
       return false;
   }
@@ -64,6 +72,18 @@ bool parse(int argc, char** argv, Options& o)
 void count_event(vtkObject*, unsigned long, void* client_data, void*)
 {
   ++*static_cast<long*>(client_data);
+}
+
+void wait_until(bench::Clock::time_point next, bool busy)
+{
+  if (!busy)
+  {
+    std::this_thread::sleep_until(next);
+    return;
+  }
+  while (bench::Clock::now() < next)
+  {
+  }
 }
 
 bool all_loaded(const std::vector<vtkROS2RobotNode*>& robots)
@@ -97,7 +117,8 @@ int main(int argc, char** argv)
   Options options;
   if (!parse(argc, argv, options))
   {
-    std::fprintf(stderr, "usage: bench_spin --robots N [--spins N] [--rate HZ] [--wait S]\n");
+    std::fprintf(stderr,
+      "usage: bench_spin --robots N [--spins N] [--rate HZ] [--wait S] [--between sleep|busy]\n");
     return 2;
   }
   vtkNew<vtkROS2Logic> logic;
@@ -152,7 +173,7 @@ int main(int argc, char** argv)
   {
     next += period;
     logic->Spin();
-    std::this_thread::sleep_until(next);
+    wait_until(next, options.busy);
   }
 
   std::vector<double> spin_ms;
@@ -168,7 +189,7 @@ int main(int argc, char** argv)
     const int handled = logic->Spin();
     spin_ms.push_back(bench::ms_between(start, bench::Clock::now()));
     messages.push_back(handled);
-    std::this_thread::sleep_until(next);
+    wait_until(next, options.busy);
   }
   const size_t tracked_end = tracked_of(robots);
 
@@ -180,6 +201,7 @@ int main(int argc, char** argv)
     .number("tracked_after", static_cast<double>(tracked_end))
     .number("observer_calls", static_cast<double>(observed - observed_before))
     .number("logic_mean_spin_ms", logic->GetMeanSpinDuration())
+    .text("between_spins", options.busy ? "busy" : "sleep")
     .text("driven_by", "vtkROS2RobotNode (CreateAndAddRobotNodeFromTopic)")
     .numbers("spin_ms", spin_ms)
     .numbers("messages", messages)

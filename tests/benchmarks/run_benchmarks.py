@@ -196,9 +196,26 @@ def bench_spin(ctx: 'Context') -> dict:
         progress(f'spin, {robots:2d} robot(s) at 100 Hz tf, 50 Hz spin: median {stats["median"]:.3f} ms, '
                  f'p99 {stats["p99"]:.3f} ms, mean {stats["mean"]:.3f} ms over {stats["n"]} spins, '
                  f'{messages["mean"]:.1f} msgs/spin, {result["tracked_after"]}/{result["links"]} links tracked')
+    # The same spins with the core kept busy between them (bench_spin --between busy): what the
+    # spin costs when it does not start from an idle core's cold caches.
+    busy = {}
+    for domain_id, robots in ((204, 1), (205, 10)):
+        with Domain(domain_id, ctx.build) as domain:
+            for i in range(1, robots + 1):
+                domain.start([ctx.build / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', urdf, '--rate', '100',
+                              '--namespace', f'/robot{i}', '--frame-prefix', f'robot{i}/'])
+            bench = domain.start([ctx.build / 'tests' / 'benchmarks' / 'bench_spin', '--robots', robots, '--spins', spins,
+                                  '--rate', '50', '--wait', '40', '--between', 'busy'])
+            result = last_json(bench, timeout=120 + spins / 50)
+        stats = summary(result.pop('spin_ms'))
+        messages = summary(result.pop('messages'))
+        result.update(spin_ms=stats, messages_per_spin=messages)
+        busy[str(robots)] = result
+        progress(f'spin, {robots:2d} robot(s), busy between spins: median {stats["median"]:.3f} ms, '
+                 f'p99 {stats["p99"]:.3f} ms over {stats["n"]} spins, {messages["mean"]:.1f} msgs/spin')
     return {'urdf': str(urdf.relative_to(REPO)), 'tf_rate_hz': 100, 'spin_rate_hz': 50, 'spins': spins,
             'method': 'C++ bench_spin: steady_clock around vtkROS2Logic::Spin() (no Python in the loop)',
-            'robots': results}
+            'robots': results, 'robots_busy': busy}
 
 
 # ----------------------------------------------------------------------------- 2. round trip
@@ -583,6 +600,20 @@ def markdown(results: dict) -> str:
             s = row['spin_ms']
             out.append(f'| {robots} | {row["links"]:.0f} | {row["messages_per_spin"].get("mean", 0):.1f} | '
                        f'{fmt(s.get("mean"))} ± {fmt(s.get("sd"))} | {stat_cells(s)} | {PAPER.get("spin_" + robots, "—")} |')
+        if spin.get('robots_busy'):
+            out += ['', 'The same program, spins and messages, with the core kept busy between spins instead of '
+                    'sleeping (`bench_spin --between busy`): a spin that does not start from an idle core. '
+                    'The difference to the rows above is this machine\'s wake-up from idle (caches and TLBs '
+                    'refilled), not instructions.', '',
+                    '| robots | links | Spin() return, mean | median | p90 | p99 | max | n | sleeping: median | busy / sleeping |',
+                    '| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |']
+            for robots, row in spin['robots_busy'].items():
+                s_busy = row['spin_ms']
+                sleeping = spin['robots'].get(robots, {}).get('spin_ms', {})
+                ratio = (f'{s_busy["median"] / sleeping["median"]:.2f}'
+                         if sleeping.get('median') and s_busy.get('median') is not None else '—')
+                out.append(f'| {robots} | {row["links"]:.0f} | {row["messages_per_spin"].get("mean", 0):.1f} | '
+                           f'{stat_cells(s_busy)} | {fmt(sleeping.get("median"))} | {ratio} |')
         # Issue 6's targets (means), then issue 17's (medians; "Reading these numbers" says where the time goes).
         spin_targets = (('1', '1 robot', 0.1, 'mean'), ('10', '10 robots', 0.6, 'mean'),
                         ('1', '1 robot', 0.05, 'median'), ('10', '10 robots', 0.15, 'median'))

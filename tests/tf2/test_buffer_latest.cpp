@@ -181,3 +181,64 @@ TEST(BufferLatest, TheDepthBoundHoldsWhenChainsAreComposedFromRememberedParents)
   EXPECT_EQ(deep.message.rfind("The tf tree is invalid because it contains a loop.\n", 0), 0u)
     << deep.message.substr(0, 200);
 }
+
+// A lookup node reuses one result at every spin; the result remembers the frame ids its names
+// resolved to. The remembered ids must follow the names and the buffer: a result reused for
+// other names, or with another buffer that numbered its frames differently, must answer for
+// what it is asked, as a fresh result does.
+TEST(BufferLatest, AReusedResultAnswersForTheNamesAndTheBufferItIsGiven)
+{
+  BufferCore arm;
+  add_arm(arm);
+  // The same frame names, interned in another order: other ids for "l2" and "tool".
+  BufferCore other;
+  ASSERT_TRUE(other.set_transform(make_stamped("l2", "tool", sec(1), { 1, 2, 3 }), "other", true));
+  ASSERT_TRUE(
+    other.set_transform(make_stamped("world", "l2", sec(1), { 10, 0, 0 }), "other", true));
+
+  auto expect_same = [](const LookupResult& reused, const LookupResult& fresh) {
+    EXPECT_EQ(reused.ok, fresh.ok);
+    EXPECT_EQ(reused.error, fresh.error);
+    EXPECT_EQ(reused.message, fresh.message);
+    EXPECT_EQ(reused.target_frame, fresh.target_frame);
+    EXPECT_EQ(reused.source_frame, fresh.source_frame);
+    EXPECT_EQ(reused.stamp, fresh.stamp);
+    // Bit for bit: both come from the same walk of the same data.
+    EXPECT_TRUE(
+      (reused.transform.translation.array() == fresh.transform.translation.array()).all());
+    EXPECT_TRUE(
+      (reused.transform.rotation.coeffs().array() == fresh.transform.rotation.coeffs().array())
+        .all());
+  };
+  LookupResult reused;
+  for (int spin = 0; spin < 2; ++spin) // the second time from the remembered ids
+  {
+    SCOPED_TRACE("spin " + std::to_string(spin));
+    arm.lookup_transform("world", "tool", kLatestTime, reused);
+    ASSERT_TRUE(reused.ok) << reused.message;
+    expect_same(reused, arm.lookup_transform("world", "tool", kLatestTime));
+  }
+  // Other names into the same result.
+  arm.lookup_transform("world", "l4", kLatestTime, reused);
+  expect_same(reused, arm.lookup_transform("world", "l4", kLatestTime));
+  arm.lookup_transform("l1", "l4", sec(1.25), reused);
+  expect_same(reused, arm.lookup_transform("l1", "l4", sec(1.25)));
+  // The same names with another buffer: world <- tool there is (10, 0, 0) + (1, 2, 3).
+  arm.lookup_transform("world", "tool", kLatestTime, reused);
+  other.lookup_transform("world", "tool", kLatestTime, reused);
+  ASSERT_TRUE(reused.ok) << reused.message;
+  EXPECT_TRUE(same_vector(reused.transform.translation, Eigen::Vector3d(11, 2, 3), 1e-12));
+  expect_same(reused, other.lookup_transform("world", "tool", kLatestTime));
+  // An unknown name after a resolved one fails as a fresh lookup does, then recovers.
+  arm.lookup_transform("world", "tool", kLatestTime, reused);
+  arm.lookup_transform("world", "nowhere", kLatestTime, reused);
+  EXPECT_FALSE(reused.ok);
+  expect_same(reused, arm.lookup_transform("world", "nowhere", kLatestTime));
+  arm.lookup_transform("world", "tool", kLatestTime, reused);
+  expect_same(reused, arm.lookup_transform("world", "tool", kLatestTime));
+  // New data after the ids were remembered: the answer moves with it.
+  ASSERT_TRUE(arm.set_transform(
+    make_stamped("l2", "tool", sec(3), { 0, 0.5, 0 }, about(0, 0, 1, 45)), "arm"));
+  arm.lookup_transform("world", "tool", kLatestTime, reused);
+  expect_same(reused, arm.lookup_transform("world", "tool", kLatestTime));
+}

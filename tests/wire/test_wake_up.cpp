@@ -9,6 +9,8 @@
 #include <poll.h>
 
 #include <condition_variable>
+#include <fstream>
+#include <string>
 #include <mutex>
 #include <thread>
 
@@ -22,6 +24,8 @@ struct WakeUpTestProbe
   {
     wake.after_write_for_test_ = std::move(pause);
   }
+  // The descriptor without asking for it (which would arm it).
+  static int RawFd(const WakeUp& wake) { return wake.fd_; }
 };
 
 } // namespace wire
@@ -30,7 +34,7 @@ struct WakeUpTestProbe
 namespace {
 using ros2vtk::wire::WakeUp;
 
-bool Readable(const WakeUp& wake)
+bool Readable(WakeUp& wake)
 {
   pollfd descriptor{ wake.fd(), POLLIN, 0 };
   return ::poll(&descriptor, 1, 0) == 1 && (descriptor.revents & POLLIN);
@@ -53,6 +57,7 @@ TEST(WakeUp, NotifyMakesReadableAndClearDrains)
 TEST(WakeUp, AClearDuringANotifysWindowLeavesNothingReadable)
 {
   WakeUp wake;
+  ASSERT_GE(wake.fd(), 0); // armed, as by a poller: notify() writes the descriptor
   std::mutex mutex;
   std::condition_variable changed;
   bool written = false, resume = false;
@@ -82,6 +87,52 @@ TEST(WakeUp, AClearDuringANotifysWindowLeavesNothingReadable)
   EXPECT_FALSE(Readable(wake));
   wake.notify();
   EXPECT_TRUE(Readable(wake)) << "a later notify still wakes";
+}
+
+// The eventfd's counter as the kernel reports it: how many notifications were written.
+long EventCount(int fd)
+{
+  std::ifstream info("/proc/self/fdinfo/" + std::to_string(fd));
+  std::string line;
+  while (std::getline(info, line))
+  {
+    if (line.rfind("eventfd-count:", 0) == 0)
+    {
+      return std::stol(line.substr(line.find(':') + 1), nullptr, 16);
+    }
+  }
+  return -1;
+}
+
+TEST(WakeUp, NobodyPollsNothingIsWrittenUntilTheDescriptorIsAskedFor)
+{
+  WakeUp wake;
+  const int raw = ros2vtk::wire::WakeUpTestProbe::RawFd(wake);
+  ASSERT_GE(raw, 0);
+  ASSERT_EQ(EventCount(raw), 0) << "no eventfd-count in /proc/self/fdinfo";
+  // A timer-driven spinner: messages arrive, spins clear, nobody asks for the descriptor.
+  for (int i = 0; i < 5; ++i)
+  {
+    wake.notify();
+  }
+  wake.clear();
+  wake.notify(); // pending when the host loop starts polling
+  EXPECT_EQ(EventCount(raw), 0) << "a notify wrote the eventfd although nobody polls it";
+  // Asking for the descriptor arms it, and what is pending makes it readable at once.
+  EXPECT_TRUE(Readable(wake));
+  wake.clear();
+  EXPECT_FALSE(Readable(wake));
+  wake.notify();
+  EXPECT_TRUE(Readable(wake)) << "armed: a notify wakes the poller";
+  wake.clear();
+  EXPECT_FALSE(Readable(wake));
+  // wait_for arms too (a fresh wake-up, nothing pending: it times out, then sees a notify).
+  WakeUp other;
+  EXPECT_FALSE(other.wait_for(0));
+  other.clear(); // the write of arming
+  EXPECT_FALSE(other.wait_for(0));
+  other.notify();
+  EXPECT_TRUE(other.wait_for(0));
 }
 
 } // namespace

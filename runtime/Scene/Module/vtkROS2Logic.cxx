@@ -59,7 +59,14 @@ public:
   bool RosNodesStale = true;
   vtkNew<vtkCallbackCommand> SceneCallback;
 
-  std::vector<vtkROS2NodeNode*> CreatedNodes()
+  // The created ones among them, refilled in place: a spin allocates nothing to find them.
+  std::vector<vtkROS2NodeNode*> Created;
+  // Each ROS node of WatchedKeys with its modification time when the keys were last built:
+  // Create and Destroy modify the node, so while none changed, the wake-up set is current and
+  // a spin skips building the keys (an allocation per node, and the participant's GUID).
+  std::vector<std::pair<vtkROS2NodeNode*, vtkMTimeType>> WatchedNodeTimes;
+
+  const std::vector<vtkROS2NodeNode*>& CreatedNodes()
   {
     if (this->RosNodesStale)
     {
@@ -72,16 +79,34 @@ public:
         }
       }
       this->RosNodesStale = false;
+      this->WatchedNodeTimes.clear(); // nodes added or removed: check the keys again
     }
-    std::vector<vtkROS2NodeNode*> nodes;
+    this->Created.clear();
     for (vtkROS2NodeNode* node : this->RosNodes)
     {
       if (node && node->IsCreated())
       {
-        nodes.push_back(node);
+        this->Created.push_back(node);
       }
     }
-    return nodes;
+    return this->Created;
+  }
+
+  bool WakeUpSetCurrent() const
+  {
+    if (this->WatchedNodeTimes.size() != this->Created.size())
+    {
+      return false;
+    }
+    for (size_t i = 0; i < this->Created.size(); ++i)
+    {
+      if (this->WatchedNodeTimes[i].first != this->Created[i] ||
+        this->WatchedNodeTimes[i].second != this->Created[i]->GetMTime())
+      {
+        return false;
+      }
+    }
+    return true;
   }
 };
 
@@ -177,9 +202,11 @@ int vtkROS2Logic::Spin()
 {
   const auto start = Clock::now();
   int handled = 0;
-  for (vtkROS2NodeNode* node : this->Internals->CreatedNodes())
+  // By index: a node's callback may spin again, which refills the list.
+  const std::vector<vtkROS2NodeNode*>& nodes = this->Internals->CreatedNodes();
+  for (size_t i = 0; i < nodes.size(); ++i)
   {
-    handled += node->Spin();
+    handled += nodes[i]->Spin();
   }
   this->LastSpinDuration = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   this->TotalSpinDuration += this->LastSpinDuration;
@@ -282,19 +309,23 @@ void vtkROS2Logic::SyncWakeUpSet()
   vtkInternals& internals = *this->Internals;
   if (internals.EpollFd < 0)
   {
-    internals.EpollFd = ::epoll_create1(EPOLL_CLOEXEC);
-    if (internals.EpollFd < 0)
-    {
-      vtkErrorMacro("cannot create the wake-up descriptor: " << std::strerror(errno));
-      return;
-    }
+    // Not event-driven (yet): a timer-driven spinner never asks for a descriptor, and its nodes'
+    // wake-ups stay unarmed (no eventfd write per message, no read per spin).
+    return;
   }
   // Each watched descriptor with the GUID of the participant that owns it: a destroyed
   // participant's descriptor number can be reused by a new one, which comparing numbers alone
   // would miss. Registrations change only when this list does (epoll_ctl is a syscall).
-  std::vector<std::pair<int, std::vector<uint8_t>>> current;
-  for (vtkROS2NodeNode* node : internals.CreatedNodes())
+  internals.CreatedNodes();
+  if (internals.WakeUpSetCurrent())
   {
+    return; // the usual spin
+  }
+  internals.WatchedNodeTimes.clear();
+  std::vector<std::pair<int, std::vector<uint8_t>>> current;
+  for (vtkROS2NodeNode* node : internals.Created)
+  {
+    internals.WatchedNodeTimes.emplace_back(node, node->GetMTime());
     const int fd = node->GetWakeUpFileDescriptor();
     if (fd >= 0)
     {
@@ -324,17 +355,33 @@ void vtkROS2Logic::SyncWakeUpSet()
 }
 
 //------------------------------------------------------------------------------
+bool vtkROS2Logic::StartWakeUpSet()
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.EpollFd < 0)
+  {
+    internals.EpollFd = ::epoll_create1(EPOLL_CLOEXEC);
+    if (internals.EpollFd < 0)
+    {
+      vtkErrorMacro("cannot create the wake-up descriptor: " << std::strerror(errno));
+      return false;
+    }
+  }
+  this->SyncWakeUpSet();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkROS2Logic::GetWakeUpFileDescriptor()
 {
-  this->SyncWakeUpSet();
+  this->StartWakeUpSet();
   return this->Internals->EpollFd;
 }
 
 //------------------------------------------------------------------------------
 int vtkROS2Logic::SpinOnWakeUp(double timeoutSeconds)
 {
-  this->SyncWakeUpSet();
-  if (this->Internals->EpollFd < 0)
+  if (!this->StartWakeUpSet())
   {
     return 0;
   }

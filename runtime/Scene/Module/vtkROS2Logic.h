@@ -88,7 +88,10 @@ private:
   vtkROS2Logic(const vtkROS2Logic&) = delete;
   void operator=(const vtkROS2Logic&) = delete;
 
+  /// Watches every created ROS node's wake-up descriptor (no-op until event-driven mode).
   void SyncWakeUpSet();
+  /// Event-driven mode from now on: creates the epoll set, then syncs it. False on failure.
+  bool StartWakeUpSet();
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

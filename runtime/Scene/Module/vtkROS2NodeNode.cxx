@@ -313,17 +313,20 @@ int vtkROS2NodeNode::Spin()
   }
   this->Internals->Spinning = true;
   // Clear before draining: a sample queued after this point raises the wake-up again.
-  this->Internals->Participant->wake_up().clear();
+  // Only a spin after something was queued looks into the node's own services' queues: most
+  // spins of a robot scene bring only tf, which the DDS thread already put in the buffer.
+  const bool queued = this->Internals->Participant->wake_up().clear();
   int handled = 0;
   if (this->Internals->Parameters)
   {
-    handled += static_cast<int>(this->Internals->Parameters->process());
+    handled += static_cast<int>(queued ? this->Internals->Parameters->process()
+                                       : this->Internals->Parameters->publish_events());
   }
-  if (this->Internals->TimeSource)
+  if (queued && this->Internals->TimeSource)
   {
     handled += static_cast<int>(this->Internals->TimeSource->process());
   }
-  if (this->Internals->TypeDescriptions)
+  if (queued && this->Internals->TypeDescriptions)
   {
     handled += static_cast<int>(this->Internals->TypeDescriptions->process());
   }

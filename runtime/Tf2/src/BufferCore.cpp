@@ -10,6 +10,7 @@
 #include "ros2vtk/tf2/TimeCache.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 namespace ros2vtk {
 namespace tf2 {
@@ -45,8 +46,13 @@ FrameId validate_frame_id(const FrameTable& frames, const char* function_name, c
 
 } // namespace
 
+namespace {
+std::atomic<std::uint64_t> next_buffer_serial{ 1 };
+}
+
 BufferCore::BufferCore(Duration cache_time)
-  : cache_time_(std::max<Duration>(cache_time, 0))
+  : serial_(next_buffer_serial.fetch_add(1))
+  , cache_time_(std::max<Duration>(cache_time, 0))
   , frames_(std::make_unique<FrameTable>())
   , walk_scratch_(std::make_unique<WalkScratch>())
   , latest_poses_(std::make_unique<LatestPoses>())
@@ -148,7 +154,15 @@ void BufferCore::lookup_locked(const std::string& target_frame, const std::strin
   {
     return;
   }
+  result.resolved_by = serial_;
+  result.resolved_target = target;
+  result.resolved_source = source;
+  walk_locked(target, source, time, result);
+}
 
+void BufferCore::walk_locked(
+  FrameId target, FrameId source, TimePoint time, LookupResult& result) const
+{
   // Latest-time lookups (every link at every spin) share one walk per state of the buffer.
   WalkResult walk = time == kLatestTime
     ? latest_poses_->lookup(*frames_, *walk_scratch_, target, source)
@@ -174,6 +188,20 @@ void BufferCore::lookup_transform(const std::string& target_frame, const std::st
   TimePoint time, LookupResult& result) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
+  if (result.resolved_by == serial_ && result.target_frame == target_frame &&
+    result.source_frame == source_frame)
+  {
+    // The same names as last time into the same result: their ids, without the checks (the
+    // names passed them then, and a name's id never changes).
+    result.ok = false;
+    result.error = Tf2Error::NoError;
+    result.message.clear();
+    result.stamp = 0;
+    result.transform = Transform();
+    walk_locked(result.resolved_target, result.resolved_source, time, result);
+    return;
+  }
+  result.resolved_by = 0;
   lookup_locked(target_frame, source_frame, time, "lookupTransform", result);
 }
 

@@ -105,12 +105,12 @@ int TimeCache::find_closest(
     return 0;
   }
   const TimePoint newest = records_.back().stamp;
-  const TimePoint oldest = records_.front().stamp;
   if (time == newest)
   {
-    older = last;
+    older = last; // the usual latest-time lookup: the oldest record (a cold line) is not read
     return 1;
   }
+  const TimePoint oldest = records_.front().stamp;
   if (time == oldest)
   {
     older = 0;

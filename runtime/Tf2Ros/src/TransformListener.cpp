@@ -92,9 +92,12 @@ void TransformListener::insert(const wire::MessagePtr& message, bool is_static)
 
 size_t TransformListener::process()
 {
-  // Messages that arrived before create() set the sinks (a transient-local /tf_static backlog).
+  // Messages that arrived before create() set the sinks (a transient-local /tf_static backlog):
+  // taken by the first call; the sinks receive everything later.
   for (auto* subscription : { static_.get(), dynamic_.get() })
   {
+    if (backlog_taken_)
+      break;
     if (subscription->pending() == 0)
       continue;
     taken_.clear();
@@ -103,6 +106,7 @@ size_t TransformListener::process()
       insert(message, subscription == static_.get());
     taken_.clear();
   }
+  backlog_taken_ = true;
   const uint64_t inserted = inserted_;
   const size_t count = static_cast<size_t>(inserted - inserted_reported_);
   inserted_reported_ = inserted;

@@ -149,10 +149,16 @@ size_t ParameterServer::process()
       ++answered;
     }
   }
+  publish_events();
+  return answered;
+}
+
+size_t ParameterServer::publish_events()
+{
   std::vector<rcl::ParameterEvent> events = impl_->store.take_events();
   if (events.empty())
   {
-    return answered; // the usual spin: no clock read
+    return 0; // the usual spin: no clock read
   }
   // rclpy stamps parameter events with the node's clock (simulated time when it is on).
   const int64_t nanoseconds = impl_->clock ? impl_->clock->now()
@@ -166,7 +172,7 @@ size_t ParameterServer::process()
     event.node = impl_->node_name;
     impl_->events->publish(&event);
   }
-  return answered;
+  return 0;
 }
 
 } // namespace wire

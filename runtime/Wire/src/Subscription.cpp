@@ -112,6 +112,7 @@ void Subscription::Impl::on_data_available(dds::DataReader* data_reader)
   ReceivedSample sample;
   dds::SampleInfo info;
   bool queued = false;
+  bool to_queue = false; // some sample went to the queue (not to a sink)
   bool rejected_any = false;
   while (data_reader->take_next_sample(&sample, &info) == ReturnCode_t::RETCODE_OK)
   {
@@ -141,6 +142,7 @@ void Subscription::Impl::on_data_available(dds::DataReader* data_reader)
       consumer = sink;
       if (!consumer)
       {
+        to_queue = true;
         queue.push_back(std::move(message));
         while (queue.size() > queue_limit)
         {
@@ -161,7 +163,8 @@ void Subscription::Impl::on_data_available(dds::DataReader* data_reader)
   }
   if (queued || rejected_any)
   {
-    owner.wake_up.notify();
+    // Handed to a sink: the spin has nothing to take from this subscription's queue.
+    owner.wake_up.notify(to_queue || rejected_any);
   }
 }
 

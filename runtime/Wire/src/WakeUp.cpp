@@ -23,7 +23,51 @@ WakeUp::~WakeUp()
   }
 }
 
-void WakeUp::notify()
+void WakeUp::arm()
+{
+  // Whatever was notified before is pending now: one write makes the descriptor say so. Either
+  // this load sees the flag of a notify() that found the descriptor unarmed, or that notify's
+  // second look sees armed_ and writes itself (both: one extra read, harmless).
+  if (!armed_.load() && !armed_.exchange(true) && pending_.load())
+  {
+    write_and_flag();
+  }
+}
+
+void WakeUp::notify(bool queued)
+{
+  if (queued)
+  {
+    queued_.store(true); // after the enqueue, before the wake: see clear()
+  }
+  if (!armed_.load())
+  {
+    pending_.store(true); // nobody polls: the spinner just finds the queues full
+    if (armed_.load())
+    {
+      write_and_flag(); // armed meanwhile: see arm()
+    }
+  }
+  else
+  {
+    write_and_flag();
+  }
+  if (!has_callback_.load())
+  {
+    return;
+  }
+  std::function<void()> callback;
+  {
+    std::lock_guard<std::mutex> lock(callback_mutex_);
+    callback = callback_;
+  }
+  if (callback)
+  {
+    callback();
+  }
+}
+
+void WakeUp::write_and_flag()
 {
   notifying_.fetch_add(1);
   const uint64_t one = 1;
@@ -37,33 +81,27 @@ void WakeUp::notify()
   // After the write: a clear() that misses this flag sees notifying_ and reads anyway.
   pending_.store(true);
   notifying_.fetch_sub(1);
-  std::function<void()> callback;
-  {
-    std::lock_guard<std::mutex> lock(callback_mutex_);
-    callback = callback_;
-  }
-  if (callback)
-  {
-    callback();
-  }
 }
 
-void WakeUp::clear()
+bool WakeUp::clear()
 {
+  const bool queued = queued_.exchange(false);
   // Either flag or a notify() in progress: read. Whatever that notify wrote is then read here,
   // or its flag, set after its write, makes the next clear() read it.
   const bool flagged = pending_.exchange(false);
-  if (!flagged && notifying_.load() == 0)
+  if (!armed_.load() || (!flagged && notifying_.load() == 0))
   {
-    return;
+    return queued;
   }
   uint64_t value = 0;
   const ssize_t count = read(fd_, &value, sizeof(value));
   (void)count;
+  return queued;
 }
 
-bool WakeUp::wait_for(int timeout_ms) const
+bool WakeUp::wait_for(int timeout_ms)
 {
+  arm();
   pollfd descriptor{ fd_, POLLIN, 0 };
   int result = 0;
   do
@@ -77,6 +115,7 @@ void WakeUp::set_callback(std::function<void()> callback)
 {
   std::lock_guard<std::mutex> lock(callback_mutex_);
   callback_ = std::move(callback);
+  has_callback_.store(static_cast<bool>(callback_));
 }
 
 } // namespace wire

@@ -7,10 +7,12 @@
 #ifndef ros2vtk_tf2_BufferCore_hpp
 #define ros2vtk_tf2_BufferCore_hpp
 
+#include "ros2vtk/tf2/FrameIds.hpp"
 #include "ros2vtk/tf2/LookupResult.hpp"
 #include "ros2vtk/tf2/TimePoint.hpp"
 #include "ros2vtk/tf2/TransformStamped.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -50,7 +52,8 @@ public:
   LookupResult lookup_transform(
     const std::string& target_frame, const std::string& source_frame, TimePoint time) const;
   /// The same into `result`, for callers that look the same frames up at every spin: a reused
-  /// result keeps its strings' storage, so the lookup allocates nothing for them.
+  /// result keeps its strings' storage, so the lookup allocates nothing for them, and the frame
+  /// ids its names resolved to, so the names are not hashed and checked again.
   void lookup_transform(const std::string& target_frame, const std::string& source_frame,
     TimePoint time, LookupResult& result) const;
 
@@ -95,6 +98,10 @@ private:
     TimePoint time, const char* function_name) const;
   void lookup_locked(const std::string& target_frame, const std::string& source_frame,
     TimePoint time, const char* function_name, LookupResult& result) const;
+  /// The walk of lookup_locked once both frames are known ids.
+  void walk_locked(FrameId target, FrameId source, TimePoint time, LookupResult& result) const;
+
+  const std::uint64_t serial_; ///< this buffer among all of the process (LookupResult::resolved_by)
 
   Duration cache_time_;
   mutable std::mutex mutex_;

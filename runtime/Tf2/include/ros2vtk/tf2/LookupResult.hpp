@@ -7,6 +7,7 @@
 #include "ros2vtk/tf2/TimePoint.hpp"
 #include "ros2vtk/tf2/Transform.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace ros2vtk {
@@ -21,6 +22,13 @@ struct LookupResult
   std::string source_frame; ///< child_frame_id of the answer
   TimePoint stamp = 0;      ///< the time actually used (the latest common time for time 0)
   Transform transform;      ///< maps points given in source_frame into target_frame
+
+  /// Set by BufferCore's reused-result lookup: the buffer (its serial) and frame ids that
+  /// target_frame and source_frame resolved to. A later lookup of the same names into this
+  /// result skips hashing and checking them (ids are never reused within a buffer).
+  std::uint64_t resolved_by = 0;
+  std::uint32_t resolved_target = 0;
+  std::uint32_t resolved_source = 0;
 
   Eigen::Isometry3d isometry() const { return transform.to_isometry(); }
   explicit operator bool() const { return ok; }

@@ -61,6 +61,8 @@ private:
   tf2::TransformStamped scratch_; ///< reused: its strings keep their storage between messages
   std::string reason_;
   std::vector<wire::MessagePtr> taken_; ///< process()'s batch; emptied after use
+  /// The queues were drained once after create() set the sinks: nothing enters them since.
+  bool backlog_taken_ = false;
   std::atomic<uint64_t> inserted_{ 0 };
   std::atomic<uint64_t> rejected_{ 0 };
   uint64_t inserted_reported_ = 0; ///< inserted_ at the last process()

@@ -33,6 +33,9 @@ public:
   /// Answers every queued request and publishes pending parameter events. Call it from the
   /// thread that owns the store (the spin). Returns the number of requests answered.
   size_t process();
+  /// Publishes pending parameter events only (a spin with no request queued; see
+  /// WakeUp::clear). Returns 0: no request was answered.
+  size_t publish_events();
 
   class Impl;
 
