@@ -136,3 +136,29 @@ TEST(WakeUp, NobodyPollsNothingIsWrittenUntilTheDescriptorIsAskedFor)
 }
 
 } // namespace
+
+namespace {
+
+// The spin asks clear() whether anything was queued: data handed to a sink (tf into the
+// buffer) wakes the spinner but leaves the queues empty, so the spin may skip them.
+TEST(WakeUp, ClearSaysWhetherAnythingWasQueuedSinceTheLastClear)
+{
+  WakeUp wake;
+  EXPECT_TRUE(wake.clear()) << "a first spin looks at every queue";
+  EXPECT_FALSE(wake.clear());
+  wake.notify(false); // sunk
+  EXPECT_FALSE(wake.clear());
+  wake.notify(false);
+  wake.notify(); // queued
+  wake.notify(false);
+  EXPECT_TRUE(wake.clear());
+  EXPECT_FALSE(wake.clear());
+  // The same when a poller armed the descriptor; a sunk notify still wakes it.
+  EXPECT_FALSE(Readable(wake)); // arms it; nothing pending
+  wake.notify(false);
+  EXPECT_TRUE(Readable(wake)) << "sunk data must still wake the spinner (the lookups use it)";
+  EXPECT_FALSE(wake.clear());
+  EXPECT_FALSE(Readable(wake));
+}
+
+} // namespace
