@@ -560,6 +560,64 @@ def verdict(ok: bool | None) -> str:
     return '—' if ok is None else ('met' if ok else '**MISSED**')
 
 
+def spin_time_text(spin: dict | None) -> list[str]:
+    """"Reading these numbers": where a spin's time goes, with this run's sleeping and busy rows."""
+    if not spin:
+        return []
+    def median(rows: str, robots: str) -> float | None:
+        return spin.get(rows, {}).get(robots, {}).get('spin_ms', {}).get('median')
+    floor, one, ten = median('robots', '0'), median('robots', '1'), median('robots', '10')
+    one_busy, ten_busy = median('robots_busy', '1'), median('robots_busy', '10')
+    measured = ''
+    if None not in (floor, one, ten, one_busy, ten_busy):
+        measured = (f'In this run a spin takes {fmt(one)} ms with one robot and {fmt(ten)} ms with ten after '
+                    f'20 ms of sleep, and {fmt(one_busy)} / {fmt(ten_busy)} ms when the core was kept busy between '
+                    f'the same spins ({one_busy / one:.2f}× / {ten_busy / ten:.2f}×); the spin with no robot, '
+                    f'{fmt(floor)} ms, is that cold start alone. ')
+    return ['- Where the spin time goes (issue 17). ' + measured +
+            'The instructions are few (callgrind, one robot, 8 links: ' + SPIN_INSTRUCTIONS + '); a spin that '
+            'starts from an idle core pays for every cache line and TLB entry it touches again (in this VM a '
+            'TLB miss walks two page tables), ~100-200 ns each, so its time follows the memory it touches, '
+            'not its instructions. What was cut for that: the tf intake runs on the DDS thread, as in '
+            'tf2_ros\'s listener (`Subscription::set_sink`); the wake-up eventfd is written only once '
+            'somebody polls it, so a timer-driven spinner makes no syscall at all; a spin that brought only '
+            'tf skips the node\'s own service queues; the logic keeps its node list and wake-up set without '
+            'allocating; a link\'s lookup reuses the frame ids its names resolved to and the per-state poses '
+            'of one walk of the tree. What is left per link is its lookup in the locked buffer and the VTK '
+            'events of its transform node (the display and scripts observe them). The busy rows meet both '
+            'targets (0.05 ms, 0.15 ms); the sleeping ones are what a host that idles between spins sees on '
+            'this machine, and what would meet them is a core that does not lose its caches while idle (a '
+            'host whose main thread stays busy, or hardware whose idle state keeps them), not fewer '
+            'instructions.']
+
+
+def pose_1khz_text(split: dict | None) -> list[str]:
+    """"Reading these numbers": pose_1khz's median, split into the sender's share and ours."""
+    runs = ((split or {}).get('streams', {}).get('pose_1khz') or {}).get('runs') or []
+    runs = [run for run in runs if run.get('ours', {}).get('latency_ms', {}).get('median') is not None
+            and run.get('rclpy', {}).get('latency_ms', {}).get('median') is not None]
+    if not runs:
+        return []
+    def joined(values: list[float], digits: int = 3) -> str:
+        return ' / '.join(fmt(v, digits) for v in values)
+    ours = [run['ours']['latency_ms']['median'] for run in runs]
+    rclpy = [run['rclpy']['latency_ms']['median'] for run in runs]
+    publish = [run['ours']['sender_publish_ms']['median'] for run in runs]
+    publish_rclpy = [run['rclpy']['sender_publish_ms']['median'] for run in runs]
+    wake = [run['ours'].get('wake_to_ready_ms', {}).get('median') for run in runs]
+    without = [(o - p) / (r - q) for o, r, p, q in zip(ours, rclpy, publish, publish_rclpy) if r > q]
+    return ['- pose_1khz (1 kHz PoseStamped, the same C++ sender into both receivers, runs side by side): '
+            f'ours {joined(ours)} ms median, rclpy {joined(rclpy)} ms, ratio {joined([o / r for o, r in zip(ours, rclpy)], 2)}. '
+            f'Of ours, the spinner\'s part (the DDS thread\'s wake-up → VTK object ready, bench_subscribe\'s '
+            f'split) is {joined([w for w in wake if w is not None])} ms; the rest comes before it: the sender\'s '
+            f'Publish() call ({joined(publish)} ms median: the stamp is written before it serializes, so it is '
+            'inside both receivers\' latency), the loopback, Fast DDS\'s receive and our deserialization. '
+            f'Without the sender\'s share, ours is {joined(without, 2)}× rclpy\'s. The baseline moves between '
+            'runs more than ours does, which moves the ratio across the 0.5 line; what would hold it there in '
+            'every run is a cheaper sender (Fast DDS 2.9\'s reliable write, see the round trip above), which '
+            'counts in both receivers\' latency.']
+
+
 def markdown(results: dict) -> str:
     m = results['machine']
     out = ['# Benchmarks', '',
@@ -652,6 +710,11 @@ def markdown(results: dict) -> str:
                             f'{fmt(r["event_over_rclpy_relay"], 2)}×', verdict(r['event_over_rclpy_relay'] <= 1.0)))
             targets.append((f'round trip {rate} Hz: event-driven within 1.3× bare echo (medians)',
                             f'{fmt(r["event_over_bare_echo"], 2)}×', verdict(r['event_over_bare_echo'] <= 1.3)))
+            # DESIGN.md's raised targets, reported beside the first ones.
+            targets.append((f'round trip {rate} Hz: event-driven ≤ 0.8× rclpy relay (raised target, medians)',
+                            f'{fmt(r["event_over_rclpy_relay"], 2)}×', verdict(r['event_over_rclpy_relay'] <= 0.8)))
+            targets.append((f'round trip {rate} Hz: event-driven ≤ 1.1× bare echo (raised target, medians)',
+                            f'{fmt(r["event_over_bare_echo"], 2)}×', verdict(r['event_over_bare_echo'] <= 1.1)))
             lost = sum(rows[n]['lost'] for n in labels)
             targets.append((f'round trip {rate} Hz: no loss (all echo sides)', f'{lost} lost', verdict(lost == 0)))
         out.append('')
@@ -958,26 +1021,17 @@ def markdown(results: dict) -> str:
             '- Round trip: the echo side is a small part of the time of flight; the rclpy client (Python '
             'executor, spin_once per message) dominates, which is why ours, the rclpy relay and the bare echo '
             'are within a fraction of a millisecond of each other and their ratios move by ±10 % between runs. '
-            'Timer-driven spinning adds on average half a spin period (and up to a full one), as in the paper.',
+            'Timer-driven spinning adds on average half a spin period (and up to a full one), as in the paper. '
+            'The raised targets (≤ 0.8× the relay, ≤ 1.1× the bare echo) ask for about the bare echo\'s own '
+            'time: the bare echo writes the bytes it read back from the DDS thread that read them, with no '
+            'ROS layer and no (de)serialization; ours deserializes, hands the message to the spinning thread '
+            '(VTK objects live there, by design), converts it to VTK and back and serializes it before the '
+            'same kind of reliable write. Both pay Fast DDS 2.9\'s own write path (strace of bench_publish: '
+            'each reliable write wakes the writer\'s event thread, each send makes a setsockopt(SO_SNDTIMEO) '
+            'that the kernel refuses with EDOM), so it is not in the difference.',
             '- Spin cost is per Spin() in C++ (bench_spin), without Python; a Python host adds its wrapper call.',
-            '- Where the spin time goes (callgrind, instructions inside `vtkROS2Logic::Spin()` over ~1 000 spins '
-            'of bench_spin, issue 17). The tf intake no longer runs in the spin: as tf2_ros\'s listener thread '
-            'does, the DDS thread that deserialized a /tf message inserts its transforms into the (locked) '
-            'buffer (`Subscription::set_sink`, tests/scene `Tf2RejectionsTest.TransformsReachTheBufferWithoutASpin`), '
-            'so a spin only looks up; its ~1.3k instructions per transform (12 per spin for one robot, 120 for '
-            'ten) moved off the spinning thread, as did freeing the messages. One robot (8 links: 7 tf lookups '
-            'per spin): 17.6k instructions per spin (31.7k with the intake in the spin, 44.1k before one tree '
-            'walk per buffer state). The 7 lookups are 13.5k, 1.9k each: ~1.0k in the buffer (0.2k checking '
-            'the two frame names, 0.5k composing from the per-state poses, the lock), ~0.65k in VTK (matrix '
-            'copy, Modified, TransformModifiedEvent and the observers; VTK allocates per event that has '
-            'observers). The robot node is 1.3k, the rest (wake-up, link state) the floor. The row with no '
-            'robot is that floor: 2.7k instructions take 0.02-0.04 ms at 50 Hz, ~10 ns per instruction, '
-            'because a spin starts cold after 20 ms of sleep (caches and TLBs refilled, in a VM where a TLB '
-            'miss walks two page tables; strace shows one syscall per spin, the wake-up read). So the one-robot '
-            'target (0.05 ms) leaves ~0.025 ms for 7 lookups of cold memory, ~3.5 µs each, and ten robots '
-            '(0.15 ms) ~1.8 µs per lookup for 70. What is left per lookup is VTK\'s event machinery on the '
-            'link\'s transform node (needed: the display and scripts observe it) and the frame-name checks '
-            '(a lookup by frame ids kept in the lookup node would skip them).',
+            *spin_time_text(results.get('spin')),
+            *pose_1khz_text(results.get('sender_split')),
             '- Robot load: panda\'s meshes are Collada (.dae, read by assimp), which dominates its load; the '
             '0.2 s target is for a 10-link STL robot (the shipped surgical arm is STL).',
             '- Large messages (images, clouds) cross from rclpy\'s Fast DDS 3 to our Fast DDS 2.9 as UDP '
@@ -1250,6 +1304,12 @@ def bench_frame(ctx: 'Context') -> dict:
 
 
 # ----------------------------------------------------------------------------- 9. sender split (issue 17)
+# callgrind of bench_spin (--robots 1), instructions inside vtkROS2Logic::Spin() per spin; measured
+# by hand (valgrind --tool=callgrind), not in every run.
+SPIN_INSTRUCTIONS = ('13.5k per spin, 2026-11-27 (17.6k before the wake-up, queue and frame-id changes, 31.7k with '
+                     'the tf intake in the spin); 7 lookups of ~1.6k each, ~0.7k in the buffer and ~0.6k in '
+                     'VTK\'s matrix copy and events')
+
 SPLIT_STREAMS = [
     ('pose_1khz', 'PoseStamped', 1000, 5.0, []),
     ('image_rgb8_640x480', 'Image', 30, 5.0, ['--width', '640', '--height', '480', '--encoding', 'rgb8']),
