@@ -177,42 +177,34 @@ def machine(build: Path) -> dict:
 
 
 # ----------------------------------------------------------------------------- 1. spin cost
+def spin_once(ctx: 'Context', urdf: Path, domain_id: int, robots: int, spins: int, between: str) -> dict:
+    """bench_spin with `robots` sim robots on their own domain; the spin and message summaries."""
+    with Domain(domain_id, ctx.build) as domain:
+        for i in range(1, robots + 1):
+            domain.start([ctx.build / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', urdf, '--rate', '100',
+                          '--namespace', f'/robot{i}', '--frame-prefix', f'robot{i}/'])
+        bench = domain.start([ctx.build / 'tests' / 'benchmarks' / 'bench_spin', '--robots', robots, '--spins', spins,
+                              '--rate', '50', '--wait', '40', '--between', between])
+        result = last_json(bench, timeout=120 + spins / 50)
+    stats = summary(result.pop('spin_ms'))
+    messages = summary(result.pop('messages'))
+    result.update(spin_ms=stats, messages_per_spin=messages)
+    progress(f'spin, {robots:2d} robot(s) at 100 Hz tf, 50 Hz spin, {between} between spins: median '
+             f'{stats["median"]:.3f} ms, p99 {stats["p99"]:.3f} ms, mean {stats["mean"]:.3f} ms over {stats["n"]} '
+             f'spins, {messages["mean"]:.1f} msgs/spin, {result["tracked_after"]}/{result["links"]} links tracked')
+    return result
+
+
 def bench_spin(ctx: 'Context') -> dict:
     urdf = REPO / 'examples' / 'robots' / 'surgical_arm' / 'urdf' / 'surgical_arm.urdf'
     spins = 50 if ctx.quick else 1000
-    results = {}
     # 0 robots: the ROS node alone, the floor the robot rows are read against.
-    for domain_id, robots in ((203, 0), (200, 1), (201, 2), (202, 10)):
-        with Domain(domain_id, ctx.build) as domain:
-            for i in range(1, robots + 1):
-                domain.start([ctx.build / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', urdf, '--rate', '100',
-                              '--namespace', f'/robot{i}', '--frame-prefix', f'robot{i}/'])
-            bench = domain.start([ctx.build / 'tests' / 'benchmarks' / 'bench_spin', '--robots', robots, '--spins', spins, '--rate', '50', '--wait', '40'])
-            result = last_json(bench, timeout=120 + spins / 50)
-        stats = summary(result.pop('spin_ms'))
-        messages = summary(result.pop('messages'))
-        result.update(spin_ms=stats, messages_per_spin=messages)
-        results[str(robots)] = result
-        progress(f'spin, {robots:2d} robot(s) at 100 Hz tf, 50 Hz spin: median {stats["median"]:.3f} ms, '
-                 f'p99 {stats["p99"]:.3f} ms, mean {stats["mean"]:.3f} ms over {stats["n"]} spins, '
-                 f'{messages["mean"]:.1f} msgs/spin, {result["tracked_after"]}/{result["links"]} links tracked')
+    results = {str(robots): spin_once(ctx, urdf, domain_id, robots, spins, 'sleep')
+               for domain_id, robots in ((203, 0), (200, 1), (201, 2), (202, 10))}
     # The same spins with the core kept busy between them (bench_spin --between busy): what the
     # spin costs when it does not start from an idle core's cold caches.
-    busy = {}
-    for domain_id, robots in ((204, 1), (205, 10)):
-        with Domain(domain_id, ctx.build) as domain:
-            for i in range(1, robots + 1):
-                domain.start([ctx.build / 'runtime' / 'Tools' / 'ros2vtk-sim-robot', '--urdf', urdf, '--rate', '100',
-                              '--namespace', f'/robot{i}', '--frame-prefix', f'robot{i}/'])
-            bench = domain.start([ctx.build / 'tests' / 'benchmarks' / 'bench_spin', '--robots', robots, '--spins', spins,
-                                  '--rate', '50', '--wait', '40', '--between', 'busy'])
-            result = last_json(bench, timeout=120 + spins / 50)
-        stats = summary(result.pop('spin_ms'))
-        messages = summary(result.pop('messages'))
-        result.update(spin_ms=stats, messages_per_spin=messages)
-        busy[str(robots)] = result
-        progress(f'spin, {robots:2d} robot(s), busy between spins: median {stats["median"]:.3f} ms, '
-                 f'p99 {stats["p99"]:.3f} ms over {stats["n"]} spins, {messages["mean"]:.1f} msgs/spin')
+    busy = {str(robots): spin_once(ctx, urdf, domain_id, robots, spins, 'busy')
+            for domain_id, robots in ((204, 1), (205, 10))}
     return {'urdf': str(urdf.relative_to(REPO)), 'tf_rate_hz': 100, 'spin_rate_hz': 50, 'spins': spins,
             'method': 'C++ bench_spin: steady_clock around vtkROS2Logic::Spin() (no Python in the loop)',
             'robots': results, 'robots_busy': busy}
