@@ -182,6 +182,16 @@ dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash)
   apply_common_endpoint_qos(
     qos, writer_qos.history(), writer_qos.reliability(), writer_qos.durability());
   writer_qos.publish_mode().kind = dds::SYNCHRONOUS_PUBLISH_MODE;
+  if (qos.reliability == QoS::Reliability::Reliable)
+  {
+    // A lost sample is repaired when the reader answers the writer's next heartbeat. Fast DDS's
+    // default period (3 s, kept by rmw_fastrtps) holds every later sample of an in-order reliable
+    // stream back for seconds after one loss (a Wi-Fi link); rmw_connextdds lowered its vendor's
+    // 3 s to 100 ms for this reason (ros2/rmw_connextdds#26). One small message per 100 ms per
+    // matched reader, and only while samples are unacknowledged.
+    writer_qos.reliable_writer_qos().times.heartbeatPeriod =
+      eprosima::fastrtps::Duration_t(0, 100000000);
+  }
   writer_qos.data_sharing().off();
   writer_qos.endpoint().history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
   writer_qos.representation().m_value.clear();
