@@ -141,6 +141,8 @@ public:
     bool Owned; // false: someone else's lookup of the same frames, shared and left in place
   };
   std::vector<LinkNode> Links;
+  unsigned long LinksVersion = 1; // bumped by every change of Links (DriverLinks follows it)
+  unsigned long DriverLinksVersion = 0;
   std::vector<vtkWeakPointer<vtkROS2ModelNode>> Models;
 
   // Joint positions -> link poses where tf does not place the links (issue 15).
@@ -660,22 +662,21 @@ const char* vtkROS2RobotNode::GetLastJointStateError() const
 }
 
 //------------------------------------------------------------------------------
-int vtkROS2RobotNode::OnROS2NodeSpin(vtkROS2NodeNode*)
+int vtkROS2RobotNode::OnROS2NodeSpin(vtkROS2NodeNode* rosNode)
 {
   // First: a changed fixed frame reloads here, so UpdateLinkPoses' LoadedFixedFrame is current.
   const int loaded = this->CheckForNewDescription();
-  return loaded + this->UpdateLinkPoses();
+  return loaded + this->UpdateLinkPoses(rosNode);
 }
 
 //------------------------------------------------------------------------------
-int vtkROS2RobotNode::UpdateLinkPoses()
+int vtkROS2RobotNode::UpdateLinkPoses(vtkROS2NodeNode* rosNode)
 {
   vtkInternals& internals = *this->Internals;
   if (!internals.Loaded)
   {
     return 0;
   }
-  vtkROS2NodeNode* rosNode = this->GetROS2Node();
   if (!internals.JointStatesTopic.empty() && internals.JointStates.GetJointStatesTopic().empty())
   {
     // Asked before the ROS node could subscribe (a restored scene): subscribe now.
@@ -689,15 +690,11 @@ int vtkROS2RobotNode::UpdateLinkPoses()
     }
   }
   // The driver's list of link nodes is rebuilt only when the links changed (a load, a restore):
-  // a spin allocates nothing.
+  // a spin allocates nothing, and does not compare the two lists link by link either.
   ros2vtk::scene::RobotJointStateDriver::LinkNodes& links = internals.DriverLinks;
-  bool same = links.size() == internals.Links.size();
-  for (size_t i = 0; same && i < links.size(); ++i)
+  if (internals.DriverLinksVersion != internals.LinksVersion)
   {
-    same = links[i].second.GetPointer() == internals.Links[i].Node.GetPointer();
-  }
-  if (!same)
-  {
+    internals.DriverLinksVersion = internals.LinksVersion;
     links.clear();
     for (const vtkInternals::LinkNode& entry : internals.Links)
     {
@@ -980,6 +977,7 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
   }
   std::vector<vtkInternals::LinkNode> previous;
   previous.swap(internals.Links);
+  ++internals.LinksVersion;
   std::vector<vtkInternals::LinkNode> kept;
   for (const vtkInternals::LinkNode& entry : previous)
   {
@@ -1039,6 +1037,7 @@ bool vtkROS2RobotNode::LoadRobotDescription(const char* urdfXml, const char* bas
       this->AddNodeReferenceID(LinkRole, linkNode->GetID());
     }
     internals.Links.push_back({ link.link, linkNode.GetPointer(), owned });
+    ++internals.LinksVersion;
     for (size_t i = 0; i < link.visuals.size(); ++i)
     {
       const ros2vtk::robot::LinkVisual& visual = link.visuals[i];
@@ -1138,6 +1137,7 @@ void vtkROS2RobotNode::Unload()
     }
   }
   internals.Links.clear();
+  ++internals.LinksVersion;
   if (vtkROS2TransformNode* base = internals.Base)
   {
     this->RemoveNodeReferenceIDs(BaseRole);
@@ -1281,6 +1281,7 @@ void vtkROS2RobotNode::OnSceneRestored()
   // which the source (the parameter fetched again, the transient-local topic) delivers anew.
   internals.Base = vtkROS2TransformNode::SafeDownCast(this->GetNodeReference(BaseRole));
   internals.Links.clear();
+  ++internals.LinksVersion;
   for (int i = 0; i < this->GetNumberOfNodeReferences(LinkRole); ++i)
   {
     auto* node = vtkROS2TransformNode::SafeDownCast(this->GetNthNodeReference(LinkRole, i));
@@ -1288,6 +1289,7 @@ void vtkROS2RobotNode::OnSceneRestored()
     if (link && *link)
     {
       internals.Links.push_back({ link, node, true });
+      ++internals.LinksVersion;
     }
   }
   vtkROS2NodeNode* rosNode = this->GetROS2Node();

@@ -237,8 +237,9 @@ private:
   bool ReadDescriptionFile(std::string& description);
   /// Spin callback: loads a new description when the source brought one.
   int CheckForNewDescription();
-  /// Spin callback: joint states in, link poses out (RobotJointStateDriver).
-  int UpdateLinkPoses();
+  /// Spin callback: joint states in, link poses out (RobotJointStateDriver). `rosNode`: the
+  /// spinning node (this robot's), passed in so a spin does not look it up again.
+  int UpdateLinkPoses(vtkROS2NodeNode* rosNode);
   /// Removes everything this robot built (models, its own link nodes, the base).
   void Unload();
   void RemoveModels();
