@@ -45,3 +45,24 @@ TEST(BufferListing, AllFramesAsYaml)
   // Without a current time there is no delay line.
   EXPECT_EQ(buffer.all_frames_as_yaml().find("transform_delay"), std::string::npos);
 }
+
+// A listener that learns a sender's node only after inserting its transforms (a latched
+// /tf_static message arrives before the node's announcement) names it afterwards; a frame that
+// another sender has set since keeps that sender's name.
+TEST(BufferListing, AnAuthorityLearntLaterReplacesThePlaceholderOnly)
+{
+  BufferCore buffer;
+  ASSERT_TRUE(buffer.set_transform(make_stamped("world", "camera", 0, { 0, 0, 1 }), "?", true));
+  ASSERT_TRUE(buffer.set_transform(make_stamped("world", "tool", sec(1), { 0, 0, 0 }), "?"));
+  ASSERT_TRUE(buffer.set_transform(make_stamped("world", "tool", sec(2), { 0, 0, 0 }), "/arm"));
+  buffer.replace_authority("camera", "?", "/camera_mount");
+  buffer.replace_authority("tool", "?", "/camera_mount");
+  buffer.replace_authority("nowhere", "?", "/camera_mount"); // unknown frame: nothing happens
+  const std::string yaml = buffer.all_frames_as_yaml();
+  EXPECT_NE(
+    yaml.find("camera:\n  parent: 'world'\n  broadcaster: '/camera_mount'\n"), std::string::npos)
+    << yaml;
+  EXPECT_NE(yaml.find("tool:\n  parent: 'world'\n  broadcaster: '/arm'\n"), std::string::npos)
+    << yaml;
+  EXPECT_FALSE(buffer.frame_exists("nowhere"));
+}

@@ -277,6 +277,17 @@ bool BufferCore::frame_exists(const std::string& frame) const
   return frames_->ids.find(frame) != kNoFrame;
 }
 
+void BufferCore::replace_authority(
+  const std::string& frame, const std::string& from, const std::string& to)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const FrameId id = frames_->ids.find(frame);
+  if (id != kNoFrame && id < frames_->authorities.size() && frames_->authorities[id] == from)
+  {
+    frames_->authorities[id] = to;
+  }
+}
+
 bool BufferCore::get_frame_parent(
   const std::string& frame, TimePoint time, std::string& parent) const
 {

@@ -49,6 +49,26 @@ const std::string& TransformListener::authority_of(const std::array<uint8_t, 16>
   return authorities_.emplace(writer, std::move(node)).first->second;
 }
 
+void TransformListener::resolve_authorities()
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (auto writer = unresolved_.begin(); writer != unresolved_.end();)
+  {
+    const std::string& node = authority_of(writer->first);
+    if (&node == &kUnknownAuthority)
+    {
+      ++writer;
+      continue;
+    }
+    for (const std::string& frame : writer->second)
+    {
+      buffer_.replace_authority(frame, kUnknownAuthority, node);
+    }
+    writer = unresolved_.erase(writer);
+  }
+  has_unresolved_ = !unresolved_.empty();
+}
+
 TransformListener::~TransformListener()
 {
   // Stop the DDS threads' inserts before any member they use goes.
@@ -81,6 +101,13 @@ void TransformListener::insert(const wire::MessagePtr& message, bool is_static)
     if (buffer_.set_transform(transform, authority, is_static, &reason_))
     {
       ++inserted_;
+      if (&authority == &kUnknownAuthority)
+      {
+        const std::string& child = transform.child_frame_id;
+        unresolved_[message.publisher_gid].insert(
+          !child.empty() && child[0] == '/' ? child.substr(1) : child); // as the buffer stores it
+        has_unresolved_ = true;
+      }
     }
     else
     {
@@ -107,6 +134,10 @@ size_t TransformListener::process()
     taken_.clear();
   }
   backlog_taken_ = true;
+  if (has_unresolved_.load())
+  {
+    resolve_authorities();
+  }
   const uint64_t inserted = inserted_;
   const size_t count = static_cast<size_t>(inserted - inserted_reported_);
   inserted_reported_ = inserted;

@@ -73,6 +73,10 @@ public:
   /// True when the name was ever seen, as a child or as a parent.
   bool frame_exists(const std::string& frame) const;
 
+  /// Names the authority of `frame`'s newest transform `to` when it is still `from` (a listener
+  /// that learnt the sender's node only after inserting; a later sender's authority stays).
+  void replace_authority(const std::string& frame, const std::string& from, const std::string& to);
+
   /// Parent of `frame` at `time` (kLatestTime: newest). False for unknown frames, roots and
   /// times the frame's history does not cover.
   bool get_frame_parent(const std::string& frame, TimePoint time, std::string& parent) const;

@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -51,12 +52,19 @@ private:
   /// The authority recorded with a transform: the node of the writer that sent it (from the
   /// ROS graph, as `ros2 topic info -v` names it), or kUnknownAuthority until the graph knows it.
   const std::string& authority_of(const std::array<uint8_t, 16>& writer);
+  /// Names the frames inserted with kUnknownAuthority whose writer's node the graph knows now
+  /// (a latched /tf_static message often arrives before its node's announcement, and is not
+  /// sent again).
+  void resolve_authorities();
 
   wire::Participant& participant_;
   tf2::BufferCore& buffer_;
   /// Guards what insert() uses: /tf and /tf_static may arrive on two DDS threads at once.
   mutable std::mutex mutex_;
   std::map<std::array<uint8_t, 16>, std::string> authorities_; ///< writers whose node is known
+  /// Frames last set by a writer whose node was unknown then, by writer.
+  std::map<std::array<uint8_t, 16>, std::set<std::string>> unresolved_;
+  std::atomic<bool> has_unresolved_{ false }; ///< !unresolved_.empty(), read without the lock
   std::string last_rejection_;
   tf2::TransformStamped scratch_; ///< reused: its strings keep their storage between messages
   std::string reason_;
