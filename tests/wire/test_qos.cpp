@@ -123,3 +123,22 @@ TEST(QoS, ReliableWritersAskForAHeartbeatEveryTenthOfASecond)
   EXPECT_EQ(defaults.reliable_writer_qos().times.heartbeatPeriod.seconds, 3)
     << "Fast DDS's default changed: docs/networking.md compares against 3 s";
 }
+
+// A reliable writer ignores NACKs for 5 ms after a send instead of Fast DDS's 0: with 0, each
+// write wakes the participant's event thread before its sendto (docs/benchmarks.md, pose_1khz).
+// 5 ms is not longer than a Fast DDS reader's heartbeat response delay, so no NACK a reader sends
+// in answer to a heartbeat that announced the sample is ignored.
+TEST(QoS, ReliableWritersSuppressNacksForNoLongerThanAReaderTakesToAnswerAHeartbeat)
+{
+  const auto reliable = ros2vtk::wire::make_writer_qos(QoS::default_profile(), "");
+  const auto& times = reliable.reliable_writer_qos().times;
+  EXPECT_EQ(times.nackSupressionDuration.seconds, 0);
+  EXPECT_EQ(times.nackSupressionDuration.nanosec, 5000000u);
+  const eprosima::fastdds::dds::DataReaderQos reader_defaults;
+  EXPECT_LE(times.nackSupressionDuration,
+    reader_defaults.reliable_reader_qos().times.heartbeatResponseDelay);
+  const eprosima::fastdds::dds::DataWriterQos defaults;
+  EXPECT_EQ(defaults.reliable_writer_qos().times.nackSupressionDuration.seconds, 0);
+  EXPECT_EQ(defaults.reliable_writer_qos().times.nackSupressionDuration.nanosec, 0u)
+    << "Fast DDS's default changed: the comment in make_writer_qos compares against 0";
+}

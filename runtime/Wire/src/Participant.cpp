@@ -191,6 +191,15 @@ dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash)
     // matched reader, and only while samples are unacknowledged.
     writer_qos.reliable_writer_qos().times.heartbeatPeriod =
       eprosima::fastrtps::Duration_t(0, 100000000);
+    // With Fast DDS's default of 0, every write arms the reader proxy's NACK-suppression timer,
+    // which wakes the participant's event thread before the sample is sent (strace of
+    // bench_publish: one futex wake per write, ahead of its sendto); at 1 kHz that is ~15 us of
+    // every sample's latency (docs/benchmarks.md, "pose_1khz"). While armed, the timer stays
+    // armed, so later writes do not wake the thread. 5 ms ignores no NACK of a Fast DDS reader:
+    // a reader asks for a sample only in answer to a heartbeat sent after it, and answers after
+    // its heartbeatResponseDelay (5 ms by default, in Fast DDS 2.9 and 3).
+    writer_qos.reliable_writer_qos().times.nackSupressionDuration =
+      eprosima::fastrtps::Duration_t(0, 5000000);
   }
   writer_qos.data_sharing().off();
   writer_qos.endpoint().history_memory_policy = rtps::PREALLOCATED_WITH_REALLOC_MEMORY_MODE;
