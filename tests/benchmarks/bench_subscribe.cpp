@@ -12,6 +12,13 @@
 // sender's write, the transport, Fast DDS and our deserialization), `wake_to_ready_ms` = VTK value
 // ready − that wake-up (the spinner's wake-up, the spin and the conversion).
 //
+// Before that wake-up, every datagram the participant reads is shown to an observer
+// (Participant::set_datagram_observer), which reads the RTPS submessage headers of the sample's
+// DATA or DATA_FRAG submessages: `first_fragment_ms` = first datagram of the sample − stamp (the
+// sender's write and the loopback), `fragments_ms` = last − first datagram (the rest of the
+// sample on the wire: one datagram, 0, for small messages), `last_fragment_to_wake_ms` = the
+// wake-up − last datagram (Fast DDS's reassembly and delivery, our take and deserialization).
+//
 //   bench_subscribe --type PoseStamped|Image|PointCloud2|PoseArray --topic T [--seconds S]
 //                   [--idle S] [--depth N]
 //
@@ -40,7 +47,10 @@
 #include <vtkSmartPointer.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
+#include <cstring>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -66,6 +76,119 @@ public:
   int NewCount() const { return this->Base::GetNumberOfNewMessages(); }
 };
 
+/// When the datagrams of one sample arrived, from their RTPS submessage headers.
+struct SampleArrival
+{
+  double first = 0; ///< wall seconds of the first datagram carrying part of the sample
+  double last = 0;  ///< ... and of the last one
+  int datagrams = 0;
+};
+
+/// Reads the RTPS submessages of each datagram (RTPS 2.3, 8.3.3 and 9.4.5) far enough to know
+/// which sample of which user writer a DATA or DATA_FRAG carries, and that sample's header stamp
+/// (the first 8 bytes after the CDR encapsulation of fragment 1: every benchmarked type begins
+/// with std_msgs/Header). Hand-written because Fast DDS reports a sample only once it is whole:
+/// no API of it says when its first or last fragment arrived.
+class FragmentClock
+{
+public:
+  /// On Fast DDS's receive thread, with every datagram.
+  void on_datagram(const uint8_t* data, size_t size, double now)
+  {
+    if (size < 20 || std::memcmp(data, "RTPS", 4) != 0)
+      return;
+    std::array<uint8_t, 12> prefix{};
+    std::memcpy(prefix.data(), data + 8, 12);
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (size_t at = 20; at + 4 <= size;)
+    {
+      const uint8_t id = data[at];
+      const uint8_t flags = data[at + 1];
+      const bool little = (flags & 0x01) != 0;
+      const size_t length = read16(data + at + 2, little);
+      const size_t body = at + 4;
+      const size_t end = length == 0 ? size : std::min(size, body + length);
+      if (id == kData || id == kDataFrag)
+        on_data(id, flags, data + body, end - body, prefix, now, little);
+      if (length == 0)
+        break;
+      at = body + length;
+    }
+  }
+
+  /// The arrival of the sample with this header stamp, taken out of the clock (false: unknown).
+  bool take(int32_t sec, uint32_t nanosec, SampleArrival& arrival)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto stamp = by_stamp_.find({ sec, nanosec });
+    if (stamp == by_stamp_.end())
+      return false;
+    const auto sample = samples_.find(stamp->second);
+    by_stamp_.erase(stamp);
+    if (sample == samples_.end())
+      return false;
+    arrival = sample->second;
+    samples_.erase(sample);
+    return true;
+  }
+
+private:
+  static constexpr uint8_t kData = 0x15;
+  static constexpr uint8_t kDataFrag = 0x16;
+  using Key = std::pair<std::array<uint8_t, 16>, uint64_t>; // writer GUID, sequence number
+
+  static uint32_t read16(const uint8_t* p, bool little)
+  {
+    return little ? uint32_t(p[0]) | uint32_t(p[1]) << 8 : uint32_t(p[1]) | uint32_t(p[0]) << 8;
+  }
+  static uint32_t read32(const uint8_t* p, bool little)
+  {
+    return little
+      ? uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24
+      : uint32_t(p[3]) | uint32_t(p[2]) << 8 | uint32_t(p[1]) << 16 | uint32_t(p[0]) << 24;
+  }
+
+  void on_data(uint8_t id, uint8_t flags, const uint8_t* body, size_t size,
+    const std::array<uint8_t, 12>& prefix, double now, bool little)
+  {
+    // extraFlags(2) octetsToInlineQos(2) readerId(4) writerId(4) writerSN(8) [DATA_FRAG:
+    // fragmentStartingNum(4) fragmentsInSubmessage(2) fragmentSize(2) sampleSize(4)]
+    if (size < 20)
+      return;
+    const uint8_t writer_kind = body[11];
+    if ((writer_kind & 0xc0) != 0)
+      return; // a built-in writer (discovery, liveliness), not a topic's
+    Key key;
+    std::memcpy(key.first.data(), prefix.data(), 12);
+    std::memcpy(key.first.data() + 12, body + 8, 4);
+    key.second = uint64_t(read32(body + 12, little)) << 32 | read32(body + 16, little);
+    SampleArrival& arrival = samples_[key];
+    if (arrival.datagrams == 0)
+      arrival.first = now;
+    arrival.last = now;
+    ++arrival.datagrams;
+    const bool first_part = id == kData || (size >= 24 && read32(body + 20, little) == 1);
+    if (!first_part)
+      return;
+    // The serialized payload follows the inline QoS (flag Q), which ends at PID_SENTINEL.
+    size_t payload = 4 + read16(body + 2, little);
+    if ((flags & 0x02) != 0)
+    {
+      while (payload + 4 <= size && read16(body + payload, little) != 0x0001)
+        payload += 4 + read16(body + payload + 2, little);
+      payload += 4;
+    }
+    if (payload + 12 > size || body[payload] != 0x00 || body[payload + 1] != 0x01)
+      return; // not CDR little-endian: the stamp cannot be read here
+    const auto sec = static_cast<int32_t>(read32(body + payload + 4, true));
+    by_stamp_[{ sec, read32(body + payload + 8, true) }] = key;
+  }
+
+  std::mutex mutex_;
+  std::map<Key, SampleArrival> samples_;
+  std::map<std::pair<int32_t, uint32_t>, Key> by_stamp_;
+};
+
 struct Options
 {
   std::string type;
@@ -80,8 +203,13 @@ struct Record
   std::vector<double> latency_ms;    // per message
   std::vector<double> conversion_ms; // per spin that brought messages
   std::vector<double> per_spin_messages;
-  std::vector<double> queued_ms;        // per message: stamp -> the DDS thread's wake-up
-  std::vector<double> wake_to_ready_ms; // per message: that wake-up -> VTK value ready
+  std::vector<double> queued_ms;                // per message: stamp -> the DDS thread's wake-up
+  std::vector<double> wake_to_ready_ms;         // per message: that wake-up -> VTK value ready
+  std::vector<double> first_fragment_ms;        // per message: stamp -> its first datagram
+  std::vector<double> fragments_ms;             // per message: first -> last datagram
+  std::vector<double> last_fragment_to_wake_ms; // per message: last datagram -> the wake-up
+  std::vector<double> datagrams;                // per message: datagrams carrying it
+  FragmentClock fragments;
   std::mutex wake_mutex;
   std::vector<double> wake_ups; // wall seconds of the DDS thread's wake-ups since the last spin
   std::string conversion_error;
@@ -93,6 +221,13 @@ double stamp_seconds(const void* raw)
 {
   const auto& stamp = static_cast<const Message*>(raw)->header.stamp;
   return stamp.sec + 1e-9 * stamp.nanosec;
+}
+
+template<typename Message>
+bool take_arrival(FragmentClock& fragments, const void* raw, SampleArrival& arrival)
+{
+  const auto& stamp = static_cast<const Message*>(raw)->header.stamp;
+  return fragments.take(stamp.sec, stamp.nanosec, arrival);
 }
 
 size_t size_of(vtkMatrix4x4* m)
@@ -164,6 +299,17 @@ int run(const Options& options)
         c->record->queued_ms.push_back(1000.0 * (*wake - stamp));
         c->record->wake_to_ready_ms.push_back(1000.0 * (ready - *wake));
       }
+      SampleArrival arrival;
+      if (take_arrival<Message>(c->record->fragments, c->probe->Raw(i), arrival))
+      {
+        c->record->first_fragment_ms.push_back(1000.0 * (arrival.first - stamp));
+        c->record->fragments_ms.push_back(1000.0 * (arrival.last - arrival.first));
+        c->record->datagrams.push_back(arrival.datagrams);
+        // The first wake-up after the last datagram is the one this sample raised.
+        auto raised = std::lower_bound(wake_ups.begin(), wake_ups.end(), arrival.last);
+        if (raised != wake_ups.end())
+          c->record->last_fragment_to_wake_ms.push_back(1000.0 * (*raised - arrival.last));
+      }
     }
   });
   probe->AddObserver(vtkCommand::ModifiedEvent, observer);
@@ -172,6 +318,9 @@ int run(const Options& options)
     const double now = bench::wall_seconds();
     std::lock_guard<std::mutex> lock(record.wake_mutex);
     record.wake_ups.push_back(now);
+  });
+  node->GetParticipant()->set_datagram_observer([&record](const uint8_t* data, size_t size) {
+    record.fragments.on_datagram(data, size, bench::wall_seconds());
   });
 
   std::printf("{\"ready\": true}\n");
@@ -206,8 +355,15 @@ int run(const Options& options)
     .numbers("messages_per_spin", record.per_spin_messages)
     .numbers("queued_ms", record.queued_ms)
     .numbers("wake_to_ready_ms", record.wake_to_ready_ms)
+    .numbers("first_fragment_ms", record.first_fragment_ms)
+    .numbers("fragments_ms", record.fragments_ms)
+    .numbers("last_fragment_to_wake_ms", record.last_fragment_to_wake_ms)
+    .numbers("datagrams", record.datagrams)
     .print();
+  // Nothing may reach `record` or `context` once they are gone (they live on this stack).
+  node->GetParticipant()->set_datagram_observer(nullptr);
   node->GetParticipant()->wake_up().set_callback(nullptr);
+  probe->RemoveObserver(observer);
   return 0;
 }
 

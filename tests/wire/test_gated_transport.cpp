@@ -5,10 +5,12 @@
 #include "GatedTransport.hpp"
 
 #include <fastdds/rtps/transport/TransportReceiverInterface.h>
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -97,6 +99,41 @@ TEST(ReceptionGate, KeepsAtMostEightMebibytesWhileClosed)
   EXPECT_EQ(accepted, (8u << 20) / datagram.size());
   EXPECT_EQ(gate.open(), accepted);
   EXPECT_EQ(receiver.received.size(), accepted);
+}
+
+// Participant::set_datagram_observer: the benchmarks time a large sample's first and last
+// fragment with it. The observer sees every datagram, held or passed, as it was read, before the
+// receiver; removing it stops the calls.
+TEST(ReceptionGate, ShowsEveryDatagramToItsObserverUntilTheObserverIsRemoved)
+{
+  GatedTransportDescriptor descriptor(
+    std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>());
+  GatedTransport transport(descriptor); // what Fast DDS creates; its receive() is the path
+  ReceptionGate& gate = *descriptor.gate;
+  RecordingReceiver receiver;
+  std::vector<std::string> seen;
+  size_t received_when_seen = 0;
+  gate.observe([&](const uint8_t* data, size_t size) {
+    seen.emplace_back(reinterpret_cast<const char*>(data), size);
+    received_when_seen = receiver.received.size();
+  });
+  const auto arrive = [&](const std::string& bytes) {
+    transport.receive(&receiver, reinterpret_cast<const rtps::octet*>(bytes.data()),
+      static_cast<uint32_t>(bytes.size()), udp(7411), udp(50002));
+  };
+  arrive("RTPS DATA_FRAG 1"); // held: the gate is closed
+  EXPECT_TRUE(receiver.received.empty());
+  EXPECT_EQ(gate.open(), 1u);
+  arrive("RTPS DATA_FRAG 2");
+  EXPECT_EQ(seen, (std::vector<std::string>{ "RTPS DATA_FRAG 1", "RTPS DATA_FRAG 2" }));
+  EXPECT_EQ(received_when_seen, 1u) << "the observer runs before the receiver";
+  EXPECT_EQ(
+    receiver.received, (std::vector<std::string>{ "RTPS DATA_FRAG 1", "RTPS DATA_FRAG 2" }));
+
+  gate.observe(nullptr);
+  arrive("RTPS HEARTBEAT");
+  EXPECT_EQ(seen.size(), 2u);
+  EXPECT_EQ(receiver.received.size(), 3u);
 }
 
 } // namespace

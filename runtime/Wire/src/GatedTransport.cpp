@@ -13,8 +13,13 @@ namespace fdrtps = eprosima::fastdds::rtps;
 bool ReceptionGate::hold(fdrtps::TransportReceiverInterface* receiver, const rtps::octet* data,
   uint32_t size, const rtps::Locator_t& local, const rtps::Locator_t& remote)
 {
+  if (open_.load(std::memory_order_acquire))
+  {
+    return false;
+  }
+  // Closed, or open() is handing the held datagrams on: wait for it, so this one follows them.
   std::lock_guard<std::mutex> lock(mutex_);
-  if (open_)
+  if (open_.load(std::memory_order_relaxed))
   {
     return false;
   }
@@ -31,7 +36,6 @@ size_t ReceptionGate::open()
 {
   // Held under the lock: a datagram arriving meanwhile waits in hold() and follows the held ones.
   std::lock_guard<std::mutex> lock(mutex_);
-  open_ = true;
   for (const Datagram& datagram : held_)
   {
     datagram.receiver->OnDataReceived(datagram.data.data(),
@@ -41,7 +45,24 @@ size_t ReceptionGate::open()
   held_.clear();
   held_.shrink_to_fit();
   held_bytes_ = 0;
+  open_.store(true, std::memory_order_release);
   return count;
+}
+
+void ReceptionGate::observe(Observer observer)
+{
+  std::lock_guard<std::mutex> lock(observer_mutex_);
+  observed_.store(static_cast<bool>(observer), std::memory_order_release);
+  observer_ = std::move(observer);
+}
+
+void ReceptionGate::call_observer(const rtps::octet* data, uint32_t size)
+{
+  std::lock_guard<std::mutex> lock(observer_mutex_);
+  if (observer_)
+  {
+    observer_(data, size);
+  }
 }
 
 size_t ReceptionGate::held() const
@@ -80,6 +101,7 @@ void GatedTransport::receive(fdrtps::TransportReceiverInterface* next_receiver,
   const rtps::octet* receive_buffer, uint32_t receive_buffer_size,
   const rtps::Locator_t& local_locator, const rtps::Locator_t& remote_locator)
 {
+  descriptor_.gate->seen(receive_buffer, receive_buffer_size);
   if (!descriptor_.gate->hold(
         next_receiver, receive_buffer, receive_buffer_size, local_locator, remote_locator))
   {

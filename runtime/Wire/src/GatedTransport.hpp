@@ -21,7 +21,9 @@
 #include <fastdds/rtps/transport/ChainingTransport.h>
 #include <fastdds/rtps/transport/ChainingTransportDescriptor.h>
 
+#include <atomic>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -33,6 +35,20 @@ namespace wire {
 class ReceptionGate
 {
 public:
+  using Observer = std::function<void(const uint8_t* data, size_t size)>;
+
+  /// Shows every datagram to `observer` (on the receiving thread, before Fast DDS parses it);
+  /// an empty function stops it. See Participant::set_datagram_observer.
+  void observe(Observer observer);
+  /// Called by the transport with each datagram it read; costs one atomic load when unobserved.
+  void seen(const eprosima::fastrtps::rtps::octet* data, uint32_t size)
+  {
+    if (observed_.load(std::memory_order_acquire))
+    {
+      call_observer(data, size);
+    }
+  }
+
   /// Keeps a copy of the datagram while the gate is closed (true), else false: pass it on.
   bool hold(eprosima::fastdds::rtps::TransportReceiverInterface* receiver,
     const eprosima::fastrtps::rtps::octet* data, uint32_t size,
@@ -50,10 +66,17 @@ private:
     eprosima::fastrtps::rtps::Locator_t local;
     eprosima::fastrtps::rtps::Locator_t remote;
   };
+  void call_observer(const eprosima::fastrtps::rtps::octet* data, uint32_t size);
+
   /// Bounds what a closed gate keeps (a participant is enabled within milliseconds).
   static constexpr size_t kMaxHeldBytes = 8u << 20;
   mutable std::mutex mutex_;
-  bool open_ = false;
+  /// Set by open() once the held datagrams were handed on: read without the lock by every
+  /// datagram after that, so an open gate costs no mutex per datagram.
+  std::atomic<bool> open_{ false };
+  std::atomic<bool> observed_{ false };
+  std::mutex observer_mutex_;
+  Observer observer_;
   size_t held_bytes_ = 0;
   std::vector<Datagram> held_;
 };

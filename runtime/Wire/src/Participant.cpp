@@ -478,6 +478,7 @@ bool Participant::Impl::init(const ParticipantOptions& options, std::string* err
       "Fast DDS could not create a participant on domain " + std::to_string(options.domain_id));
   }
   transport->gate->open(); // enabled: its receivers are registered (GatedTransport.hpp)
+  reception_gate = transport->gate;
   publisher = participant->create_publisher(dds::PUBLISHER_QOS_DEFAULT);
   subscriber = participant->create_subscriber(dds::SUBSCRIBER_QOS_DEFAULT);
   if (!publisher || !subscriber)
@@ -720,6 +721,14 @@ NodeTypeCache& Participant::type_cache()
 WakeUp& Participant::wake_up()
 {
   return impl_->wake_up;
+}
+
+void Participant::set_datagram_observer(DatagramObserver observer)
+{
+  if (impl_->reception_gate)
+  {
+    impl_->reception_gate->observe(std::move(observer));
+  }
 }
 
 std::vector<std::pair<std::string, std::string>> Participant::node_names_and_namespaces() const

@@ -18,12 +18,15 @@
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
 #include <map>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <string>
 
 namespace ros2vtk {
 namespace wire {
+
+class ReceptionGate; // GatedTransport.hpp
 
 /// Translates our QoS into Fast DDS entity QoS the way rmw_fastrtps does (WIRE_NOTES §2.2).
 eprosima::fastdds::dds::DataWriterQos make_writer_qos(const QoS& qos, const std::string& type_hash);
@@ -64,6 +67,9 @@ public:
   eprosima::fastdds::dds::Publisher* publisher = nullptr;
   eprosima::fastdds::dds::Subscriber* subscriber = nullptr;
   WakeUp wake_up;
+  /// The reception gate of this participant's transport (GatedTransport.hpp), kept for
+  /// set_datagram_observer.
+  std::shared_ptr<ReceptionGate> reception_gate;
   GraphCache graph;
   NodeTypeCache types; // what ~/get_type_description serves (every endpoint registers)
   // Link status (on_participant_discovery): remote participants alive, and lease expiries.

@@ -8,7 +8,9 @@
 #include "ros2vtk/wire/WakeUp.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -121,6 +123,14 @@ public:
 
   /// Raised whenever any subscription, server or client of this node queued data.
   WakeUp& wake_up();
+
+  /// Shows `observer` every datagram this participant's transports read, on Fast DDS's
+  /// receiving thread, before Fast DDS parses it; an empty function stops it. For measurement:
+  /// Fast DDS reports a sample only once it is whole, so a benchmark times a large sample's
+  /// first and last fragment here. The observer must return quickly and must not call back into
+  /// this participant.
+  using DatagramObserver = std::function<void(const uint8_t* data, size_t size)>;
+  void set_datagram_observer(DatagramObserver observer);
 
   /// The ROS graph as seen from here (from DDS discovery and ros_discovery_info).
   std::vector<std::pair<std::string, std::string>> node_names_and_namespaces() const;
