@@ -1,14 +1,17 @@
 // Shared helpers of the C++ benchmark programs: a monotonic clock in milliseconds, wall-clock
 // seconds (comparable with header stamps written by rclpy's time.time()), the process's RSS,
-// and a tiny JSON writer for the results the Python driver reads (one object on stdout).
+// a tiny JSON writer for the results the Python driver reads (one object on stdout), and the
+// senders' paced loop.
 #ifndef ros2vtk_bench_BenchCommon_hpp
 #define ros2vtk_bench_BenchCommon_hpp
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace bench {
@@ -91,6 +94,36 @@ public:
 private:
   std::string body_;
 };
+
+/// The senders' loop (bench_publish, bare_publish): `rate * seconds` calls of `publish` on an
+/// absolute schedule with sleeps only (two cores: the receiver needs one), each timed, while
+/// `keep_going()` holds; then half a second for a reliable writer's last samples, and the JSON
+/// {"sent", "seconds", "rate", "publish_ms"} on stdout. `publish` returns whether it sent.
+template<typename Publish, typename KeepGoing>
+void publish_paced(double rate, double seconds, Publish publish, KeepGoing keep_going)
+{
+  std::vector<double> publish_ms;
+  const int total = static_cast<int>(rate * seconds + 0.5);
+  publish_ms.reserve(static_cast<size_t>(std::max(total, 0)));
+  const auto period = std::chrono::duration<double>(1.0 / rate);
+  const auto start = Clock::now();
+  int sent = 0;
+  for (int i = 0; i < total && keep_going(); ++i)
+  {
+    std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * i));
+    const auto before = Clock::now();
+    sent += publish() ? 1 : 0;
+    publish_ms.push_back(ms_between(before, Clock::now()));
+  }
+  const double elapsed = ms_between(start, Clock::now()) / 1000.0;
+  std::this_thread::sleep_for(std::chrono::milliseconds(500)); // reliable: let the last ones go out
+  JsonObject()
+    .number("sent", sent)
+    .number("seconds", elapsed)
+    .number("rate", elapsed > 0 ? sent / elapsed : 0.0)
+    .numbers("publish_ms", publish_ms)
+    .print();
+}
 
 } // namespace bench
 

@@ -118,27 +118,9 @@ int run(const Options& options, Value* value)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   std::this_thread::sleep_for(
     std::chrono::milliseconds(500)); // as ros_publisher.py: let matching settle
-  std::vector<double> publish_ms;
-  const int total = static_cast<int>(options.rate * options.seconds + 0.5);
-  const auto period = std::chrono::duration<double>(1.0 / options.rate);
-  const auto start = bench::Clock::now();
-  int sent = 0;
-  for (int i = 0; i < total; ++i)
-  {
-    std::this_thread::sleep_until(
-      start + std::chrono::duration_cast<bench::Clock::duration>(period * i));
-    const auto before = bench::Clock::now();
-    sent += publisher->Publish(value);
-    publish_ms.push_back(bench::ms_between(before, bench::Clock::now()));
-  }
-  const double elapsed = bench::ms_between(start, bench::Clock::now()) / 1000.0;
-  std::this_thread::sleep_for(std::chrono::milliseconds(500)); // reliable: let the last ones go out
-  bench::JsonObject()
-    .number("sent", sent)
-    .number("seconds", elapsed)
-    .number("rate", elapsed > 0 ? sent / elapsed : 0.0)
-    .numbers("publish_ms", publish_ms)
-    .print();
+  bench::publish_paced(
+    options.rate, options.seconds, [&] { return publisher->Publish(value) != 0; },
+    [] { return true; });
   return 0;
 }
 

@@ -30,6 +30,9 @@
 #include <vtkCommand.h>
 #include <vtkNew.h>
 
+#include <sys/resource.h>
+#include <time.h>
+
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -44,7 +47,8 @@ struct Options
   int spins = 1000;
   double rate = 50.0;
   double wait = 30.0;
-  bool busy = false; ///< --between busy
+  bool busy = false;  ///< --between busy or flush
+  bool flush = false; ///< --between flush
 };
 
 bool parse(int argc, char** argv, Options& o)
@@ -61,8 +65,13 @@ bool parse(int argc, char** argv, Options& o)
       o.rate = std::atof(value);
     else if (arg == "--wait")
       o.wait = std::atof(value);
-    else if (arg == "--between" && (std::string(value) == "sleep" || std::string(value) == "busy"))
-      o.busy = std::string(value) == "busy";
+    else if (arg == "--between" &&
+      (std::string(value) == "sleep" || std::string(value) == "busy" ||
+        std::string(value) == "flush"))
+    {
+      o.busy = std::string(value) != "sleep";
+      o.flush = std::string(value) == "flush";
+    }
     else
       return false;
   }
@@ -84,6 +93,32 @@ void wait_until(bench::Clock::time_point next, bool busy)
   while (bench::Clock::now() < next)
   {
   }
+}
+
+// Writes one byte per cache line of a buffer larger than the last-level cache, touching as many
+// pages as the TLBs hold many times over: the spin that follows finds its data in memory only,
+// as after an idle period in which the core's caches were given to others.
+void evict_caches(std::vector<unsigned char>& buffer)
+{
+  for (size_t i = 0; i < buffer.size(); i += 64)
+    buffer[i] = static_cast<unsigned char>(buffer[i] + 1);
+}
+
+// CPU time of the calling thread: beside the wall time of a spin, it says how long the spin ran
+// and how long it waited (descheduled, or blocked on a lock a DDS thread held).
+double thread_cpu_ms()
+{
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+// Voluntary plus involuntary context switches of the calling thread so far.
+long thread_switches()
+{
+  rusage usage{};
+  getrusage(RUSAGE_THREAD, &usage);
+  return usage.ru_nvcsw + usage.ru_nivcsw;
 }
 
 bool all_loaded(const std::vector<vtkROS2RobotNode*>& robots)
@@ -176,18 +211,31 @@ int main(int argc, char** argv)
     wait_until(next, options.busy);
   }
 
+  std::vector<unsigned char> eviction(options.flush ? size_t(64) << 20 : 0);
   std::vector<double> spin_ms;
+  std::vector<double> spin_cpu_ms;
+  std::vector<double> switched; // 1 where the thread was switched out during the spin
   std::vector<double> messages;
   spin_ms.reserve(options.spins);
+  spin_cpu_ms.reserve(options.spins);
+  switched.reserve(options.spins);
   messages.reserve(options.spins);
   const long observed_before = observed;
   next = bench::Clock::now();
   for (int i = 0; i < options.spins; ++i)
   {
     next += period;
+    if (options.flush)
+      evict_caches(eviction);
+    const long switches_before = thread_switches();
+    const double cpu_before = thread_cpu_ms();
     const auto start = bench::Clock::now();
     const int handled = logic->Spin();
-    spin_ms.push_back(bench::ms_between(start, bench::Clock::now()));
+    const auto end = bench::Clock::now();
+    const double cpu_after = thread_cpu_ms();
+    spin_ms.push_back(bench::ms_between(start, end));
+    spin_cpu_ms.push_back(cpu_after - cpu_before);
+    switched.push_back(thread_switches() != switches_before ? 1.0 : 0.0);
     messages.push_back(handled);
     wait_until(next, options.busy);
   }
@@ -201,9 +249,14 @@ int main(int argc, char** argv)
     .number("tracked_after", static_cast<double>(tracked_end))
     .number("observer_calls", static_cast<double>(observed - observed_before))
     .number("logic_mean_spin_ms", logic->GetMeanSpinDuration())
-    .text("between_spins", options.busy ? "busy" : "sleep")
+    .text("between_spins",
+      options.flush    ? "flush"
+        : options.busy ? "busy"
+                       : "sleep")
     .text("driven_by", "vtkROS2RobotNode (CreateAndAddRobotNodeFromTopic)")
     .numbers("spin_ms", spin_ms)
+    .numbers("spin_cpu_ms", spin_cpu_ms)
+    .numbers("switched", switched)
     .numbers("messages", messages)
     .print();
   return tracked == links ? 0 : 3;
