@@ -112,48 +112,47 @@ LoadFn loader_for(uint8_t datatype)
 }
 
 /// One coordinate for every listed point: dst[3*i + axis] = value * scale. Templated on the
-/// source type so the datatype switch happens once per field, not once per point.
+/// source type so the datatype switch happens once per field, not once per point. Returns
+/// whether some finite value became non-finite once scaled (an overflow, reported by the caller);
+/// checked here, in the same pass, so a valid cloud is read once.
 template<typename Src, typename Dst>
-void extract_coordinate(const uint8_t* data, const std::vector<size_t>& points, uint32_t offset,
+bool extract_coordinate(const uint8_t* data, const std::vector<size_t>& points, uint32_t offset,
   bool swap, double scale, int axis, Dst* dst)
 {
+  bool overflow = false;
   for (size_t i = 0; i < points.size(); ++i)
   {
-    const Src value = detail::load_value<Src>(data + points[i] + offset, swap);
-    dst[3 * i + axis] = detail::narrow_coordinate<Dst>(static_cast<double>(value) * scale);
+    const double value =
+      static_cast<double>(detail::load_value<Src>(data + points[i] + offset, swap));
+    const Dst out = detail::narrow_coordinate<Dst>(value * scale);
+    dst[3 * i + axis] = out;
+    overflow |= !std::isfinite(out) && std::isfinite(value);
   }
+  return overflow;
 }
 
 template<typename Dst>
-void extract_coordinate_any(uint8_t datatype, const uint8_t* data,
+bool extract_coordinate_any(uint8_t datatype, const uint8_t* data,
   const std::vector<size_t>& points, uint32_t offset, bool swap, double scale, int axis, Dst* dst)
 {
   switch (datatype)
   {
     case point_field::kInt8:
-      extract_coordinate<int8_t>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<int8_t>(data, points, offset, swap, scale, axis, dst);
     case point_field::kUInt8:
-      extract_coordinate<uint8_t>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<uint8_t>(data, points, offset, swap, scale, axis, dst);
     case point_field::kInt16:
-      extract_coordinate<int16_t>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<int16_t>(data, points, offset, swap, scale, axis, dst);
     case point_field::kUInt16:
-      extract_coordinate<uint16_t>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<uint16_t>(data, points, offset, swap, scale, axis, dst);
     case point_field::kInt32:
-      extract_coordinate<int32_t>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<int32_t>(data, points, offset, swap, scale, axis, dst);
     case point_field::kUInt32:
-      extract_coordinate<uint32_t>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<uint32_t>(data, points, offset, swap, scale, axis, dst);
     case point_field::kFloat32:
-      extract_coordinate<float>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<float>(data, points, offset, swap, scale, axis, dst);
     default:
-      extract_coordinate<double>(data, points, offset, swap, scale, axis, dst);
-      break;
+      return extract_coordinate<double>(data, points, offset, swap, scale, axis, dst);
   }
 }
 
@@ -356,24 +355,26 @@ bool point_cloud2_to_poly_data(const PointCloud2Layout& layout, const uint8_t* d
   vtk_points->SetDataType(float_points ? VTK_FLOAT : VTK_DOUBLE);
   vtk_points->SetNumberOfPoints(count);
   void* coordinates = vtk_points->GetData()->GetVoidPointer(0);
+  bool overflow = false;
   for (int axis = 0; axis < 3; ++axis)
   {
     if (float_points)
     {
-      extract_coordinate_any(xyz[axis]->datatype, data, points, xyz[axis]->offset, swap,
+      overflow |= extract_coordinate_any(xyz[axis]->datatype, data, points, xyz[axis]->offset, swap,
         length_scale, axis, static_cast<float*>(coordinates));
     }
     else
     {
-      extract_coordinate_any(xyz[axis]->datatype, data, points, xyz[axis]->offset, swap,
+      overflow |= extract_coordinate_any(xyz[axis]->datatype, data, points, xyz[axis]->offset, swap,
         length_scale, axis, static_cast<double*>(coordinates));
     }
   }
 
   // The policy above is about the sender's NaN points; a finite coordinate that overflows once
   // scaled (1e306 m as float64, 1e37 m as float32 into mm) is an error whatever the policy
-  // (issue 11.9). Only a non-finite output can be one, so the source is read again only there.
-  if (length_scale > 1.0)
+  // (issue 11.9). The extraction said whether there is one; only then is the cloud read again
+  // to name the first.
+  if (overflow)
   {
     const auto* out_float = static_cast<const float*>(coordinates);
     const auto* out_double = static_cast<const double*>(coordinates);
