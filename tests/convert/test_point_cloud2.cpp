@@ -6,7 +6,9 @@
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
+#include <vtkSOADataArrayTemplate.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -220,6 +222,48 @@ TEST(PointCloud2, ZeroWidthIsAnEmptyCloudWhateverTheHeight)
   EXPECT_EQ(poly->GetNumberOfPoints(), 0);
   ASSERT_NE(poly->GetPointData()->GetArray("intensity"), nullptr);
   EXPECT_EQ(poly->GetPointData()->GetArray("intensity")->GetNumberOfTuples(), 0);
+}
+
+// Points stored as float, as double, or in an array type other than VTK's usual one (structure
+// of arrays) give the same cloud: the first two are read straight from their memory, the last
+// through vtkPoints::GetPoint.
+TEST(PointCloud2, PolyDataToCloudReadsFloatDoubleAndOtherPointStorageAlike)
+{
+  const double coordinates[2][3] = { { 100.0, -200.5, 300.25 }, { -50.0, 0.0, 1000.0 } };
+  auto cloud_of = [&](vtkDataArray* storage, std::vector<uint8_t>* data) {
+    storage->SetNumberOfComponents(3);
+    storage->SetNumberOfTuples(2);
+    for (vtkIdType i = 0; i < 2; ++i)
+    {
+      storage->SetTuple(i, coordinates[i]);
+    }
+    vtkNew<vtkPoints> points;
+    points->SetData(storage);
+    vtkNew<vtkPolyData> poly;
+    poly->SetPoints(points);
+    PointCloud2Layout layout;
+    std::string error;
+    EXPECT_TRUE(poly_data_to_point_cloud2(poly, kMillimetresPerMetre, &layout, data, &error))
+      << error;
+    return layout;
+  };
+  vtkNew<vtkFloatArray> floats;
+  vtkNew<vtkDoubleArray> doubles;
+  vtkNew<vtkSOADataArrayTemplate<double>> separate;
+  std::vector<uint8_t> from_floats, from_doubles, from_separate;
+  EXPECT_EQ(cloud_of(floats, &from_floats).fields[0].datatype, point_field::kFloat32);
+  EXPECT_EQ(cloud_of(doubles, &from_doubles).fields[0].datatype, point_field::kFloat64);
+  EXPECT_EQ(cloud_of(separate, &from_separate).fields[0].datatype, point_field::kFloat64);
+  for (size_t i = 0; i < 2; ++i)
+  {
+    for (size_t axis = 0; axis < 3; ++axis)
+    {
+      const double metres = coordinates[i][axis] / 1000.0;
+      EXPECT_FLOAT_EQ(get<float>(from_floats, 12 * i + 4 * axis), static_cast<float>(metres));
+      EXPECT_DOUBLE_EQ(get<double>(from_doubles, 24 * i + 8 * axis), metres);
+      EXPECT_DOUBLE_EQ(get<double>(from_separate, 24 * i + 8 * axis), metres);
+    }
+  }
 }
 
 TEST(PointCloud2, PolyDataToCloudLaysOutFieldsAndComesBack)

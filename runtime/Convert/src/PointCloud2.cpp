@@ -3,6 +3,7 @@
 #include "ByteOrder.hpp"
 #include "Validation.hpp"
 
+#include <vtkAOSDataArrayTemplate.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkIdTypeArray.h>
@@ -499,9 +500,31 @@ bool poly_data_to_point_cloud2(vtkPolyData* poly_data, double length_scale,
   std::vector<uint8_t> bytes(static_cast<size_t>(row_step), 0);
   bool dense = true;
   double p[3];
+  // The usual storage read directly; any other array type through its virtual GetPoint.
+  auto* float_data =
+    vtk_points ? vtkAOSDataArrayTemplate<float>::FastDownCast(vtk_points->GetData()) : nullptr;
+  auto* double_data =
+    vtk_points ? vtkAOSDataArrayTemplate<double>::FastDownCast(vtk_points->GetData()) : nullptr;
+  const float* float_source = float_data ? float_data->GetPointer(0) : nullptr;
+  const double* double_source = double_data ? double_data->GetPointer(0) : nullptr;
   for (vtkIdType i = 0; i < count; ++i)
   {
-    vtk_points->GetPoint(i, p);
+    if (float_source)
+    {
+      p[0] = float_source[3 * i];
+      p[1] = float_source[3 * i + 1];
+      p[2] = float_source[3 * i + 2];
+    }
+    else if (double_source)
+    {
+      p[0] = double_source[3 * i];
+      p[1] = double_source[3 * i + 1];
+      p[2] = double_source[3 * i + 2];
+    }
+    else
+    {
+      vtk_points->GetPoint(i, p);
+    }
     dense = dense && std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
     uint8_t* out = bytes.data() + static_cast<size_t>(i) * point_step;
     for (int axis = 0; axis < 3; ++axis)
