@@ -7,6 +7,7 @@
 
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 #include <vtkTransform.h>
 #include <vtkTransformCollection.h>
 
@@ -281,6 +282,36 @@ TEST(RigidTransform, PoseArrayToTransformCollectionAndBack)
   EXPECT_NEAR(back[0].translation[0], 0.001, 1e-15);
   EXPECT_NEAR(back[1].translation[2], -0.2, 1e-15);
   EXPECT_NEAR(back[1].rotation[2], kHalfSqrt2, 1e-15);
+}
+
+// A subscriber converts every PoseArray of a stream into the same collection. Transforms only the
+// collection holds are refilled in place (no allocation per pose per message); one that somebody
+// else holds keeps its pose and is replaced in the collection; a shorter array drops the rest.
+TEST(RigidTransform, CollectionRefillsOnlyTheTransformsNobodyElseHolds)
+{
+  vtkNew<vtkTransformCollection> collection;
+  std::string error;
+  const std::vector<RigidPose> three = { make_pose(0.001, 0, 0, 0, 0, 0, 1),
+    make_pose(0.002, 0, 0, 0, 0, 0, 1), make_pose(0.003, 0, 0, 0, 0, 0, 1) };
+  ASSERT_TRUE(poses_to_transform_collection(three, 1000.0, collection, &error)) << error;
+  vtkTransform* first = vtkTransform::SafeDownCast(collection->GetItemAsObject(0));
+  vtkSmartPointer<vtkTransform> kept = vtkTransform::SafeDownCast(collection->GetItemAsObject(1));
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(kept, nullptr);
+
+  const std::vector<RigidPose> two = { make_pose(0.010, 0, 0, 0, 0, 0, 1),
+    make_pose(0.020, 0, 0, 0, 0, kHalfSqrt2, kHalfSqrt2) };
+  ASSERT_TRUE(poses_to_transform_collection(two, 1000.0, collection, &error)) << error;
+  ASSERT_EQ(collection->GetNumberOfItems(), 2);
+  EXPECT_EQ(collection->GetItemAsObject(0), first) << "refilled, not replaced";
+  EXPECT_NEAR(first->GetMatrix()->GetElement(0, 3), 10.0, 1e-12);
+  auto* second = vtkTransform::SafeDownCast(collection->GetItemAsObject(1));
+  ASSERT_NE(second, nullptr);
+  EXPECT_NE(second, kept.GetPointer()) << "held elsewhere: not reused";
+  EXPECT_NEAR(second->GetMatrix()->GetElement(0, 3), 20.0, 1e-12);
+  EXPECT_NEAR(second->GetMatrix()->GetElement(1, 0), 1.0, 1e-15);
+  EXPECT_NEAR(kept->GetMatrix()->GetElement(0, 3), 2.0, 1e-12) << "the held one kept its pose";
+  EXPECT_EQ(kept->GetReferenceCount(), 1) << "and the collection let it go";
 }
 
 TEST(RigidTransform, CollectionErrorsNameTheItemAndLeaveOutputAlone)

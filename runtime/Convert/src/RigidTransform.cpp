@@ -11,6 +11,8 @@
 #include <vtkTransform.h>
 #include <vtkTransformCollection.h>
 
+#include <cstring>
+
 #include <array>
 #include <cmath>
 
@@ -49,12 +51,11 @@ bool checked_rotation(
   return true;
 }
 
-/// Fills `matrix` from a checked pose; cannot fail.
-void fill_matrix(const RigidPose& pose, const Eigen::Quaterniond& rotation, double length_scale,
-  vtkMatrix4x4* matrix)
+/// Fills row-major `elements` from a checked pose; cannot fail.
+void fill_elements(const RigidPose& pose, const Eigen::Quaterniond& rotation, double length_scale,
+  double elements[16])
 {
   const Eigen::Matrix3d r = rotation.toRotationMatrix();
-  double elements[16];
   for (int row = 0; row < 3; ++row)
   {
     for (int col = 0; col < 3; ++col)
@@ -67,19 +68,12 @@ void fill_matrix(const RigidPose& pose, const Eigen::Quaterniond& rotation, doub
   elements[13] = 0.0;
   elements[14] = 0.0;
   elements[15] = 1.0;
-  matrix->DeepCopy(elements);
 }
 
-} // namespace
-
-bool pose_to_matrix(
-  const RigidPose& pose, double length_scale, vtkMatrix4x4* matrix, std::string* error)
+/// A pose as the row-major elements of its matrix, with every check of pose_to_matrix.
+bool pose_to_elements(const RigidPose& pose, double length_scale, const char* where,
+  double elements[16], std::string* error)
 {
-  const char* where = "pose_to_matrix";
-  if (!matrix)
-  {
-    return fail(error, where, "output matrix is null");
-  }
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   if (!detail::check_length_scale(length_scale, where, error) ||
     !checked_rotation(pose, where, &rotation, error))
@@ -97,7 +91,26 @@ bool pose_to_matrix(
           ") is not finite once scaled by " + number_text(length_scale));
     }
   }
-  fill_matrix(pose, rotation, length_scale, matrix);
+  fill_elements(pose, rotation, length_scale, elements);
+  return true;
+}
+
+} // namespace
+
+bool pose_to_matrix(
+  const RigidPose& pose, double length_scale, vtkMatrix4x4* matrix, std::string* error)
+{
+  const char* where = "pose_to_matrix";
+  if (!matrix)
+  {
+    return fail(error, where, "output matrix is null");
+  }
+  double elements[16];
+  if (!pose_to_elements(pose, length_scale, where, elements, error))
+  {
+    return false;
+  }
+  matrix->DeepCopy(elements);
   return true;
 }
 
@@ -201,17 +214,45 @@ bool poses_to_transform_collection(const std::vector<RigidPose>& poses, double l
   {
     return fail(error, where, "output collection is null");
   }
-  std::vector<vtkSmartPointer<vtkTransform>> transforms;
-  transforms.reserve(poses.size());
+  // Every pose is checked before the collection is touched: a bad one leaves it as it was.
+  std::vector<double> elements(16 * poses.size());
   for (size_t i = 0; i < poses.size(); ++i)
   {
-    auto transform = vtkSmartPointer<vtkTransform>::New();
     std::string reason;
-    if (!pose_to_transform(poses[i], length_scale, transform, &reason))
+    if (!pose_to_elements(poses[i], length_scale, "pose_to_matrix", &elements[16 * i], &reason))
     {
       return fail(error, where, "pose " + std::to_string(i) + ": " + reason);
     }
-    transforms.push_back(transform);
+  }
+  // A transform only the collection holds is refilled rather than replaced: a subscriber converts
+  // every message of a stream into the same collection, and a PoseArray of 1000 poses otherwise
+  // costs 1000 vtkTransform allocations (each with its matrix and concatenation) per message.
+  // One that anybody else holds (a script, a filter) keeps the pose it had.
+  std::vector<vtkSmartPointer<vtkTransform>> transforms;
+  transforms.reserve(poses.size());
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  for (int i = 0, n = collection->GetNumberOfItems(); i < n && transforms.size() < poses.size();
+       ++i)
+  {
+    vtkObject* item = collection->GetNextItemAsObject(it);
+    auto* transform = vtkTransform::SafeDownCast(item);
+    // Exactly a vtkTransform, plain (no input transform, not inverted), held by the collection
+    // only.
+    if (transform && transform->GetReferenceCount() == 1 &&
+      std::strcmp(transform->GetClassName(), "vtkTransform") == 0 && !transform->GetInput() &&
+      !transform->GetInverseFlag())
+    {
+      transforms.emplace_back(transform);
+    }
+  }
+  while (transforms.size() < poses.size())
+  {
+    transforms.push_back(vtkSmartPointer<vtkTransform>::New());
+  }
+  for (size_t i = 0; i < poses.size(); ++i)
+  {
+    transforms[i]->SetMatrix(&elements[16 * i]);
   }
   collection->RemoveAllItems();
   for (const auto& transform : transforms)
