@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -93,6 +95,56 @@ public:
 
 private:
   std::string body_;
+};
+
+/// The "--name value" options of a benchmark program, each written into the field it names.
+/// parse() is false on an unknown name or a name without its value (the caller prints usage).
+class OptionParser
+{
+public:
+  OptionParser& add(const char* name, std::string* field)
+  {
+    setters_.push_back({ name, [field](const char* value) {
+                          *field = value;
+                        } });
+    return *this;
+  }
+  OptionParser& add(const char* name, double* field)
+  {
+    setters_.push_back({ name, [field](const char* value) {
+                          *field = std::atof(value);
+                        } });
+    return *this;
+  }
+  OptionParser& add(const char* name, int* field)
+  {
+    setters_.push_back({ name, [field](const char* value) {
+                          *field = std::atoi(value);
+                        } });
+    return *this;
+  }
+  bool parse(int argc, char** argv) const
+  {
+    if (argc % 2 == 0)
+      return false; // a name without its value
+    for (int i = 1; i + 1 < argc; i += 2)
+    {
+      const auto setter = std::find_if(
+        setters_.begin(), setters_.end(), [&](const Setter& s) { return s.name == argv[i]; });
+      if (setter == setters_.end())
+        return false;
+      setter->set(argv[i + 1]);
+    }
+    return true;
+  }
+
+private:
+  struct Setter
+  {
+    std::string name;
+    std::function<void(const char*)> set;
+  };
+  std::vector<Setter> setters_;
 };
 
 /// The senders' loop (bench_publish, bare_publish): `rate * seconds` calls of `publish` on an

@@ -263,27 +263,16 @@ int run(const Options& options, std::vector<uint8_t> bytes)
 int main(int argc, char** argv)
 {
   Options o;
-  if (argc % 2 == 0)
+  const bool parsed = bench::OptionParser()
+                        .add("--type", &o.type)
+                        .add("--topic", &o.topic)
+                        .add("--payload", &o.payload)
+                        .add("--rate", &o.rate)
+                        .add("--seconds", &o.seconds)
+                        .add("--wait", &o.wait)
+                        .parse(argc, argv);
+  if (!parsed)
     return usage();
-  for (int i = 1; i + 1 < argc; i += 2)
-  {
-    const std::string arg = argv[i];
-    const char* value = argv[i + 1];
-    if (arg == "--type")
-      o.type = value;
-    else if (arg == "--topic")
-      o.topic = value;
-    else if (arg == "--payload")
-      o.payload = value;
-    else if (arg == "--rate")
-      o.rate = std::atof(value);
-    else if (arg == "--seconds")
-      o.seconds = std::atof(value);
-    else if (arg == "--wait")
-      o.wait = std::atof(value);
-    else
-      return usage();
-  }
   if (!dds_type_name(o.type))
   {
     std::fprintf(stderr, "bare_publish: unknown --type '%s'\n", o.type.c_str());

@@ -130,30 +130,22 @@ int main(int argc, char** argv)
 {
   ros2vtk_register_ros2vtkNodes_nodes();
   Options o;
-  for (int i = 1; i + 1 < argc; i += 2)
+  const bool parsed = bench::OptionParser()
+                        .add("--type", &o.type)
+                        .add("--topic", &o.topic)
+                        .add("--rate", &o.rate)
+                        .add("--seconds", &o.seconds)
+                        .add("--wait", &o.wait)
+                        .add("--width", &o.width)
+                        .add("--height", &o.height)
+                        .add("--encoding", &o.encoding)
+                        .add("--points", &o.points)
+                        .add("--poses", &o.poses)
+                        .parse(argc, argv);
+  if (!parsed)
   {
-    const std::string arg = argv[i];
-    const char* value = argv[i + 1];
-    if (arg == "--type")
-      o.type = value;
-    else if (arg == "--topic")
-      o.topic = value;
-    else if (arg == "--rate")
-      o.rate = std::atof(value);
-    else if (arg == "--seconds")
-      o.seconds = std::atof(value);
-    else if (arg == "--wait")
-      o.wait = std::atof(value);
-    else if (arg == "--width")
-      o.width = std::atoi(value);
-    else if (arg == "--height")
-      o.height = std::atoi(value);
-    else if (arg == "--encoding")
-      o.encoding = value;
-    else if (arg == "--points")
-      o.points = std::atoi(value);
-    else if (arg == "--poses")
-      o.poses = std::atoi(value);
+    std::fprintf(stderr, "bench_publish: unknown option or option without a value\n");
+    return 2;
   }
   if (o.rate <= 0 || o.seconds <= 0 || o.topic.empty())
   {

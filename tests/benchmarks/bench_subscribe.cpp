@@ -373,20 +373,17 @@ int main(int argc, char** argv)
 {
   ros2vtk_register_ros2vtkNodes_nodes();
   Options options;
-  for (int i = 1; i + 1 < argc; i += 2)
+  const bool parsed = bench::OptionParser()
+                        .add("--type", &options.type)
+                        .add("--topic", &options.topic)
+                        .add("--seconds", &options.seconds)
+                        .add("--idle", &options.idle)
+                        .add("--depth", &options.depth)
+                        .parse(argc, argv);
+  if (!parsed)
   {
-    const std::string arg = argv[i];
-    const char* value = argv[i + 1];
-    if (arg == "--type")
-      options.type = value;
-    else if (arg == "--topic")
-      options.topic = value;
-    else if (arg == "--seconds")
-      options.seconds = std::atof(value);
-    else if (arg == "--idle")
-      options.idle = std::atof(value);
-    else if (arg == "--depth")
-      options.depth = std::atoi(value);
+    std::fprintf(stderr, "bench_subscribe: unknown option or option without a value\n");
+    return 2;
   }
   namespace gm = ros2vtk::geometry_msgs::msg;
   namespace sm = ros2vtk::sensor_msgs::msg;
