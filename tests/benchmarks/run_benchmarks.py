@@ -587,8 +587,7 @@ def spin_time_text(spin: dict | None) -> list[str]:
                      f'{fmt(ten)} ms of wall time: the spin runs; it does not wait for a lock or a core. ')
     when, one_runs, ten_runs = SPIN_OTHER_RUN
     measured += (f'Another full run on this machine ({when}) had {one_runs} ms (one robot) and {ten_runs} ms '
-                 f'(ten robots): the one-robot median sits at the 0.05 ms target and moves across it with the '
-                 f'load of the shared host. ')
+                 f'(ten robots): a busier machine gave faster sleeping spins, as a core kept from idling does. ')
     cmdline = Path('/proc/cmdline').read_text() if Path('/proc/cmdline').exists() else ''
     if 'haltpoll.guest_halt_poll_ns=0' in cmdline:
         measured += ('This VM\'s kernel runs with guest halt polling off (haltpoll.guest_halt_poll_ns=0 on '
@@ -662,6 +661,8 @@ def markdown(results: dict) -> str:
            + ('; re-run later with --merge: ' + ', '.join(f'{k} at {results["section_runs"].get(k, "?")}'
                                                            for k in results['merged_sections'])
               if results.get('merged_sections') else ''), '',
+           *([f'Conditions (recorded by hand in results.json): {results["conditions"]}', '']
+             if results.get('conditions') else []),
            '| machine | |', '| --- | --- |',
            f'| CPU | {m["cpu"]} |', f'| cores | {m["cores"]} |', f'| RAM | {m["ram_gib"]} GiB |',
            f'| OS | {m["os"]} |', f'| compiler | {m["compiler"]} ({m["build_type"]}) |',
@@ -1367,7 +1368,8 @@ SPIN_INSTRUCTIONS = ('13.5k per spin, 2026-11-27 (17.6k before the wake-up, queu
 
 # The spin rows of another full run of the same code on this machine (medians of the three runs of
 # the one- and ten-robot rows, ms), recorded by hand: how far the host moves them between runs.
-SPIN_OTHER_RUN = ('2026-11-27 15:00 UTC', '0.050 / 0.055 / 0.052', '0.137 / 0.145 / 0.154')
+SPIN_OTHER_RUN = ('2026-11-27 15:00 UTC, same code, but with 34 sim robots of a by-hand script left running on '
+                  'other domains, so the cores seldom idled', '0.050 / 0.055 / 0.052', '0.137 / 0.145 / 0.154')
 
 SPLIT_STREAMS = [
     ('pose_1khz', 'PoseStamped', 1000, 5.0, []),
