@@ -11,6 +11,8 @@
 // The baseline (--assimp-files, a text file of mesh paths, one per line): assimp's own import of
 // the same mesh files with the post-processing flags MeshLoader uses, timed in this process before
 // any robot loads, after every file was read once so both sides start from a warm page cache.
+// Beside it, RobotLoader alone (no scene nodes, its own mesh cache) reading the meshes on one
+// thread and on one thread per core (RobotLoadOptions::mesh_threads), as the robot node does.
 //
 //   bench_robot_load --urdf FILE [--ament-prefix DIR] [--robots 10] [--assimp-files LIST]
 #include "BenchCommon.hpp"
@@ -19,6 +21,8 @@
 #include "vtkROS2NodeNode.h"
 #include "vtkROS2RobotNode.h"
 #include "vtkROS2Scene.h"
+
+#include "ros2vtk/robot/RobotLoader.hpp"
 
 #include <vtkNew.h>
 
@@ -32,6 +36,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
+#include <algorithm>
 #include <vector>
 
 namespace {
@@ -75,6 +81,21 @@ double assimp_import_ms(const std::vector<std::string>& files)
   return bench::ms_between(start, bench::Clock::now());
 }
 
+/// RobotLoader::load_xml alone with a new loader (so an empty mesh cache) and `threads`.
+double loader_ms(const std::string& xml, const std::string& folder, unsigned threads)
+{
+  ros2vtk::robot::RobotLoader loader;
+  ros2vtk::robot::RobotLoadOptions options;
+  options.base_folder = folder;
+  options.mesh_threads = threads;
+  ros2vtk::robot::RobotVisuals visuals;
+  std::string error;
+  const auto start = bench::Clock::now();
+  if (!loader.load_xml(xml, options, &visuals, &error))
+    return -1;
+  return bench::ms_between(start, bench::Clock::now());
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -107,6 +128,8 @@ int main(int argc, char** argv)
   const std::vector<std::string> assimp_files =
     assimp_list.empty() ? std::vector<std::string>() : read_lines(assimp_list);
   const double assimp_ms = assimp_files.empty() ? -1 : assimp_import_ms(assimp_files);
+  const double loader_one_thread_ms = loader_ms(xml, folder, 1);
+  const double loader_threads_ms = loader_ms(xml, folder, 0);
 
   vtkNew<vtkROS2Logic> logic;
   vtkROS2NodeNode* node = logic->GetDefaultROS2Node();
@@ -156,6 +179,9 @@ int main(int argc, char** argv)
     .number("rss_n_mib", bench::rss_mib())
     .number("assimp_files", static_cast<double>(assimp_files.size()))
     .number("assimp_import_ms", assimp_ms)
+    .number("loader_one_thread_ms", loader_one_thread_ms)
+    .number("loader_threads_ms", loader_threads_ms)
+    .number("mesh_threads", std::min(8u, std::max(1u, std::thread::hardware_concurrency())))
     .text("path", "vtkROS2RobotNode::LoadRobotDescription (parse, meshes, link and model nodes)")
     .print();
   return 0;

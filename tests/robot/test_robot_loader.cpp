@@ -425,6 +425,89 @@ TEST(RobotLoader, ChainOfTenThousandLinksFromAFileLoadsRootFirst)
   EXPECT_EQ(robot.links.back().link, "link_0");
 }
 
+// Meshes are read several at a time (RobotLoadOptions::mesh_threads); what a load gives must not
+// depend on it: the same visuals in document order, the same warnings, each distinct file (and
+// scale) read once, however many visuals name it and whether it loads or not.
+TEST(RobotLoader, MeshesReadOnSeveralThreadsGiveTheSameRobotAsOneThread)
+{
+  const std::string meshes = fs::canonical(ros2vtk_test::data_dir() + "/meshes").string();
+  const std::string arm =
+    fs::canonical(ros2vtk_test::robots_dir() + "/surgical_arm/meshes").string();
+  const std::vector<std::pair<std::string, std::string>> visuals = {
+    { arm + "/base.stl", "1 1 1" },
+    { arm + "/column.stl", "0.001 0.001 0.001" },
+    { meshes + "/two_colours.obj", "1 1 1" },
+    { meshes + "/truncated.stl", "1 1 1" },
+    { arm + "/base.stl", "1 1 1" },
+    { arm + "/base.stl", "2 2 2" },
+    { ros2vtk_test::data_dir() + "/unit_cube_cm.dae", "2 2 2" },
+    { meshes + "/garbage.dae", "1 1 1" },
+    { meshes + "/coloured_vertices.ply", "1 1 1" },
+    { meshes + "/truncated.stl", "1 1 1" },
+    { arm + "/upper_arm.stl", "1 1 1" },
+    { meshes + "/no_such_file.stl", "1 1 1" },
+    { arm + "/forearm.stl", "0.001 0.001 0.001" },
+    { meshes + "/single_colour.obj", "1 1 1" },
+  };
+  std::string xml = "<robot name='many'>";
+  for (size_t i = 0; i < visuals.size(); ++i)
+  {
+    xml += "<link name='l" + std::to_string(i) + "'><visual><geometry><mesh filename='" +
+      visuals[i].first + "' scale='" + visuals[i].second + "'/></geometry></visual></link>";
+    if (i > 0)
+      xml += "<joint name='j" + std::to_string(i) + "' type='fixed'><parent link='l" +
+        std::to_string(i - 1) + "'/><child link='l" + std::to_string(i) + "'/></joint>";
+  }
+  xml += "</robot>";
+
+  RobotLoadOptions one_thread, four_threads;
+  one_thread.mesh_threads = 1;
+  four_threads.mesh_threads = 4;
+  RobotLoader sequential = loader_with_shipped_robots(), parallel = loader_with_shipped_robots();
+  sequential.resolver().add_search_path(ros2vtk_test::data_dir());
+  parallel.resolver().add_search_path(ros2vtk_test::data_dir());
+  RobotVisuals a, b;
+  std::string error;
+  ASSERT_TRUE(sequential.load_xml(xml, one_thread, &a, &error)) << error;
+  ASSERT_TRUE(parallel.load_xml(xml, four_threads, &b, &error)) << error;
+
+  // Distinct (file, scale) pairs that load: base x1, base x2, column, two_colours, unit_cube,
+  // coloured_vertices, upper_arm, forearm, single_colour.
+  EXPECT_EQ(sequential.mesh_files_read(), 9u);
+  EXPECT_EQ(parallel.mesh_files_read(), 9u);
+  EXPECT_EQ(a.placeholder_count(), 4u); // truncated (twice), garbage, no_such_file
+  EXPECT_EQ(a.summary(), b.summary());
+  ASSERT_EQ(a.links.size(), b.links.size());
+  for (size_t i = 0; i < a.links.size(); ++i)
+  {
+    const std::string what = a.links[i].link + " (" + visuals.at(i).first + ")";
+    ASSERT_EQ(a.links[i].link, b.links[i].link);
+    EXPECT_EQ(a.links[i].warnings, b.links[i].warnings) << what;
+    ASSERT_EQ(a.links[i].visuals.size(), 1u) << what;
+    ASSERT_EQ(b.links[i].visuals.size(), 1u) << what;
+    const LinkVisual& x = a.links[i].visuals[0];
+    const LinkVisual& y = b.links[i].visuals[0];
+    EXPECT_EQ(x.kind, y.kind) << what;
+    EXPECT_EQ(x.mesh_path, y.mesh_path) << what;
+    EXPECT_EQ(x.geometry->GetNumberOfPoints(), y.geometry->GetNumberOfPoints()) << what;
+    EXPECT_EQ(x.geometry->GetNumberOfCells(), y.geometry->GetNumberOfCells()) << what;
+    expect_bounds_near(
+      ros2vtk_test::bounds_of(y.geometry), ros2vtk_test::bounds_of(x.geometry), 0.0, what);
+    EXPECT_EQ(x.has_mesh_color, y.has_mesh_color) << what;
+    expect_rgba(y.display_color(), x.display_color(), what, 0.0);
+    EXPECT_EQ(x.has_vertex_colors, y.has_vertex_colors) << what;
+  }
+  // A file that does not load is reported on every visual that names it, with the same reason.
+  ASSERT_EQ(a.links[3].warnings.size(), 1u);
+  ASSERT_EQ(a.links[9].warnings.size(), 1u);
+  EXPECT_EQ(a.links[3].warnings[0].substr(a.links[3].warnings[0].find(": could not load")),
+    a.links[9].warnings[0].substr(a.links[9].warnings[0].find(": could not load")));
+  // Sharing a mesh file does not share its polydata object: each visual has its own.
+  EXPECT_NE(b.links[0].visuals[0].geometry.Get(), b.links[4].visuals[0].geometry.Get());
+  EXPECT_EQ(
+    b.links[0].visuals[0].geometry->GetPoints(), b.links[4].visuals[0].geometry->GetPoints());
+}
+
 TEST(RobotLoader, EmptyUrdfTextIsAnError)
 {
   RobotLoader loader{ ResourceResolver() };

@@ -15,12 +15,14 @@
 #include <vtkTransformPolyDataFilter.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 namespace ros2vtk {
 namespace robot {
@@ -260,9 +262,17 @@ RobotLoader::RobotLoader(ResourceResolver resolver)
 {
 }
 
-bool RobotLoader::load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale,
-  const std::string& base_folder, LinkVisual* visual, std::string* why)
+std::string RobotLoader::mesh_read_id(const std::string& uri, const std::array<double, 3>& scale)
 {
+  char text[80];
+  std::snprintf(text, sizeof(text), "|%.17g,%.17g,%.17g", scale[0], scale[1], scale[2]);
+  return uri + text;
+}
+
+RobotLoader::MeshRead RobotLoader::resolve_mesh(
+  const std::string& uri, const std::array<double, 3>& scale, const std::string& base_folder) const
+{
+  MeshRead read;
   for (double factor : scale)
   {
     if (!std::isfinite(factor) || factor == 0.0)
@@ -270,34 +280,105 @@ bool RobotLoader::load_mesh_visual(const std::string& uri, const std::array<doub
       char text[160];
       std::snprintf(text, sizeof(text), "the scale (%g %g %g) has a zero or non-finite factor",
         scale[0], scale[1], scale[2]);
-      *why = text;
-      return false;
+      read.why = text;
+      return read;
     }
   }
   const ResolvedResource resolved = resolver_.resolve(uri, base_folder);
   if (!resolved.ok)
   {
-    *why = resolved.error;
+    read.why = resolved.error;
+    return read;
+  }
+  read.path = resolved.path;
+  read.key = MeshCache::key_of(resolved.path, scale);
+  read.ok = cache_->find(read.key, &read.mesh);
+  read.needs_file = !read.ok;
+  return read;
+}
+
+void RobotLoader::read_mesh_file(MeshRead* read, const std::array<double, 3>& scale) const
+{
+  if (!mesh_loader_.load(read->path, &read->mesh, &read->why))
+    return;
+  if (scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0)
+    read->mesh.polydata = scaled(read->mesh.polydata, scale);
+  cache_->insert(read->key, read->mesh);
+  read->ok = true;
+}
+
+bool RobotLoader::fill_mesh_visual(const MeshRead& read, LinkVisual* visual, std::string* why)
+{
+  visual->mesh_path = read.path;
+  if (!read.ok)
+  {
+    *why = read.why;
     return false;
   }
-  visual->mesh_path = resolved.path;
-  const std::string key = MeshCache::key_of(resolved.path, scale);
-  MeshData mesh;
-  if (!cache_->find(key, &mesh))
-  {
-    if (!mesh_loader_.load(resolved.path, &mesh, why))
-      return false;
-    ++mesh_files_read_;
-    if (scale[0] != 1.0 || scale[1] != 1.0 || scale[2] != 1.0)
-      mesh.polydata = scaled(mesh.polydata, scale);
-    cache_->insert(key, mesh);
-  }
-  visual->geometry = shallow_copy(mesh.polydata);
-  visual->has_mesh_color = mesh.has_color;
-  visual->mesh_color = mesh.color;
-  visual->has_vertex_colors = mesh.has_vertex_colors;
-  visual->mesh_textures = mesh.textures;
+  visual->geometry = shallow_copy(read.mesh.polydata);
+  visual->has_mesh_color = read.mesh.has_color;
+  visual->mesh_color = read.mesh.color;
+  visual->has_vertex_colors = read.mesh.has_vertex_colors;
+  visual->mesh_textures = read.mesh.textures;
   return true;
+}
+
+RobotLoader::MeshReads RobotLoader::read_meshes(
+  const urdf::ModelInterface& model, const RobotLoadOptions& options)
+{
+  MeshReads reads;
+  std::vector<std::pair<MeshRead*, std::array<double, 3>>> files;
+  for (const auto& named : model.links_)
+  {
+    if (!named.second)
+      continue;
+    for (const urdf::VisualSharedPtr& visual : named.second->visual_array)
+    {
+      if (!visual || !visual->geometry || visual->geometry->type != urdf::Geometry::MESH)
+        continue;
+      const auto* mesh = static_cast<const urdf::Mesh*>(visual->geometry.get());
+      const std::array<double, 3> scale{ { mesh->scale.x, mesh->scale.y, mesh->scale.z } };
+      const std::string id = mesh_read_id(mesh->filename, scale);
+      if (reads.count(id))
+        continue;
+      MeshRead& read = reads[id] = resolve_mesh(mesh->filename, scale, options.base_folder);
+      if (read.needs_file)
+        files.emplace_back(&read, scale);
+    }
+  }
+  // Largest files first, so that no thread is left with a large file after the others are done.
+  std::vector<std::uintmax_t> sizes(files.size());
+  for (size_t i = 0; i < files.size(); ++i)
+  {
+    std::error_code ec;
+    sizes[i] = std::filesystem::file_size(files[i].first->path, ec);
+  }
+  std::vector<size_t> order(files.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(
+    order.begin(), order.end(), [&](size_t a, size_t b) { return sizes[a] > sizes[b]; });
+
+  unsigned threads = options.mesh_threads;
+  if (threads == 0)
+    threads = std::min(8u, std::max(1u, std::thread::hardware_concurrency()));
+  threads = static_cast<unsigned>(std::min<size_t>(threads, files.size()));
+  std::atomic<size_t> next{ 0 };
+  auto work = [&] {
+    for (size_t i = next++; i < order.size(); i = next++)
+      read_mesh_file(files[order[i]].first, files[order[i]].second);
+  };
+  // Written here because no library we use runs a few independent jobs on a few threads and
+  // waits for them (vtkSMPTools' backend in Debian's VTK may be the sequential one).
+  std::vector<std::thread> helpers;
+  for (unsigned t = 1; t < threads; ++t)
+    helpers.emplace_back(work);
+  work();
+  for (std::thread& helper : helpers)
+    helper.join();
+  for (const auto& file : files)
+    mesh_files_read_ += file.first->ok ? 1 : 0;
+  return reads;
 }
 
 bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& options,
@@ -335,6 +416,7 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
     return false;
   }
   robot->root_link = root->name;
+  MeshReads meshes = read_meshes(*model, options);
 
   // Depth-first from the root, parents before children (urdfdom keeps links in a name-sorted map).
   // An explicit stack, not recursion: a description from the network may be a chain of 10 000+
@@ -396,8 +478,8 @@ bool RobotLoader::load_xml(const std::string& urdf_xml, const RobotLoadOptions& 
         visual.kind = VisualKind::Mesh;
         visual.mesh_uri = mesh->filename;
         visual.mesh_scale = { { mesh->scale.x, mesh->scale.y, mesh->scale.z } };
-        if (!load_mesh_visual(
-              mesh->filename, visual.mesh_scale, options.base_folder, &visual, &why))
+        if (!fill_mesh_visual(
+              meshes[mesh_read_id(mesh->filename, visual.mesh_scale)], &visual, &why))
           entry.warnings.push_back(mesh_warning(link->name, mesh->filename, why));
         else
           why.clear();

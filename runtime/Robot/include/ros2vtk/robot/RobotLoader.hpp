@@ -22,6 +22,10 @@
 #include <string>
 #include <vector>
 
+namespace urdf {
+class ModelInterface; // urdfdom's parsed model (urdf_model/model.h)
+}
+
 namespace ros2vtk {
 namespace robot {
 
@@ -116,6 +120,9 @@ struct RobotLoadOptions
   std::string base_folder;
   /// Side of the placeholder cube for meshes that do not load (metres).
   double placeholder_size = 0.01;
+  /// Mesh files read at the same time: 0 = one per core (at most 8), 1 = one after the other on
+  /// the calling thread. A Collada robot spends most of its first load in assimp, file by file.
+  unsigned mesh_threads = 0;
 };
 
 /// Builds RobotVisuals from URDF XML. Meshes are cached by resolved file, modification time, size
@@ -157,8 +164,28 @@ public:
   void clear_cache() { cache_->clear(); }
 
 private:
-  bool load_mesh_visual(const std::string& uri, const std::array<double, 3>& scale,
-    const std::string& base_folder, LinkVisual* visual, std::string* why);
+  /// One distinct (mesh URI, scale) of a description: resolved, then served from the cache or read.
+  struct MeshRead
+  {
+    bool ok = false;
+    std::string path; ///< resolved file
+    std::string key;  ///< MeshCache key
+    MeshData mesh;    ///< already scaled
+    std::string why;  ///< when !ok
+    bool needs_file = false;
+  };
+  using MeshReads = std::map<std::string, MeshRead>; // by mesh_read_id()
+
+  static std::string mesh_read_id(const std::string& uri, const std::array<double, 3>& scale);
+  /// Every distinct mesh of the model resolved, and the files the cache lacks read, several at a
+  /// time (options.mesh_threads), before the visuals are built in document order.
+  MeshReads read_meshes(const urdf::ModelInterface& model, const RobotLoadOptions& options);
+  MeshRead resolve_mesh(const std::string& uri, const std::array<double, 3>& scale,
+    const std::string& base_folder) const;
+  /// Reads, scales and caches one file; runs on several threads at once (MeshLoader keeps no
+  /// state, MeshCache locks).
+  void read_mesh_file(MeshRead* read, const std::array<double, 3>& scale) const;
+  static bool fill_mesh_visual(const MeshRead& read, LinkVisual* visual, std::string* why);
 
   ResourceResolver resolver_;
   XacroProcessor xacro_;
