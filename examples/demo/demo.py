@@ -200,6 +200,15 @@ class TipPlacement:
         self.placed = True
         return True
 
+    def why_not_placed(self, robot_loaded: bool) -> str:
+        """Why the phantom is not placed yet, for the summary line."""
+        if not robot_loaded:
+            return 'robot not loaded'
+        if self.start is None:
+            return 'needle tip not tracked yet'
+        return (f'needle watched for less than its first {self.stroke:.0f} mm descent and '
+                f'{self.seconds:.0f} s')
+
 
 def tip_position(robot):
     """The needle tip in world coordinates (mm), or None before the robot is loaded."""
@@ -561,7 +570,8 @@ def run_window(demo: Demo, args, duration: float) -> int:
                f'mean spin {demo.logic.GetMeanSpinDuration():.3f} ms, '
                + ', '.join(f'{ns}: {r.GetRobotState()} {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} links'
                            for ns, r in demo.robots.items())
-               + (f', phantom placed at the tip' if demo.placement.placed else ', phantom not placed (robot not loaded)'))
+               + (', phantom placed at the tip' if demo.placement.placed
+                  else f', phantom not placed ({demo.placement.why_not_placed(demo.first.IsLoaded())})'))
     if args.offscreen:
         summary += f', {viewer.frame} frames in {args.offscreen}'
     print(summary, flush=True)
@@ -623,7 +633,8 @@ def run_app(demo: Demo, args, duration: float) -> int:
                f'mean spin {demo.logic.GetMeanSpinDuration():.3f} ms, '
                + ', '.join(f'{ns}: {r.GetRobotState()} {r.GetNumberOfLinksTracked()}/{r.GetNumberOfLinks()} links'
                            for ns, r in demo.robots.items())
-               + (', phantom placed at the tip' if demo.placement.placed else ', phantom not placed')
+               + (', phantom placed at the tip' if demo.placement.placed
+                  else f', phantom not placed ({demo.placement.why_not_placed(demo.first.IsLoaded())})')
                + (f', browsers connected: {app.browsers.seen}' if app is not None else '')
                + (f', {frames["written"]} frames in {frames_dir}' if frames['written'] else ''))
     print(summary, flush=True)
