@@ -285,12 +285,30 @@ def bench_round_trip(ctx: 'Context') -> dict:
             s = row['latency_ms']
             progress(f'round trip, client {rate} Hz, {name:14s}: median {s.get("median", float("nan")):.3f} ms, '
                      f'p99 {s.get("p99", float("nan")):.3f} ms, {row["received"]}/{row["sent"]} back, lost {row["lost"]}')
+    # The spread between runs: the three echo sides the ratios compare, twice more each, interleaved
+    # (the rclpy client moves the time of flight by more than the echo sides differ).
+    compared = ('ours_event', 'rclpy_relay', 'bare_echo')
     for rate, rows in results.items():
-        ours_event = rows['ours_event']['latency_ms'].get('median', float('nan'))
-        rows['ratios'] = {
-            'event_over_rclpy_relay': ours_event / rows['rclpy_relay']['latency_ms'].get('median', float('nan')),
-            'event_over_bare_echo': ours_event / rows['bare_echo']['latency_ms'].get('median', float('nan')),
-        }
+        rows['runs'] = [{name: rows[name]['latency_ms'].get('median') for name in compared}]
+    if not ctx.quick:
+        for _ in range(2):
+            for rate in (50, 100):
+                run = {}
+                for name in compared:
+                    row = round_trip_once(ctx, domain, servers[name], rate, count)
+                    domain = 204 + (domain - 203) % 20
+                    run[name] = row['latency_ms'].get('median')
+                    results[str(rate)].setdefault('repeat_lost', 0)
+                    results[str(rate)]['repeat_lost'] += row['lost']
+                progress(f'round trip, client {rate} Hz, again: ' + ', '.join(
+                    f'{name} {fmt(value)} ms' for name, value in run.items()))
+                results[str(rate)]['runs'].append(run)
+    for rate, rows in results.items():
+        for run in rows['runs']:
+            run['event_over_rclpy_relay'] = run['ours_event'] / run['rclpy_relay']
+            run['event_over_bare_echo'] = run['ours_event'] / run['bare_echo']
+        rows['ratios'] = {key: statistics.median(run[key] for run in rows['runs'])
+                          for key in ('event_over_rclpy_relay', 'event_over_bare_echo')}
     return {'count': count, 'client': 'tests/interop/ros_peer.py round_trip (rclpy, Float64 send times)',
             'ours': 'examples/round_trip/round_trip.py (Python on the VTK wrapping, observer re-publishes)',
             'rates': results}
@@ -832,20 +850,38 @@ def markdown(results: dict) -> str:
                 paper = PAPER[f'round_trip_{rate}'] if name == f'ours_timer_{rate}' else ''
                 out.append(f'| {rate} Hz | {label} | {stat_cells(s)} | {row["lost"]} | '
                            f'{fmt(s.get("mean"))} ± {fmt(s.get("sd"))} | {paper} |')
+        several = any(len(rows.get('runs') or []) > 1 for rows in rt['rates'].values())
+        if several:
+            out += ['', 'The spread between runs: the three echo sides the ratios compare, run again (new processes, '
+                    'runs interleaved); medians of each run. The targets are read on the median of the runs\' ratios.',
+                    '', '| client rate | run | ours, event-driven | rclpy relay | bare echo | ours / relay | ours / bare echo |',
+                    '| --- | --- | --- | --- | --- | --- | --- |']
+            for rate, rows in rt['rates'].items():
+                for i, run in enumerate(rows.get('runs') or []):
+                    out.append(f'| {rate} Hz | {i + 1} | {fmt(run["ours_event"])} | {fmt(run["rclpy_relay"])} | '
+                               f'{fmt(run["bare_echo"])} | {fmt(run["event_over_rclpy_relay"], 2)} | '
+                               f'{fmt(run["event_over_bare_echo"], 2)} |')
         out += ['', '| client rate | ours (event) / rclpy relay | ours (event) / bare echo |', '| --- | --- | --- |']
         for rate, rows in rt['rates'].items():
             r = rows['ratios']
+            runs = rows.get('runs') or []
+
+            def shown(key: str) -> str:
+                if len(runs) < 2:
+                    return f'{fmt(r[key], 2)}×'
+                return (f'{fmt(r[key], 2)}× (median of {len(runs)} runs: '
+                        + ' / '.join(fmt(run[key], 2) for run in runs) + ')')
             out.append(f'| {rate} Hz | {fmt(r["event_over_rclpy_relay"], 2)} | {fmt(r["event_over_bare_echo"], 2)} |')
             targets.append((f'round trip {rate} Hz: event-driven no slower than rclpy relay (medians)',
-                            f'{fmt(r["event_over_rclpy_relay"], 2)}×', verdict(r['event_over_rclpy_relay'] <= 1.0)))
+                            shown('event_over_rclpy_relay'), verdict(r['event_over_rclpy_relay'] <= 1.0)))
             targets.append((f'round trip {rate} Hz: event-driven within 1.3× bare echo (medians)',
-                            f'{fmt(r["event_over_bare_echo"], 2)}×', verdict(r['event_over_bare_echo'] <= 1.3)))
+                            shown('event_over_bare_echo'), verdict(r['event_over_bare_echo'] <= 1.3)))
             # DESIGN.md's raised targets, reported beside the first ones.
             targets.append((f'round trip {rate} Hz: event-driven ≤ 0.8× rclpy relay (raised target, medians)',
-                            f'{fmt(r["event_over_rclpy_relay"], 2)}×', verdict(r['event_over_rclpy_relay'] <= 0.8)))
+                            shown('event_over_rclpy_relay'), verdict(r['event_over_rclpy_relay'] <= 0.8)))
             targets.append((f'round trip {rate} Hz: event-driven ≤ 1.1× bare echo (raised target, medians)',
-                            f'{fmt(r["event_over_bare_echo"], 2)}×', verdict(r['event_over_bare_echo'] <= 1.1)))
-            lost = sum(rows[n]['lost'] for n in labels)
+                            shown('event_over_bare_echo'), verdict(r['event_over_bare_echo'] <= 1.1)))
+            lost = sum(rows[n]['lost'] for n in labels) + rows.get('repeat_lost', 0)
             targets.append((f'round trip {rate} Hz: no loss (all echo sides)', f'{lost} lost', verdict(lost == 0)))
         out.append('')
 
@@ -1492,7 +1528,7 @@ def bench_sender_split(ctx: 'Context') -> dict:
     """The C++ sender (bench_publish: our scene publisher node) into ours and into a plain rclpy
     subscriber, alternated `repeats` times (the spread between runs); then the image stream with
     the OS-default socket buffers (ROS2VTK_SOCKET_BUFFER_BYTES=0) beside ours (4 MiB)."""
-    repeats = 1 if ctx.quick else 2
+    repeats = 1 if ctx.quick else 3
     streams = SPLIT_STREAMS[1:2] if ctx.quick else SPLIT_STREAMS
     bench = ctx.build / 'tests' / 'benchmarks'
     rows = {}
@@ -1590,8 +1626,12 @@ def sender_split_markdown(split: dict, targets: list) -> list[str]:
             medians = [run['median_ratio'] for run in row[runs]]
             p99s = [run['p99_ratio'] for run in row[runs]]
             lost = sum(run['ours']['lost'] for run in row[runs])
+            # Read on the median of the runs, as the spin and round trip targets; every run is shown.
+            median_of_runs = statistics.median(medians)
             targets.append((f'{name}: ours median ≤ 0.5× rclpy (same sender: {sender})',
-                            ' / '.join(f'{fmt(m, 2)}×' for m in medians), verdict(max(medians) <= 0.5)))
+                            ' / '.join(f'{fmt(m, 2)}×' for m in medians)
+                            + (f' (median of {len(medians)} runs: {fmt(median_of_runs, 2)}×)' if len(medians) > 2 else ''),
+                            verdict((median_of_runs if len(medians) > 2 else max(medians)) <= 0.5)))
             targets.append((f'{name}: ours p99 ≤ 1.0× rclpy, no loss (same sender: {sender})',
                             ' / '.join(f'{fmt(m, 2)}×' for m in p99s) + f', {lost} lost',
                             verdict(max(p99s) <= 1.0 and lost == 0)))
