@@ -98,7 +98,7 @@ private:
 };
 
 /// The "--name value" options of a benchmark program, each written into the field it names.
-/// parse() is false on an unknown name or a name without its value (the caller prints usage).
+/// parse() is false on an unknown name or a name without its value, and says which on stderr.
 class OptionParser
 {
 public:
@@ -125,14 +125,16 @@ public:
   }
   bool parse(int argc, char** argv) const
   {
-    if (argc % 2 == 0)
-      return false; // a name without its value
-    for (int i = 1; i + 1 < argc; i += 2)
+    for (int i = 1; i < argc; i += 2)
     {
       const auto setter = std::find_if(
         setters_.begin(), setters_.end(), [&](const Setter& s) { return s.name == argv[i]; });
-      if (setter == setters_.end())
+      if (setter == setters_.end() || i + 1 == argc)
+      {
+        std::fprintf(stderr, "%s: %s '%s'\n", argv[0],
+          setter == setters_.end() ? "unknown option" : "no value for option", argv[i]);
         return false;
+      }
       setter->set(argv[i + 1]);
     }
     return true;

@@ -381,10 +381,7 @@ int main(int argc, char** argv)
                         .add("--depth", &options.depth)
                         .parse(argc, argv);
   if (!parsed)
-  {
-    std::fprintf(stderr, "bench_subscribe: unknown option or option without a value\n");
     return 2;
-  }
   namespace gm = ros2vtk::geometry_msgs::msg;
   namespace sm = ros2vtk::sensor_msgs::msg;
   if (options.type == "PoseStamped")

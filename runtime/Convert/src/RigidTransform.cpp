@@ -187,12 +187,12 @@ bool pose_to_transform(
   {
     return fail(error, "pose_to_transform", "output transform is null");
   }
-  vtkNew<vtkMatrix4x4> matrix;
-  if (!pose_to_matrix(pose, length_scale, matrix, error))
+  double elements[16];
+  if (!pose_to_elements(pose, length_scale, "pose_to_matrix", elements, error))
   {
     return false;
   }
-  transform->SetMatrix(matrix);
+  transform->SetMatrix(elements);
   return true;
 }
 
